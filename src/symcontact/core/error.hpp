@@ -1,0 +1,41 @@
+#pragma once
+/// \file error.hpp
+/// The two tiers of errors (STYLE.md §7).
+///
+/// - Internal invariants are checked with SYMCONTACT_ASSERT (debug builds only).
+/// - Problems a user can cause (a malformed file, a missing physical group, nu >= 0.5, an inverted
+///   element) throw InputError, always on, with the file, the key or entity, and what was expected.
+/// - A solve that does not converge throws SolveError; the CLI maps the two to distinct exit codes.
+
+#include <cassert>
+#include <stdexcept>
+#include <string>
+
+#define SYMCONTACT_ASSERT(cond) assert(cond)
+
+namespace symcontact {
+
+/// Exit codes of the command-line program.
+enum ExitCode : int { kExitOk = 0, kExitInputError = 2, kExitSolveError = 3, kExitInternalError = 4 };
+
+/// An error in what the user gave us. what() reads "FILE: KEY: message" (parts that are empty are left out).
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, std::string key, const std::string& message);
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }
+  /// The same error, located in `file` (used when a lower layer did not know the file name).
+  InputError in_file(const std::string& file) const;
+
+ private:
+  std::string file_, key_, message_;
+};
+
+/// A solve that failed (did not converge, diverged, or met an evaluation failure).
+class SolveError : public std::runtime_error {
+ public:
+  explicit SolveError(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace symcontact

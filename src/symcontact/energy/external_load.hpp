@@ -1,0 +1,49 @@
+#pragma once
+/// \file external_load.hpp
+/// External work terms, E(u) = −s fᵀu with f = ∫_Ω b·v + ∫_Γ t·v (talk eq. 5) and s the load factor
+/// of the current step; plus the routines that integrate f from body forces and surface tractions.
+
+#include <functional>
+#include <string>
+
+#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/fem/dof_map.hpp"
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+class LinearLoad : public EnergyTerm {
+ public:
+  LinearLoad(std::string name, VectorXd f) : name_(std::move(name)), f_(std::move(f)) {}
+  std::string name() const override { return name_; }
+  double value(const VectorXd& u) const override { return -scale_ * f_.dot(u); }
+  void add_gradient(const VectorXd&, VectorXd& g) const override { g -= scale_ * f_; }
+  void add_hessian(const VectorXd&, MatrixSink&) const override {}
+  bool hessian_is_constant() const override { return true; }
+  void set_scale(double s) { scale_ = s; }
+  double scale() const { return scale_; }
+  const VectorXd& load() const { return f_; }  ///< f at scale 1
+
+ private:
+  std::string name_;
+  VectorXd f_;
+  double scale_ = 1.0;
+};
+
+/// b(x): writes dim components of the force per unit volume at x (dim coordinates).
+using BodyForceFn = std::function<void(const double* x, double* b)>;
+/// t(x, n): writes dim components of the traction at boundary point x with outward unit normal n.
+using TractionFn = std::function<void(const double* x, const double* n, double* t)>;
+
+/// f_(a,i) = ∫_Ω b_i N_a, with a quadrature of degree `degree` (+ element order).
+VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const BodyForceFn& b,
+                           int degree = 2);
+
+/// f_(a,i) = ∫_Γ t_i N_a over the facets of `group` (outward-oriented by Mesh::locate_facets()).
+VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, const FacetGroup& group,
+                              const TractionFn& t, int degree = 2);
+
+/// Measure (length in 2D, area in 3D) of a facet group, and ∫ n over it.
+double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral = nullptr);
+
+}  // namespace symcontact

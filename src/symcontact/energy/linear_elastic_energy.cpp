@@ -1,0 +1,64 @@
+#include "symcontact/energy/linear_elastic_energy.hpp"
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/energy/elastic_kernel.hpp"
+#include "symcontact/fem/cell_dispatch.hpp"
+
+namespace symcontact {
+
+LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
+                                         const LinearElastic& material, std::string label)
+    : mesh_(mesh), offset_(dofs.offset(body)), material_(material), label_(std::move(label)) {
+  // Degree 2(p−1) integrates the straight-element integrand exactly; P2 gets 3 for curved cells.
+  const int order = cell_order(mesh.cell_type);
+  tab_ = tabulate(mesh.cell_type, simplex_quadrature(mesh.dim, order == 1 ? 0 : 3));
+  for_each_cell([](Index, const Index*, const auto&) {});  // validates every cell once
+}
+
+template <class F>
+void LinearElasticEnergy::for_each_cell(F&& f) const {
+  dispatch_cell(mesh_.cell_type, [&](auto Dc, auto NNc) {
+    constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
+    Eigen::Matrix<double, D * NN, D * NN> K;
+    Index dofs[D * NN];
+    for (Index c = 0; c < mesh_.num_cells(); ++c) {
+      const Index* n = mesh_.cell(c);
+      const auto X = gather_coordinates<D, NN>(mesh_.x, n);
+      if (linear_elastic_stiffness<D, NN>(X, tab_, material_.lambda, material_.mu, K) >= 0)
+        throw InputError("", label_ + ": cell " + std::to_string(c + 1),
+                         "inverted or degenerate element (Jacobian determinant <= 0 inside the cell)");
+      for (int a = 0; a < NN; ++a)
+        for (int i = 0; i < D; ++i) dofs[D * a + i] = offset_ + D * n[a] + i;
+      f(c, static_cast<const Index*>(dofs), K);
+    }
+  });
+}
+
+double LinearElasticEnergy::value(const VectorXd& u) const {
+  double e = 0.0;
+  for_each_cell([&](Index, const Index* dofs, const auto& K) {
+    using Vec = Eigen::Matrix<double, std::decay_t<decltype(K)>::RowsAtCompileTime, 1>;
+    Vec ue;
+    for (int k = 0; k < ue.size(); ++k) ue[k] = u[dofs[k]];
+    e += 0.5 * ue.dot(K * ue);
+  });
+  return e;
+}
+
+void LinearElasticEnergy::add_gradient(const VectorXd& u, VectorXd& g) const {
+  for_each_cell([&](Index, const Index* dofs, const auto& K) {
+    using Vec = Eigen::Matrix<double, std::decay_t<decltype(K)>::RowsAtCompileTime, 1>;
+    Vec ue;
+    for (int k = 0; k < ue.size(); ++k) ue[k] = u[dofs[k]];
+    const Vec ge = K * ue;
+    for (int k = 0; k < ue.size(); ++k) g[dofs[k]] += ge[k];
+  });
+}
+
+void LinearElasticEnergy::add_hessian(const VectorXd&, MatrixSink& sink) const {
+  for_each_cell([&](Index, const Index* dofs, const auto& K) {
+    sink.add(dofs, static_cast<int>(K.rows()), K.data());
+  });
+}
+
+}  // namespace symcontact

@@ -1,0 +1,40 @@
+#pragma once
+/// \file linear_elastic_energy.hpp
+/// Strain energy of one linear-elastic body, E(u) = ½ a(u, u) = ½ uᵀ K u (talk eq. 4–5).
+/// Element stiffnesses are recomputed at every call (no per-cell storage).
+
+#include <string>
+
+#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/fem/dof_map.hpp"
+#include "symcontact/fem/shape_functions.hpp"
+#include "symcontact/materials/linear_elastic.hpp"
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+class LinearElasticEnergy : public EnergyTerm {
+ public:
+  /// `label` names the body in messages. Throws InputError(key = "<label>: cell N") if an element's
+  /// isoparametric map is inverted or degenerate at a quadrature point.
+  LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
+                      std::string label);
+  std::string name() const override { return "elastic(" + label_ + ")"; }
+  double value(const VectorXd& u) const override;
+  void add_gradient(const VectorXd& u, VectorXd& g) const override;
+  void add_hessian(const VectorXd& u, MatrixSink& sink) const override;
+  bool hessian_is_constant() const override { return true; }
+
+ private:
+  /// Calls f(c, dofs, K_e) for every cell c, with K_e the D·NN square element stiffness.
+  template <class F>
+  void for_each_cell(F&& f) const;
+
+  const Mesh& mesh_;
+  Index offset_;
+  LinearElastic material_;
+  std::string label_;
+  Tabulation tab_;
+};
+
+}  // namespace symcontact

@@ -1,0 +1,38 @@
+#include "symcontact/fem/matrix_sink.hpp"
+
+namespace symcontact {
+
+void TripletSink::add(const Index* dofs, int n, const double* K) {
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double v = K[i + j * n];
+      if (v != 0.0) triplets_.emplace_back(static_cast<int>(dofs[i]), static_cast<int>(dofs[j]), v);
+    }
+}
+
+SparseMatrix TripletSink::to_matrix(Index n) const {
+  SparseMatrix A(n, n);
+  A.setFromTriplets(triplets_.begin(), triplets_.end());
+  return A;
+}
+
+void ReducedTripletSink::add(const Index* dofs, int n, const double* K) {
+  for (int j = 0; j < n; ++j) {
+    const Index fj = free_index_[dofs[j]];
+    if (fj < 0) continue;
+    for (int i = 0; i < n; ++i) {
+      const Index fi = free_index_[dofs[i]];
+      if (fi < fj) continue;  // fixed (−1) or upper triangle
+      const double v = K[i + j * n];
+      if (v != 0.0) triplets_.emplace_back(static_cast<int>(fi), static_cast<int>(fj), v);
+    }
+  }
+}
+
+SparseMatrix ReducedTripletSink::to_lower_matrix(Index num_free) const {
+  SparseMatrix A(num_free, num_free);
+  A.setFromTriplets(triplets_.begin(), triplets_.end());
+  return A;
+}
+
+}  // namespace symcontact

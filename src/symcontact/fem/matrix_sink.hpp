@@ -1,0 +1,47 @@
+#pragma once
+/// \file matrix_sink.hpp
+/// Where assembled element matrices go (STYLE.md §3: kernel, assembly and storage are separate).
+/// A kernel fills a dense n × n block for the global DOFs `dofs[0..n)`; a sink stores it.
+///  - TripletSink: Eigen triplets in global numbering (duplicates summed later by setFromTriplets).
+///  - ReducedTripletSink: drops the rows/columns of fixed DOFs and renumbers the free ones, keeping
+///    only the lower triangle — the form a Cholesky factorisation of K_ff wants.
+
+#include <vector>
+
+#include "symcontact/core/types.hpp"
+
+namespace symcontact {
+
+class MatrixSink {
+ public:
+  virtual ~MatrixSink() = default;
+  /// Adds the n × n column-major block `K` at rows/columns `dofs`.
+  virtual void add(const Index* dofs, int n, const double* K) = 0;
+};
+
+class TripletSink : public MatrixSink {
+ public:
+  void add(const Index* dofs, int n, const double* K) override;
+  std::vector<Triplet>& triplets() { return triplets_; }
+  /// Builds a square sparse matrix of size `n` (duplicates summed).
+  SparseMatrix to_matrix(Index n) const;
+
+ private:
+  std::vector<Triplet> triplets_;
+};
+
+class ReducedTripletSink : public MatrixSink {
+ public:
+  /// `free_index[dof]` is the DOF's index among the free DOFs, or −1 if it is fixed.
+  explicit ReducedTripletSink(const std::vector<Index>& free_index) : free_index_(free_index) {}
+  void add(const Index* dofs, int n, const double* K) override;
+  std::vector<Triplet>& triplets() { return triplets_; }
+  /// The lower triangle of K_ff, of size num_free.
+  SparseMatrix to_lower_matrix(Index num_free) const;
+
+ private:
+  const std::vector<Index>& free_index_;
+  std::vector<Triplet> triplets_;
+};
+
+}  // namespace symcontact

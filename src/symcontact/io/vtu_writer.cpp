@@ -1,0 +1,212 @@
+#include "symcontact/io/vtu_writer.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <ostream>
+#include <stdexcept>
+
+#include "symcontact/io/atomic_file.hpp"
+#include "symcontact/io/json_writer.hpp"
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+namespace {
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (const char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+bool host_is_little_endian() {
+  const std::uint16_t one = 1;
+  unsigned char first = 0;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+/// A contiguous run of bytes for the appended section.
+struct Block {
+  const void* data;
+  std::uint64_t bytes;
+};
+
+void check_finite(const Eigen::MatrixXd& m, const std::string& what) {
+  for (Index j = 0; j < m.cols(); ++j) {
+    for (Index i = 0; i < m.rows(); ++i) {
+      if (!std::isfinite(m(i, j))) {
+        throw std::invalid_argument("VtuWriter: " + what + " has the non-finite value " + format_double(m(i, j)) +
+                                    " (component " + std::to_string(i) + ", entry " + std::to_string(j) +
+                                    "); ASCII VTU cannot hold it, use VtuEncoding::kBinaryAppended");
+      }
+    }
+  }
+}
+
+Eigen::MatrixXd pad_to_3d(const Eigen::MatrixXd& points) {
+  if (points.rows() < 1 || points.rows() > 3) {
+    throw std::invalid_argument("VtuWriter: points must have 1 to 3 rows (coordinates), got " +
+                                std::to_string(points.rows()));
+  }
+  Eigen::MatrixXd p = Eigen::MatrixXd::Zero(3, points.cols());
+  p.topRows(points.rows()) = points;
+  return p;
+}
+
+}  // namespace
+
+VtuWriter::VtuWriter(const Mesh& mesh) : VtuWriter(mesh.x, mesh.cell_type, mesh.cells) {}
+
+VtuWriter::VtuWriter(const Eigen::MatrixXd& points, CellType type, std::vector<Index> connectivity)
+    : points_(pad_to_3d(points)), type_(type) {
+  const auto npc = static_cast<std::size_t>(cell_num_nodes(type));
+  if (connectivity.size() % npc != 0) {
+    throw std::invalid_argument("VtuWriter: connectivity has " + std::to_string(connectivity.size()) +
+                                " entries, not a multiple of the " + std::to_string(npc) + " nodes of a " +
+                                cell_name(type) + " cell");
+  }
+  num_cells_ = static_cast<Index>(connectivity.size() / npc);
+  const Index n = points_.cols();
+  for (std::size_t k = 0; k < connectivity.size(); ++k) {
+    if (connectivity[k] < 0 || connectivity[k] >= n) {
+      throw std::invalid_argument("VtuWriter: connectivity of cell " + std::to_string(k / npc) + " holds node " +
+                                  std::to_string(connectivity[k]) + ", outside [0, " + std::to_string(n) + ")");
+    }
+  }
+  const int* order = vtk_node_order(type);
+  connectivity_.resize(connectivity.size());
+  for (std::size_t c = 0; c < connectivity.size(); c += npc) {
+    for (std::size_t k = 0; k < npc; ++k) connectivity_[c + k] = connectivity[c + static_cast<std::size_t>(order[k])];
+  }
+}
+
+void VtuWriter::add(std::vector<Array>& arrays, const char* where, Index count, const std::string& name,
+                    const Eigen::MatrixXd& values, const std::vector<std::string>& component_names) {
+  const std::string label = std::string(where) + " array '" + name + "'";
+  if (name.empty()) throw std::invalid_argument(std::string("VtuWriter: ") + where + " array with an empty name");
+  for (const Array& a : arrays) {
+    if (a.name == name) throw std::invalid_argument("VtuWriter: " + label + " added twice");
+  }
+  if (values.rows() < 1 || values.cols() != count) {
+    throw std::invalid_argument("VtuWriter: " + label + " is " + std::to_string(values.rows()) + " x " +
+                                std::to_string(values.cols()) + ", expected ncomp x " + std::to_string(count) +
+                                " with ncomp >= 1");
+  }
+  if (!component_names.empty() && static_cast<Index>(component_names.size()) != values.rows()) {
+    throw std::invalid_argument("VtuWriter: " + label + " has " + std::to_string(values.rows()) +
+                                " components but " + std::to_string(component_names.size()) + " component names");
+  }
+  arrays.push_back(Array{name, values, component_names});
+}
+
+void VtuWriter::write(const std::string& path) const {
+  const bool ascii = encoding_ == VtuEncoding::kAscii;
+  if (ascii) {
+    check_finite(points_, "Points");
+    for (const Array& a : point_data_) check_finite(a.values, "point data array '" + a.name + "'");
+    for (const Array& a : cell_data_) check_finite(a.values, "cell data array '" + a.name + "'");
+  }
+
+  const auto npc = static_cast<Index>(cell_num_nodes(type_));
+  std::vector<std::int64_t> offsets(static_cast<std::size_t>(num_cells_));
+  for (Index c = 0; c < num_cells_; ++c) offsets[static_cast<std::size_t>(c)] = (c + 1) * npc;
+  const std::vector<std::uint8_t> types(static_cast<std::size_t>(num_cells_),
+                                        static_cast<std::uint8_t>(vtk_cell_type(type_)));
+  static_assert(sizeof(Index) == sizeof(std::int64_t), "connectivity is written as Int64");
+
+  // Appended blocks in the order their DataArray headers are written.
+  std::vector<Block> blocks;
+  std::uint64_t next_offset = 0;
+  auto format_attr = [&](const void* data, std::uint64_t bytes) -> std::string {
+    if (ascii) return "format=\"ascii\"";
+    std::string s = "format=\"appended\" offset=\"" + std::to_string(next_offset) + "\"";
+    blocks.push_back(Block{data, bytes});
+    next_offset += sizeof(std::uint64_t) + bytes;
+    return s;
+  };
+
+  write_file_atomically(path, [&](std::ostream& os) {
+    const char* indent = "          ";
+    auto matrix_array = [&](const Eigen::MatrixXd& m, const std::string& name_attr,
+                            const std::vector<std::string>& component_names) {
+      os << "        <DataArray type=\"Float64\"" << name_attr << " NumberOfComponents=\"" << m.rows() << "\"";
+      for (std::size_t k = 0; k < component_names.size(); ++k) {
+        os << " ComponentName" << k << "=\"" << xml_escape(component_names[k]) << "\"";
+      }
+      os << " " << format_attr(m.data(), static_cast<std::uint64_t>(m.size()) * sizeof(double));
+      if (!ascii) {
+        os << "/>\n";
+        return;
+      }
+      os << ">\n";
+      for (Index j = 0; j < m.cols(); ++j) {
+        os << indent;
+        for (Index i = 0; i < m.rows(); ++i) os << (i ? " " : "") << format_double(m(i, j));
+        os << '\n';
+      }
+      os << "        </DataArray>\n";
+    };
+    // Integer arrays, `per_line` values to a line.
+    auto int_array = [&](const char* type, const char* name, const auto& v, std::size_t per_line) {
+      using T = typename std::decay_t<decltype(v)>::value_type;
+      os << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\" "
+         << format_attr(v.data(), static_cast<std::uint64_t>(v.size() * sizeof(T)));
+      if (!ascii) {
+        os << "/>\n";
+        return;
+      }
+      os << ">\n";
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        os << (k % per_line == 0 ? indent : " ") << static_cast<long long>(v[k]);
+        if (k % per_line == per_line - 1 || k + 1 == v.size()) os << '\n';
+      }
+      os << "        </DataArray>\n";
+    };
+    auto data_section = [&](const char* tag, const std::vector<Array>& arrays) {
+      os << "      <" << tag << ">\n";
+      for (const Array& a : arrays) matrix_array(a.values, " Name=\"" + xml_escape(a.name) + "\"", a.component_names);
+      os << "      </" << tag << ">\n";
+    };
+
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
+       << (host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
+       << "  <UnstructuredGrid>\n"
+       << "    <Piece NumberOfPoints=\"" << num_points() << "\" NumberOfCells=\"" << num_cells_ << "\">\n";
+    data_section("PointData", point_data_);
+    data_section("CellData", cell_data_);
+    os << "      <Points>\n";
+    matrix_array(points_, " Name=\"Points\"", {});
+    os << "      </Points>\n"
+       << "      <Cells>\n";
+    int_array("Int64", "connectivity", connectivity_, static_cast<std::size_t>(npc));
+    int_array("Int64", "offsets", offsets, 10);
+    int_array("UInt8", "types", types, 20);
+    os << "      </Cells>\n"
+       << "    </Piece>\n"
+       << "  </UnstructuredGrid>\n";
+    if (!ascii) {
+      os << "  <AppendedData encoding=\"raw\">\n   _";
+      for (const Block& b : blocks) {
+        os.write(reinterpret_cast<const char*>(&b.bytes), sizeof(b.bytes));
+        if (b.bytes > 0) os.write(static_cast<const char*>(b.data), static_cast<std::streamsize>(b.bytes));
+      }
+      os << "\n  </AppendedData>\n";
+    }
+    os << "</VTKFile>\n";
+  });
+}
+
+}  // namespace symcontact

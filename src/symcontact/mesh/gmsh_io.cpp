@@ -1,0 +1,229 @@
+#include "symcontact/mesh/gmsh_io.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <unordered_map>
+
+#include "symcontact/core/error.hpp"
+
+namespace symcontact {
+
+const MeshFile::Group* MeshFile::find(const std::string& name, int dim) const {
+  for (const auto& g : groups)
+    if (g.dim == dim && g.name == name) return &g;
+  return nullptr;
+}
+
+namespace {
+
+/// Initialises Gmsh for the lifetime of the object (Gmsh itself is a process-wide singleton).
+class GmshSession {
+ public:
+  explicit GmshSession(bool verbose) {
+    gmsh::initialize(0, nullptr, false);
+    gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
+    gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
+  }
+  ~GmshSession() {
+    try {
+      gmsh::finalize();
+    } catch (...) {
+    }
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+};
+
+std::string describe_gmsh_error(const std::string& thrown) {
+  std::string last;
+  try {
+    gmsh::logger::getLastError(last);
+  } catch (...) {
+  }
+  return !thrown.empty() ? thrown : (!last.empty() ? last : std::string("unknown Gmsh error"));
+}
+
+MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, bool is_geo) {
+  if (is_geo) {
+    gmsh::open(path);
+    if (opt.mesh_size > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", opt.mesh_size);
+    gmsh::model::mesh::generate(opt.dim);
+  } else {
+    gmsh::open(path);
+  }
+  // Raise or lower the element order when the file's differs from the problem's.
+  {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, opt.dim, -1);
+    bool need = false;
+    for (int t : types) {
+      CellType ct;
+      if (from_gmsh_element_type(t, ct) && cell_order(ct) != opt.order) need = true;
+    }
+    if (need) gmsh::model::mesh::setOrder(opt.order);
+  }
+
+  MeshFile f;
+  f.path = path;
+  std::vector<std::size_t> node_tags;
+  std::vector<double> coords, param;
+  gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, true, false);
+  if (node_tags.empty()) throw InputError(path, "", "the mesh has no nodes");
+  const std::size_t max_tag = *std::max_element(node_tags.begin(), node_tags.end());
+  std::unordered_map<std::size_t, Index> index_of;
+  index_of.reserve(node_tags.size());
+  f.x.resize(3, static_cast<Index>(node_tags.size()));
+  for (std::size_t k = 0; k < node_tags.size(); ++k) {
+    index_of[node_tags[k]] = static_cast<Index>(k);
+    for (int i = 0; i < 3; ++i) f.x(i, static_cast<Index>(k)) = coords[3 * k + i];
+  }
+  (void)max_tag;
+
+  auto read_blocks = [&](int dim, int entity, std::vector<MeshFile::Block>& out) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
+    for (std::size_t b = 0; b < types.size(); ++b) {
+      CellType ct;
+      if (!from_gmsh_element_type(types[b], ct)) {
+        std::string name;
+        int d, o, nn, np;
+        std::vector<double> lc;
+        gmsh::model::mesh::getElementProperties(types[b], name, d, o, nn, lc, np);
+        throw InputError(path, "", "unsupported element type '" + name +
+                                       "': symcontact uses triangles and tetrahedra (order 1 or 2)");
+      }
+      MeshFile::Block blk{ct, {}};
+      blk.nodes.reserve(nodes[b].size());
+      for (std::size_t t : nodes[b]) {
+        auto it = index_of.find(t);
+        if (it == index_of.end())
+          throw InputError(path, "", "an element refers to node " + std::to_string(t) + ", which is not defined");
+        blk.nodes.push_back(it->second);
+      }
+      out.push_back(std::move(blk));
+    }
+  };
+
+  read_blocks(opt.dim, -1, f.all_cells);
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, -1);
+  for (const auto& [dim, tag] : groups) {
+    MeshFile::Group g;
+    g.dim = dim;
+    g.tag = tag;
+    gmsh::model::getPhysicalName(dim, tag, g.name);
+    if (g.name.empty()) g.name = std::to_string(tag);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (int e : entities) read_blocks(dim, e, g.blocks);
+    f.groups.push_back(std::move(g));
+  }
+  return f;
+}
+
+}  // namespace
+
+MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) throw InputError(path, "", "mesh file not found");
+  const std::string ext = fs::path(path).extension().string();
+  if (ext != ".geo" && ext != ".msh")
+    throw InputError(path, "", "expected a Gmsh .geo or .msh file, got extension '" + ext + "'");
+  if (options.order != 1 && options.order != 2) throw InputError(path, "", "element order must be 1 or 2");
+  GmshSession session(options.verbose);
+  try {
+    return read_with_gmsh(path, options, ext == ".geo");
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::string& s) {
+    throw InputError(path, "", "Gmsh could not read or mesh the file: " + describe_gmsh_error(s));
+  } catch (const std::exception& e) {
+    throw InputError(path, "", std::string("Gmsh could not read or mesh the file: ") + e.what());
+  } catch (...) {
+    throw InputError(path, "", "Gmsh could not read or mesh the file: " + describe_gmsh_error(""));
+  }
+}
+
+Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key) {
+  const std::vector<MeshFile::Block>* cells = &file.all_cells;
+  if (!group.empty()) {
+    const MeshFile::Group* g = file.find(group, dim);
+    if (!g) {
+      std::string known;
+      for (const auto& h : file.groups)
+        if (h.dim == dim) known += (known.empty() ? "" : ", ") + ("'" + h.name + "'");
+      throw InputError(file.path, group_key,
+                       "no physical group '" + group + "' of dimension " + std::to_string(dim) +
+                           " in the mesh (groups of that dimension: " + (known.empty() ? "none" : known) + ")");
+    }
+    cells = &g->blocks;
+  }
+  Mesh m;
+  m.dim = dim;
+  bool have_type = false;
+  for (const auto& b : *cells) {
+    if (cell_dim(b.type) != dim) continue;
+    if (have_type && b.type != m.cell_type)
+      throw InputError(file.path, group_key, "the body mixes element types (" + cell_name(m.cell_type) + " and " +
+                                                 cell_name(b.type) + ")");
+    m.cell_type = b.type;
+    have_type = true;
+  }
+  if (!have_type)
+    throw InputError(file.path, group_key,
+                     "no " + std::to_string(dim) + "D elements in " + (group.empty() ? "the mesh" : "group '" + group + "'"));
+  // Renumber the nodes used by the body's cells, in file order.
+  std::vector<Index> local(file.x.cols(), -1);
+  for (const auto& b : *cells)
+    for (Index v : b.nodes) local[v] = 0;
+  Index n = 0;
+  for (auto& l : local)
+    if (l == 0) l = n++;
+  m.x.resize(dim, n);
+  for (Index v = 0; v < file.x.cols(); ++v)
+    if (local[v] >= 0) m.x.col(local[v]) = file.x.col(v).head(dim);
+  for (const auto& b : *cells)
+    for (Index v : b.nodes) m.cells.push_back(local[v]);
+  // Lower-dimensional groups, restricted to this body.
+  const CellType ft = facet_type(m.cell_type);
+  for (const auto& g : file.groups) {
+    if (g.dim >= dim) continue;
+    if (g.dim == dim - 1) {
+      FacetGroup fg;
+      for (const auto& b : g.blocks) {
+        if (b.type != ft) continue;
+        const int npf = cell_num_nodes(ft);
+        for (std::size_t k = 0; k + npf <= b.nodes.size(); k += npf) {
+          bool inside = true;
+          for (int a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
+          if (!inside) continue;
+          for (int a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);
+        }
+      }
+      if (!fg.facets.empty()) m.facet_groups[g.name] = std::move(fg);
+    } else {
+      std::vector<Index> nodes;
+      for (const auto& b : g.blocks)
+        for (Index v : b.nodes)
+          if (local[v] >= 0) nodes.push_back(local[v]);
+      std::sort(nodes.begin(), nodes.end());
+      nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+      if (!nodes.empty()) m.node_groups[g.name] = std::move(nodes);
+    }
+  }
+  m.orient_cells();
+  try {
+    m.check();
+    m.locate_facets();
+  } catch (const InputError& e) {
+    throw e.in_file(file.path);
+  }
+  return m;
+}
+
+}  // namespace symcontact

@@ -1,0 +1,158 @@
+#include "symcontact/mesh/mesh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <Eigen/Geometry>
+
+#include "symcontact/core/error.hpp"
+
+namespace symcontact {
+
+std::vector<Index> Mesh::group_nodes(const std::string& name) const {
+  std::vector<Index> nodes;
+  if (auto it = facet_groups.find(name); it != facet_groups.end()) {
+    nodes = it->second.facets;
+  } else if (auto jt = node_groups.find(name); jt != node_groups.end()) {
+    nodes = jt->second;
+  } else {
+    throw std::out_of_range("no group named '" + name + "'");
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+bool Mesh::has_group(const std::string& name) const {
+  return facet_groups.count(name) > 0 || node_groups.count(name) > 0;
+}
+
+std::vector<std::string> Mesh::group_names() const {
+  std::vector<std::string> names;
+  for (const auto& g : facet_groups) names.push_back(g.first);
+  for (const auto& g : node_groups) names.push_back(g.first);
+  return names;
+}
+
+double simplex_determinant(const Mesh& m, Index c) {
+  const Index* n = m.cell(c);
+  if (m.dim == 2) {
+    const Eigen::Vector2d a = m.x.col(n[1]) - m.x.col(n[0]);
+    const Eigen::Vector2d b = m.x.col(n[2]) - m.x.col(n[0]);
+    return a.x() * b.y() - a.y() * b.x();
+  }
+  const Vec3 a = m.x.col(n[1]) - m.x.col(n[0]);
+  const Vec3 b = m.x.col(n[2]) - m.x.col(n[0]);
+  const Vec3 d = m.x.col(n[3]) - m.x.col(n[0]);
+  return a.cross(b).dot(d);
+}
+
+Index Mesh::orient_cells() {
+  static const int tri3[] = {0, 2, 1};
+  static const int tri6[] = {0, 2, 1, 5, 4, 3};
+  static const int tet4[] = {0, 2, 1, 3};
+  static const int tet10[] = {0, 2, 1, 3, 6, 5, 4, 7, 9, 8};
+  const int* perm = nullptr;
+  switch (cell_type) {
+    case CellType::kTri3: perm = tri3; break;
+    case CellType::kTri6: perm = tri6; break;
+    case CellType::kTet4: perm = tet4; break;
+    case CellType::kTet10: perm = tet10; break;
+    default: return 0;
+  }
+  const int npc = nodes_per_cell();
+  Index flipped = 0;
+  std::array<Index, 10> tmp{};
+  for (Index c = 0; c < num_cells(); ++c) {
+    if (simplex_determinant(*this, c) >= 0) continue;
+    Index* n = cells.data() + c * npc;
+    for (int k = 0; k < npc; ++k) tmp[k] = n[perm[k]];
+    std::copy(tmp.begin(), tmp.begin() + npc, n);
+    ++flipped;
+  }
+  return flipped;
+}
+
+void Mesh::check() const {
+  if (num_cells() == 0) throw InputError("", "", "the mesh has no cells of dimension " + std::to_string(dim));
+  for (Index j = 0; j < num_nodes(); ++j)
+    for (int i = 0; i < dim; ++i)
+      if (!std::isfinite(x(i, j)))
+        throw InputError("", "node " + std::to_string(j + 1), "coordinate is not a finite number");
+  const Index nn = num_nodes();
+  for (Index v : cells)
+    if (v < 0 || v >= nn) throw InputError("", "", "a cell refers to node index out of range");
+  // Relative size against the bounding box, so that a tolerance for "degenerate" is scale-free.
+  const double diam = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
+  const double ref = std::pow(diam, dim);
+  for (Index c = 0; c < num_cells(); ++c) {
+    const double d = simplex_determinant(*this, c);
+    if (!(d > 1e-14 * ref))
+      throw InputError("", "cell " + std::to_string(c + 1),
+                       d < 0 ? "inverted element (negative Jacobian determinant " + std::to_string(d) + ")"
+                             : "degenerate element (zero area/volume)");
+  }
+}
+
+namespace {
+struct KeyHash {
+  std::size_t operator()(const std::array<Index, 3>& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+}  // namespace
+
+void Mesh::locate_facets() {
+  const CellType ft = facet_cell_type();
+  const int nfv = cell_num_vertices(ft);
+  const int npf = cell_num_nodes(ft);
+  const int nf = cell_num_facets(cell_type);
+  // Boundary-facet lookup keyed by the sorted vertex triple (third entry -1 in 2D).
+  std::unordered_map<std::array<Index, 3>, std::pair<Index, int>, KeyHash> where;
+  auto key_of = [&](const Index* v) {
+    std::array<Index, 3> k{-1, -1, -1};
+    for (int i = 0; i < nfv; ++i) k[i] = v[i];
+    for (int i = 1; i < nfv; ++i)  // insertion sort of at most three entries
+      for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
+    return k;
+  };
+  std::vector<Index> fv(npf);
+  for (Index c = 0; c < num_cells(); ++c) {
+    const Index* n = cell(c);
+    for (int f = 0; f < nf; ++f) {
+      const int* loc = cell_facet_nodes(cell_type, f);
+      for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
+      auto k = key_of(fv.data());
+      auto it = where.find(k);
+      if (it == where.end())
+        where.emplace(k, std::make_pair(c, f));
+      else
+        it->second.first = -1;  // interior facet: seen twice
+    }
+  }
+  for (auto& [name, g] : facet_groups) {
+    const Index m = num_facets(g);
+    g.cell.assign(m, -1);
+    g.local_facet.assign(m, -1);
+    for (Index k = 0; k < m; ++k) {
+      Index* fn = g.facets.data() + k * npf;
+      auto it = where.find(key_of(fn));
+      if (it == where.end() || it->second.first < 0)
+        throw InputError("", name,
+                         "facet " + std::to_string(k + 1) + " of this group is not on the boundary of the body");
+      const Index c = it->second.first;
+      const int f = it->second.second;
+      const int* loc = cell_facet_nodes(cell_type, f);
+      for (int i = 0; i < npf; ++i) fn[i] = cell(c)[loc[i]];  // outward orientation from the cell
+      g.cell[k] = c;
+      g.local_facet[k] = f;
+    }
+  }
+}
+
+}  // namespace symcontact

@@ -1,0 +1,67 @@
+#pragma once
+/// \file mesh.hpp
+/// The mesh of one body: nodes, volume cells of a single Lagrange type, and named groups of
+/// boundary facets and of nodes (from Gmsh physical groups).
+///
+/// Layout: `x` is dim × num_nodes (column j = node j). `cells` holds num_cells × cell_num_nodes(type)
+/// node indices, cell after cell, in Gmsh node ordering (cell_type.hpp). Facet groups hold
+/// facets of type facet_type(cell_type) the same way. Every cell is positively oriented (det J > 0
+/// at its vertices); mesh builders reorient cells read with the other orientation.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "symcontact/core/types.hpp"
+#include "symcontact/mesh/cell_type.hpp"
+
+namespace symcontact {
+
+/// A named set of boundary facets (a Gmsh physical curve in 2D, surface in 3D).
+struct FacetGroup {
+  std::vector<Index> facets;  ///< num_facets × nodes-per-facet node indices
+  /// The cell each facet bounds and its local facet number (filled by Mesh::locate_facets()).
+  std::vector<Index> cell;
+  std::vector<int> local_facet;
+};
+
+struct Mesh {
+  int dim = 2;
+  CellType cell_type = CellType::kTri3;
+  Eigen::MatrixXd x;          ///< dim × num_nodes reference coordinates
+  std::vector<Index> cells;   ///< num_cells × nodes-per-cell
+  std::map<std::string, FacetGroup> facet_groups;
+  std::map<std::string, std::vector<Index>> node_groups;  ///< physical points (and any node set)
+
+  Index num_nodes() const { return x.cols(); }
+  int nodes_per_cell() const { return cell_num_nodes(cell_type); }
+  Index num_cells() const { return static_cast<Index>(cells.size()) / nodes_per_cell(); }
+  CellType facet_cell_type() const { return facet_type(cell_type); }
+  int nodes_per_facet() const { return cell_num_nodes(facet_type(cell_type)); }
+  Index num_facets(const FacetGroup& g) const { return static_cast<Index>(g.facets.size()) / nodes_per_facet(); }
+  const Index* cell(Index c) const { return cells.data() + c * nodes_per_cell(); }
+
+  /// Nodes of a facet group, or of a node group, sorted and unique. Throws std::out_of_range if absent.
+  std::vector<Index> group_nodes(const std::string& name) const;
+  bool has_group(const std::string& name) const;
+  /// All group names, facet groups first.
+  std::vector<std::string> group_names() const;
+
+  /// Finds, for every facet of every group, the cell it bounds and its local facet number, and
+  /// reorders its nodes to the outward orientation of that cell. Throws InputError(file="", key=group)
+  /// when a facet bounds no cell (it is not on the boundary of this body).
+  void locate_facets();
+
+  /// Checks the mesh: finite coordinates, node indices in range, no cell with a non-positive
+  /// Jacobian determinant at any node (inverted or degenerate). Throws InputError naming the cell.
+  void check() const;
+
+  /// Reorients cells whose Jacobian at the first vertex is negative (swaps two vertices and the
+  /// matching edge nodes). Returns the number of cells flipped.
+  Index orient_cells();
+};
+
+/// Signed measure-like determinant of the vertex simplex of cell c (2× area, 6× volume).
+double simplex_determinant(const Mesh& m, Index c);
+
+}  // namespace symcontact

@@ -1,0 +1,188 @@
+#include "symcontact/mesh/structured.hpp"
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <stdexcept>
+
+namespace symcontact {
+
+Mesh rectangle_mesh(double x0, double y0, double x1, double y1, int nx, int ny, int order) {
+  if (nx < 1 || ny < 1) throw std::invalid_argument("rectangle_mesh: nx, ny must be >= 1");
+  Mesh m;
+  m.dim = 2;
+  m.cell_type = CellType::kTri3;
+  auto id = [&](int i, int j) -> Index { return static_cast<Index>(j) * (nx + 1) + i; };
+  m.x.resize(2, static_cast<Index>(nx + 1) * (ny + 1));
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      m.x(0, id(i, j)) = x0 + (x1 - x0) * i / nx;
+      m.x(1, id(i, j)) = y0 + (y1 - y0) * j / ny;
+    }
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const Index a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if ((i + j) % 2 == 0) {
+        m.cells.insert(m.cells.end(), {a, b, c, a, c, d});
+      } else {
+        m.cells.insert(m.cells.end(), {a, b, d, b, c, d});
+      }
+    }
+  auto& bottom = m.facet_groups["bottom"].facets;
+  auto& top = m.facet_groups["top"].facets;
+  for (int i = 0; i < nx; ++i) {
+    bottom.insert(bottom.end(), {id(i, 0), id(i + 1, 0)});
+    top.insert(top.end(), {id(i + 1, ny), id(i, ny)});
+  }
+  auto& left = m.facet_groups["left"].facets;
+  auto& right = m.facet_groups["right"].facets;
+  for (int j = 0; j < ny; ++j) {
+    left.insert(left.end(), {id(0, j + 1), id(0, j)});
+    right.insert(right.end(), {id(nx, j), id(nx, j + 1)});
+  }
+  m.node_groups["corner_ll"] = {id(0, 0)};
+  m.node_groups["corner_lr"] = {id(nx, 0)};
+  m.locate_facets();
+  return order == 2 ? elevate_to_p2(m) : m;
+}
+
+Mesh box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order) {
+  if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("box_mesh: divisions must be >= 1");
+  Mesh m;
+  m.dim = 3;
+  m.cell_type = CellType::kTet4;
+  const int n[3] = {nx, ny, nz};
+  auto id = [&](int i, int j, int k) -> Index {
+    return (static_cast<Index>(k) * (ny + 1) + j) * (nx + 1) + i;
+  };
+  m.x.resize(3, static_cast<Index>(nx + 1) * (ny + 1) * (nz + 1));
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) {
+        const Index v = id(i, j, k);
+        m.x(0, v) = lo.x() + (hi.x() - lo.x()) * i / nx;
+        m.x(1, v) = lo.y() + (hi.y() - lo.y()) * j / ny;
+        m.x(2, v) = lo.z() + (hi.z() - lo.z()) * k / nz;
+      }
+  // Kuhn split: the six tetrahedra along the main diagonal (0,0,0)→(1,1,1), one per permutation
+  // of the axes; identical on every cube, hence conforming.
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& p : perms) {
+          int c[3] = {i, j, k};
+          Index tet[4];
+          tet[0] = id(c[0], c[1], c[2]);
+          for (int s = 0; s < 3; ++s) {
+            ++c[p[s]];
+            tet[s + 1] = id(c[0], c[1], c[2]);
+          }
+          m.cells.insert(m.cells.end(), tet, tet + 4);
+        }
+  m.orient_cells();
+  // Boundary faces: two triangles per boundary square, with diagonals matching the Kuhn split
+  // (every face diagonal goes from the lower to the upper corner of the square).
+  const char* names[3][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}, {"zmin", "zmax"}};
+  for (int ax = 0; ax < 3; ++ax) {
+    const int u = (ax + 1) % 3, v = (ax + 2) % 3;
+    for (int side = 0; side < 2; ++side) {
+      auto& faces = m.facet_groups[names[ax][side]].facets;
+      for (int b = 0; b < n[v]; ++b)
+        for (int a = 0; a < n[u]; ++a) {
+          auto node = [&](int da, int db) {
+            int c[3];
+            c[ax] = side * n[ax];
+            c[u] = a + da;
+            c[v] = b + db;
+            return id(c[0], c[1], c[2]);
+          };
+          faces.insert(faces.end(), {node(0, 0), node(1, 0), node(1, 1)});
+          faces.insert(faces.end(), {node(0, 0), node(1, 1), node(0, 1)});
+        }
+    }
+  }
+  m.node_groups["origin"] = {id(0, 0, 0)};
+  m.locate_facets();
+  return order == 2 ? elevate_to_p2(m) : m;
+}
+
+Mesh elevate_to_p2(const Mesh& p1) {
+  if (p1.cell_type != CellType::kTri3 && p1.cell_type != CellType::kTet4)
+    throw std::invalid_argument("elevate_to_p2: expects a Tri3 or Tet4 mesh");
+  Mesh m;
+  m.dim = p1.dim;
+  m.cell_type = p1.cell_type == CellType::kTri3 ? CellType::kTri6 : CellType::kTet10;
+  m.node_groups = p1.node_groups;
+  std::map<std::pair<Index, Index>, Index> edge_node;
+  std::vector<Eigen::VectorXd> extra;
+  Index next = p1.num_nodes();
+  auto mid = [&](Index a, Index b) {
+    const auto key = std::minmax(a, b);
+    auto it = edge_node.find(key);
+    if (it != edge_node.end()) return it->second;
+    extra.push_back(0.5 * (p1.x.col(a) + p1.x.col(b)));
+    edge_node.emplace(key, next);
+    return next++;
+  };
+  static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+  const bool tri = p1.cell_type == CellType::kTri3;
+  for (Index c = 0; c < p1.num_cells(); ++c) {
+    const Index* v = p1.cell(c);
+    const int nv = tri ? 3 : 4;
+    m.cells.insert(m.cells.end(), v, v + nv);
+    for (int e = 0; e < (tri ? 3 : 6); ++e) {
+      const auto& ed = tri ? tri_edges[e] : tet_edges[e];
+      m.cells.push_back(mid(v[ed[0]], v[ed[1]]));
+    }
+  }
+  for (const auto& [name, g] : p1.facet_groups) {
+    FacetGroup fg;
+    const int nv = tri ? 2 : 3;
+    for (std::size_t k = 0; k < g.facets.size(); k += nv) {
+      const Index* v = g.facets.data() + k;
+      fg.facets.insert(fg.facets.end(), v, v + nv);
+      if (tri) {
+        fg.facets.push_back(mid(v[0], v[1]));
+      } else {
+        for (int e = 0; e < 3; ++e) fg.facets.push_back(mid(v[tri_edges[e][0]], v[tri_edges[e][1]]));
+      }
+    }
+    m.facet_groups[name] = std::move(fg);
+  }
+  m.x.resize(p1.dim, next);
+  m.x.leftCols(p1.num_nodes()) = p1.x;
+  for (std::size_t k = 0; k < extra.size(); ++k) m.x.col(p1.num_nodes() + static_cast<Index>(k)) = extra[k];
+  m.locate_facets();
+  return m;
+}
+
+void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned seed) {
+  std::vector<char> on_boundary(mesh.num_nodes(), 0);
+  for (const auto& [name, g] : mesh.facet_groups)
+    for (Index v : g.facets) on_boundary[v] = 1;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(-amplitude * h, amplitude * h);
+  const int nv = cell_num_vertices(mesh.cell_type), npc = mesh.nodes_per_cell();
+  std::vector<char> is_vertex(mesh.num_nodes(), 0);
+  for (Index c = 0; c < mesh.num_cells(); ++c)
+    for (int a = 0; a < nv; ++a) is_vertex[mesh.cell(c)[a]] = 1;
+  for (Index v = 0; v < mesh.num_nodes(); ++v)
+    if (!on_boundary[v] && is_vertex[v])
+      for (int i = 0; i < mesh.dim; ++i) mesh.x(i, v) += U(rng);
+  if (cell_order(mesh.cell_type) == 2) {
+    static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+    static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+    const bool tri = mesh.dim == 2;
+    for (Index c = 0; c < mesh.num_cells(); ++c) {
+      const Index* n = mesh.cell(c);
+      for (int e = 0; e < npc - nv; ++e) {
+        const auto& ed = tri ? tri_edges[e] : tet_edges[e];
+        mesh.x.col(n[nv + e]) = 0.5 * (mesh.x.col(n[ed[0]]) + mesh.x.col(n[ed[1]]));
+      }
+    }
+  }
+}
+
+}  // namespace symcontact

@@ -1,0 +1,26 @@
+#pragma once
+/// \file structured.hpp
+/// Structured simplex meshes of rectangles and boxes, for tests and benchmarks (no Gmsh needed).
+///  - rectangle_mesh: nx × ny squares, each cut into two triangles along alternating diagonals;
+///    facet groups "left", "right", "bottom", "top"; node groups "corner_ll" (x0, y0), "corner_lr".
+///  - box_mesh: nx × ny × nz cubes, each cut into six tetrahedra (Kuhn/Freudenthal split, conforming);
+///    facet groups "xmin", "xmax", "ymin", "ymax", "zmin", "zmax"; node group "origin".
+/// Order 2 adds edge-midpoint nodes (elevate_to_p2()).
+
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+Mesh rectangle_mesh(double x0, double y0, double x1, double y1, int nx, int ny, int order = 1);
+Mesh box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order = 1);
+
+/// Adds a node at the midpoint of every edge and turns Tri3/Tet4 cells (and their facet groups)
+/// into Tri6/Tet10 with Gmsh node ordering. Node groups keep their vertex nodes.
+Mesh elevate_to_p2(const Mesh& p1);
+
+/// Moves every node not on a facet group by a random offset of at most `amplitude` × the local
+/// spacing `h` in each coordinate (deterministic for a given seed); P2 edge nodes are then reset to the
+/// midpoints of their (straight) edges. For patch tests on distorted meshes.
+void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned seed);
+
+}  // namespace symcontact

@@ -1,0 +1,81 @@
+#pragma once
+/// \file model.hpp
+/// The discrete problem built from a ProblemSpec: the bodies' meshes and materials, the global DOF
+/// numbering, the total energy (elastic terms + external loads), and the Dirichlet conditions of each
+/// load step. Every lookup that can fail on user input (a physical group, a component) fails here, with
+/// the problem file and key, before anything is solved or written.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "symcontact/core/log.hpp"
+#include "symcontact/core/timer.hpp"
+#include "symcontact/energy/energy_sum.hpp"
+#include "symcontact/energy/external_load.hpp"
+#include "symcontact/fem/dof_map.hpp"
+#include "symcontact/materials/linear_elastic.hpp"
+#include "symcontact/mesh/mesh.hpp"
+#include "symcontact/model/problem_spec.hpp"
+#include "symcontact/solvers/fixed_dofs.hpp"
+
+namespace symcontact {
+
+struct Body {
+  std::string name;
+  const BodySpec* spec = nullptr;
+  Mesh mesh;
+  LinearElastic material;
+};
+
+/// One named Dirichlet boundary of a body, for reaction forces.
+struct DirichletBoundary {
+  int body = 0;
+  std::string name;            ///< the group name
+  std::vector<Index> nodes;
+};
+
+class Model {
+ public:
+  /// Reads or meshes every body's mesh and builds the energy. Throws InputError on bad input.
+  /// `mesh_size_override` > 0 replaces spec.mesh_size.
+  static std::unique_ptr<Model> build(const ProblemSpec& spec, const Logger& log, PhaseTimes& times,
+                                      double mesh_size_override = 0.0);
+
+  const ProblemSpec& spec() const { return spec_; }
+  int dim() const { return spec_.dim; }
+  int num_steps() const { return static_cast<int>(spec_.load_factors.size()); }
+  const DofMap& dofs() const { return dofs_; }
+  const std::vector<std::unique_ptr<Body>>& bodies() const { return bodies_; }
+  const EnergySum& energy() const { return energy_; }
+  const std::vector<DirichletBoundary>& dirichlet_boundaries() const { return boundaries_; }
+
+  /// Sets every load term to its factor at load step `step` (0-based).
+  void set_step(int step);
+  /// Dirichlet values at load step `step`.
+  FixedDofs fixed_dofs(int step) const;
+  /// Reaction force of every Dirichlet boundary (dirichlet_boundaries() order): the sum of ∇E(u)
+  /// (= K u − f, the force the support exerts on the body) over the DOFs that boundary holds. A DOF
+  /// held by several conditions counts for the last one only, so the reactions add up to the total.
+  std::vector<Eigen::VectorXd> reactions(const FixedDofs& fixed, const VectorXd& gradient) const;
+  /// The applied external load vector at the current step (Σ s_k f_k).
+  VectorXd external_load() const;
+
+ private:
+  Model(const ProblemSpec& spec) : spec_(spec) {}
+  const ProblemSpec& spec_;
+  DofMap dofs_;
+  std::vector<std::unique_ptr<Body>> bodies_;
+  EnergySum energy_;
+  struct LoadHandle {
+    LinearLoad* term;
+    std::vector<double> factors;
+  };
+  std::vector<LoadHandle> loads_;
+  std::vector<DirichletBoundary> boundaries_;
+};
+
+/// The factor of load step `step`: own[step] when `own` is given, else global[step].
+double step_factor(const std::vector<double>& own, const std::vector<double>& global, int step);
+
+}  // namespace symcontact

@@ -1,0 +1,515 @@
+#include "symcontact/model/problem_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "symcontact/core/error.hpp"
+
+namespace symcontact {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using KeyList = std::initializer_list<std::string_view>;
+
+// ---- formatting ---------------------------------------------------------------------------------
+
+/// Shortest decimal form of `x` that reads back exactly ("0.3", not "0.29999999999999999").
+std::string format_number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  std::ostringstream os;
+  for (int precision = 1; precision <= 17; ++precision) {
+    os.str("");
+    os.precision(precision);
+    os << x;
+    if (std::strtod(os.str().c_str(), nullptr) == x) break;
+  }
+  return os.str();
+}
+
+std::string in_quotes(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+std::string join(KeyList items, std::string_view separator) {
+  std::string s;
+  for (std::string_view item : items) {
+    if (!s.empty()) s += separator;
+    s += item;
+  }
+  return s;
+}
+
+/// "a string (\"abc\")", "an integer (4)", "a table", ...: what the user actually wrote.
+std::string describe(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "a string (" + in_quotes(*node.value<std::string>()) + ")";
+    case toml::node_type::integer:
+      return "an integer (" + std::to_string(*node.value<std::int64_t>()) + ")";
+    case toml::node_type::floating_point:
+    {
+      std::string x = format_number(*node.value<double>());
+      if (x.find_first_of(".eni") == std::string::npos) x += ".0";  // 2.0, not 2
+      return "a floating-point number (" + x + ")";
+    }
+    case toml::node_type::boolean:
+      return std::string("a boolean (") + (*node.value<bool>() ? "true" : "false") + ")";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time";
+    case toml::node_type::date_time:
+      return "a date-time";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::none:
+      break;
+  }
+  return "nothing";
+}
+
+/// Levenshtein distance, for "did you mean" hints on misspelt keys.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+bool valid_name(std::string_view s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  });
+}
+
+std::string child(const std::string& path, std::string_view name) {
+  return path.empty() ? std::string(name) : path + "." + std::string(name);
+}
+
+std::string indexed(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+// ---- the reader ---------------------------------------------------------------------------------
+
+/// Walks the parsed document. Every accessor takes the TOML path of the value (for messages).
+class Reader {
+ public:
+  Reader(std::string file, std::string base_dir) : file_(std::move(file)), base_dir_(std::move(base_dir)) {}
+
+  ProblemSpec read(const toml::table& root) const {
+    ProblemSpec spec;
+    spec.file = file_;
+    check_keys(root, "", {"title", "problem", "steps", "output", "body"});
+    if (const toml::node* n = root.get("title")) spec.title = as_string(*n, "title");
+
+    read_problem(root, spec);
+    read_steps(root, spec);
+    read_output(root, spec);
+
+    const toml::node* bodies = root.get("body");
+    if (!bodies) fail("body", "missing required array of tables [[body]] (at least one body)");
+    const toml::array& list = as_table_array(*bodies, "body", "[[body]]");
+    if (list.empty()) fail("body", "expected at least one [[body]], got an empty array");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      spec.bodies.push_back(read_body(*list[i].as_table(), indexed("body", i), spec));
+      for (std::size_t j = 0; j < i; ++j) {
+        if (spec.bodies[j].name == spec.bodies[i].name) {
+          fail(spec.bodies[i].key + ".name", "duplicate body name " + in_quotes(spec.bodies[i].name) +
+                                                 " (already used by " + spec.bodies[j].key + ")");
+        }
+      }
+    }
+    return spec;
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const {
+    throw InputError(file_, key, message);
+  }
+
+  // ---- structure ----
+
+  /// Every key of `table` must be in `allowed`; the message lists them (and suggests a near miss).
+  void check_keys(const toml::table& table, const std::string& path, KeyList allowed) const {
+    for (auto&& [key, value] : table) {
+      (void)value;
+      const std::string_view name = key.str();
+      if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
+      std::string message = "unknown key " + in_quotes(name);
+      std::string_view best;
+      std::size_t best_distance = 3;  // suggest only near misses (distance <= 2)
+      for (std::string_view candidate : allowed) {
+        const std::size_t d = edit_distance(name, candidate);
+        if (d < best_distance && d < std::max(name.size(), candidate.size())) {
+          best_distance = d;
+          best = candidate;
+        }
+      }
+      if (!best.empty()) message += " (did you mean " + in_quotes(best) + "?)";
+      message += "; allowed keys " + (path.empty() ? std::string("at the top level") : "in " + path) + ": " +
+                 join(allowed, ", ");
+      fail(child(path, name), message);
+    }
+  }
+
+  const toml::table& as_table(const toml::node& node, const std::string& key) const {
+    if (!node.is_table()) fail(key, "expected a table, got " + describe(node));
+    return *node.as_table();
+  }
+
+  /// An array whose elements are all tables (written [[name]] or name = [{...}, ...]).
+  const toml::array& as_table_array(const toml::node& node, const std::string& key, const std::string& header) const {
+    if (!node.is_array()) fail(key, "expected an array of tables (" + header + "), got " + describe(node));
+    const toml::array& array = *node.as_array();
+    for (std::size_t i = 0; i < array.size(); ++i) {
+      if (!array[i].is_table()) fail(indexed(key, i), "expected a table, got " + describe(array[i]));
+    }
+    return array;
+  }
+
+  // ---- scalars ----
+
+  std::string as_string(const toml::node& node, const std::string& key) const {
+    if (!node.is_string()) fail(key, "expected a string, got " + describe(node));
+    return *node.value<std::string>();
+  }
+
+  std::string as_nonempty_string(const toml::node& node, const std::string& key) const {
+    std::string s = as_string(node, key);
+    if (s.empty()) fail(key, "expected a non-empty string, got \"\"");
+    return s;
+  }
+
+  bool as_bool(const toml::node& node, const std::string& key) const {
+    if (!node.is_boolean()) fail(key, "expected a boolean (true or false), got " + describe(node));
+    return *node.value<bool>();
+  }
+
+  std::int64_t as_integer(const toml::node& node, const std::string& key) const {
+    if (!node.is_integer()) fail(key, "expected an integer, got " + describe(node));
+    return *node.value<std::int64_t>();
+  }
+
+  /// A finite number; integers are accepted.
+  double as_number(const toml::node& node, const std::string& key) const {
+    double x = 0.0;
+    if (node.is_integer()) {
+      x = static_cast<double>(*node.value<std::int64_t>());
+    } else if (node.is_floating_point()) {
+      x = *node.value<double>();
+    } else {
+      fail(key, "expected a number, got " + describe(node));
+    }
+    if (!std::isfinite(x)) fail(key, "expected a finite number, got " + format_number(x));
+    return x;
+  }
+
+  std::vector<double> as_number_array(const toml::node& node, const std::string& key) const {
+    if (!node.is_array()) fail(key, "expected an array of numbers, got " + describe(node));
+    const toml::array& array = *node.as_array();
+    std::vector<double> values;
+    values.reserve(array.size());
+    for (std::size_t i = 0; i < array.size(); ++i) values.push_back(as_number(array[i], indexed(key, i)));
+    return values;
+  }
+
+  /// A vector with one component per space dimension.
+  std::vector<double> as_vector(const toml::node& node, const std::string& key, int dim) const {
+    std::vector<double> v = as_number_array(node, key);
+    if (v.size() != static_cast<std::size_t>(dim)) {
+      fail(key, "expected " + std::to_string(dim) + " components (problem.dimension = " + std::to_string(dim) +
+                    "), got " + std::to_string(v.size()));
+    }
+    return v;
+  }
+
+  /// Per-step multipliers: as many as steps.load_factors.
+  std::vector<double> as_factors(const toml::node& node, const std::string& key, const ProblemSpec& spec) const {
+    std::vector<double> f = as_number_array(node, key);
+    if (f.size() != spec.load_factors.size()) {
+      fail(key, "expected " + std::to_string(spec.load_factors.size()) +
+                    " entries (one per load step, as in steps.load_factors), got " + std::to_string(f.size()));
+    }
+    return f;
+  }
+
+  const toml::node& required(const toml::table& table, const std::string& path, std::string_view name,
+                             const std::string& what) const {
+    const toml::node* node = table.get(name);
+    if (!node) fail(child(path, name), "missing required key (expected " + what + ")");
+    return *node;
+  }
+
+  /// `boundary`: the (non-empty) name of a physical group; its existence is checked with the mesh.
+  std::string boundary(const toml::table& t, const std::string& path) const {
+    return as_nonempty_string(required(t, path, "boundary", "the name of a physical group"), child(path, "boundary"));
+  }
+
+  // ---- sections ----
+
+  void read_problem(const toml::table& root, ProblemSpec& spec) const {
+    const toml::node* node = root.get("problem");
+    if (!node) fail("problem", "missing required table [problem] (with at least dimension = 2 or 3)");
+    const toml::table& t = as_table(*node, "problem");
+    check_keys(t, "problem", {"dimension", "model", "order", "mesh_size"});
+
+    const std::int64_t dim = as_integer(required(t, "problem", "dimension", "2 or 3"), "problem.dimension");
+    if (dim != 2 && dim != 3) fail("problem.dimension", "expected 2 or 3, got " + std::to_string(dim));
+    spec.dim = static_cast<int>(dim);
+
+    spec.model = spec.dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD;
+    if (const toml::node* n = t.get("model")) {
+      const std::string model = as_string(*n, "problem.model");
+      if (spec.dim == 2 && model == "plane_strain") {
+        spec.model = AnalysisModel::kPlaneStrain;
+      } else if (spec.dim == 2 && model == "plane_stress") {
+        spec.model = AnalysisModel::kPlaneStress;
+      } else if (spec.dim == 3 && model == "3d") {
+        spec.model = AnalysisModel::kThreeD;
+      } else if (spec.dim == 2) {
+        fail("problem.model",
+             "expected \"plane_strain\" or \"plane_stress\" (problem.dimension = 2), got " + in_quotes(model));
+      } else {
+        fail("problem.model", "expected \"3d\" (problem.dimension = 3), got " + in_quotes(model));
+      }
+    }
+
+    if (const toml::node* n = t.get("order")) {
+      const std::int64_t order = as_integer(*n, "problem.order");
+      if (order != 1 && order != 2) fail("problem.order", "expected 1 or 2, got " + std::to_string(order));
+      spec.order = static_cast<int>(order);
+    }
+
+    if (const toml::node* n = t.get("mesh_size")) {
+      spec.mesh_size = as_number(*n, "problem.mesh_size");
+      if (!(spec.mesh_size > 0.0)) {
+        fail("problem.mesh_size", "expected a number > 0, got " + format_number(spec.mesh_size));
+      }
+    }
+  }
+
+  void read_steps(const toml::table& root, ProblemSpec& spec) const {
+    const toml::node* node = root.get("steps");
+    if (!node) return;
+    const toml::table& t = as_table(*node, "steps");
+    check_keys(t, "steps", {"load_factors"});
+    if (const toml::node* n = t.get("load_factors")) {
+      spec.load_factors = as_number_array(*n, "steps.load_factors");
+      if (spec.load_factors.empty()) {
+        fail("steps.load_factors", "expected at least one load factor, got an empty array");
+      }
+    }
+  }
+
+  void read_output(const toml::table& root, ProblemSpec& spec) const {
+    const toml::node* node = root.get("output");
+    if (!node) return;
+    const toml::table& t = as_table(*node, "output");
+    check_keys(t, "output", {"vtu", "summary"});
+    if (const toml::node* n = t.get("vtu")) spec.output.vtu = as_bool(*n, "output.vtu");
+    if (const toml::node* n = t.get("summary")) spec.output.summary = as_bool(*n, "output.summary");
+  }
+
+  BodySpec read_body(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
+    check_keys(t, path,
+               {"name", "mesh", "group", "body_force", "body_force_factors", "material", "dirichlet", "traction",
+                "pressure"});
+    BodySpec body;
+    body.key = path;
+
+    const std::string name_key = child(path, "name");
+    body.name = as_string(required(t, path, "name", "a string of letters, digits, '_' and '-'"), name_key);
+    if (!valid_name(body.name)) {
+      fail(name_key, "expected a non-empty name of letters, digits, '_' and '-', got " + in_quotes(body.name));
+    }
+
+    read_mesh(t, path, body);
+
+    if (const toml::node* n = t.get("group")) body.group = as_nonempty_string(*n, child(path, "group"));
+
+    if (const toml::node* n = t.get("body_force")) body.body_force = as_vector(*n, child(path, "body_force"), spec.dim);
+    if (const toml::node* n = t.get("body_force_factors")) {
+      const std::string key = child(path, "body_force_factors");
+      if (body.body_force.empty()) {
+        fail(key, "body_force_factors given without body_force (expected a body_force vector too)");
+      }
+      body.body_force_factors = as_factors(*n, key, spec);
+    }
+
+    const std::string material_key = child(path, "material");
+    body.material = read_material(as_table(required(t, path, "material", "a table [body.material]"), material_key),
+                                  material_key);
+
+    if (const toml::node* n = t.get("dirichlet")) {
+      const std::string key = child(path, "dirichlet");
+      const toml::array& list = as_table_array(*n, key, "[[body.dirichlet]]");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        body.dirichlet.push_back(read_dirichlet(*list[i].as_table(), indexed(key, i), spec));
+      }
+    }
+    if (const toml::node* n = t.get("traction")) {
+      const std::string key = child(path, "traction");
+      const toml::array& list = as_table_array(*n, key, "[[body.traction]]");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        body.tractions.push_back(read_traction(*list[i].as_table(), indexed(key, i), spec));
+      }
+    }
+    if (const toml::node* n = t.get("pressure")) {
+      const std::string key = child(path, "pressure");
+      const toml::array& list = as_table_array(*n, key, "[[body.pressure]]");
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        body.pressures.push_back(read_pressure(*list[i].as_table(), indexed(key, i), spec));
+      }
+    }
+    return body;
+  }
+
+  /// mesh: a .geo or .msh file, relative to the problem file's folder, that must exist.
+  void read_mesh(const toml::table& t, const std::string& path, BodySpec& body) const {
+    const std::string key = child(path, "mesh");
+    body.mesh_file = as_nonempty_string(required(t, path, "mesh", "the path of a .geo or .msh file"), key);
+    const fs::path written(body.mesh_file);
+    const std::string extension = written.extension().string();
+    if (extension != ".geo" && extension != ".msh") {
+      fail(key, "expected a Gmsh .geo or .msh file, got " + in_quotes(body.mesh_file) + " (extension " +
+                    (extension.empty() ? std::string("missing") : in_quotes(extension)) + ")");
+    }
+    const fs::path resolved = (written.is_absolute() ? written : fs::path(base_dir_) / written).lexically_normal();
+    body.mesh_path = resolved.string();
+    std::error_code ec;
+    const fs::file_status status = fs::status(resolved, ec);
+    if (!fs::exists(status)) {
+      fail(key, "mesh file " + in_quotes(body.mesh_path) + " does not exist (relative paths are resolved against " +
+                    "the problem file's folder)");
+    }
+    if (fs::is_directory(status)) fail(key, "expected a mesh file, got the folder " + in_quotes(body.mesh_path));
+  }
+
+  MaterialSpec read_material(const toml::table& t, const std::string& path) const {
+    check_keys(t, path, {"model", "E", "nu"});
+    MaterialSpec material;
+    material.key = path;
+    if (const toml::node* n = t.get("model")) {
+      material.model = as_string(*n, child(path, "model"));
+      if (material.model != "linear_elastic") {
+        fail(child(path, "model"), "expected \"linear_elastic\", got " + in_quotes(material.model));
+      }
+    }
+    const std::string e_key = child(path, "E");
+    material.young = as_number(required(t, path, "E", "Young's modulus, a number > 0"), e_key);
+    if (!(material.young > 0.0)) fail(e_key, "expected a number > 0, got " + format_number(material.young));
+
+    const std::string nu_key = child(path, "nu");
+    material.poisson = as_number(required(t, path, "nu", "Poisson's ratio, a number in (-1, 0.5)"), nu_key);
+    if (!(material.poisson > -1.0 && material.poisson < 0.5)) {
+      fail(nu_key, "expected a number in (-1, 0.5), got " + format_number(material.poisson));
+    }
+    return material;
+  }
+
+  DirichletSpec read_dirichlet(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
+    check_keys(t, path, {"boundary", "ux", "uy", "uz", "factors"});
+    DirichletSpec d;
+    d.key = path;
+    d.group = boundary(t, path);
+    constexpr std::string_view components[3] = {"ux", "uy", "uz"};
+    bool any = false;
+    for (int i = 0; i < 3; ++i) {
+      const toml::node* n = t.get(components[i]);
+      if (!n) continue;
+      const std::string key = child(path, components[i]);
+      if (i >= spec.dim) fail(key, "uz is only allowed in 3D (problem.dimension = 3), got problem.dimension = 2");
+      d.value[i] = as_number(*n, key);
+      any = true;
+    }
+    if (!any) {
+      fail(path, std::string("expected at least one imposed component (") + (spec.dim == 3 ? "ux, uy, uz" : "ux, uy") +
+                     "), got none");
+    }
+    if (const toml::node* n = t.get("factors")) d.factors = as_factors(*n, child(path, "factors"), spec);
+    return d;
+  }
+
+  TractionSpec read_traction(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
+    check_keys(t, path, {"boundary", "traction", "factors"});
+    TractionSpec s;
+    s.key = path;
+    s.group = boundary(t, path);
+    s.traction = as_vector(required(t, path, "traction", std::to_string(spec.dim) + " numbers"),
+                           child(path, "traction"), spec.dim);
+    if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
+    return s;
+  }
+
+  PressureSpec read_pressure(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
+    check_keys(t, path, {"boundary", "pressure", "factors"});
+    PressureSpec s;
+    s.key = path;
+    s.group = boundary(t, path);
+    s.pressure = as_number(required(t, path, "pressure", "a number"), child(path, "pressure"));
+    if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
+    return s;
+  }
+
+  std::string file_;
+  std::string base_dir_;
+};
+
+}  // namespace
+
+ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, file_name);
+  } catch (const toml::parse_error& e) {
+    const toml::source_position where = e.source().begin;
+    throw InputError(file_name, "",
+                     "line " + std::to_string(where.line) + ", column " + std::to_string(where.column) + ": " +
+                         std::string(e.description()));
+  }
+  return Reader(file_name, base_dir).read(root);
+}
+
+ProblemSpec read_problem_file(const std::string& path) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InputError(path, "", "cannot read the problem file: it is a folder");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InputError(path, "",
+                     fs::exists(path, ec) ? "cannot open the problem file for reading"
+                                          : "cannot open the problem file: it does not exist");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path, "", "error while reading the problem file");
+
+  fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  const fs::path absolute = fs::absolute(folder, ec);
+  return parse_problem(text.str(), path, (ec ? folder : absolute).lexically_normal().string());
+}
+
+}  // namespace symcontact

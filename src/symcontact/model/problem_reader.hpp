@@ -1,0 +1,38 @@
+#pragma once
+/// \file problem_reader.hpp
+/// Reads a TOML problem file (the schema is documented key by key in docs/input.md) into a
+/// ProblemSpec (problem_spec.hpp). The reader checks everything that can be checked without loading
+/// a mesh:
+///
+/// - syntax (toml++ parse errors, reported with line and column);
+/// - unknown keys in every table (the message lists the keys allowed there);
+/// - types (an integer is accepted where a number is expected, never the other way round);
+/// - values: every number finite (TOML allows nan and inf), ranges (E > 0, −1 < ν < 0.5, …),
+///   vector lengths (`problem.dimension` components), per-load factor arrays as long as
+///   `steps.load_factors`, unique body names, mesh files that exist and end in .geo or .msh.
+///
+/// Every failure throws InputError(file, key, message) where `key` is the TOML path of the offending
+/// value with bodies counted from 0 ("body[1].material.nu", "body[0].dirichlet[2]") and `message`
+/// says what was expected and what was found ("expected a number in (-1, 0.5), got 0.5"). Syntax
+/// errors have an empty key and a message starting "line L, column C: ".
+///
+/// Physical group names (body `group`, `boundary`) are only checked for being non-empty strings:
+/// whether they exist in the mesh is checked when the meshes are loaded, using the `key` of each
+/// spec item.
+
+#include <string>
+
+#include "symcontact/model/problem_spec.hpp"
+
+namespace symcontact {
+
+/// Reads and validates the problem file at `path`. Mesh paths are resolved against the folder of
+/// `path` (made absolute). Throws InputError (file = `path`) if the file cannot be read or is invalid.
+ProblemSpec read_problem_file(const std::string& path);
+
+/// Validates the TOML document `toml_text`. `file_name` is used in error messages and stored in
+/// ProblemSpec::file; relative mesh paths are resolved against `base_dir` (a folder; "" means the
+/// current folder). Throws InputError on the first error found.
+ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir);
+
+}  // namespace symcontact

@@ -1,0 +1,86 @@
+#include "symcontact/post/stress_recovery.hpp"
+
+#include "symcontact/fem/cell_dispatch.hpp"
+#include "symcontact/fem/element_geometry.hpp"
+#include "symcontact/fem/shape_functions.hpp"
+
+namespace symcontact {
+
+Eigen::Matrix<double, 6, 1> to_voigt6(const Eigen::Matrix3d& t) {
+  Eigen::Matrix<double, 6, 1> v;
+  v << t(0, 0), t(1, 1), t(2, 2), t(0, 1), t(1, 2), t(0, 2);
+  return v;
+}
+
+BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
+                          const VectorXd& u) {
+  BodyFields f;
+  const Index nn = mesh.num_nodes(), nc = mesh.num_cells();
+  const int D = mesh.dim;
+  f.displacement = Eigen::MatrixXd::Zero(3, nn);
+  for (Index v = 0; v < nn; ++v)
+    for (int i = 0; i < D; ++i) f.displacement(i, v) = u[dofs.dof(body, v, i)];
+  f.strain = Eigen::MatrixXd::Zero(6, nn);
+  f.stress = Eigen::MatrixXd::Zero(6, nn);
+  f.von_mises = Eigen::VectorXd::Zero(nn);
+  f.cell_stress = Eigen::MatrixXd::Zero(6, nc);
+  f.cell_von_mises = Eigen::VectorXd::Zero(nc);
+  Eigen::VectorXd weight = Eigen::VectorXd::Zero(nn);
+
+  // Evaluation points: the cell's own nodes (nodal values) and its quadrature points (cell values).
+  QuadratureRule at_nodes;
+  at_nodes.dim = D;
+  at_nodes.points = reference_nodes(mesh.cell_type);
+  at_nodes.weights.assign(mesh.nodes_per_cell(), 1.0);
+  const Tabulation tn = tabulate(mesh.cell_type, at_nodes);
+  const Tabulation tq = tabulate(mesh.cell_type, simplex_quadrature(D, cell_order(mesh.cell_type) == 1 ? 0 : 2));
+
+  dispatch_cell(mesh.cell_type, [&](auto Dc, auto NNc) {
+    constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;
+    Eigen::Matrix<double, NN, DD> G;
+    Eigen::Matrix<double, DD, NN> U;
+    auto strain_at = [&](const Eigen::Matrix<double, DD, NN>& X, const double* dN, double& det) {
+      det = physical_gradients<DD, NN>(X, dN, G);
+      Eigen::Matrix3d eps = Eigen::Matrix3d::Zero();
+      if (det > 0) {
+        const Eigen::Matrix<double, DD, DD> H = U * G;  // ∇u
+        eps.topLeftCorner<DD, DD>() = 0.5 * (H + H.transpose());
+      }
+      return eps;
+    };
+    for (Index c = 0; c < nc; ++c) {
+      const Index* n = mesh.cell(c);
+      const auto X = gather_coordinates<DD, NN>(mesh.x, n);
+      for (int a = 0; a < NN; ++a) U.col(a) = f.displacement.col(n[a]).template head<DD>();
+      double det = 0.0, vol = 0.0;
+      Eigen::Matrix3d sig_avg = Eigen::Matrix3d::Zero();
+      for (int q = 0; q < tq.rule.size(); ++q) {
+        const Eigen::Matrix3d eps = strain_at(X, tq.dN_at(q), det);
+        sig_avg += tq.rule.weights[q] * det * material.stress(eps);
+        vol += tq.rule.weights[q] * det;
+      }
+      if (vol > 0) sig_avg /= vol;
+      f.cell_stress.col(c) = to_voigt6(sig_avg);
+      f.cell_von_mises[c] = von_mises(sig_avg);
+      for (int a = 0; a < NN; ++a) {
+        const Eigen::Matrix3d eps = strain_at(X, tn.dN_at(a), det);
+        f.strain.col(n[a]) += vol * to_voigt6(eps);
+        f.stress.col(n[a]) += vol * to_voigt6(material.stress(eps));
+        weight[n[a]] += vol;
+      }
+    }
+  });
+  for (Index v = 0; v < nn; ++v) {
+    if (weight[v] > 0) {
+      f.strain.col(v) /= weight[v];
+      f.stress.col(v) /= weight[v];
+    }
+    Eigen::Matrix3d s;
+    const auto& c = f.stress.col(v);
+    s << c[0], c[3], c[5], c[3], c[1], c[4], c[5], c[4], c[2];
+    f.von_mises[v] = von_mises(s);
+  }
+  return f;
+}
+
+}  // namespace symcontact

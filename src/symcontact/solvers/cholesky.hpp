@@ -1,0 +1,37 @@
+#pragma once
+/// \file cholesky.hpp
+/// Sparse Cholesky factorisation A = L Lᵀ of a symmetric positive definite matrix by CHOLMOD
+/// (supernodal or simplicial, CHOLMOD's choice), through Eigen's CholmodSupport. Only the lower
+/// triangle of A is read. The symbolic analysis can be reused across factorisations of matrices with
+/// the same pattern. This is also the "physical floor" that contact solves are measured against.
+
+#include <memory>
+
+#include "symcontact/core/types.hpp"
+
+namespace symcontact {
+
+class CholeskySolver {
+ public:
+  CholeskySolver();
+  ~CholeskySolver();
+  CholeskySolver(const CholeskySolver&) = delete;
+  CholeskySolver& operator=(const CholeskySolver&) = delete;
+
+  /// Fill-reducing ordering and symbolic factorisation (pattern of `lower` only).
+  void analyze(const SparseMatrix& lower);
+  /// Numeric factorisation. Throws SolveError when A is not positive definite (for an elastic
+  /// stiffness: a body free to move rigidly, i.e. too few Dirichlet conditions).
+  void factorize(const SparseMatrix& lower);
+  /// analyze() when needed (first call or new size), then factorize().
+  void compute(const SparseMatrix& lower);
+  VectorXd solve(const VectorXd& b) const;
+  /// Number of nonzeros in the factor L (after factorize()).
+  double factor_nonzeros() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace symcontact

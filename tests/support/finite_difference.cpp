@@ -1,0 +1,49 @@
+#include "support/finite_difference.hpp"
+
+#include <algorithm>
+#include <random>
+
+namespace symcontact::testing {
+
+FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h, int directions, int max_dofs,
+                           unsigned seed) {
+  FdResult r;
+  const Index n = u.size();
+  VectorXd g = VectorXd::Zero(n);
+  term.add_gradient(u, g);
+  std::mt19937 rng(seed);
+  std::vector<Index> idx(n);
+  for (Index i = 0; i < n; ++i) idx[i] = i;
+  if (n > max_dofs) {
+    std::shuffle(idx.begin(), idx.end(), rng);
+    idx.resize(max_dofs);
+  }
+  const double gscale = std::max(1.0, g.cwiseAbs().maxCoeff());
+  VectorXd up = u, um = u;
+  for (Index i : idx) {
+    up[i] += h;
+    um[i] -= h;
+    const double fd = (term.value(up) - term.value(um)) / (2 * h);
+    up[i] = um[i] = u[i];
+    r.gradient_error = std::max(r.gradient_error, std::abs(fd - g[i]) / gscale);
+  }
+  TripletSink sink;
+  term.add_hessian(u, sink);
+  const SparseMatrix H = sink.to_matrix(n);
+  std::normal_distribution<double> N01;
+  for (int k = 0; k < directions; ++k) {
+    VectorXd d(n);
+    for (Index i = 0; i < n; ++i) d[i] = N01(rng);
+    d /= d.norm();
+    const VectorXd Hd = H * d;
+    VectorXd gp = VectorXd::Zero(n), gm = VectorXd::Zero(n);
+    term.add_gradient(u + h * d, gp);
+    term.add_gradient(u - h * d, gm);
+    const VectorXd fd = (gp - gm) / (2 * h);
+    const double scale = std::max(1.0, Hd.cwiseAbs().maxCoeff());
+    r.hessian_error = std::max(r.hessian_error, (fd - Hd).cwiseAbs().maxCoeff() / scale);
+  }
+  return r;
+}
+
+}  // namespace symcontact::testing

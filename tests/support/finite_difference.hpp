@@ -1,0 +1,21 @@
+#pragma once
+/// \file finite_difference.hpp
+/// The one shared finite-difference check of an EnergyTerm (STYLE.md §5): the gradient against
+/// central differences of value(), and the Hessian (applied to random directions) against central
+/// differences of the gradient. Used for every energy term.
+
+#include "symcontact/energy/energy_term.hpp"
+
+namespace symcontact::testing {
+
+struct FdResult {
+  double gradient_error = 0.0;  ///< max_i |g_i − (E(u+h e_i) − E(u−h e_i))/2h| / max(1, ‖g‖∞)
+  double hessian_error = 0.0;   ///< max over directions of ‖H d − (g(u+hd) − g(u−hd))/2h‖∞ / max(1, ‖H d‖∞)
+};
+
+/// Checks `term` at state u. Gradient components are checked on all DOFs when u.size() ≤ max_dofs,
+/// else on a random subset of max_dofs; the Hessian on `directions` random unit directions.
+FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h = 1e-6, int directions = 5,
+                           int max_dofs = 400, unsigned seed = 1);
+
+}  // namespace symcontact::testing
