@@ -1,0 +1,104 @@
+#include "symcontact/mesh/gmsh_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/energy/external_load.hpp"
+
+using namespace symcontact;
+
+namespace {
+const std::string kGeo = std::string(SYMCONTACT_TEST_DATA) + "/geo/";
+}
+
+TEST(GmshIo, TwoBodiesFromOneGeoGetTheirOwnNodes) {
+  MeshReadOptions opt;
+  opt.dim = 2;
+  const MeshFile f = read_mesh_file(kGeo + "two_blocks.geo", opt);
+  const Mesh lower = extract_body(f, 2, "lower", "body[0].group");
+  const Mesh upper = extract_body(f, 2, "upper", "body[1].group");
+  EXPECT_EQ(lower.cell_type, CellType::kTri3);
+  ASSERT_TRUE(lower.facet_groups.count("interface"));
+  ASSERT_TRUE(upper.facet_groups.count("interface"));
+  EXPECT_FALSE(upper.facet_groups.count("bottom"));
+  EXPECT_TRUE(lower.node_groups.count("origin"));
+  // The interface's length is 1 seen from either body, and the outward normals are opposite.
+  Eigen::VectorXd nl, nu;
+  EXPECT_NEAR(facet_group_measure(lower, lower.facet_groups.at("interface"), &nl), 1.0, 1e-12);
+  EXPECT_NEAR(facet_group_measure(upper, upper.facet_groups.at("interface"), &nu), 1.0, 1e-12);
+  EXPECT_NEAR(nl[1], 1.0, 1e-12);
+  EXPECT_NEAR(nu[1], -1.0, 1e-12);
+  for (Index v = 0; v < upper.num_nodes(); ++v) EXPECT_GE(upper.x(1, v), 1.0 - 1e-12);
+}
+
+TEST(GmshIo, MeshSizeRefines) {
+  MeshReadOptions opt;
+  opt.dim = 2;
+  const Mesh coarse = extract_body(read_mesh_file(kGeo + "two_blocks.geo", opt), 2, "lower", "g");
+  opt.mesh_size = 0.05;
+  const Mesh fine = extract_body(read_mesh_file(kGeo + "two_blocks.geo", opt), 2, "lower", "g");
+  EXPECT_GT(fine.num_cells(), 10 * coarse.num_cells());
+}
+
+TEST(GmshIo, SecondOrderNodesLieOnTheCircle) {
+  MeshReadOptions opt;
+  opt.dim = 2;
+  opt.order = 2;
+  const Mesh m = extract_body(read_mesh_file(kGeo + "disk.geo", opt), 2, "disk", "g");
+  EXPECT_EQ(m.cell_type, CellType::kTri6);
+  const auto& rim = m.facet_groups.at("rim");
+  ASSERT_GT(m.num_facets(rim), 8);
+  for (Index k = 0; k < m.num_facets(rim); ++k)
+    EXPECT_NEAR(m.x.col(rim.facets[3 * k + 2]).norm(), 1.0, 1e-10);  // the edge node of a Line3
+  // With curved edges the rim length converges fast to 2π.
+  EXPECT_NEAR(facet_group_measure(m, rim), 2 * M_PI, 1e-4);
+}
+
+TEST(GmshIo, TetrahedraFromOpenCascadeBox) {
+  for (int order = 1; order <= 2; ++order) {
+    MeshReadOptions opt;
+    opt.dim = 3;
+    opt.order = order;
+    opt.mesh_size = 0.4;
+    const Mesh m = extract_body(read_mesh_file(kGeo + "cube.geo", opt), 3, "cube", "g");
+    EXPECT_EQ(m.cell_type, order == 1 ? CellType::kTet4 : CellType::kTet10);
+    for (const char* face : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
+      ASSERT_TRUE(m.facet_groups.count(face)) << face;
+      EXPECT_NEAR(facet_group_measure(m, m.facet_groups.at(face)), 1.0, 1e-12) << face;
+    }
+  }
+}
+
+TEST(GmshIo, MissingGroupNamesTheKeyAndTheKnownGroups) {
+  MeshReadOptions opt;
+  const MeshFile f = read_mesh_file(kGeo + "two_blocks.geo", opt);
+  try {
+    extract_body(f, 2, "middle", "body[0].group");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "body[0].group");
+    EXPECT_NE(e.message().find("'middle'"), std::string::npos) << e.what();
+    EXPECT_NE(e.message().find("'lower'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GmshIo, MalformedFilesAreInputErrors) {
+  const std::string dir = ::testing::TempDir();
+  {
+    std::ofstream(dir + "bad.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\ngarbage\n";
+    std::ofstream(dir + "bad.geo") << "Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n";
+    std::ofstream(dir + "mesh.stl") << "solid\n";
+  }
+  MeshReadOptions opt;
+  for (const std::string name : {"bad.msh", "bad.geo", "mesh.stl", "absent.msh"}) {
+    try {
+      read_mesh_file(dir + name, opt);
+      FAIL() << name;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), dir + name);
+      EXPECT_FALSE(e.message().empty());
+    }
+  }
+}

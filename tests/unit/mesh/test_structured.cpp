@@ -1,0 +1,60 @@
+#include "symcontact/mesh/structured.hpp"
+
+#include <gtest/gtest.h>
+
+#include "symcontact/core/error.hpp"
+
+using namespace symcontact;
+
+TEST(StructuredMesh, RectangleAndBoxArePositiveAndFacetsLocated) {
+  for (int order = 1; order <= 2; ++order) {
+    Mesh r = rectangle_mesh(0, 0, 2, 1, 4, 3, order);
+    EXPECT_EQ(r.num_cells(), 24);
+    EXPECT_EQ(r.num_nodes(), order == 1 ? 20 : (9 * 7));
+    EXPECT_NO_THROW(r.check());
+    EXPECT_EQ(r.num_facets(r.facet_groups.at("top")), 4);
+    EXPECT_EQ(r.num_facets(r.facet_groups.at("left")), 3);
+    Mesh b = box_mesh(Vec3(0, 0, 0), Vec3(1, 2, 3), 2, 2, 2, order);
+    EXPECT_EQ(b.num_cells(), 48);
+    EXPECT_NO_THROW(b.check());
+    EXPECT_EQ(b.num_facets(b.facet_groups.at("zmax")), 8);
+    EXPECT_EQ(b.num_nodes(), order == 1 ? 27 : 125);
+  }
+}
+
+TEST(Mesh, OrientCellsFlipsClockwiseTrianglesConsistently) {
+  Mesh m = rectangle_mesh(0, 0, 1, 1, 2, 2, 2);
+  // Flip every other cell by hand (swap v1, v2 and the edge nodes), then reorient.
+  for (Index c = 0; c < m.num_cells(); c += 2) {
+    Index* n = m.cells.data() + c * 6;
+    std::swap(n[1], n[2]);
+    std::swap(n[3], n[5]);
+  }
+  EXPECT_EQ(m.orient_cells(), m.num_cells() / 2);
+  EXPECT_NO_THROW(m.check());
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    const Index* n = m.cell(c);
+    // Edge nodes sit at the midpoints of the edges they are named for.
+    EXPECT_TRUE(m.x.col(n[3]).isApprox(0.5 * (m.x.col(n[0]) + m.x.col(n[1]))));
+    EXPECT_TRUE(m.x.col(n[4]).isApprox(0.5 * (m.x.col(n[1]) + m.x.col(n[2]))));
+    EXPECT_TRUE(m.x.col(n[5]).isApprox(0.5 * (m.x.col(n[2]) + m.x.col(n[0]))));
+  }
+}
+
+TEST(Mesh, CheckRejectsDegenerateCellNamingIt) {
+  Mesh m = rectangle_mesh(0, 0, 1, 1, 1, 1, 1);
+  m.x.col(m.cell(1)[2]) = 0.5 * (m.x.col(m.cell(1)[0]) + m.x.col(m.cell(1)[1]));  // collapse cell 2
+  try {
+    m.check();
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cell"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Mesh, FacetNotOnBoundaryIsRejected) {
+  Mesh m = rectangle_mesh(0, 0, 2, 1, 2, 1, 1);
+  // The interior vertical edge x = 1 is shared by two cells.
+  m.facet_groups["inside"].facets = {1, 4};
+  EXPECT_THROW(m.locate_facets(), InputError);
+}
