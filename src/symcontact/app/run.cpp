@@ -1,5 +1,6 @@
 #include "symcontact/app/run.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -11,7 +12,9 @@
 #include "symcontact/io/pvd_writer.hpp"
 #include "symcontact/io/vtu_writer.hpp"
 #include "symcontact/model/model.hpp"
+#include "symcontact/post/contact_results.hpp"
 #include "symcontact/post/stress_recovery.hpp"
+#include "symcontact/solvers/contact_solver.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
 namespace symcontact {
@@ -35,15 +38,80 @@ Json timings_json(const PhaseTimes& t) {
 
 std::vector<double> to_vector(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
 
-std::string step_file(const std::string& body, int step) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "_%04d.vtu", step);
+std::string step_file(const std::string& body, int step, const char* ext = "vtu") {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "_%04d.%s", step, ext);
   return body + buf;
 }
 
-void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd& u, const std::string& path) {
+void write_contact_csv(const Model& model, const ContactPairResult& r, const std::string& path) {
+  write_file_atomically(path, [&](std::ostream& os) {
+    const int D = model.dim();
+    os << "side,surface,node,x,y" << (D == 3 ? ",z" : "") << ",gap,pressure,fx,fy" << (D == 3 ? ",fz" : "")
+       << ",status\n";
+    os.precision(17);
+    for (std::size_t side = 0; side < r.sides.size(); ++side) {
+      const auto& sr = r.sides[side];
+      const ContactSurface& s = model.contacts().surfaces[sr.surface];
+      for (Index k = 0; k < s.num_nodes(); ++k) {
+        os << (side == 0 ? "a" : "b") << ',' << s.name << ',' << s.nodes[k] + 1;
+        for (int i = 0; i < D; ++i) os << ',' << sr.x(i, k);
+        os << ',';
+        if (std::isfinite(sr.gap[k])) os << sr.gap[k];
+        os << ',' << sr.pressure[k];
+        for (int i = 0; i < D; ++i) os << ',' << sr.force(i, k);
+        os << ',' << (sr.status[k] ? "contact" : "open") << '\n';
+      }
+    }
+  });
+}
+
+ContactSolveOptions contact_options(const ProblemSpec& spec, const Logger& log) {
+  ContactSolveOptions o;
+  o.geometry_tolerance = spec.contact_solver.geometry_tolerance;
+  o.max_geometry_iterations = spec.contact_solver.max_geometry_iterations;
+  if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
+  o.ipopt.string_options = spec.contact_solver.ipopt_string;
+  o.ipopt.numeric_options = spec.contact_solver.ipopt_numeric;
+  o.ipopt.integer_options = spec.contact_solver.ipopt_integer;
+  return o;
+}
+
+/// Contact fields of one body at its nodes (zero away from contact surfaces; status −1 there).
+struct BodyContactFields {
+  Eigen::VectorXd pressure, gap, status;
+  Eigen::MatrixXd force;  ///< 3 × n
+};
+
+BodyContactFields body_contact_fields(const Model& model, int b, const std::vector<ContactPairResult>& results) {
+  const Index n = model.bodies()[b]->mesh.num_nodes();
+  BodyContactFields f{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Eigen::VectorXd::Constant(n, -1.0),
+                      Eigen::MatrixXd::Zero(3, n)};
+  for (const auto& r : results)
+    for (const auto& side : r.sides) {
+      const ContactSurface& s = model.contacts().surfaces[side.surface];
+      if (s.body != b) continue;
+      for (Index k = 0; k < s.num_nodes(); ++k) {
+        const Index v = s.nodes[k];
+        f.pressure[v] = std::max(f.pressure[v], side.pressure[k]);
+        f.gap[v] = std::isfinite(side.gap[k]) ? side.gap[k] : 0.0;
+        f.status[v] = std::max(f.status[v], static_cast<double>(side.status[k]));
+        f.force.col(v).head(s.dim) += side.force.col(k);
+      }
+    }
+  return f;
+}
+
+void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd& u, const std::string& path,
+                    const BodyContactFields* contact = nullptr) {
   const BodyFields f = recover_fields(body.mesh, dofs, b, body.material, u);
   VtuWriter w(body.mesh);
+  if (contact) {
+    w.add_point_data("contact_pressure", contact->pressure);
+    w.add_point_data("contact_gap", contact->gap);
+    w.add_point_data("contact_status", contact->status);
+    w.add_point_data("contact_force", contact->force);
+  }
   w.add_point_data("displacement", f.displacement);
   w.add_point_data("strain", f.strain, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
   w.add_point_data("stress", f.stress, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
@@ -105,24 +173,66 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     PhaseTimes st;
     model->set_step(step);
     const FixedDofs fixed = model->fixed_dofs(step);
+    const bool has_contact = !model->contacts().empty();
     EquilibriumReport rep;
+    ContactSolveReport crep;
     try {
-      rep = solve_equilibrium(model->energy(), fixed, u);
+      if (has_contact)
+        crep = solve_contact(model->energy(), fixed, model->contacts(), dofs, u, contact_options(spec, log), log);
+      else
+        rep = solve_equilibrium(model->energy(), fixed, u);
     } catch (const SolveError& e) {
       result.status = RunStatus::kSolveFailed;
       result.message = "load step " + std::to_string(step + 1) + ": " + e.what();
       summary["status"] = "solve_failed";
       summary["message"] = result.message;
+      // The last iterate, for inspection (not part of the collection).
+      Json failed = Json::array();
+      for (int b = 0; b < dofs.num_bodies(); ++b) {
+        const std::string name = model->bodies()[b]->name + "_failed_step" + std::to_string(step + 1) + ".vtu";
+        write_body_vtu(*model->bodies()[b], dofs, b, u, (fs::path(options.out_dir) / name).string());
+        failed.push_back(name);
+      }
+      summary["failed_iterate_files"] = failed;
       write_summary();
       return result;
     }
-    st.merge(rep.times);
     Json js = Json::object();
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
-    js["newton_iterations"] = rep.iterations;
-    js["residual"] = rep.residual;
-    js["num_free_dofs"] = static_cast<double>(rep.num_free);
+    if (has_contact) {
+      st.merge(crep.times);
+      js["geometry_iterations"] = crep.geometry_iterations;
+      js["ipopt_iterations"] = crep.ipopt_iterations;
+      js["ipopt_iterations_per_geometry_iteration"] = std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
+      js["geometry_change_history"] = crep.change_history;
+      js["ipopt_status"] = crep.ipopt_status;
+      js["num_constraints"] = static_cast<double>(crep.num_constraints);
+      js["num_free_dofs"] = static_cast<double>(crep.num_free);
+    } else {
+      st.merge(rep.times);
+      js["newton_iterations"] = rep.iterations;
+      js["residual"] = rep.residual;
+      js["num_free_dofs"] = static_cast<double>(rep.num_free);
+    }
+    std::vector<ContactPairResult> cres;
+    if (has_contact) {
+      ScopedPhase t(st, "output");
+      cres = contact_results(model->contacts(), dofs, u, crep.contact_force);
+      Json pairs = Json::array();
+      for (const auto& r : cres) {
+        Json jp = Json::object();
+        jp["name"] = r.name;
+        jp["total_force"] = to_vector(r.total_force);
+        jp["max_pressure"] = r.max_pressure;
+        jp[spec.dim == 2 ? "contact_length" : "contact_area"] = r.contact_measure;
+        const std::string csv = "contact_" + step_file(r.name, step + 1, "csv");
+        write_contact_csv(*model, r, (fs::path(options.out_dir) / csv).string());
+        jp["csv"] = csv;
+        pairs.push_back(jp);
+      }
+      js["contact"] = pairs;
+    }
     // Reactions: ∇E(u) at the Dirichlet boundaries' nodes.
     VectorXd g = VectorXd::Zero(dofs.num_dofs());
     model->energy().add_gradient(u, g);
@@ -146,7 +256,12 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
       for (int b = 0; b < dofs.num_bodies(); ++b) {
         const Body& body = *model->bodies()[b];
         const std::string name = step_file(body.name, step + 1);
-        write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string());
+        if (has_contact) {
+          const BodyContactFields cf = body_contact_fields(*model, b, cres);
+          write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string(), &cf);
+        } else {
+          write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string());
+        }
         pvd.add(step + 1, b, name, body.name);
       }
       pvd.write();
@@ -157,7 +272,10 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     result.steps_done = step + 1;
     write_summary();
     std::ostringstream s;
-    s << "iterations " << rep.iterations << ", residual " << rep.residual;
+    if (has_contact)
+      s << "geometry iterations " << crep.geometry_iterations << ", IPOPT iterations " << crep.ipopt_iterations;
+    else
+      s << "iterations " << rep.iterations << ", residual " << rep.residual;
     log.progress("load step", step + 1, nsteps, s.str());
   }
   summary["status"] = "ok";

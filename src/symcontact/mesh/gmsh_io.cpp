@@ -226,4 +226,33 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   return m;
 }
 
+Mesh extract_surface(const MeshFile& file, int dim, const std::string& group, const std::string& group_key) {
+  const MeshFile::Group* g = file.find(group, dim - 1);
+  if (!g) throw InputError(file.path, group_key, "no physical group '" + group + "' of dimension " + std::to_string(dim - 1));
+  Mesh m;
+  m.dim = dim;
+  std::vector<Index> local(file.x.cols(), -1);
+  Index n = 0;
+  FacetGroup fg;
+  bool have_type = false;
+  for (const auto& b : g->blocks) {
+    if (cell_dim(b.type) != dim - 1) continue;
+    const CellType ct = cell_type_of(dim, cell_order(b.type));
+    if (have_type && ct != m.cell_type)
+      throw InputError(file.path, group_key, "the surface mixes element types");
+    m.cell_type = ct;
+    have_type = true;
+    for (Index v : b.nodes) {
+      if (local[v] < 0) local[v] = n++;
+      fg.facets.push_back(local[v]);
+    }
+  }
+  if (!have_type) throw InputError(file.path, group_key, "group '" + group + "' holds no facets");
+  m.x.resize(dim, n);
+  for (Index v = 0; v < file.x.cols(); ++v)
+    if (local[v] >= 0) m.x.col(local[v]) = file.x.col(v).head(dim);
+  m.facet_groups[group] = std::move(fg);
+  return m;
+}
+
 }  // namespace symcontact

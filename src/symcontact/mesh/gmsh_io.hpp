@@ -50,4 +50,9 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
 /// facets located. Throws InputError(file, key = `group_key`) when the group is absent or empty.
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key);
 
+/// A rigid surface: the facets of group `group` (dimension dim − 1), with no cells. The mesh's cell_type is
+/// the cell type whose facets these are; facets keep the orientation of the file. Throws InputError(file,
+/// key = `group_key`) when the group is absent or holds no facets.
+Mesh extract_surface(const MeshFile& file, int dim, const std::string& group, const std::string& group_key);
+
 }  // namespace symcontact

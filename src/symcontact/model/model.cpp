@@ -109,8 +109,93 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
       m->boundaries_.push_back({b, ds.group, body.mesh.group_nodes(ds.group)});
     }
   }
+  m->build_contacts(log, mesh_size);
   m->set_step(0);
   return m;
+}
+
+int Model::body_index(const std::string& name) const {
+  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b)
+    if (bodies_[b]->name == name) return b;
+  return -1;
+}
+
+void Model::build_contacts(const Logger& log, double mesh_size) {
+  const ProblemSpec& spec = spec_;
+  const int D = spec.dim;
+  auto surface = [&](const std::string& body, const std::string& group, const std::string& key) {
+    const int b = body_index(body);
+    if (b < 0) throw InputError(spec.file, key, "no body named '" + body + "'");
+    const Mesh& mesh = bodies_[b]->mesh;
+    if (!mesh.facet_groups.count(group))
+      throw InputError(spec.file, key,
+                       "body '" + body + "' (mesh " + bodies_[b]->spec->mesh_file + ") has no boundary group '" + group +
+                           "'; its groups: " + available_groups(mesh));
+    const std::string name = body + "." + group;
+    for (int s = 0; s < static_cast<int>(contacts_.surfaces.size()); ++s)
+      if (contacts_.surfaces[s].name == name) return s;
+    contacts_.surfaces.push_back(make_contact_surface(mesh, group, b, name));
+    return static_cast<int>(contacts_.surfaces.size()) - 1;
+  };
+  auto vec3 = [&](const std::vector<double>& v) {
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    for (int i = 0; i < D && i < static_cast<int>(v.size()); ++i) r[i] = v[i];
+    return r;
+  };
+  rigid_meshes_.reserve(spec.contacts.size());
+  for (const ContactSpec& cs : spec.contacts) {
+    ContactPair pair;
+    pair.name = cs.name;
+    pair.surface_a = surface(cs.body_a, cs.boundary_a, cs.key + ".a");
+    pair.mode = cs.mode == "one-pass" ? ContactMode::kOnePass : ContactMode::kSymmetric;
+    pair.slave_is_b = cs.slave == "b";
+    const ContactSurface* other = nullptr;
+    if (cs.obstacle) {
+      const ObstacleSpec& os = *cs.obstacle;
+      if (os.type == "mesh") {
+        MeshReadOptions opt;
+        opt.dim = D;
+        opt.order = spec.order;
+        opt.mesh_size = mesh_size;
+        const MeshFile f = read_mesh_file(os.mesh_path, opt);
+        rigid_meshes_.push_back(extract_surface(f, D, os.boundary, os.key + ".boundary"));
+        contacts_.surfaces.push_back(make_contact_surface(rigid_meshes_.back(), os.boundary, -1, cs.name + ".obstacle"));
+        pair.surface_b = static_cast<int>(contacts_.surfaces.size()) - 1;
+        pair.mode = ContactMode::kOnePass;  // a rigid surface carries no multipliers of its own
+        pair.slave_is_b = false;
+        other = &contacts_.surfaces.back();
+      } else {
+        Obstacle ob;
+        ob.name = cs.name;
+        if (os.type == "plane") {
+          ob.kind = Obstacle::Kind::kPlane;
+          ob.point = vec3(os.point);
+          ob.normal = vec3(os.normal).normalized();
+        } else {
+          ob.kind = Obstacle::Kind::kSphere;
+          ob.point = vec3(os.center);
+          ob.radius = os.radius;
+          ob.inside = os.inside;
+        }
+        contacts_.obstacles.push_back(ob);
+        pair.obstacle = static_cast<int>(contacts_.obstacles.size()) - 1;
+      }
+    } else {
+      pair.surface_b = surface(cs.body_b, cs.boundary_b, cs.key + ".b");
+      other = &contacts_.surfaces[pair.surface_b];
+    }
+    pair.search_distance = cs.search_distance > 0
+                               ? cs.search_distance
+                               : ContactSet::automatic_search_distance(contacts_.surfaces[pair.surface_a], other);
+    std::ostringstream s;
+    s << "contact '" << cs.name << "': " << contacts_.surfaces[pair.surface_a].name << " / "
+      << (pair.obstacle >= 0 ? std::string("obstacle") : contacts_.surfaces[pair.surface_b].name) << ", "
+      << (pair.mode == ContactMode::kSymmetric ? "symmetric" : "one-pass") << ", search distance "
+      << pair.search_distance;
+    log.info(s.str());
+    contacts_.pairs.push_back(pair);
+  }
+  contacts_.finalize();
 }
 
 void Model::set_step(int step) {

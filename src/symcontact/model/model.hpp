@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "symcontact/contact/contact_set.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/energy/energy_sum.hpp"
@@ -49,6 +50,10 @@ class Model {
   const std::vector<std::unique_ptr<Body>>& bodies() const { return bodies_; }
   const EnergySum& energy() const { return energy_; }
   const std::vector<DirichletBoundary>& dirichlet_boundaries() const { return boundaries_; }
+  /// The contact pairs (empty without [[contact]]).
+  const ContactSet& contacts() const { return contacts_; }
+  /// Index of the body named `name`, or −1.
+  int body_index(const std::string& name) const;
 
   /// Sets every load term to its factor at load step `step` (0-based).
   void set_step(int step);
@@ -73,6 +78,9 @@ class Model {
   };
   std::vector<LoadHandle> loads_;
   std::vector<DirichletBoundary> boundaries_;
+  ContactSet contacts_;
+  std::vector<Mesh> rigid_meshes_;  ///< meshes of rigid meshed obstacles
+  void build_contacts(const Logger& log, double mesh_size);
 };
 
 /// The factor of load step `step`: own[step] when `own` is given, else global[step].

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -33,6 +34,12 @@ std::string format_number(double x) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
   std::ostringstream os;
+  if (x == std::trunc(x) && std::abs(x) < 1e15) {  // whole numbers in full: "10", not "1e+01"
+    os << std::fixed;
+    os.precision(0);
+    os << x;
+    return os.str();
+  }
   for (int precision = 1; precision <= 17; ++precision) {
     os.str("");
     os.precision(precision);
@@ -122,7 +129,7 @@ class Reader {
   ProblemSpec read(const toml::table& root) const {
     ProblemSpec spec;
     spec.file = file_;
-    check_keys(root, "", {"title", "problem", "steps", "output", "body"});
+    check_keys(root, "", {"title", "problem", "steps", "output", "body", "contact", "contact_solver", "ipopt"});
     if (const toml::node* n = root.get("title")) spec.title = as_string(*n, "title");
 
     read_problem(root, spec);
@@ -142,6 +149,10 @@ class Reader {
         }
       }
     }
+
+    read_contacts(root, spec);
+    read_contact_solver(root, spec);
+    read_ipopt(root, spec);
     return spec;
   }
 
@@ -346,7 +357,7 @@ class Reader {
       fail(name_key, "expected a non-empty name of letters, digits, '_' and '-', got " + in_quotes(body.name));
     }
 
-    read_mesh(t, path, body);
+    read_mesh(t, path, body.mesh_file, body.mesh_path);
 
     if (const toml::node* n = t.get("group")) body.group = as_nonempty_string(*n, child(path, "group"));
 
@@ -387,25 +398,26 @@ class Reader {
     return body;
   }
 
-  /// mesh: a .geo or .msh file, relative to the problem file's folder, that must exist.
-  void read_mesh(const toml::table& t, const std::string& path, BodySpec& body) const {
+  /// mesh: a .geo or .msh file, relative to the problem file's folder, that must exist. Sets
+  /// `mesh_file` (as written) and `mesh_path` (resolved).
+  void read_mesh(const toml::table& t, const std::string& path, std::string& mesh_file, std::string& mesh_path) const {
     const std::string key = child(path, "mesh");
-    body.mesh_file = as_nonempty_string(required(t, path, "mesh", "the path of a .geo or .msh file"), key);
-    const fs::path written(body.mesh_file);
+    mesh_file = as_nonempty_string(required(t, path, "mesh", "the path of a .geo or .msh file"), key);
+    const fs::path written(mesh_file);
     const std::string extension = written.extension().string();
     if (extension != ".geo" && extension != ".msh") {
-      fail(key, "expected a Gmsh .geo or .msh file, got " + in_quotes(body.mesh_file) + " (extension " +
+      fail(key, "expected a Gmsh .geo or .msh file, got " + in_quotes(mesh_file) + " (extension " +
                     (extension.empty() ? std::string("missing") : in_quotes(extension)) + ")");
     }
     const fs::path resolved = (written.is_absolute() ? written : fs::path(base_dir_) / written).lexically_normal();
-    body.mesh_path = resolved.string();
+    mesh_path = resolved.string();
     std::error_code ec;
     const fs::file_status status = fs::status(resolved, ec);
     if (!fs::exists(status)) {
-      fail(key, "mesh file " + in_quotes(body.mesh_path) + " does not exist (relative paths are resolved against " +
+      fail(key, "mesh file " + in_quotes(mesh_path) + " does not exist (relative paths are resolved against " +
                     "the problem file's folder)");
     }
-    if (fs::is_directory(status)) fail(key, "expected a mesh file, got the folder " + in_quotes(body.mesh_path));
+    if (fs::is_directory(status)) fail(key, "expected a mesh file, got the folder " + in_quotes(mesh_path));
   }
 
   MaterialSpec read_material(const toml::table& t, const std::string& path) const {
@@ -472,6 +484,220 @@ class Reader {
     s.pressure = as_number(required(t, path, "pressure", "a number"), child(path, "pressure"));
     if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
     return s;
+  }
+
+  // ---- contact ----
+
+  /// [[contact]]: optional; surfaces name declared bodies, names are unique.
+  void read_contacts(const toml::table& root, ProblemSpec& spec) const {
+    const toml::node* node = root.get("contact");
+    if (!node) return;
+    const toml::array& list = as_table_array(*node, "contact", "[[contact]]");
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      spec.contacts.push_back(read_contact(*list[i].as_table(), indexed("contact", i), i, spec));
+    }
+    // Checked once all are read: an explicit name may take the default name of another contact.
+    for (std::size_t i = 0; i < spec.contacts.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (spec.contacts[j].name == spec.contacts[i].name) {
+          fail(spec.contacts[i].key + ".name", "duplicate contact name " + in_quotes(spec.contacts[i].name) +
+                                                   " (already used by " + spec.contacts[j].key + ")");
+        }
+      }
+    }
+  }
+
+  ContactSpec read_contact(const toml::table& t, const std::string& path, std::size_t index,
+                           const ProblemSpec& spec) const {
+    check_keys(t, path, {"name", "a", "b", "obstacle", "mode", "slave", "search_distance"});
+    ContactSpec c;
+    c.key = path;
+
+    c.name = "contact" + std::to_string(index);
+    if (const toml::node* n = t.get("name")) {
+      const std::string key = child(path, "name");
+      c.name = as_string(*n, key);
+      if (!valid_name(c.name)) {
+        fail(key, "expected a non-empty name of letters, digits, '_' and '-', got " + in_quotes(c.name));
+      }
+    }
+
+    surface(required(t, path, "a", "a surface \"<body>.<boundary>\""), child(path, "a"), spec, c.body_a,
+            c.boundary_a);
+
+    const toml::node* b = t.get("b");
+    const toml::node* obstacle = t.get("obstacle");
+    if (b && obstacle) {
+      fail(path, "expected either b (another surface) or [contact.obstacle] (a rigid obstacle), got both");
+    }
+    if (!b && !obstacle) {
+      fail(path, "missing the opposite surface (expected b = \"<body>.<boundary>\" or a table "
+                 "[contact.obstacle])");
+    }
+    if (b) surface(*b, child(path, "b"), spec, c.body_b, c.boundary_b);
+    if (obstacle) {
+      const std::string key = child(path, "obstacle");
+      c.obstacle = read_obstacle(as_table(*obstacle, key), key, spec);
+    }
+
+    if (const toml::node* n = t.get("mode")) {
+      const std::string key = child(path, "mode");
+      c.mode = as_string(*n, key);
+      if (c.mode != "symmetric" && c.mode != "one-pass") {
+        fail(key, "expected \"symmetric\" or \"one-pass\", got " + in_quotes(c.mode));
+      }
+    }
+
+    if (const toml::node* n = t.get("slave")) {
+      const std::string key = child(path, "slave");
+      c.slave = as_string(*n, key);
+      if (c.slave != "a" && c.slave != "b") fail(key, "expected \"a\" or \"b\", got " + in_quotes(c.slave));
+      if (c.mode != "one-pass") {
+        fail(key, "slave is only used with mode = \"one-pass\", got mode = " + in_quotes(c.mode) +
+                      " (the symmetric mode writes the constraints from both surfaces in turn, so there is no "
+                      "slave to choose)");
+      }
+      if (c.obstacle && c.slave != "a") {
+        fail(key, "expected \"a\" with an obstacle (the rigid obstacle has no unknowns to constrain), got " +
+                      in_quotes(c.slave));
+      }
+    }
+
+    if (const toml::node* n = t.get("search_distance")) {
+      const std::string key = child(path, "search_distance");
+      c.search_distance = as_number(*n, key);
+      if (!(c.search_distance > 0.0)) fail(key, "expected a number > 0, got " + format_number(c.search_distance));
+    }
+    return c;
+  }
+
+  /// A contact surface "<body>.<boundary>", split at the first dot (body names have none). The body
+  /// must be declared; the boundary group is checked when the meshes are loaded.
+  void surface(const toml::node& node, const std::string& key, const ProblemSpec& spec, std::string& body,
+               std::string& group) const {
+    const std::string s = as_string(node, key);
+    const std::size_t dot = s.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == s.size()) {
+      fail(key, "expected \"<body>.<boundary>\" (a body name, a dot, a physical group of its boundary), got " +
+                    in_quotes(s));
+    }
+    body = s.substr(0, dot);
+    group = s.substr(dot + 1);
+    std::string names;
+    for (const BodySpec& declared : spec.bodies) {
+      if (declared.name == body) return;
+      names += (names.empty() ? "" : ", ") + declared.name;
+    }
+    fail(key, "unknown body " + in_quotes(body) + " in " + in_quotes(s) + "; declared bodies: " + names);
+  }
+
+  /// [contact.obstacle]: the keys allowed depend on `type`.
+  ObstacleSpec read_obstacle(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
+    check_keys(t, path, {"type", "point", "normal", "center", "radius", "inside", "mesh", "boundary"});
+    ObstacleSpec o;
+    o.key = path;
+
+    const std::string type_key = child(path, "type");
+    o.type = as_string(required(t, path, "type", "\"plane\", \"circle\", \"sphere\" or \"mesh\""), type_key);
+    // Named lists, so that their arrays live as long as `keys` (an initializer_list does not own them).
+    const KeyList plane_keys = {"type", "point", "normal"};
+    const KeyList round_keys = {"type", "center", "radius", "inside"};
+    const KeyList mesh_keys = {"type", "mesh", "boundary"};
+    KeyList keys;
+    if (o.type == "plane") {
+      keys = plane_keys;
+    } else if (o.type == "circle" || o.type == "sphere") {
+      const bool is_circle = o.type == "circle";
+      if (spec.dim != (is_circle ? 2 : 3)) {
+        fail(type_key, in_quotes(o.type) + " is only allowed in " + (is_circle ? "2D" : "3D") +
+                           " (problem.dimension = " + (is_circle ? "2" : "3") + "), got problem.dimension = " +
+                           std::to_string(spec.dim) + "; use " + (is_circle ? "\"sphere\"" : "\"circle\"") +
+                           " in " + (is_circle ? "3D" : "2D"));
+      }
+      keys = round_keys;
+    } else if (o.type == "mesh") {
+      keys = mesh_keys;
+    } else {
+      fail(type_key, std::string("expected \"plane\", \"circle\" (2D), \"sphere\" (3D) or \"mesh\", got ") +
+                         in_quotes(o.type));
+    }
+    for (auto&& [key, value] : t) {
+      (void)value;
+      const std::string_view name = key.str();
+      if (std::find(keys.begin(), keys.end(), name) == keys.end()) {
+        fail(child(path, name), "key " + in_quotes(name) + " does not belong to an obstacle of type " +
+                                    in_quotes(o.type) + "; keys of this type: " + join(keys, ", "));
+      }
+    }
+
+    const std::string vector_what = std::to_string(spec.dim) + " numbers";
+    if (o.type == "plane") {
+      o.point = as_vector(required(t, path, "point", vector_what), child(path, "point"), spec.dim);
+      const std::string normal_key = child(path, "normal");
+      o.normal = as_vector(required(t, path, "normal", vector_what + ", nonzero"), normal_key, spec.dim);
+      if (std::all_of(o.normal.begin(), o.normal.end(), [](double x) { return x == 0.0; })) {
+        fail(normal_key, "expected a nonzero vector, got the zero vector");
+      }
+    } else if (o.type == "mesh") {
+      read_mesh(t, path, o.mesh_file, o.mesh_path);
+      o.boundary = boundary(t, path);
+    } else {
+      o.center = as_vector(required(t, path, "center", vector_what), child(path, "center"), spec.dim);
+      const std::string radius_key = child(path, "radius");
+      o.radius = as_number(required(t, path, "radius", "a number > 0"), radius_key);
+      if (!(o.radius > 0.0)) fail(radius_key, "expected a number > 0, got " + format_number(o.radius));
+      if (const toml::node* n = t.get("inside")) o.inside = as_bool(*n, child(path, "inside"));
+    }
+    return o;
+  }
+
+  void read_contact_solver(const toml::table& root, ProblemSpec& spec) const {
+    const toml::node* node = root.get("contact_solver");
+    if (!node) return;
+    const toml::table& t = as_table(*node, "contact_solver");
+    check_keys(t, "contact_solver", {"geometry_tolerance", "max_geometry_iterations"});
+    ContactSolverSpec& s = spec.contact_solver;
+    if (const toml::node* n = t.get("geometry_tolerance")) {
+      const std::string key = "contact_solver.geometry_tolerance";
+      s.geometry_tolerance = as_number(*n, key);
+      if (!(s.geometry_tolerance > 0.0)) fail(key, "expected a number > 0, got " + format_number(s.geometry_tolerance));
+    }
+    if (const toml::node* n = t.get("max_geometry_iterations")) {
+      const std::string key = "contact_solver.max_geometry_iterations";
+      const std::int64_t iterations = as_integer(*n, key);
+      if (iterations < 1 || iterations > std::numeric_limits<int>::max()) {
+        fail(key, "expected an integer in [1, " + std::to_string(std::numeric_limits<int>::max()) + "], got " +
+                      std::to_string(iterations));
+      }
+      s.max_geometry_iterations = static_cast<int>(iterations);
+    }
+  }
+
+  /// [ipopt]: any option, passed to IPOPT as it is, sorted by the TOML type of its value. IPOPT itself
+  /// checks names and ranges when the solver starts.
+  void read_ipopt(const toml::table& root, ProblemSpec& spec) const {
+    const toml::node* node = root.get("ipopt");
+    if (!node) return;
+    const toml::table& t = as_table(*node, "ipopt");
+    ContactSolverSpec& s = spec.contact_solver;
+    for (auto&& [k, value] : t) {
+      const std::string name(k.str());
+      const std::string key = child("ipopt", name);
+      if (value.is_string()) {
+        s.ipopt_string[name] = *value.value<std::string>();
+      } else if (value.is_integer()) {
+        const std::int64_t i = *value.value<std::int64_t>();
+        if (i < std::numeric_limits<int>::min() || i > std::numeric_limits<int>::max()) {
+          fail(key, "expected an integer that fits in an int (IPOPT integer option), got " + std::to_string(i));
+        }
+        s.ipopt_integer[name] = static_cast<int>(i);
+      } else if (value.is_floating_point()) {
+        s.ipopt_numeric[name] = as_number(value, key);
+      } else {
+        fail(key, "expected a string, an integer or a floating-point number (an IPOPT option value), got " +
+                      describe(value));
+      }
+    }
   }
 
   std::string file_;

@@ -9,16 +9,21 @@
 /// - types (an integer is accepted where a number is expected, never the other way round);
 /// - values: every number finite (TOML allows nan and inf), ranges (E > 0, −1 < ν < 0.5, …),
 ///   vector lengths (`problem.dimension` components), per-load factor arrays as long as
-///   `steps.load_factors`, unique body names, mesh files that exist and end in .geo or .msh.
+///   `steps.load_factors`, unique body names, mesh files that exist and end in .geo or .msh;
+/// - contact ([[contact]], [contact_solver], [ipopt]): contact surfaces "<body>.<boundary>" naming a
+///   declared body, exactly one of `b` and `[contact.obstacle]`, obstacle keys that belong to the
+///   obstacle's type (circle only in 2D, sphere only in 3D, a nonzero plane normal), `slave` only with
+///   mode = "one-pass", unique contact names; [ipopt] values are strings, integers or floats and are
+///   otherwise passed on unchecked (IPOPT checks option names and ranges).
 ///
 /// Every failure throws InputError(file, key, message) where `key` is the TOML path of the offending
 /// value with bodies counted from 0 ("body[1].material.nu", "body[0].dirichlet[2]") and `message`
 /// says what was expected and what was found ("expected a number in (-1, 0.5), got 0.5"). Syntax
 /// errors have an empty key and a message starting "line L, column C: ".
 ///
-/// Physical group names (body `group`, `boundary`) are only checked for being non-empty strings:
-/// whether they exist in the mesh is checked when the meshes are loaded, using the `key` of each
-/// spec item.
+/// Physical group names (body `group`, `boundary`, the group part of a contact surface) are only
+/// checked for being non-empty strings: whether they exist in the mesh is checked when the meshes
+/// are loaded, using the `key` of each spec item.
 
 #include <string>
 

@@ -8,6 +8,7 @@
 /// `factors[k]` when given, else by the problem's `steps.load_factors[k]`.
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +62,43 @@ struct BodySpec {
   std::vector<PressureSpec> pressures;
 };
 
+/// A rigid obstacle: analytic ("plane", "circle" in 2D / "sphere" in 3D) or meshed ("mesh": the facets
+/// of a boundary group of a mesh file, which stay fixed).
+struct ObstacleSpec {
+  std::string key;                 ///< "contact[i].obstacle"
+  std::string type;                ///< "plane" | "circle" | "sphere" | "mesh"
+  std::vector<double> point;       ///< plane: a point of it (dim components)
+  std::vector<double> normal;      ///< plane: normal pointing towards the body (dim components, nonzero)
+  std::vector<double> center;      ///< circle/sphere: centre
+  double radius = 0.0;             ///< circle/sphere: > 0
+  bool inside = false;             ///< circle/sphere: the body lies inside (a rigid hole)
+  std::string mesh_file, mesh_path;///< mesh: file as written / resolved
+  std::string boundary;            ///< mesh: the facet group forming the rigid surface
+};
+
+/// One contact pair: surface a (a body's boundary group) against surface b of another (or the same)
+/// body, or against a rigid obstacle.
+struct ContactSpec {
+  std::string key;                 ///< "contact[i]"
+  std::string name;                ///< unique; default "contact<i>" (0-based)
+  std::string body_a, boundary_a;  ///< from a = "body.boundary"
+  std::string body_b, boundary_b;  ///< from b = "body.boundary"; empty with an obstacle
+  std::optional<ObstacleSpec> obstacle;
+  std::string mode = "symmetric";  ///< "symmetric" (both sides in turn slave) | "one-pass"
+  std::string slave = "a";         ///< one-pass: which surface is the slave, "a" or "b"
+  double search_distance = 0.0;    ///< > 0; 0: automatic (see docs/input.md)
+};
+
+/// Settings of the contact solve (Algorithm 2) and of IPOPT.
+struct ContactSolverSpec {
+  double geometry_tolerance = 1e-6;   ///< ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ below which the fixed point stops
+  int max_geometry_iterations = 50;
+  /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
+  std::map<std::string, std::string> ipopt_string;
+  std::map<std::string, double> ipopt_numeric;
+  std::map<std::string, int> ipopt_integer;
+};
+
 struct OutputSpec {
   bool vtu = true;        ///< VTU per body per step + PVD collection
   bool summary = true;    ///< summary.json
@@ -75,6 +113,8 @@ struct ProblemSpec {
   double mesh_size = 0.0;           ///< maximum element size for .geo meshing; 0: the .geo's own sizes
   std::vector<BodySpec> bodies;
   std::vector<double> load_factors{1.0};  ///< one entry per load step
+  std::vector<ContactSpec> contacts;
+  ContactSolverSpec contact_solver;
   OutputSpec output;
 };
 

@@ -16,6 +16,12 @@ CholeskySolver::~CholeskySolver() = default;
 
 void CholeskySolver::analyze(const SparseMatrix& lower) {
   impl_->llt.analyzePattern(lower);
+  if (impl_->llt.info() != Eigen::Success || impl_->llt.cholmod().status < CHOLMOD_OK) {
+    impl_->n = -1;
+    throw SolveError(
+        "CHOLMOD could not analyse the stiffness matrix (status " + std::to_string(impl_->llt.cholmod().status) +
+        "): the problem is probably too large for the 32-bit CHOLMOD interface or for the memory available");
+  }
   impl_->n = lower.rows();
 }
 

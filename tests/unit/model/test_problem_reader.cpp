@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -25,7 +26,8 @@ const std::string& mesh_dir() {
   static const std::string dir = [] {
     const fs::path d = fs::path(::testing::TempDir()) / "symcontact_problem_reader";
     fs::create_directories(d / "meshes");
-    for (const char* name : {"block.geo", "block.msh", "block.stl", "meshes/foundation.msh"}) {
+    for (const char* name : {"block.geo", "block.msh", "block.stl", "meshes/foundation.msh", "upper.geo", "lower.geo",
+                             "die.geo"}) {
       std::ofstream(d / name) << "// placeholder\n";
     }
     return d.string();
@@ -66,14 +68,17 @@ boundary = "bottom"
 uy = 0.0
 )";
 
-/// kBase with the first occurrence of `from` replaced by `to`.
-std::string edit(const std::string& from, const std::string& to) {
-  std::string s = kBase;
+/// `text` with the first occurrence of `from` replaced by `to`.
+std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
+  std::string s = text;
   const std::size_t at = s.find(from);
   if (at == std::string::npos) ADD_FAILURE() << "test bug: \"" << from << "\" is not in the base file";
   else s.replace(at, from.size(), to);
   return s;
 }
+
+/// kBase with the first occurrence of `from` replaced by `to`.
+std::string edit(const std::string& from, const std::string& to) { return replaced(kBase, from, to); }
 
 std::string with_dimension_3(const std::string& text) {
   std::string s = text;
@@ -231,6 +236,231 @@ traction = [1, 2, 3]
   EXPECT_EQ(spec.bodies[0].tractions[0].traction, (std::vector<double>{1.0, 2.0, 3.0}));
 }
 
+// ---- contact ----
+
+/// kBase plus a second body "lower" and one contact between them; bad contact cases edit it.
+const std::string kTwoBodies = kBase + R"(
+[[body]]
+name = "lower"
+mesh = "block.msh"
+material = { E = 2.0, nu = 0.25 }
+
+[[contact]]
+a = "block.bottom"
+b = "lower.top"
+)";
+
+/// kBase plus one contact of block.bottom against a rigid plane.
+const std::string kPlane = kBase + R"(
+[[contact]]
+a = "block.bottom"
+[contact.obstacle]
+type = "plane"
+point = [0.0, 0.0]
+normal = [0.0, 1.0]
+)";
+
+/// kBase plus one contact of block.bottom against a rigid circle.
+const std::string kCircle = kBase + R"(
+[[contact]]
+a = "block.bottom"
+[contact.obstacle]
+type = "circle"
+center = [0.0, -1.0]
+radius = 1.0
+)";
+
+/// kBase plus one contact of block.bottom against the group "surface" of the rigid mesh die.geo.
+const std::string kMeshObstacle = kBase + R"(
+[[contact]]
+a = "block.bottom"
+[contact.obstacle]
+type = "mesh"
+mesh = "die.geo"
+boundary = "surface"
+)";
+
+TEST(ProblemReader, NoContactIsPureElasticity) {
+  const ProblemSpec spec = parse(kBase);
+  EXPECT_TRUE(spec.contacts.empty());
+  EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
+  EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
+  EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
+  EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
+}
+
+TEST(ProblemReader, TwoBodyContactRoundTrips) {
+  const ProblemSpec spec = parse(kBase + R"(
+[[body]]
+name = "lower"
+mesh = "block.msh"
+material = { E = 2.0, nu = 0.25 }
+
+[[contact]]
+name = "interface"
+a = "block.bottom"
+b = "lower.top.left"        # split at the first dot: the group is "top.left"
+mode = "one-pass"
+slave = "b"
+search_distance = 0.05
+
+[contact_solver]
+geometry_tolerance = 1e-8
+max_geometry_iterations = 7
+
+[ipopt]
+tol = 1e-10
+print_level = 5
+mu_strategy = "adaptive"
+acceptable_tol = 1
+)");
+  ASSERT_EQ(spec.contacts.size(), 1u);
+  const ContactSpec& c = spec.contacts[0];
+  EXPECT_EQ(c.key, "contact[0]");
+  EXPECT_EQ(c.name, "interface");
+  EXPECT_EQ(c.body_a, "block");
+  EXPECT_EQ(c.boundary_a, "bottom");
+  EXPECT_EQ(c.body_b, "lower");
+  EXPECT_EQ(c.boundary_b, "top.left");
+  EXPECT_FALSE(c.obstacle.has_value());
+  EXPECT_EQ(c.mode, "one-pass");
+  EXPECT_EQ(c.slave, "b");
+  EXPECT_EQ(c.search_distance, 0.05);
+
+  const ContactSolverSpec& s = spec.contact_solver;
+  EXPECT_EQ(s.geometry_tolerance, 1e-8);
+  EXPECT_EQ(s.max_geometry_iterations, 7);
+  // Sorted by the TOML type of the value: an integer stays an integer option even for a numeric one.
+  EXPECT_EQ(s.ipopt_numeric, (std::map<std::string, double>{{"tol", 1e-10}}));
+  EXPECT_EQ(s.ipopt_integer, (std::map<std::string, int>{{"print_level", 5}, {"acceptable_tol", 1}}));
+  EXPECT_EQ(s.ipopt_string, (std::map<std::string, std::string>{{"mu_strategy", "adaptive"}}));
+}
+
+TEST(ProblemReader, ContactDefaults) {
+  const ProblemSpec spec = parse(kTwoBodies + "[[contact]]\na = \"lower.top\"\nb = \"block.bottom\"\n");
+  ASSERT_EQ(spec.contacts.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const ContactSpec& c = spec.contacts[i];
+    EXPECT_EQ(c.key, "contact[" + std::to_string(i) + "]");
+    EXPECT_EQ(c.name, "contact" + std::to_string(i));
+    EXPECT_EQ(c.mode, "symmetric");
+    EXPECT_EQ(c.slave, "a");
+    EXPECT_EQ(c.search_distance, 0.0);
+    EXPECT_FALSE(c.obstacle.has_value());
+  }
+  EXPECT_EQ(spec.contacts[1].body_a, "lower");
+  EXPECT_EQ(spec.contacts[1].boundary_b, "bottom");
+  EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
+}
+
+TEST(ProblemReader, SelfContactIsAllowed) {
+  const ProblemSpec spec = parse(kBase + "[[contact]]\na = \"block.skin\"\nb = \"block.skin\"\n");
+  ASSERT_EQ(spec.contacts.size(), 1u);
+  EXPECT_EQ(spec.contacts[0].body_a, "block");
+  EXPECT_EQ(spec.contacts[0].body_b, "block");
+  EXPECT_EQ(spec.contacts[0].boundary_a, "skin");
+  EXPECT_EQ(spec.contacts[0].boundary_b, "skin");
+}
+
+TEST(ProblemReader, PlaneObstacle) {
+  const ProblemSpec spec = parse(replaced(kPlane, "normal = [0.0, 1.0]", "normal = [0, 2]"));
+  ASSERT_EQ(spec.contacts.size(), 1u);
+  const ContactSpec& c = spec.contacts[0];
+  EXPECT_EQ(c.body_a, "block");
+  EXPECT_EQ(c.boundary_a, "bottom");
+  EXPECT_TRUE(c.body_b.empty() && c.boundary_b.empty());
+  ASSERT_TRUE(c.obstacle.has_value());
+  const ObstacleSpec& o = *c.obstacle;
+  EXPECT_EQ(o.key, "contact[0].obstacle");
+  EXPECT_EQ(o.type, "plane");
+  EXPECT_EQ(o.point, (std::vector<double>{0.0, 0.0}));
+  EXPECT_EQ(o.normal, (std::vector<double>{0.0, 2.0}));  // kept as given: the solver normalises
+  EXPECT_TRUE(o.center.empty());
+  EXPECT_TRUE(o.mesh_file.empty());
+}
+
+TEST(ProblemReader, CircleObstacleIn2D) {
+  const ProblemSpec spec = parse(replaced(kCircle, "radius = 1.0", "radius = 1.0\ninside = true"));
+  const ObstacleSpec& o = spec.contacts.at(0).obstacle.value();
+  EXPECT_EQ(o.type, "circle");
+  EXPECT_EQ(o.center, (std::vector<double>{0.0, -1.0}));
+  EXPECT_EQ(o.radius, 1.0);
+  EXPECT_TRUE(o.inside);
+  EXPECT_FALSE(parse(kCircle).contacts.at(0).obstacle->inside);  // default: the body is outside
+}
+
+TEST(ProblemReader, SphereObstacleIn3D) {
+  const ProblemSpec spec = parse(with_dimension_3(kBase) + R"(
+[[contact]]
+name = "ball"
+a = "block.bottom"
+mode = "one-pass"
+[contact.obstacle]
+type = "sphere"
+center = [0, 0, -2]
+radius = 2
+inside = false
+)");
+  const ContactSpec& c = spec.contacts.at(0);
+  EXPECT_EQ(c.name, "ball");
+  EXPECT_EQ(c.mode, "one-pass");
+  EXPECT_EQ(c.slave, "a");
+  const ObstacleSpec& o = c.obstacle.value();
+  EXPECT_EQ(o.type, "sphere");
+  EXPECT_EQ(o.center, (std::vector<double>{0.0, 0.0, -2.0}));
+  EXPECT_EQ(o.radius, 2.0);
+  EXPECT_FALSE(o.inside);
+}
+
+TEST(ProblemReader, MeshObstacle) {
+  const ProblemSpec spec = parse(kMeshObstacle);
+  const ObstacleSpec& o = spec.contacts.at(0).obstacle.value();
+  EXPECT_EQ(o.key, "contact[0].obstacle");
+  EXPECT_EQ(o.type, "mesh");
+  EXPECT_EQ(o.mesh_file, "die.geo");
+  EXPECT_EQ(o.mesh_path, resolved("die.geo"));
+  EXPECT_EQ(o.boundary, "surface");
+  EXPECT_TRUE(o.point.empty() && o.normal.empty() && o.center.empty());
+}
+
+#ifdef SYMCONTACT_TEST_DATA
+/// The ```toml blocks of docs/input.md, in order.
+std::vector<std::string> documentation_examples() {
+  std::ifstream in(std::string(SYMCONTACT_TEST_DATA) + "/../../docs/input.md");
+  EXPECT_TRUE(in) << "cannot open docs/input.md";
+  std::stringstream doc;
+  doc << in.rdbuf();
+  const std::string text = doc.str();
+  std::vector<std::string> blocks;
+  for (std::size_t begin = text.find("```toml\n"); begin != std::string::npos;
+       begin = text.find("```toml\n", begin + 8)) {
+    const std::size_t end = text.find("```", begin + 8);
+    if (end == std::string::npos) break;
+    blocks.push_back(text.substr(begin + 8, end - begin - 8));
+  }
+  return blocks;
+}
+
+// The contact examples of docs/input.md are complete, valid files too.
+TEST(ProblemReader, DocumentationContactExamplesAreValid) {
+  const std::vector<std::string> blocks = documentation_examples();
+  ASSERT_EQ(blocks.size(), 3u) << "expected the complete example and two contact examples";
+
+  const ProblemSpec two_bodies = parse(blocks[1]);
+  ASSERT_EQ(two_bodies.contacts.size(), 1u);
+  EXPECT_EQ(two_bodies.contacts[0].name, "interface");
+  EXPECT_EQ(two_bodies.contacts[0].body_b, "lower");
+  EXPECT_EQ(two_bodies.contact_solver.ipopt_string.at("mu_strategy"), "adaptive");
+
+  const ProblemSpec obstacles = parse(blocks[2]);
+  ASSERT_EQ(obstacles.contacts.size(), 2u);
+  EXPECT_EQ(obstacles.contacts[0].obstacle.value().type, "plane");
+  EXPECT_EQ(obstacles.contacts[1].obstacle.value().type, "circle");
+}
+#endif
+
 #ifdef SYMCONTACT_TEST_DATA
 // docs/input.md is documentation that must stay true: its complete example is a valid file.
 TEST(ProblemReader, DocumentationExampleIsValid) {
@@ -329,7 +559,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnterminatedTableHeader", edit("[steps]", "[steps"), "", "line 4, column "},
         // unknown keys
         BadCase{"UnknownTopLevelKey", "solver = \"ipopt\"\n" + kBase, "solver",
-                "unknown key \"solver\"; allowed keys at the top level: title, problem, steps, output, body"},
+                "unknown key \"solver\"; allowed keys at the top level: title, problem, steps, output, body, contact, "
+                "contact_solver, ipopt"},
         BadCase{"UnknownProblemKey", edit("dimension = 2", "dimension = 2\nodrer = 1"), "problem.odrer",
                 "unknown key \"odrer\" (did you mean \"order\"?)"},
         BadCase{"UnknownBodyKey", edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\ncolour = \"red\""),
@@ -419,7 +650,139 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"EmptyBoundaryName", edit("boundary = \"bottom\"", "boundary = \"\""), "body[0].dirichlet[0].boundary",
                 "expected a non-empty string"},
         BadCase{"DirichletNotAnArray", edit("[[body.dirichlet]]", "[body.dirichlet]"), "body[0].dirichlet",
-                "expected an array of tables ([[body.dirichlet]]), got a table"}),
+                "expected an array of tables ([[body.dirichlet]]), got a table"},
+        // contact: structure and surfaces
+        BadCase{"ContactNotAnArray", replaced(kTwoBodies, "[[contact]]", "[contact]"), "contact",
+                "expected an array of tables ([[contact]]), got a table"},
+        BadCase{"UnknownContactKey", replaced(kTwoBodies, "b = ", "master = \"a\"\nb = "), "contact[0].master",
+                "unknown key \"master\"; allowed keys in contact[0]: name, a, b, obstacle, mode, slave, search_distance"},
+        BadCase{"MissingContactA", replaced(kTwoBodies, "a = \"block.bottom\"\n", ""), "contact[0].a",
+                "missing required key (expected a surface \"<body>.<boundary>\")"},
+        BadCase{"ContactANotAString", replaced(kTwoBodies, "a = \"block.bottom\"", "a = 1"), "contact[0].a",
+                "expected a string, got an integer (1)"},
+        BadCase{"ContactAWithoutDot", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \"block\""), "contact[0].a",
+                "expected \"<body>.<boundary>\" (a body name, a dot, a physical group of its boundary), got \"block\""},
+        BadCase{"ContactAWithEmptyGroup", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \"block.\""),
+                "contact[0].a", "expected \"<body>.<boundary>\""},
+        BadCase{"ContactAWithEmptyBody", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \".bottom\""),
+                "contact[0].a", "expected \"<body>.<boundary>\""},
+        BadCase{"UnknownBodyInA", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \"blok.bottom\""), "contact[0].a",
+                "unknown body \"blok\" in \"blok.bottom\"; declared bodies: block, lower"},
+        BadCase{"UnknownBodyInB", replaced(kTwoBodies, "b = \"lower.top\"", "b = \"upper.top\""), "contact[0].b",
+                "unknown body \"upper\" in \"upper.top\"; declared bodies: block, lower"},
+        BadCase{"BothBAndObstacle", kTwoBodies + "[contact.obstacle]\ntype = \"plane\"\n", "contact[0]",
+                "expected either b (another surface) or [contact.obstacle] (a rigid obstacle), got both"},
+        BadCase{"NeitherBNorObstacle", replaced(kTwoBodies, "b = \"lower.top\"\n", ""), "contact[0]",
+                "missing the opposite surface (expected b = \"<body>.<boundary>\" or a table [contact.obstacle])"},
+        BadCase{"InvalidContactName", replaced(kTwoBodies, "[[contact]]", "[[contact]]\nname = \"my contact\""),
+                "contact[0].name", "expected a non-empty name of letters, digits, '_' and '-', got \"my contact\""},
+        BadCase{"DuplicateContactNames",
+                replaced(kTwoBodies, "[[contact]]", "[[contact]]\nname = \"x\"") +
+                    "[[contact]]\nname = \"x\"\na = \"lower.top\"\nb = \"block.bottom\"\n",
+                "contact[1].name", "duplicate contact name \"x\" (already used by contact[0])"},
+        BadCase{"ContactNameClashesWithADefaultName",
+                replaced(kTwoBodies, "[[contact]]", "[[contact]]\nname = \"contact1\"") +
+                    "[[contact]]\na = \"lower.top\"\nb = \"block.bottom\"\n",
+                "contact[1].name", "duplicate contact name \"contact1\" (already used by contact[0])"},
+        // contact: mode, slave, search distance
+        BadCase{"BadContactMode", replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nmode = \"two-pass\""),
+                "contact[0].mode", "expected \"symmetric\" or \"one-pass\", got \"two-pass\""},
+        BadCase{"SlaveWithDefaultSymmetricMode", replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nslave = \"b\""),
+                "contact[0].slave",
+                "slave is only used with mode = \"one-pass\", got mode = \"symmetric\" (the symmetric mode writes the "
+                "constraints from both surfaces in turn, so there is no slave to choose)"},
+        BadCase{"SlaveWithExplicitSymmetricMode",
+                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nslave = \"a\"\nmode = \"symmetric\""),
+                "contact[0].slave", "slave is only used with mode = \"one-pass\""},
+        BadCase{"BadSlaveValue",
+                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nmode = \"one-pass\"\nslave = \"c\""),
+                "contact[0].slave", "expected \"a\" or \"b\", got \"c\""},
+        BadCase{"SlaveBWithObstacle",
+                replaced(kPlane, "a = \"block.bottom\"", "a = \"block.bottom\"\nmode = \"one-pass\"\nslave = \"b\""),
+                "contact[0].slave", "expected \"a\" with an obstacle"},
+        BadCase{"SearchDistanceZero",
+                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nsearch_distance = 0"),
+                "contact[0].search_distance", "expected a number > 0, got 0"},
+        BadCase{"SearchDistanceNegative",
+                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nsearch_distance = -0.5"),
+                "contact[0].search_distance", "expected a number > 0, got -0.5"},
+        // contact: obstacles
+        BadCase{"ObstacleNotATable", replaced(kTwoBodies, "b = \"lower.top\"", "obstacle = \"plane\""),
+                "contact[0].obstacle", "expected a table, got a string (\"plane\")"},
+        BadCase{"MissingObstacleType", replaced(kPlane, "type = \"plane\"\n", ""), "contact[0].obstacle.type",
+                "missing required key (expected \"plane\", \"circle\", \"sphere\" or \"mesh\")"},
+        BadCase{"UnknownObstacleType", replaced(kPlane, "type = \"plane\"", "type = \"cone\""),
+                "contact[0].obstacle.type",
+                "expected \"plane\", \"circle\" (2D), \"sphere\" (3D) or \"mesh\", got \"cone\""},
+        BadCase{"UnknownObstacleKey", replaced(kCircle, "radius = 1.0", "radious = 1.0"), "contact[0].obstacle.radious",
+                "unknown key \"radious\" (did you mean \"radius\"?)"},
+        BadCase{"CircleIn3D", with_dimension_3(replaced(kCircle, "[0.0, -1.0]", "[0.0, 0.0, -1.0]")),
+                "contact[0].obstacle.type",
+                "\"circle\" is only allowed in 2D (problem.dimension = 2), got problem.dimension = 3; use \"sphere\" in "
+                "3D"},
+        BadCase{"SphereIn2D", replaced(kCircle, "type = \"circle\"", "type = \"sphere\""), "contact[0].obstacle.type",
+                "\"sphere\" is only allowed in 3D (problem.dimension = 3), got problem.dimension = 2; use \"circle\" in "
+                "2D"},
+        BadCase{"MissingRadius", replaced(kCircle, "radius = 1.0\n", ""), "contact[0].obstacle.radius",
+                "missing required key (expected a number > 0)"},
+        BadCase{"RadiusZero", replaced(kCircle, "radius = 1.0", "radius = 0"), "contact[0].obstacle.radius",
+                "expected a number > 0, got 0"},
+        BadCase{"RadiusNegative", replaced(kCircle, "radius = 1.0", "radius = -2.5"), "contact[0].obstacle.radius",
+                "expected a number > 0, got -2.5"},
+        BadCase{"MissingCenter", replaced(kCircle, "center = [0.0, -1.0]\n", ""), "contact[0].obstacle.center",
+                "missing required key (expected 2 numbers)"},
+        BadCase{"InsideNotABoolean", replaced(kCircle, "radius = 1.0", "radius = 1.0\ninside = 1"),
+                "contact[0].obstacle.inside", "expected a boolean (true or false), got an integer (1)"},
+        BadCase{"ZeroNormal", replaced(kPlane, "normal = [0.0, 1.0]", "normal = [0.0, 0]"), "contact[0].obstacle.normal",
+                "expected a nonzero vector, got the zero vector"},
+        BadCase{"MissingNormal", replaced(kPlane, "normal = [0.0, 1.0]\n", ""), "contact[0].obstacle.normal",
+                "missing required key (expected 2 numbers, nonzero)"},
+        BadCase{"PlanePointWrongLength", replaced(kPlane, "point = [0.0, 0.0]", "point = [0.0, 0.0, 0.0]"),
+                "contact[0].obstacle.point", "expected 2 components (problem.dimension = 2), got 3"},
+        BadCase{"RadiusWithPlane", replaced(kPlane, "normal = [0.0, 1.0]", "normal = [0.0, 1.0]\nradius = 1.0"),
+                "contact[0].obstacle.radius",
+                "key \"radius\" does not belong to an obstacle of type \"plane\"; keys of this type: type, point, normal"},
+        BadCase{"NormalWithCircle", replaced(kCircle, "radius = 1.0", "radius = 1.0\nnormal = [0.0, 1.0]"),
+                "contact[0].obstacle.normal",
+                "key \"normal\" does not belong to an obstacle of type \"circle\"; keys of this type: type, center, "
+                "radius, inside"},
+        BadCase{"BoundaryWithSphere",
+                with_dimension_3(replaced(replaced(kCircle, "circle", "sphere"), "[0.0, -1.0]", "[0.0, 0.0, -1.0]")) +
+                    "boundary = \"surface\"\n",
+                "contact[0].obstacle.boundary", "does not belong to an obstacle of type \"sphere\""},
+        BadCase{"MeshObstacleMissingBoundary", replaced(kMeshObstacle, "boundary = \"surface\"\n", ""),
+                "contact[0].obstacle.boundary", "missing required key (expected the name of a physical group)"},
+        BadCase{"MeshObstacleMissingMeshKey", replaced(kMeshObstacle, "mesh = \"die.geo\"\n", ""),
+                "contact[0].obstacle.mesh", "missing required key (expected the path of a .geo or .msh file)"},
+        BadCase{"MeshObstacleMissingFile", replaced(kMeshObstacle, "die.geo", "dye.geo"), "contact[0].obstacle.mesh",
+                "mesh file \"" + resolved("dye.geo") + "\" does not exist"},
+        BadCase{"MeshObstacleWrongExtension", replaced(kMeshObstacle, "die.geo", "block.stl"),
+                "contact[0].obstacle.mesh", "expected a Gmsh .geo or .msh file, got \"block.stl\""},
+        BadCase{"RadiusWithMeshObstacle", replaced(kMeshObstacle, "boundary = \"surface\"", "radius = 1.0\nboundary = \"surface\""),
+                "contact[0].obstacle.radius", "keys of this type: type, mesh, boundary"},
+        // contact solver and IPOPT options
+        BadCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
+                "contact_solver.tolerance",
+                "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations"},
+        BadCase{"GeometryToleranceZero", kTwoBodies + "[contact_solver]\ngeometry_tolerance = 0.0\n",
+                "contact_solver.geometry_tolerance", "expected a number > 0, got 0"},
+        BadCase{"MaxGeometryIterationsZero", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 0\n",
+                "contact_solver.max_geometry_iterations", "expected an integer in [1, 2147483647], got 0"},
+        BadCase{"MaxGeometryIterationsFloat", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 10.0\n",
+                "contact_solver.max_geometry_iterations", "expected an integer, got a floating-point number (10.0)"},
+        BadCase{"ContactSolverNotATable", "contact_solver = 3\n" + kTwoBodies, "contact_solver",
+                "expected a table, got an integer (3)"},
+        BadCase{"IpoptBoolean", kTwoBodies + "[ipopt]\ntol = 1e-8\nwarm_start_init_point = true\n",
+                "ipopt.warm_start_init_point",
+                "expected a string, an integer or a floating-point number (an IPOPT option value), got a boolean (true)"},
+        BadCase{"IpoptArray", kTwoBodies + "[ipopt]\ntol = [1e-8, 1e-6]\n", "ipopt.tol",
+                "expected a string, an integer or a floating-point number (an IPOPT option value), got an array"},
+        BadCase{"IpoptTable", kTwoBodies + "[ipopt.tol]\nvalue = 1e-8\n", "ipopt.tol", "got a table"},
+        BadCase{"IpoptNan", kTwoBodies + "[ipopt]\ntol = nan\n", "ipopt.tol", "expected a finite number, got nan"},
+        BadCase{"IpoptIntegerTooLarge", kTwoBodies + "[ipopt]\nmax_iter = 3000000000\n", "ipopt.max_iter",
+                "expected an integer that fits in an int (IPOPT integer option), got 3000000000"},
+        BadCase{"IpoptNotATable", "ipopt = \"tol=1e-8\"\n" + kTwoBodies, "ipopt",
+                "expected a table, got a string (\"tol=1e-8\")"}),
     [](const ::testing::TestParamInfo<BadCase>& case_info) { return std::string(case_info.param.name); });
 
 }  // namespace

@@ -1,0 +1,91 @@
+#include "symcontact/contact/bvh.hpp"
+
+#include <algorithm>
+
+namespace symcontact {
+
+void BoundingVolumeHierarchy::build(const std::vector<Box>& boxes) {
+  nodes_.clear();
+  num_items_ = boxes.size();
+  if (boxes.empty()) return;
+  nodes_.reserve(2 * boxes.size());
+  std::vector<int> items(boxes.size());
+  for (std::size_t i = 0; i < items.size(); ++i) items[i] = static_cast<int>(i);
+  build_range(items, 0, static_cast<int>(items.size()), boxes);
+}
+
+int BoundingVolumeHierarchy::build_range(std::vector<int>& items, int begin, int end, const std::vector<Box>& boxes) {
+  const int id = static_cast<int>(nodes_.size());
+  nodes_.emplace_back();
+  Box box;
+  box.setEmpty();
+  for (int i = begin; i < end; ++i) box.extend(boxes[items[i]]);
+  nodes_[id].box = box;
+  if (end - begin == 1) {
+    nodes_[id].item = items[begin];
+    return id;
+  }
+  int axis;
+  box.sizes().maxCoeff(&axis);
+  const int mid = (begin + end) / 2;
+  std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                   [&](int a, int b) { return boxes[a].center()[axis] < boxes[b].center()[axis]; });
+  const int l = build_range(items, begin, mid, boxes);
+  const int r = build_range(items, mid, end, boxes);
+  nodes_[id].left = l;
+  nodes_[id].right = r;
+  return id;
+}
+
+void BoundingVolumeHierarchy::for_each_overlap(const Box& query, const std::function<void(int)>& visit) const {
+  if (nodes_.empty()) return;
+  std::vector<int> stack{0};
+  while (!stack.empty()) {
+    const Node& n = nodes_[stack.back()];
+    stack.pop_back();
+    if (!n.box.intersects(query)) continue;
+    if (n.item >= 0) {
+      visit(n.item);
+    } else {
+      stack.push_back(n.left);
+      stack.push_back(n.right);
+    }
+  }
+}
+
+int BoundingVolumeHierarchy::nearest(const Eigen::Vector3d& p, double max_dist2,
+                                     const std::function<double(int)>& distance2, double* best_dist2) const {
+  int best = -1;
+  double best_d2 = max_dist2;
+  if (!nodes_.empty()) {
+    std::vector<std::pair<double, int>> stack{{nodes_[0].box.squaredExteriorDistance(p), 0}};
+    while (!stack.empty()) {
+      const auto [lb, id] = stack.back();
+      stack.pop_back();
+      if (lb > best_d2) continue;
+      const Node& n = nodes_[id];
+      if (n.item >= 0) {
+        const double d2 = distance2(n.item);
+        if (d2 <= best_d2) {
+          best_d2 = d2;
+          best = n.item;
+        }
+        continue;
+      }
+      const double dl = nodes_[n.left].box.squaredExteriorDistance(p);
+      const double dr = nodes_[n.right].box.squaredExteriorDistance(p);
+      // Visit the nearer child first (pushed last).
+      if (dl < dr) {
+        stack.emplace_back(dr, n.right);
+        stack.emplace_back(dl, n.left);
+      } else {
+        stack.emplace_back(dl, n.left);
+        stack.emplace_back(dr, n.right);
+      }
+    }
+  }
+  if (best_dist2) *best_dist2 = best_d2;
+  return best;
+}
+
+}  // namespace symcontact

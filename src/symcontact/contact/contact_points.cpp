@@ -1,0 +1,221 @@
+#include "symcontact/contact/contact_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "symcontact/contact/closest_point.hpp"
+#include "symcontact/fem/quadrature.hpp"
+#include "symcontact/fem/shape_functions.hpp"
+
+namespace symcontact {
+
+namespace {
+
+Eigen::MatrixXd facet_nodes(const ContactSurface& s, const Eigen::MatrixXd& x, Index f) {
+  const int npf = s.nodes_per_facet();
+  Eigen::MatrixXd xf(x.rows(), npf);
+  for (int a = 0; a < npf; ++a) xf.col(a) = x.col(s.facet(f)[a]);
+  return xf;
+}
+
+Eigen::Vector3d pad3(const Eigen::VectorXd& v) {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  r.head(v.size()) = v;
+  return r;
+}
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+/// Points of the slave facet (Line2/Line3, current nodes xf) where the line through v along n crosses it.
+void breakpoints_2d(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector2d& v, const Eigen::Vector2d& n,
+                    std::vector<double>& out) {
+  // Monomial form x(ξ) = P0 + P1 ξ + P2 ξ².
+  Eigen::Vector2d P0 = xf.col(0), P1 = xf.col(1) - xf.col(0), P2 = Eigen::Vector2d::Zero();
+  if (type == CellType::kLine3) {
+    P1 = -3.0 * xf.col(0) - xf.col(1) + 4.0 * xf.col(2);
+    P2 = 2.0 * xf.col(0) + 2.0 * xf.col(1) - 4.0 * xf.col(2);
+  }
+  const double c0 = cross2(P0 - v, n), c1 = cross2(P1, n), c2 = cross2(P2, n);
+  auto accept = [&](double xi) {
+    if (xi > 1e-12 && xi < 1 - 1e-12) out.push_back(xi);
+  };
+  const double scale = std::abs(c1) + std::abs(c2);
+  if (std::abs(c2) <= 1e-12 * scale) {
+    if (std::abs(c1) > 0) accept(-c0 / c1);
+    return;
+  }
+  const double disc = c1 * c1 - 4 * c2 * c0;
+  if (disc < 0) return;
+  const double s = std::sqrt(disc);
+  // Numerically stable roots.
+  const double q = -0.5 * (c1 + (c1 >= 0 ? s : -s));
+  if (q != 0) {
+    accept(q / c2);
+    accept(c0 / q);
+  }
+}
+
+}  // namespace
+
+BoundingVolumeHierarchy::Box facet_box(CellType type, const Eigen::MatrixXd& xf, double pad) {
+  BoundingVolumeHierarchy::Box box;
+  box.setEmpty();
+  const int nv = cell_num_vertices(type), npf = cell_num_nodes(type);
+  for (int a = 0; a < npf; ++a) box.extend(pad3(xf.col(a)));
+  if (npf > nv) {
+    // Edge-midpoint nodes m of edge (a, b): the Bézier control point 2m − (x_a + x_b)/2 bounds the curve.
+    static const int line[1][2] = {{0, 1}};
+    static const int tri[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+    for (int e = 0; e < npf - nv; ++e) {
+      const int* ab = nv == 2 ? line[e] : tri[e];
+      box.extend(pad3(2.0 * xf.col(nv + e) - 0.5 * (xf.col(ab[0]) + xf.col(ab[1]))));
+    }
+  }
+  box.min().array() -= pad;
+  box.max().array() += pad;
+  return box;
+}
+
+MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixXd& x) {
+  MasterGeometry g;
+  g.surface = &master;
+  g.x = x;
+  g.normals = nodal_normals(master, x);
+  std::vector<BoundingVolumeHierarchy::Box> boxes(master.num_facets());
+  for (Index f = 0; f < master.num_facets(); ++f) boxes[f] = facet_box(master.facet_type, facet_nodes(master, x, f), 0.0);
+  g.tree.build(boxes);
+  return g;
+}
+
+namespace {
+
+/// Gauss–Legendre points on the sub-intervals of [0, 1] cut at `cuts`, calling f(ξ, w).
+template <class F>
+void for_each_sub_point(std::vector<double> cuts, int ng, F&& f) {
+  cuts.push_back(0.0);
+  cuts.push_back(1.0);
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<double> gx, gw;
+  gauss_legendre_01(ng, gx, gw);
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double a = cuts[k], b = cuts[k + 1];
+    if (b - a < 1e-13) continue;
+    for (int q = 0; q < ng; ++q) f(a + (b - a) * gx[q], (b - a) * gw[q]);
+  }
+}
+
+int default_gauss(const ContactSurface& s, const ContactSearchOptions& o) {
+  return o.gauss_points > 0 ? o.gauss_points : 2 * cell_order(s.facet_type) + 1;
+}
+
+}  // namespace
+
+bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
+                       double search, ContactPoint& cp) {
+  const ContactSurface& ms = *master.surface;
+  const int mpf = ms.nodes_per_facet();
+  const Eigen::Vector3d p3 = pad3(p);
+  const int mf = master.tree.nearest(p3, search * search, [&](int k) {
+    return project_on_facet(ms.facet_type, facet_nodes(ms, master.x, k), p).distance2;
+  });
+  if (mf < 0) return false;
+  const FacetProjection pr = project_on_facet(ms.facet_type, facet_nodes(ms, master.x, mf), p);
+  if (pr.clamped_vertex >= 0 && ms.valence[ms.facet(mf)[pr.clamped_vertex]] <= 1) return false;  // past an end
+  double M[10];
+  shape_functions(ms.facet_type, pr.eta, M, nullptr);
+  Eigen::Vector3d nbar = Eigen::Vector3d::Zero();
+  for (int b = 0; b < mpf; ++b) nbar.head(ms.dim) += M[b] * master.normals.col(ms.facet(mf)[b]);
+  if (nbar.norm() == 0) return false;
+  nbar.normalize();
+  if (slave_normal.dot(nbar) >= 0) return false;  // not facing each other
+  const double theta = (p3 - pr.point).dot(nbar);
+  if (std::abs(theta) > search) return false;
+  cp.master_facet = mf;
+  cp.eta[0] = pr.eta[0];
+  cp.eta[1] = pr.eta[1];
+  cp.x = p3;
+  cp.xbar = pr.point;
+  cp.normal = nbar;
+  cp.gap = theta;
+  return true;
+}
+
+std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                         const MasterGeometry& master, const ContactSearchOptions& options) {
+  if (slave.dim != 2) throw std::logic_error("contact_points: 3D contact surfaces are not supported yet");
+  const ContactSurface& ms = *master.surface;
+  const double search = options.search_distance;
+  const int ng = default_gauss(slave, options);
+  const int npf = slave.nodes_per_facet();
+  std::vector<ContactPoint> points;
+  std::vector<double> cuts;
+  std::vector<double> N(npf);
+  for (Index f = 0; f < slave.num_facets(); ++f) {
+    const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
+    const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
+    // Segmentation: master vertices near this facet.
+    cuts.clear();
+    master.tree.for_each_overlap(facet_box(slave.facet_type, xf, search), [&](int mf) {
+      for (int a = 0; a < 2; ++a) {
+        const Index v = ms.facet(mf)[a];
+        breakpoints_2d(slave.facet_type, xf, master.x.col(v).head<2>(), master.normals.col(v).head<2>(), cuts);
+      }
+    });
+    for_each_sub_point(cuts, ng, [&](double xi, double w) {
+      shape_functions(slave.facet_type, &xi, N.data(), nullptr);
+      const Eigen::VectorXd p = xf * Eigen::Map<const Eigen::VectorXd>(N.data(), npf);
+      const Eigen::Vector3d ns = pad3(facet_normal(slave.facet_type, xf, &xi));
+      ContactPoint cp;
+      if (!project_to_master(master, p, ns, search, cp)) return;
+      cp.slave_facet = f;
+      cp.xi[0] = xi;
+      cp.weight = w * facet_normal(slave.facet_type, Xf, &xi).norm();
+      points.push_back(cp);
+    });
+  }
+  return points;
+}
+
+std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                         const Obstacle& obstacle, const ContactSearchOptions& options) {
+  const int npf = slave.nodes_per_facet();
+  const int d = cell_dim(slave.facet_type);
+  // Facets of a smooth obstacle need no segmentation: a Gauss rule per facet.
+  const QuadratureRule rule = d == 1 ? [&] {
+    QuadratureRule r;
+    r.dim = 1;
+    gauss_legendre_01(default_gauss(slave, options), r.points, r.weights);
+    return r;
+  }()
+                                     : simplex_quadrature(d, 2 * default_gauss(slave, options) - 1);
+  std::vector<ContactPoint> points;
+  std::vector<double> N(npf);
+  for (Index f = 0; f < slave.num_facets(); ++f) {
+    const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
+    const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
+    for (int q = 0; q < rule.size(); ++q) {
+      const double* xi = rule.point(q);
+      shape_functions(slave.facet_type, xi, N.data(), nullptr);
+      const Eigen::Vector3d p = pad3(xf * Eigen::Map<const Eigen::VectorXd>(N.data(), npf));
+      Eigen::Vector3d xbar, n;
+      obstacle.project(p, xbar, n);
+      const Eigen::Vector3d ns = pad3(facet_normal(slave.facet_type, xf, xi));
+      if (ns.dot(n) >= 0) continue;
+      const double theta = (p - xbar).dot(n);
+      if (std::abs(theta) > options.search_distance) continue;
+      ContactPoint cp;
+      cp.slave_facet = f;
+      for (int i = 0; i < d; ++i) cp.xi[i] = xi[i];
+      cp.weight = rule.weights[q] * facet_normal(slave.facet_type, Xf, xi).norm();
+      cp.x = p;
+      cp.xbar = xbar;
+      cp.normal = n;
+      cp.gap = theta;
+      points.push_back(cp);
+    }
+  }
+  return points;
+}
+
+}  // namespace symcontact

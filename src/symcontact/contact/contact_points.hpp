@@ -1,0 +1,69 @@
+#pragma once
+/// \file contact_points.hpp
+/// The geometry step of Algorithm 2 (METHOD.md): from the current configuration, integration points on
+/// the slave surface with their closest-point projections on the master (a surface or an obstacle),
+/// the smoothed normal there, and the gap θ = (x − x̄)·n̄ (talk eq. 10).
+///
+/// Integration (2D): each slave facet is cut where the line through a master vertex v along its
+/// smoothed normal n_v crosses it, so that every sub-segment projects into a single master facet and the
+/// gap integrand is smooth on it (segment-based mortar integration, Puso 2004; Popp et al. 2009, §3.3);
+/// each sub-segment carries Gauss–Legendre points. Weights are reference-configuration measures.
+///
+/// A point contributes only if: a master facet lies within `search_distance`; its projection is not
+/// past an end of the master surface; the slave and master normals face each other (n_s·n̄ < 0); and
+/// |θ| ≤ search_distance.
+
+#include <vector>
+
+#include "symcontact/contact/bvh.hpp"
+#include "symcontact/contact/contact_surface.hpp"
+#include "symcontact/contact/obstacle.hpp"
+
+namespace symcontact {
+
+struct ContactPoint {
+  Index slave_facet = -1;
+  double xi[2] = {0.0, 0.0};       ///< reference coordinates on the slave facet
+  double weight = 0.0;             ///< quadrature weight × reference surface Jacobian
+  Index master_facet = -1;         ///< −1 for an analytic obstacle
+  double eta[2] = {0.0, 0.0};      ///< reference coordinates of the projection on the master facet
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();     ///< current slave point
+  Eigen::Vector3d xbar = Eigen::Vector3d::Zero();  ///< current projection
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< unit smoothed master normal n̄ at x̄
+  double gap = 0.0;                ///< θ = (x − x̄)·n̄
+};
+
+struct ContactSearchOptions {
+  double search_distance = 0.0;  ///< > 0
+  int gauss_points = 0;          ///< per sub-segment; 0: 2·order + 1
+};
+
+/// A master surface in its current configuration, ready for queries.
+struct MasterGeometry {
+  const ContactSurface* surface = nullptr;
+  Eigen::MatrixXd x;        ///< current node positions
+  Eigen::MatrixXd normals;  ///< smoothed nodal normals
+  BoundingVolumeHierarchy tree;
+};
+
+MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixXd& x);
+
+/// Projects point p (dim entries) with outward slave normal `slave_normal` on the master; fills the master
+/// part of `cp` (facet, η, x, x̄, n̄, gap) and returns true when the point is a contact candidate
+/// (the rules above).
+bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
+                       double search, ContactPoint& cp);
+
+/// Slave points against a master surface (xs: current slave node positions).
+std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                         const MasterGeometry& master, const ContactSearchOptions& options);
+
+/// Slave points against an analytic obstacle.
+std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                         const Obstacle& obstacle, const ContactSearchOptions& options);
+
+/// Bounding box of a facet from its node positions (for Line3/Tri6 also the Bézier control points of the
+/// edges, which bound the curved facet), padded by `pad`.
+BoundingVolumeHierarchy::Box facet_box(CellType type, const Eigen::MatrixXd& xf, double pad);
+
+}  // namespace symcontact

@@ -1,0 +1,81 @@
+#include "symcontact/contact/contact_set.hpp"
+
+#include <algorithm>
+
+namespace symcontact {
+
+void ContactSet::finalize() {
+  families_.clear();
+  for (int p = 0; p < static_cast<int>(pairs.size()); ++p) {
+    const ContactPair& cp = pairs[p];
+    if (cp.obstacle >= 0) {
+      families_.push_back({p, cp.surface_a, -1});
+    } else if (cp.mode == ContactMode::kSymmetric) {
+      families_.push_back({p, cp.surface_a, cp.surface_b});
+      families_.push_back({p, cp.surface_b, cp.surface_a});
+    } else {
+      families_.push_back(cp.slave_is_b ? ContactFamily{p, cp.surface_b, cp.surface_a}
+                                        : ContactFamily{p, cp.surface_a, cp.surface_b});
+    }
+  }
+}
+
+ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u) const {
+  ContactLinearization lin;
+  std::vector<Eigen::MatrixXd> x(surfaces.size());
+  std::vector<MasterGeometry> master(surfaces.size());
+  std::vector<char> prepared(surfaces.size(), 0);
+  for (std::size_t s = 0; s < surfaces.size(); ++s) x[s] = current_positions(surfaces[s], dofs, u);
+  std::vector<Triplet> triplets;
+  std::vector<double> b;
+  for (int f = 0; f < static_cast<int>(families_.size()); ++f) {
+    const ContactFamily& fam = families_[f];
+    const ContactPair& pair = pairs[fam.pair];
+    ContactSearchOptions opt;
+    opt.search_distance = pair.search_distance;
+    const ContactSurface& slave = surfaces[fam.slave];
+    std::vector<ContactPoint> pts;
+    if (fam.master >= 0) {
+      if (!prepared[fam.master]) {
+        master[fam.master] = prepare_master(surfaces[fam.master], x[fam.master]);
+        prepared[fam.master] = 1;
+      }
+      pts = contact_points(slave, x[fam.slave], master[fam.master], opt);
+    } else {
+      pts = contact_points(slave, x[fam.slave], obstacles[pair.obstacle], opt);
+    }
+    const GapConstraints g = assemble_gap_constraints(slave, fam.master >= 0 ? &surfaces[fam.master] : nullptr, pts, dofs);
+    const int offset = static_cast<int>(b.size());
+    for (const Triplet& t : g.A) triplets.emplace_back(t.row() + offset, t.col(), t.value());
+    b.insert(b.end(), g.b.begin(), g.b.end());
+    lin.row_family.insert(lin.row_family.end(), g.num_rows(), f);
+    lin.row_node.insert(lin.row_node.end(), g.slave_node.begin(), g.slave_node.end());
+    lin.row_support.insert(lin.row_support.end(), g.support.begin(), g.support.end());
+    lin.points.push_back(std::move(pts));
+  }
+  lin.A.resize(static_cast<Index>(b.size()), dofs.num_dofs());
+  lin.A.setFromTriplets(triplets.begin(), triplets.end());
+  lin.b = Eigen::Map<const VectorXd>(b.data(), static_cast<Index>(b.size()));
+  return lin;
+}
+
+double ContactSet::automatic_search_distance(const ContactSurface& a, const ContactSurface* b) {
+  Eigen::VectorXd lo = a.X.rowwise().minCoeff(), hi = a.X.rowwise().maxCoeff();
+  double hmax = 0.0;
+  auto facet_size = [&](const ContactSurface& s) {
+    const int nv = cell_num_vertices(s.facet_type);
+    for (Index f = 0; f < s.num_facets(); ++f)
+      for (int i = 0; i < nv; ++i)
+        for (int j = i + 1; j < nv; ++j)
+          hmax = std::max(hmax, (s.X.col(s.facet(f)[i]) - s.X.col(s.facet(f)[j])).norm());
+  };
+  facet_size(a);
+  if (b) {
+    lo = lo.cwiseMin(b->X.rowwise().minCoeff());
+    hi = hi.cwiseMax(b->X.rowwise().maxCoeff());
+    facet_size(*b);
+  }
+  return 0.1 * (hi - lo).norm() + 2.0 * hmax;
+}
+
+}  // namespace symcontact

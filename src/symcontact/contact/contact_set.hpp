@@ -1,0 +1,71 @@
+#pragma once
+/// \file contact_set.hpp
+/// All contact pairs of a problem, and their linearisation at a given displacement (steps 1–4 of
+/// Algorithm 2, METHOD.md).
+///
+/// A pair joins surface a to surface b (or to an obstacle). It contributes constraint *families*:
+///  - symmetric: a onto b AND b onto a (no master/slave choice; the two families are nearly
+///    dependent, which the interior point method tolerates),
+///  - one-pass: the slave onto the master only,
+///  - obstacle: a onto the obstacle.
+/// Stacking the families' rows gives g(u) = A u + b ≥ 0.
+
+#include <string>
+#include <vector>
+
+#include "symcontact/contact/contact_points.hpp"
+#include "symcontact/contact/gap_constraints.hpp"
+
+namespace symcontact {
+
+enum class ContactMode { kSymmetric, kOnePass };
+
+struct ContactPair {
+  std::string name;
+  int surface_a = -1;
+  int surface_b = -1;   ///< −1 with an obstacle
+  int obstacle = -1;    ///< index into ContactSet::obstacles, or −1
+  ContactMode mode = ContactMode::kSymmetric;
+  bool slave_is_b = false;      ///< one-pass only
+  double search_distance = 0.0; ///< resolved (> 0)
+};
+
+struct ContactFamily {
+  int pair = -1;
+  int slave = -1;    ///< surface index
+  int master = -1;   ///< surface index, or −1 for the pair's obstacle
+};
+
+/// The constraints at one linearisation point.
+struct ContactLinearization {
+  SparseMatrix A;                 ///< rows × num_dofs
+  VectorXd b;
+  std::vector<int> row_family;    ///< family of each row
+  std::vector<Index> row_node;    ///< slave surface node of each row
+  std::vector<double> row_support;///< Σ w φ_i of each row
+  std::vector<std::vector<ContactPoint>> points;  ///< per family
+};
+
+class ContactSet {
+ public:
+  std::vector<ContactSurface> surfaces;
+  std::vector<Obstacle> obstacles;
+  std::vector<ContactPair> pairs;
+
+  /// Derives the families from the pairs (call after filling pairs).
+  void finalize();
+  const std::vector<ContactFamily>& families() const { return families_; }
+  bool empty() const { return pairs.empty(); }
+
+  /// Projections, normals and gap constraints from the configuration X + u.
+  ContactLinearization linearize(const DofMap& dofs, const VectorXd& u) const;
+
+  /// The default search distance of a pair: 0.1 × the diagonal of the bounding box of its surfaces
+  /// (reference configuration) + 2 × their largest facet size.
+  static double automatic_search_distance(const ContactSurface& a, const ContactSurface* b);
+
+ private:
+  std::vector<ContactFamily> families_;
+};
+
+}  // namespace symcontact

@@ -1,0 +1,89 @@
+#include "symcontact/contact/contact_surface.hpp"
+
+#include <Eigen/Geometry>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "symcontact/fem/shape_functions.hpp"
+
+namespace symcontact {
+
+Eigen::VectorXd facet_normal(CellType type, const Eigen::MatrixXd& xf, const double* xi) {
+  const int npf = cell_num_nodes(type);
+  const int d = cell_dim(type);
+  double dN[20];
+  shape_functions(type, xi, nullptr, dN);
+  if (d == 1) {
+    Eigen::Vector2d t = Eigen::Vector2d::Zero();
+    for (int a = 0; a < npf; ++a) t += xf.col(a).head<2>() * dN[a];
+    return Eigen::Vector2d(t.y(), -t.x());
+  }
+  Vec3 t0 = Vec3::Zero(), t1 = Vec3::Zero();
+  for (int a = 0; a < npf; ++a) {
+    t0 += xf.col(a).head<3>() * dN[2 * a];
+    t1 += xf.col(a).head<3>() * dN[2 * a + 1];
+  }
+  return t0.cross(t1);
+}
+
+ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name) {
+  const FacetGroup& g = mesh.facet_groups.at(group);
+  ContactSurface s;
+  s.name = name;
+  s.body = body;
+  s.dim = mesh.dim;
+  s.facet_type = mesh.facet_cell_type();
+  const int npf = s.nodes_per_facet();
+  const int nv = cell_num_vertices(s.facet_type);
+  std::unordered_map<Index, Index> local;
+  for (Index v : g.facets) {
+    if (local.emplace(v, static_cast<Index>(s.nodes.size())).second) s.nodes.push_back(v);
+    s.facets.push_back(local[v]);
+  }
+  s.X.resize(s.dim, s.num_nodes());
+  for (Index k = 0; k < s.num_nodes(); ++k) s.X.col(k) = mesh.x.col(s.nodes[k]);
+  s.valence.assign(s.num_nodes(), 0);
+  for (Index f = 0; f < s.num_facets(); ++f)
+    for (int a = 0; a < nv; ++a) ++s.valence[s.facet(f)[a]];
+  // Lumped areas ∫ N_k dS with a rule exact for the (polynomial, straight-facet) integrand.
+  s.nodal_area = Eigen::VectorXd::Zero(s.num_nodes());
+  const QuadratureRule rule = simplex_quadrature(s.dim - 1, 2 * cell_order(s.facet_type) + 1);
+  Eigen::MatrixXd xf(s.dim, npf);
+  std::vector<double> N(npf);
+  for (Index f = 0; f < s.num_facets(); ++f) {
+    for (int a = 0; a < npf; ++a) xf.col(a) = s.X.col(s.facet(f)[a]);
+    for (int q = 0; q < rule.size(); ++q) {
+      shape_functions(s.facet_type, rule.point(q), N.data(), nullptr);
+      const double J = facet_normal(s.facet_type, xf, rule.point(q)).norm();
+      for (int a = 0; a < npf; ++a) s.nodal_area[s.facet(f)[a]] += rule.weights[q] * J * N[a];
+    }
+  }
+  return s;
+}
+
+Eigen::MatrixXd current_positions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u) {
+  Eigen::MatrixXd x = s.X;
+  if (s.is_rigid()) return x;
+  for (Index k = 0; k < s.num_nodes(); ++k)
+    for (int i = 0; i < s.dim; ++i) x(i, k) += u[dofs.dof(s.body, s.nodes[k], i)];
+  return x;
+}
+
+Eigen::MatrixXd nodal_normals(const ContactSurface& s, const Eigen::MatrixXd& x) {
+  const int npf = s.nodes_per_facet();
+  const std::vector<double> ref = reference_nodes(s.facet_type);
+  const int d = cell_dim(s.facet_type);
+  Eigen::MatrixXd n = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
+  Eigen::MatrixXd xf(s.dim, npf);
+  for (Index f = 0; f < s.num_facets(); ++f) {
+    for (int a = 0; a < npf; ++a) xf.col(a) = x.col(s.facet(f)[a]);
+    for (int a = 0; a < npf; ++a) n.col(s.facet(f)[a]) += facet_normal(s.facet_type, xf, ref.data() + a * d);
+  }
+  for (Index k = 0; k < s.num_nodes(); ++k) {
+    const double len = n.col(k).norm();
+    if (len > 0) n.col(k) /= len;
+  }
+  return n;
+}
+
+}  // namespace symcontact

@@ -1,0 +1,56 @@
+#include "symcontact/contact/gap_constraints.hpp"
+
+#include "symcontact/fem/shape_functions.hpp"
+
+namespace symcontact {
+
+GapConstraints assemble_gap_constraints(const ContactSurface& slave, const ContactSurface* master,
+                                        const std::vector<ContactPoint>& points, const DofMap& dofs) {
+  GapConstraints g;
+  const int D = slave.dim;
+  const int npf = slave.nodes_per_facet();
+  const int mpf = master ? master->nodes_per_facet() : 0;
+  std::vector<Index> row_of(slave.num_nodes(), -1);
+  std::vector<double> N(npf), M(std::max(mpf, 1));
+  for (const ContactPoint& p : points) {
+    shape_functions(slave.facet_type, p.xi, N.data(), nullptr);
+    if (master) shape_functions(master->facet_type, p.eta, M.data(), nullptr);
+    const Index* sn = slave.facet(p.slave_facet);
+    // Reference positions of the slave point and of the projection: b collects the u-independent part.
+    Eigen::Vector3d Xs = Eigen::Vector3d::Zero(), Ym = p.xbar;
+    for (int a = 0; a < npf; ++a) Xs.head(D) += N[a] * slave.X.col(sn[a]);
+    if (master) {
+      Ym.setZero();
+      for (int b = 0; b < mpf; ++b) Ym.head(D) += M[b] * master->X.col(master->facet(p.master_facet)[b]);
+    }
+    const double theta0 = (Xs - Ym).dot(p.normal);
+    for (int i = 0; i < npf; ++i) {
+      const double wi = p.weight * N[i];
+      if (wi == 0.0) continue;
+      Index& row = row_of[sn[i]];
+      if (row < 0) {
+        row = g.num_rows();
+        g.b.push_back(0.0);
+        g.slave_node.push_back(sn[i]);
+        g.support.push_back(0.0);
+      }
+      g.b[row] += wi * theta0;
+      g.support[row] += wi;
+      if (!slave.is_rigid())
+        for (int a = 0; a < npf; ++a)
+          for (int c = 0; c < D; ++c)
+            g.A.emplace_back(static_cast<int>(row), static_cast<int>(dofs.dof(slave.body, slave.nodes[sn[a]], c)),
+                             wi * N[a] * p.normal[c]);
+      if (master && !master->is_rigid()) {
+        const Index* mn = master->facet(p.master_facet);
+        for (int b = 0; b < mpf; ++b)
+          for (int c = 0; c < D; ++c)
+            g.A.emplace_back(static_cast<int>(row), static_cast<int>(dofs.dof(master->body, master->nodes[mn[b]], c)),
+                             -wi * M[b] * p.normal[c]);
+      }
+    }
+  }
+  return g;
+}
+
+}  // namespace symcontact

@@ -1,0 +1,34 @@
+#pragma once
+/// \file constrained_problem.hpp
+/// The optimisation problem the contact solver hands to an interior-point method, with no IPOPT types
+/// (STYLE.md §9):
+///
+///     min_x f(x)   subject to   c(x) = A x + b ≥ 0,      x ∈ R^n,
+///
+/// f smooth (twice differentiable; convex for linear elasticity), A a constant sparse m × n matrix for
+/// the duration of one solve (contact constraints linearised at frozen projections and normals).
+/// The Hessian of the Lagrangian is ∇²f because the constraints are linear.
+
+#include "symcontact/core/types.hpp"
+
+namespace symcontact {
+
+class ConstrainedProblem {
+ public:
+  virtual ~ConstrainedProblem() = default;
+  virtual Index num_variables() const = 0;
+  /// f(x). May throw EvaluationError (energy/energy_term.hpp) when f cannot be evaluated at x.
+  virtual double objective(const VectorXd& x) = 0;
+  /// g = ∇f(x) (g is resized by the callee).
+  virtual void gradient(const VectorXd& x, VectorXd& g) = 0;
+  /// The lower triangle (row ≥ column) of ∇²f(x), compressed (column-major). Its sparsity pattern
+  /// must be the same at every call within one solve; explicit zeros are allowed.
+  virtual void hessian_lower(const VectorXd& x, SparseMatrix& H) = 0;
+  /// True when ∇²f does not depend on x.
+  virtual bool hessian_is_constant() const { return false; }
+  /// A (m × n, compressed) and b (m) of the constraints c(x) = A x + b ≥ 0.
+  virtual const SparseMatrix& constraint_matrix() const = 0;
+  virtual const VectorXd& constraint_offset() const = 0;
+};
+
+}  // namespace symcontact

@@ -1,0 +1,91 @@
+#pragma once
+/// \file ipopt_solver.hpp
+/// Solves a ConstrainedProblem
+///
+///     min_x f(x)   subject to   c(x) = A x + b ≥ 0
+///
+/// with the interior point method IPOPT (Wächter & Biegler 2006). The adapter is thin (STYLE.md §9):
+/// a private Ipopt::TNLP in the .cpp translates sizes, bounds, sparsity structures and values, and
+/// nothing else; no IPOPT type appears in this header.
+///
+/// Conventions
+/// - IPOPT sees g(x) = A x + b with bounds 0 ≤ g ≤ +∞ and free variables. Its Lagrangian is
+///   f + λᵀg, so at a KKT point λ ≤ 0. We report μ = −λ ≥ 0, the contact-pressure sign:
+///       ∇f(x) = Aᵀ μ,   μ ≥ 0,   c(x) ≥ 0,   μ_i c_i(x) = 0.
+///   Warm-start multipliers are given in the same (μ ≥ 0) convention.
+/// - Hessian of the Lagrangian = obj_factor · ∇²f (the constraints are linear); its sparsity is the
+///   pattern of hessian_lower() at x0, fixed for the whole solve.
+///
+/// Scaling (IPOPT "user-scaling"; why: IPOPT's tolerances are absolute numbers on the scaled problem
+/// and its default gradient-based scaling only ever scales DOWN, so an elastic energy in SI units with
+/// a 1e-8 gradient would be declared converged at x0, and one with a 1e+11 gradient could never
+/// reach tol = 1e-10):
+/// - objective: s_f = 1 / g_ref with g_ref = max(‖∇f(x0)‖∞, max|∇²f(x0)|·‖x0‖∞) (s_f = 1 when g_ref
+///   is 0 or not finite). For the usual cold start x0 = 0 this is exactly "the scaled gradient at x0
+///   has max-norm 1"; the Hessian term keeps the scale physical when x0 is (nearly) a minimiser
+///   (a warm start), where ∇f(x0) ≈ 0 would otherwise blow the scale up.
+///   `tolerance` is therefore relative to the force scale g_ref. IPOPT's extra absolute checks on the
+///   unscaled problem (dual_inf_tol, compl_inf_tol and their "acceptable" variants) are set to
+///   IPOPT's defaults divided by s_f so that they mean on our problem what they mean on a
+///   unit-gradient one.
+/// - constraints: row i is multiplied by 1 / max_j |A_ij| (1 for an empty row), so scaled constraint
+///   values are in the units of x whatever the units of A (weak, area-weighted gaps).
+/// - variables: not scaled.
+/// The IPOPT option "obj_scaling_factor" given by the user multiplies s_f (IPOPT's rule).
+///
+/// Errors
+/// - f, ∇f or ∇²f throwing EvaluationError makes the callback return false: IPOPT then shortens the
+///   step (line search) or, at the starting point, stops with a failed status. Any other exception
+///   propagates out of solve_with_ipopt.
+/// - An unknown IPOPT option, a value of the wrong type or out of range: std::invalid_argument naming
+///   the option. Inconsistent sizes (x0, A, b, multipliers0): std::invalid_argument.
+/// - A failed solve does NOT throw: success == false and status/status_text say why; the caller
+///   decides (typically by throwing SolveError with its own context).
+
+#include <map>
+#include <string>
+
+#include "symcontact/core/types.hpp"
+#include "symcontact/optim/constrained_problem.hpp"
+
+namespace symcontact {
+
+struct IpoptOptions {
+  double tolerance = 1e-10;  ///< IPOPT "tol" on the scaled problem (relative to g_ref, see above)
+  int max_iterations = 1000;  ///< IPOPT "max_iter"
+  int print_level = 0;        ///< IPOPT "print_level" on stdout; 0 = nothing at all on stdout
+  /// IPOPT log written to this file when not empty, at file_print_level = max(5, print_level).
+  std::string output_file;
+  /// Start from x0 and multipliers0 (IPOPT warm_start_init_point with small bound pushes). Without
+  /// multipliers0 only x0 is used, as in a cold start.
+  bool warm_start = false;
+  /// User-set IPOPT options (e.g. from the problem file), applied after the defaults so they override
+  /// them (e.g. {"mu_strategy", "monotone"}).
+  std::map<std::string, std::string> string_options;
+  std::map<std::string, double> numeric_options;
+  std::map<std::string, int> integer_options;
+};
+
+struct IpoptResult {
+  bool success = false;       ///< Solve_Succeeded or Solved_To_Acceptable_Level
+  int status = 0;             ///< Ipopt::ApplicationReturnStatus as int
+  std::string status_text;    ///< e.g. "Solve_Succeeded", "Infeasible_Problem_Detected"
+  int iterations = 0;
+  double objective = 0.0;     ///< f(x) (unscaled)
+  /// Final iterate; also on failure (the last iterate, for inspection). When IPOPT stopped before
+  /// producing any iterate (invalid problem, evaluation failure at x0) it is x0.
+  VectorXd x;
+  VectorXd multipliers;        ///< μ ≥ 0 with ∇f(x) = Aᵀμ at a KKT point (= −IPOPT's λ)
+  VectorXd constraint_values;  ///< c(x) = A x + b
+  double seconds = 0.0;               ///< wall time inside IPOPT (including callbacks)
+  double seconds_in_callbacks = 0.0;  ///< wall time spent evaluating f, ∇f, ∇²f, c
+  double objective_scaling = 1.0;     ///< s_f used (see the file comment)
+};
+
+/// Solves min f(x) s.t. A x + b ≥ 0 from x0 (size problem.num_variables()). `multipliers0` (size m,
+/// μ ≥ 0 convention) is only used when options.warm_start is true. The problem is evaluated at x0
+/// before IPOPT starts (gradient and Hessian, for the scaling and the Hessian pattern).
+IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, const IpoptOptions& options,
+                             const VectorXd* multipliers0 = nullptr);
+
+}  // namespace symcontact

@@ -1,0 +1,82 @@
+#include "symcontact/solvers/contact_solver.hpp"
+
+#include <sstream>
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/solvers/reduced_problem.hpp"
+
+namespace symcontact {
+
+ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                 const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
+                                 const Logger& log) {
+  ContactSolveReport rep;
+  ReducedProblem problem(energy, fixed, dofs.num_dofs());
+  rep.num_free = problem.num_free();
+  fixed.impose(u);
+  VectorXd x = problem.restrict(u);
+  VectorXd mu_prev;
+  std::vector<int> rows_prev_family;
+  std::vector<Index> rows_prev_node;
+  for (int it = 1;; ++it) {
+    {
+      ScopedPhase t(rep.times, "search");
+      rep.linearization = contacts.linearize(dofs, problem.expand(x));
+    }
+    const ContactLinearization& lin = rep.linearization;
+    {
+      ScopedPhase t(rep.times, "assembly");
+      problem.set_constraints(lin.A, lin.b);
+    }
+    rep.num_constraints = lin.A.rows();
+    // Warm start when the rows are the same (same families, same nodes).
+    IpoptOptions opt = options.ipopt;
+    VectorXd mu0;
+    const bool same_rows = it > 1 && lin.row_family == rows_prev_family && lin.row_node == rows_prev_node;
+    if (same_rows) {
+      opt.warm_start = true;
+      mu0 = mu_prev;
+    }
+    IpoptResult res;
+    {
+      ScopedPhase t(rep.times, "optimizer");
+      res = solve_with_ipopt(problem, x, opt, same_rows ? &mu0 : nullptr);
+    }
+    rep.ipopt_iterations += res.iterations;
+    rep.ipopt_per_iteration.push_back(res.iterations);
+    rep.ipopt_status = res.status_text;
+    rep.geometry_iterations = it;
+    if (!res.success) {
+      u = problem.expand(res.x.size() == x.size() ? res.x : x);
+      throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
+    }
+    const double change = (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
+    rep.change_history.push_back(change);
+    x = res.x;
+    mu_prev = res.multipliers;
+    rows_prev_family = lin.row_family;
+    rows_prev_node = lin.row_node;
+    {
+      std::ostringstream s;
+      s << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, IPOPT " << res.iterations
+        << " iterations (" << res.status_text << "), change " << change;
+      log.detail(s.str());
+    }
+    if (change < options.geometry_tolerance) {
+      rep.multipliers = res.multipliers;
+      break;
+    }
+    if (it >= options.max_geometry_iterations) {
+      u = problem.expand(x);
+      std::ostringstream s;
+      s << "the geometry fixed point did not converge in " << options.max_geometry_iterations
+        << " iterations (last relative change " << change << ", tolerance " << options.geometry_tolerance << ")";
+      throw SolveError(s.str());
+    }
+  }
+  u = problem.expand(x);
+  rep.contact_force = rep.linearization.A.transpose() * rep.multipliers;
+  return rep;
+}
+
+}  // namespace symcontact

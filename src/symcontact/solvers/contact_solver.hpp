@@ -1,0 +1,52 @@
+#pragma once
+/// \file contact_solver.hpp
+/// Algorithm 2 of the talk (METHOD.md): the geometry fixed point of the symmetric contact problem.
+///
+///   repeat:  linearise the contact constraints at U_n (projections, smoothed normals, contact zone);
+///            U_{n+1} = argmin E(U) subject to A_n U + b_n ≥ 0, by the interior point method (IPOPT),
+///            warm-started from U_n and the previous multipliers when the constraint rows match;
+///   until    ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ < tolerance.
+///
+/// The multipliers μ ≥ 0 of the final solve give the contact forces F_c = Aᵀ μ (both constraint
+/// families together: one force per node, from which a single interface pressure is recovered).
+
+#include <string>
+#include <vector>
+
+#include "symcontact/contact/contact_set.hpp"
+#include "symcontact/core/log.hpp"
+#include "symcontact/core/timer.hpp"
+#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/optim/ipopt_solver.hpp"
+#include "symcontact/solvers/fixed_dofs.hpp"
+
+namespace symcontact {
+
+struct ContactSolveOptions {
+  double geometry_tolerance = 1e-6;
+  int max_geometry_iterations = 50;
+  IpoptOptions ipopt;
+};
+
+struct ContactSolveReport {
+  int geometry_iterations = 0;
+  int ipopt_iterations = 0;                 ///< summed over the geometry iterations
+  std::vector<int> ipopt_per_iteration;
+  std::vector<double> change_history;       ///< relative change after each geometry iteration
+  std::string ipopt_status;                 ///< of the last solve
+  Index num_free = 0;
+  Index num_constraints = 0;                ///< of the last linearisation
+  PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
+  ContactLinearization linearization;       ///< at the last geometry iterate
+  VectorXd multipliers;                     ///< μ of the last solve (one per row)
+  VectorXd contact_force;                   ///< F_c = Aᵀ μ, full DOF vector
+};
+
+/// On entry u is the starting point (previous load step); on exit the solution. Throws SolveError (with
+/// the IPOPT status or the fixed-point history) when a solve fails or the fixed point does not converge;
+/// u then holds the last iterate.
+ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                 const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
+                                 const Logger& log);
+
+}  // namespace symcontact

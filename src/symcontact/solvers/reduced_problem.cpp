@@ -1,0 +1,65 @@
+#include "symcontact/solvers/reduced_problem.hpp"
+
+namespace symcontact {
+
+ReducedProblem::ReducedProblem(const EnergyTerm& energy, const FixedDofs& fixed, Index num_dofs) : energy_(energy) {
+  num_free_ = fixed.free_numbering(num_dofs, free_index_);
+  free_dofs_.resize(num_free_);
+  for (Index d = 0; d < num_dofs; ++d)
+    if (free_index_[d] >= 0) free_dofs_[free_index_[d]] = d;
+  u_fixed_ = VectorXd::Zero(num_dofs);
+  fixed.impose(u_fixed_);
+  A_.resize(0, num_free_);
+}
+
+void ReducedProblem::set_constraints(const SparseMatrix& A, const VectorXd& b) {
+  b_ = b;
+  std::vector<Triplet> t;
+  t.reserve(A.nonZeros());
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      const Index f = free_index_[j];
+      if (f >= 0)
+        t.emplace_back(static_cast<int>(it.row()), static_cast<int>(f), it.value());
+      else
+        b_[it.row()] += it.value() * u_fixed_[j];
+    }
+  A_.resize(A.rows(), num_free_);
+  A_.setFromTriplets(t.begin(), t.end());
+}
+
+VectorXd ReducedProblem::expand(const VectorXd& x) const {
+  VectorXd u = u_fixed_;
+  for (Index k = 0; k < num_free_; ++k) u[free_dofs_[k]] = x[k];
+  return u;
+}
+
+VectorXd ReducedProblem::restrict(const VectorXd& u) const {
+  VectorXd x(num_free_);
+  for (Index k = 0; k < num_free_; ++k) x[k] = u[free_dofs_[k]];
+  return x;
+}
+
+double ReducedProblem::objective(const VectorXd& x) { return energy_.value(expand(x)); }
+
+void ReducedProblem::gradient(const VectorXd& x, VectorXd& g) {
+  VectorXd gu = VectorXd::Zero(u_fixed_.size());
+  energy_.add_gradient(expand(x), gu);
+  g = restrict(gu);
+}
+
+void ReducedProblem::hessian_lower(const VectorXd& x, SparseMatrix& H) {
+  if (have_H_ && energy_.hessian_is_constant()) {
+    H = H_cache_;
+    return;
+  }
+  ReducedTripletSink sink(free_index_);
+  energy_.add_hessian(expand(x), sink);
+  H = sink.to_lower_matrix(num_free_);
+  if (energy_.hessian_is_constant()) {
+    H_cache_ = H;
+    have_H_ = true;
+  }
+}
+
+}  // namespace symcontact

@@ -1,0 +1,31 @@
+#pragma once
+/// \file solve_case.hpp
+/// Test helper: reads a problem from TOML text, builds the model and solves every load step (contact or
+/// not) through the library, returning what the validation tests inspect.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "symcontact/model/model.hpp"
+#include "symcontact/post/contact_results.hpp"
+#include "symcontact/solvers/contact_solver.hpp"
+
+namespace symcontact::testing {
+
+struct SolvedCase {
+  ProblemSpec spec;
+  std::unique_ptr<Model> model;
+  VectorXd u;
+  ContactSolveReport report;                  ///< of the last step (contact problems)
+  std::vector<ContactPairResult> contact;     ///< of the last step
+  VectorXd constraint_values;                 ///< A u + b at the last linearisation
+};
+
+/// `base_dir` resolves relative mesh paths. Throws what the library throws.
+std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::string& base_dir);
+
+/// Writes `text` to `dir/name` (creating dir) and returns the path.
+std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
+
+}  // namespace symcontact::testing

@@ -1,0 +1,208 @@
+/// End-to-end tests of the command-line program (app/main.cpp): exit codes, output files, and that
+/// every input error names the file and the key or group at fault and leaves no output folder behind.
+/// The binary is SYMCONTACT_CLI; each test works in its own temporary folder (CTest runs them in
+/// parallel) and runs the program through the shell, capturing stdout and stderr together.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int exit_code = -1;  ///< the program's exit status, or -1 when it did not exit normally
+  std::string output;  ///< stdout and stderr, interleaved
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  ASSERT_TRUE(out.good()) << "cannot write " << path;
+}
+
+std::string shell_quote(const fs::path& p) { return "'" + p.string() + "'"; }
+
+/// The [problem] table and one 2D linear-elastic body; `extra` is appended (dirichlet, pressure, ...).
+std::string problem_toml(const std::string& mesh, const std::string& group, const std::string& nu,
+                         const std::string& extra, const std::string& problem_extra = "") {
+  return "[problem]\ndimension = 2\nmodel = \"plane_strain\"\n" + problem_extra +
+         "\n[[body]]\nname = \"block\"\nmesh = \"" + mesh + "\"\ngroup = \"" + group +
+         "\"\n\n[body.material]\nmodel = \"linear_elastic\"\nE = 1000.0\nnu = " + nu + "\n\n" + extra;
+}
+
+const std::string kClampBottom = "[[body.dirichlet]]\nboundary = \"bottom\"\nux = 0.0\nuy = 0.0\n\n";
+const std::string kPressTop = "[[body.pressure]]\nboundary = \"top\"\npressure = 10.0\n";
+
+std::string example_geo() { return std::string(SYMCONTACT_EXAMPLES) + "/block_2d/block.geo"; }
+std::string test_mesh(const std::string& name) { return std::string(SYMCONTACT_TEST_DATA) + "/meshes/" + name; }
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("symcontact_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (!HasFailure()) fs::remove_all(dir_, ec);  // kept on failure, for a look
+  }
+
+  /// Runs `symcontact ARGS` in the test's folder.
+  CliResult run(const std::string& args) const {
+    const fs::path log = dir_ / "cli_output.txt";
+    const std::string command = "cd " + shell_quote(dir_) + " && " + shell_quote(SYMCONTACT_CLI) + " " + args +
+                                " > " + shell_quote(log) + " 2>&1";
+    const int status = std::system(command.c_str());
+    CliResult r;
+    r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    r.output = read_text(log);
+    return r;
+  }
+
+  /// Writes `text` as `name` in the test's folder and returns its path.
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path p = dir_ / name;
+    write_text(p, text);
+    return p;
+  }
+
+  /// Runs `run CASE --out out`, expects an input error (exit 2) whose message holds every string in
+  /// `expected`, and no output folder.
+  void expect_input_error(const fs::path& case_file, std::initializer_list<std::string> expected) const {
+    const fs::path out = dir_ / "out";
+    const CliResult r = run("run " + shell_quote(case_file) + " --out " + shell_quote(out));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
+    for (const std::string& s : expected) {
+      EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
+    }
+    EXPECT_FALSE(fs::exists(out)) << "an input error must not create the output folder";
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, VersionPrintsTheVersion) {
+  const CliResult r = run("--version");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(std::string("symcontact ") + SYMCONTACT_VERSION), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, NoSubcommandOrUnknownOptionIsAnInputError) {
+  EXPECT_EQ(run("").exit_code, 2);
+  EXPECT_EQ(run("run").exit_code, 2);  // the case file is required
+  EXPECT_EQ(run("run x.toml --no-such-option").exit_code, 2);
+}
+
+TEST_F(Cli, RunBlockExampleWritesResults) {
+  const fs::path out = dir_ / "block_out";
+  const CliResult r = run("run " + shell_quote(std::string(SYMCONTACT_EXAMPLES) + "/block_2d/block.toml") + " --out " +
+                          shell_quote(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  ASSERT_TRUE(fs::is_regular_file(out / "summary.json")) << r.output;
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
+  EXPECT_TRUE(fs::is_regular_file(out / "results.pvd"));
+  int vtu = 0;
+  for (const auto& e : fs::directory_iterator(out)) vtu += e.path().extension() == ".vtu" ? 1 : 0;
+  EXPECT_EQ(vtu, 2) << "one body, two load steps";
+  EXPECT_TRUE(fs::is_regular_file(out / "block_0001.vtu"));
+  EXPECT_TRUE(fs::is_regular_file(out / "block_0002.vtu"));
+}
+
+TEST_F(Cli, DefaultOutputFolderIsNamedAfterTheCase) {
+  write("press.toml", problem_toml(example_geo(), "block", "0.3", kClampBottom + kPressTop));
+  const CliResult r = run("run press.toml -q");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(fs::is_regular_file(dir_ / "press_results" / "summary.json"));
+  EXPECT_EQ(r.output, "") << "-q prints errors only";
+}
+
+TEST_F(Cli, CheckBuildsTheModelAndWritesNothing) {
+  const fs::path case_file = write("press.toml", problem_toml(example_geo(), "block", "0.3", kClampBottom + kPressTop));
+  const CliResult r = run("check " + shell_quote(case_file));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("OK"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "press_results"));
+}
+
+TEST_F(Cli, MissingDirichletGroupIsAnInputError) {
+  const fs::path f = write("missing_group.toml",
+                           problem_toml(example_geo(), "block", "0.3",
+                                        "[[body.dirichlet]]\nboundary = \"nowhere\"\nuy = 0.0\n\n" + kPressTop));
+  expect_input_error(f, {"missing_group.toml", "body[0].dirichlet[0].boundary", "nowhere"});
+}
+
+TEST_F(Cli, MissingBodyGroupIsAnInputError) {
+  const fs::path f = write("missing_body.toml", problem_toml(example_geo(), "nobody", "0.3", kClampBottom));
+  expect_input_error(f, {"missing_body.toml", "body[0].group", "nobody"});
+}
+
+TEST_F(Cli, UnknownKeyIsAnInputError) {
+  const fs::path f =
+      write("unknown_key.toml", problem_toml(example_geo(), "block", "0.3", kClampBottom, "colour = \"red\"\n"));
+  expect_input_error(f, {"unknown_key.toml", "problem.colour"});
+}
+
+TEST_F(Cli, IncompressiblePoissonRatioIsAnInputError) {
+  const fs::path f = write("nu_half.toml", problem_toml(example_geo(), "block", "0.5", kClampBottom + kPressTop));
+  expect_input_error(f, {"nu_half.toml", "body[0].material.nu"});
+}
+
+TEST_F(Cli, MissingMeshFileIsAnInputError) {
+  const fs::path f = write("no_mesh.toml", problem_toml("does_not_exist.msh", "block", "0.3", kClampBottom));
+  expect_input_error(f, {"no_mesh.toml", "body[0].mesh", "does_not_exist.msh"});
+}
+
+TEST_F(Cli, HandWrittenMshRuns) {
+  // The control for the two broken meshes below: the same file format, well formed, solves.
+  const fs::path f = write("square.toml", problem_toml(test_mesh("unit_square.msh"), "square", "0.3",
+                                                       kClampBottom + kPressTop));
+  const fs::path out = dir_ / "out";
+  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(read_text(out / "summary.json").find("\"status\": \"ok\""), std::string::npos);
+}
+
+TEST_F(Cli, TruncatedMshIsAnInputError) {
+  const fs::path f = write("truncated.toml", problem_toml(test_mesh("truncated_nodes.msh"), "square", "0.3",
+                                                          kClampBottom + kPressTop));
+  expect_input_error(f, {"truncated_nodes.msh"});
+}
+
+TEST_F(Cli, DegenerateTriangleIsAnInputErrorNamingTheCell) {
+  // The third triangle of the body, (0,0) (0.5,0) (1,0), has zero area.
+  const fs::path f = write("degenerate.toml", problem_toml(test_mesh("degenerate_triangle.msh"), "square", "0.3",
+                                                           kClampBottom + kPressTop));
+  expect_input_error(f, {"degenerate_triangle.msh", "cell 3", "degenerate"});
+}
+
+TEST_F(Cli, UnconstrainedBodyIsASolveFailure) {
+  const fs::path f = write("rigid.toml", problem_toml(example_geo(), "block", "0.3", kPressTop));
+  const fs::path out = dir_ / "out";
+  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("solve failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Dirichlet"), std::string::npos) << r.output;
+  // A failed solve is recorded, not lost.
+  EXPECT_NE(read_text(out / "summary.json").find("solve_failed"), std::string::npos);
+}
+
+}  // namespace

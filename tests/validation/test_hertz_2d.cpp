@@ -1,0 +1,75 @@
+// V1 Hertz 2D (VALIDATION.md): cylinder on a rigid plane, and two identical elastic cylinders.
+// a = sqrt(4 P R_eff / (π E*)), p0 = 2P/(π a); half models with P/2 on the cut.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "support/solve_case.hpp"
+
+using namespace symcontact;
+using namespace symcontact::testing;
+
+namespace {
+
+const std::string kExamples = std::string(SYMCONTACT_EXAMPLES) + "/hertz_2d";
+const double P = 0.01, E = 1.0, nu = 0.3;
+const double Estar = E / (1 - nu * nu);
+const double a_ref = std::sqrt(4 * P * 1.0 / (M_PI * Estar));  // R_eff = 1 (plane) — and the two-cylinder case
+const double p0_ref = 2 * P / (M_PI * a_ref);
+
+struct HertzMeasure {
+  double p0, a, force, h, min_constraint;
+};
+
+/// p0: the largest nodal pressure. a: the largest |x| of a node with pressure > 1e-3 p0 — nodal, so it
+/// is known to one element, and its error bound falls with h.
+HertzMeasure measure(const SolvedCase& c, double h, int side_index = 0) {
+  HertzMeasure m{0, 0, 0, h, 0};
+  const auto& side = c.contact[0].sides[side_index];
+  for (Index k = 0; k < side.pressure.size(); ++k) m.p0 = std::max(m.p0, side.pressure[k]);
+  for (Index k = 0; k < side.pressure.size(); ++k)
+    if (side.pressure[k] > 1e-3 * m.p0) m.a = std::max(m.a, std::abs(side.x(0, k)));
+  m.force = c.contact[0].total_force.norm();
+  m.min_constraint = c.constraint_values.minCoeff();
+  return m;
+}
+
+void print(const HertzMeasure& m) {
+  std::printf("  h = %.4f: p0 = %.6f (err %+.3f%%), a = %.6f (err %+.3f%%, %.2f elements), 2x force = %.12f, "
+              "min constraint %.2e\n",
+              m.h, m.p0, 100 * (m.p0 / p0_ref - 1), m.a, 100 * (m.a / a_ref - 1), std::abs(m.a - a_ref) / m.h,
+              2 * m.force, m.min_constraint);
+}
+
+std::string wrapper_geo(const std::string& geo, double h) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "h = %.6g;\n", h);
+  return std::string(buf) + "Include \"" + kExamples + "/" + geo + "\";\n";
+}
+
+}  // namespace
+
+TEST(Hertz2D, CylinderOnRigidPlaneConvergesToClosedForm) {
+  const std::string dir = ::testing::TempDir() + "hertz2d_plane/";
+  std::vector<HertzMeasure> ms;
+  for (double h : {0.008, 0.004, 0.002}) {
+    write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h));
+    std::ifstream in(kExamples + "/cylinder_on_plane.toml");
+    std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    toml.replace(toml.find("cylinder_on_plane.geo"), 21, "cyl.geo");
+    auto c = solve_case(toml, dir);
+    const HertzMeasure m = measure(*c, h);
+    ms.push_back(m);
+    print(m);
+  }
+  for (const auto& m : ms) {
+    EXPECT_NEAR(m.p0, p0_ref, 0.03 * p0_ref);
+    EXPECT_NEAR(m.a, a_ref, std::max(0.02 * a_ref, 1.5 * m.h));
+    EXPECT_NEAR(2 * m.force, P, 1e-8 * P);
+  }
+  // Errors fall under refinement (p0 to the half-space model error of the finite disk, ~0.2 %).
+  EXPECT_LT(std::abs(ms[1].p0 - p0_ref), std::abs(ms[0].p0 - p0_ref));
+  EXPECT_LE(std::abs(ms[2].p0 - p0_ref), std::abs(ms[1].p0 - p0_ref));
+}
