@@ -1,0 +1,185 @@
+/// \file bench_elasticity.cpp
+/// symcontact-bench: how long the elastic building blocks take as the mesh grows.
+///
+/// Solves a clamped linear-elastic unit square (plane strain) and unit cube under a pressure on the
+/// top face (elastic_block.hpp) on structured simplex meshes of about 1e4, 3e4, 1e5, 3e5, 1e6 DOFs,
+/// and prints one row per mesh: DOFs, free DOFs, nnz(K_ff), the time of one energy gradient, of the
+/// stiffness assembly (element kernels into a ReducedTripletSink, then the sparse matrix), of the
+/// CHOLMOD analysis, factorisation and solve, nnz(L), the peak RSS and the relative residual
+/// ‖K_ff u − f‖/‖f‖ (≈ 1e-15 expected). The machine and BLAS are printed first. Results and their
+/// reading are in docs/performance.md.
+///
+///   OPENBLAS_NUM_THREADS=1 symcontact-bench --dim all --order 1 --repeat 1 --csv results.csv
+///
+/// Options: --dim 2|3|all (all), --order 1|2 (1), --min-dofs N (1e4), --max-dofs N (1.1e6 in 2D,
+/// 3.1e5 in 3D), --dofs N... (explicit sizes instead of the ladder), --repeat R (1; each time is the minimum over R runs), --csv FILE, --markdown.
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <exception>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "bench_support.hpp"
+#include "elastic_block.hpp"
+#include "symcontact/core/error.hpp"
+#include "symcontact/mesh/cell_type.hpp"
+
+namespace {
+
+using symcontact::Index;
+using namespace symcontact::bench;
+using Kind = ResultTable::Kind;
+
+constexpr double kDefaultMaxDofs2d = 1.1e6;
+/// 3D P1 up to 3e5 DOFs takes about a minute and 4 GiB with one BLAS thread (docs/performance.md). At
+/// 1e6 DOFs CHOLMOD's int interface overflows in the supernodal analysis ("problem too large"), so the
+/// ladder stops one step below by default; --dofs 6e5 is the largest size measured so far.
+constexpr double kDefaultMaxDofs3d = 3.1e5;
+
+std::vector<ResultTable::Column> columns() {
+  return {
+      {"dim", "", Kind::kInteger, 0},
+      {"order", "", Kind::kInteger, 0},
+      {"cell_type", "", Kind::kText, 0},
+      {"divisions", "n", Kind::kInteger, 0},
+      {"cells", "", Kind::kInteger, 0},
+      {"dofs", "DOFs", Kind::kInteger, 0},
+      {"free_dofs", "free", Kind::kInteger, 0},
+      {"nnz_kff", "nnz(K_ff)", Kind::kInteger, 0},
+      {"nnz_kff_lower", "", Kind::kInteger, 0},
+      {"triplets", "", Kind::kInteger, 0},
+      {"mesh_s", "", Kind::kFixed, 3},
+      {"setup_s", "", Kind::kFixed, 3},
+      {"gradient_s", "grad [s]", Kind::kFixed, 3},
+      {"assembly_s", "assembly [s]", Kind::kFixed, 3},
+      {"analyze_s", "analyze [s]", Kind::kFixed, 3},
+      {"factorize_s", "factor [s]", Kind::kFixed, 3},
+      {"solve_s", "solve [s]", Kind::kFixed, 3},
+      {"nnz_l", "nnz(L)", Kind::kInteger, 0},
+      {"fill", "fill", Kind::kFixed, 1},
+      {"peak_rss_mib", "peak RSS [MiB]", Kind::kInteger, 0},
+      {"rss_after_mib", "", Kind::kInteger, 0},
+      {"relative_residual", "rel. residual", Kind::kScientific, 1},
+      {"max_displacement", "", Kind::kScientific, 3},
+      {"repeat", "", Kind::kInteger, 0},
+      {"openblas_threads", "", Kind::kInteger, 0},
+  };
+}
+
+struct Options {
+  std::string dim = "all";
+  int order = 1;
+  double min_dofs = 1e4;
+  double max_dofs = 0.0;  ///< 0: the default of the dimension
+  std::vector<double> dofs;  ///< explicit sizes (replace the ladder)
+  int repeat = 1;
+  std::string csv;
+  bool markdown = false;
+};
+
+/// Runs the size ladder for one dimension; returns the wall time of the sweep.
+double sweep(int dim, const Options& opt, const MachineInfo& machine, bool append_csv) {
+  const double max_dofs = opt.max_dofs > 0 ? opt.max_dofs : (dim == 2 ? kDefaultMaxDofs2d : kDefaultMaxDofs3d);
+  const auto cell = symcontact::cell_type_of(dim, opt.order);
+  std::cout << "\n## " << dim << "D P" << opt.order << " (" << symcontact::cell_name(cell) << "), "
+            << (dim == 2 ? "unit square, plane strain" : "unit cube")
+            << ", bottom clamped, pressure on top; ";
+  if (opt.dofs.empty())
+    std::cout << "DOFs in [" << opt.min_dofs << ", " << max_dofs << "]";
+  else
+    std::cout << "explicit sizes";
+  std::cout << ", min of " << opt.repeat << " run(s)\n\n";
+  ResultTable table(columns(), std::cout, opt.markdown);
+  if (!opt.csv.empty()) table.write_csv(opt.csv, append_csv);
+
+  const auto t_sweep = std::chrono::steady_clock::now();
+  bool rss_reset_ok = true;
+  const std::vector<double> sizes = opt.dofs.empty() ? size_ladder(opt.min_dofs, max_dofs) : opt.dofs;
+  for (const double target : sizes) {
+    rss_reset_ok = reset_peak_rss() && rss_reset_ok;
+    const int n = block_divisions(dim, opt.order, target);
+    ElasticBlock block(dim, opt.order, n);
+    CholeskyFloor r;
+    try {
+      r = measure_cholesky_floor(block, opt.repeat);
+    } catch (const FactorTooLarge& e) {
+      std::cout << "# stopped at " << block.dofs.num_dofs() << " DOFs: " << e.what() << "\n";
+      break;
+    }
+    const double peak = peak_rss_mib();
+    table.add_row({static_cast<double>(dim), static_cast<double>(opt.order), symcontact::cell_name(cell),
+                   static_cast<double>(n), static_cast<double>(block.mesh.num_cells()),
+                   static_cast<double>(block.dofs.num_dofs()), static_cast<double>(block.num_free),
+                   static_cast<double>(r.nnz_full), static_cast<double>(r.nnz_lower),
+                   static_cast<double>(r.num_triplets), block.mesh_seconds, block.setup_seconds, r.gradient,
+                   r.assembly, r.analyze, r.factorize, r.solve, r.nnz_factor,
+                   r.nnz_factor / static_cast<double>(r.nnz_lower), peak, current_rss_mib(),
+                   r.relative_residual, r.max_displacement, static_cast<double>(opt.repeat),
+                   static_cast<double>(machine.openblas_threads)});
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_sweep).count();
+  std::cout << "\n# " << dim << "D sweep: " << std::fixed << std::setprecision(1) << wall
+            << std::defaultfloat << " s wall (meshing and setup included)\n";
+  if (!rss_reset_ok)
+    std::cout << "# note: /proc/self/clear_refs refused the peak-RSS reset: peak RSS is monotone over the run\n";
+  else
+    std::cout << "# peak RSS is per size (VmHWM reset through /proc/self/clear_refs before each size)\n";
+  return wall;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options opt;
+  CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D",
+               "symcontact-bench"};
+  app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
+  app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
+  app.add_option("--min-dofs", opt.min_dofs, "smallest size of the ladder 1e4, 3e4, 1e5, ... [DOFs]")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--max-dofs", opt.max_dofs,
+                 "largest size [DOFs] (default 1.1e6 in 2D, 3.1e5 in 3D)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--dofs", opt.dofs, "explicit sizes [DOFs] instead of the ladder (e.g. --dofs 6e5)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--repeat", opt.repeat, "runs per size; every time reported is the minimum")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--csv", opt.csv, "also write the results (full precision, more columns) to this CSV file");
+  app.add_flag("--markdown", opt.markdown, "print Markdown tables (for docs/performance.md)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+
+  std::cout << "# symcontact-bench (symcontact " << SYMCONTACT_VERSION << "):";
+  for (int k = 0; k < argc; ++k) std::cout << " " << argv[k];
+  const std::time_t now = std::time(nullptr);
+  char date[64];
+  std::strftime(date, sizeof(date), "%Y-%m-%d %H:%M:%S %Z", std::localtime(&now));
+  std::cout << "\n# date: " << date << "\n";
+  const MachineInfo machine = machine_info();
+  print_machine_info(std::cout, machine);
+
+  try {
+    bool append = false;
+    for (const int dim : {2, 3}) {
+      if (opt.dim != "all" && opt.dim != std::to_string(dim)) continue;
+      sweep(dim, opt, machine, append);
+      append = true;
+    }
+  } catch (const symcontact::SolveError& e) {
+    std::cerr << "symcontact-bench: solve failed: " << e.what() << "\n";
+    return symcontact::kExitSolveError;
+  } catch (const std::exception& e) {
+    std::cerr << "symcontact-bench: " << e.what() << "\n";
+    return symcontact::kExitInternalError;
+  }
+  return symcontact::kExitOk;
+}

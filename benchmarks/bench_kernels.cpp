@@ -1,0 +1,116 @@
+/// \file bench_kernels.cpp
+/// Micro-benchmarks (Google Benchmark) of the per-element work behind the assembly times of
+/// symcontact-bench:
+///  - stiffness/<cell>: linear_elastic_stiffness() for one element (energy/elastic_kernel.hpp), with the
+///    quadrature LinearElasticEnergy uses (degree 0 for P1, 3 for P2);
+///  - scatter/<cell>: ReducedTripletSink::add() of one element block with all DOFs free (the other half
+///    of an assembly).
+/// items_per_second is elements per second.
+///
+///   OPENBLAS_NUM_THREADS=1 symcontact_bench_kernels --benchmark_min_time=0.5
+
+#include <benchmark/benchmark.h>
+
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "symcontact/energy/elastic_kernel.hpp"
+#include "symcontact/fem/cell_dispatch.hpp"
+#include "symcontact/fem/matrix_sink.hpp"
+#include "symcontact/fem/quadrature.hpp"
+#include "symcontact/fem/shape_functions.hpp"
+#include "symcontact/materials/linear_elastic.hpp"
+
+namespace {
+
+using symcontact::CellType;
+
+/// The reference element of `t` mapped by a fixed, well-shaped but non-trivial affine map (so
+/// that no entry of J is 0 or 1) and scaled to size h = 0.01.
+template <int D, int NN>
+Eigen::Matrix<double, D, NN> sample_element(CellType t) {
+  const std::vector<double> ref = symcontact::reference_nodes(t);
+  Eigen::Matrix<double, D, D> A;
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) A(i, j) = (i == j ? 1.0 : 0.15 * (i + 1) - 0.1 * j);
+  Eigen::Matrix<double, D, NN> X;
+  for (int a = 0; a < NN; ++a) {
+    const Eigen::Map<const Eigen::Matrix<double, D, 1>> xi(ref.data() + a * D);
+    X.col(a) = 0.01 * (A * xi) + Eigen::Matrix<double, D, 1>::Constant(0.3);
+  }
+  return X;
+}
+
+int quadrature_degree(CellType t) { return symcontact::cell_order(t) == 1 ? 0 : 3; }
+
+symcontact::LinearElastic material(int dim) {
+  return symcontact::LinearElastic::from_young_poisson(
+      1.0, 0.3, dim == 2 ? symcontact::AnalysisModel::kPlaneStrain : symcontact::AnalysisModel::kThreeD);
+}
+
+void element_stiffness(benchmark::State& state, CellType t) {
+  symcontact::dispatch_cell(t, [&](auto Dc, auto NNc) {
+    constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
+    const symcontact::Tabulation tab =
+        symcontact::tabulate(t, symcontact::simplex_quadrature(D, quadrature_degree(t)));
+    const auto mat = material(D);
+    Eigen::Matrix<double, D, NN> X = sample_element<D, NN>(t);
+    Eigen::Matrix<double, D * NN, D * NN> K;
+    for (auto _ : state) {
+      benchmark::DoNotOptimize(X.data());
+      int bad = symcontact::linear_elastic_stiffness<D, NN>(X, tab, mat.lambda, mat.mu, K);
+      benchmark::DoNotOptimize(bad);
+      benchmark::DoNotOptimize(K.data());
+      benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["quad_points"] = tab.rule.size();
+    state.counters["block"] = D * NN;
+  });
+}
+
+void element_scatter(benchmark::State& state, CellType t) {
+  symcontact::dispatch_cell(t, [&](auto Dc, auto NNc) {
+    constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
+    constexpr int n = D * NN;
+    const symcontact::Tabulation tab =
+        symcontact::tabulate(t, symcontact::simplex_quadrature(D, quadrature_degree(t)));
+    const auto mat = material(D);
+    Eigen::Matrix<double, n, n> K;
+    symcontact::linear_elastic_stiffness<D, NN>(sample_element<D, NN>(t), tab, mat.lambda, mat.mu, K);
+    // A few thousand distinct elements' worth of DOFs, all free, scattered far apart like a real mesh.
+    constexpr int kElements = 4096;
+    std::vector<symcontact::Index> free_index(static_cast<std::size_t>(kElements) * n);
+    std::iota(free_index.begin(), free_index.end(), symcontact::Index{0});
+    std::vector<symcontact::Index> dofs(free_index.size());
+    std::iota(dofs.begin(), dofs.end(), symcontact::Index{0});
+    symcontact::ReducedTripletSink sink(free_index);
+    sink.triplets().reserve(static_cast<std::size_t>(kElements) * n * (n + 1) / 2);
+    int e = 0;
+    for (auto _ : state) {
+      sink.add(dofs.data() + static_cast<std::size_t>(e) * n, n, K.data());
+      if (++e == kElements) {
+        e = 0;
+        sink.triplets().clear();  // keeps the capacity: no reallocation inside the timing
+      }
+    }
+    benchmark::DoNotOptimize(sink.triplets().data());
+    state.SetItemsProcessed(state.iterations());
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  for (const CellType t : {CellType::kTri3, CellType::kTri6, CellType::kTet4, CellType::kTet10}) {
+    const std::string name = symcontact::cell_name(t);
+    benchmark::RegisterBenchmark(("stiffness/" + name).c_str(), element_stiffness, t);
+    benchmark::RegisterBenchmark(("scatter/" + name).c_str(), element_scatter, t);
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
