@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/active_set_polish.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
 
 namespace symcontact {
@@ -49,6 +50,11 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     if (!res.success) {
       u = problem.expand(res.x.size() == x.size() ? res.x : x);
       throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
+    }
+    if (options.polish) {
+      ScopedPhase t(rep.times, "polish");
+      const PolishResult pr = polish_active_set(problem, res.x, res.multipliers);
+      if (!pr.applied) log.detail("  active-set polish not applied: " + pr.reason);
     }
     const double change = (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
     rep.change_history.push_back(change);
