@@ -31,7 +31,7 @@ HertzMeasure measure(const SolvedCase& c, double h, int side_index = 0) {
   for (Index k = 0; k < side.pressure.size(); ++k) m.p0 = std::max(m.p0, side.pressure[k]);
   for (Index k = 0; k < side.pressure.size(); ++k)
     if (side.pressure[k] > 1e-3 * m.p0) m.a = std::max(m.a, std::abs(side.x(0, k)));
-  m.force = c.contact[0].total_force.norm();
+  m.force = std::abs(c.contact[0].total_force[1]);  // the load direction
   m.min_constraint = c.constraint_values.minCoeff();
   return m;
 }
@@ -72,4 +72,28 @@ TEST(Hertz2D, CylinderOnRigidPlaneConvergesToClosedForm) {
   // Errors fall under refinement (p0 to the half-space model error of the finite disk, ~0.2 %).
   EXPECT_LT(std::abs(ms[1].p0 - p0_ref), std::abs(ms[0].p0 - p0_ref));
   EXPECT_LE(std::abs(ms[2].p0 - p0_ref), std::abs(ms[1].p0 - p0_ref));
+}
+
+TEST(Hertz2D, TwoElasticCylindersMatchTheSameClosedForm) {
+  const std::string dir = ::testing::TempDir() + "hertz2d_cylinders/";
+  std::vector<HertzMeasure> ms;
+  for (double h : {0.008, 0.004}) {
+    write_text(dir, "cyl.geo", wrapper_geo("two_cylinders.geo", h));
+    std::ifstream in(kExamples + "/two_cylinders.toml");
+    std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::size_t at; (at = toml.find("two_cylinders.geo")) != std::string::npos;) toml.replace(at, 17, "cyl.geo");
+    auto c = solve_case(toml, dir);
+    // Both sides report the same interface pressure.
+    const HertzMeasure ma = measure(*c, h, 0), mb = measure(*c, h, 1);
+    print(ma);
+    print(mb);
+    EXPECT_NEAR(ma.p0, mb.p0, 0.01 * p0_ref);
+    ms.push_back(ma);
+  }
+  for (const auto& m : ms) {
+    EXPECT_NEAR(m.p0, p0_ref, 0.03 * p0_ref);
+    EXPECT_NEAR(m.a, a_ref, std::max(0.02 * a_ref, 1.5 * m.h));
+    EXPECT_NEAR(2 * m.force, P, 1e-8 * P);
+  }
+  EXPECT_LT(std::abs(ms[1].p0 - p0_ref), std::abs(ms[0].p0 - p0_ref));
 }

@@ -72,15 +72,19 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
   std::vector<double> coords, param;
   gmsh::model::mesh::getNodes(node_tags, coords, param, -1, -1, true, false);
   if (node_tags.empty()) throw InputError(path, "", "the mesh has no nodes");
-  const std::size_t max_tag = *std::max_element(node_tags.begin(), node_tags.end());
+  // Number nodes by increasing tag: Gmsh returns them in an order that can change from run to run,
+  // and results must not (same input, same numbering, same output).
+  std::vector<std::size_t> order(node_tags.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return node_tags[a] < node_tags[b]; });
   std::unordered_map<std::size_t, Index> index_of;
   index_of.reserve(node_tags.size());
   f.x.resize(3, static_cast<Index>(node_tags.size()));
-  for (std::size_t k = 0; k < node_tags.size(); ++k) {
-    index_of[node_tags[k]] = static_cast<Index>(k);
-    for (int i = 0; i < 3; ++i) f.x(i, static_cast<Index>(k)) = coords[3 * k + i];
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    const std::size_t k = order[j];
+    index_of[node_tags[k]] = static_cast<Index>(j);
+    for (int i = 0; i < 3; ++i) f.x(i, static_cast<Index>(j)) = coords[3 * k + i];
   }
-  (void)max_tag;
 
   auto read_blocks = [&](int dim, int entity, std::vector<MeshFile::Block>& out) {
     std::vector<int> types;

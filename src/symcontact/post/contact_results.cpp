@@ -61,7 +61,7 @@ std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMa
     }
     r.total_force = r.sides[0].force.rowwise().sum();
     for (auto& sr : r.sides) {
-      sr.status = (sr.pressure.array() > 1e-6 * r.max_pressure).cast<int>();
+      sr.status = (sr.pressure.array() > 1e-4 * r.max_pressure).cast<int>();
     }
     const ContactSurface& sa = cs.surfaces[pair.surface_a];
     for (Index k = 0; k < sa.num_nodes(); ++k)

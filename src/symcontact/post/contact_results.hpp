@@ -7,7 +7,8 @@
 ///    reference area — one interface pressure, seen from each side,
 ///  - gap: the signed distance θ of the node to the opposite surface (closest point, smoothed normal),
 ///    NaN when the node projects onto nothing,
-///  - status: 1 (contact) when p_k > 1e-6 · max p over the pair, else 0.
+///  - status: 1 (contact) when p_k > 1e-4 · max p over the pair, else 0 (an interior point leaves
+///    multipliers of order barrier/gap, far below that, on open constraints).
 /// Pair totals: the force on side a (Σ f_k), the maximum pressure, and the contact length (2D) or area (3D)
 /// Σ A_k over side-a nodes in contact.
 

@@ -29,6 +29,10 @@ struct PolishResult {
 };
 
 /// x and mu (μ ≥ 0 convention, one per constraint row) are updated in place when the polish is accepted.
-PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu);
+/// With `hold_values`, the active constraints keep the values IPOPT left (A_S x + b_S = c_S(x_IPOPT))
+/// instead of closing: that always-consistent variant only removes the optimiser's stationarity
+/// error (exact force balance), for when the families of a curved symmetric pair cannot all be closed
+/// at once.
+PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values = false);
 
 }  // namespace symcontact

@@ -53,8 +53,12 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     }
     if (options.polish) {
       ScopedPhase t(rep.times, "polish");
-      const PolishResult pr = polish_active_set(problem, res.x, res.multipliers);
-      if (!pr.applied) log.detail("  active-set polish not applied: " + pr.reason);
+      PolishResult pr = polish_active_set(problem, res.x, res.multipliers);
+      if (!pr.applied) {
+        log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
+        pr = polish_active_set(problem, res.x, res.multipliers, true);
+        if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
+      }
     }
     const double change = (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
     rep.change_history.push_back(change);
@@ -81,7 +85,16 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     }
   }
   u = problem.expand(x);
+  // Contact forces: Aᵀμ. On free DOFs the equilibrium residual ∇E(u) equals Aᵀμ at the KKT point and
+  // carries no optimiser tolerance (it balances the applied loads to round-off), so it is used there;
+  // on fixed DOFs the residual also holds the support reaction, and Aᵀμ is kept.
   rep.contact_force = rep.linearization.A.transpose() * rep.multipliers;
+  VectorXd residual = VectorXd::Zero(u.size());
+  energy.add_gradient(u, residual);
+  std::vector<Index> free_index;
+  fixed.free_numbering(u.size(), free_index);
+  for (Index d = 0; d < u.size(); ++d)
+    if (free_index[d] >= 0 && rep.contact_force[d] != 0.0) rep.contact_force[d] = residual[d];
   return rep;
 }
 

@@ -44,7 +44,7 @@ struct ContactSolveReport {
   PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
   ContactLinearization linearization;       ///< at the last geometry iterate
   VectorXd multipliers;                     ///< μ of the last solve (one per row)
-  VectorXd contact_force;                   ///< F_c = Aᵀ μ, full DOF vector
+  VectorXd contact_force;                   ///< F_c = Aᵀ μ (∇E(u) on free DOFs, see the .cpp), full DOF vector
 };
 
 /// On entry u is the starting point (previous load step); on exit the solution. Throws SolveError (with

@@ -1,0 +1,231 @@
+#include "symcontact/contact/closest_point.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "symcontact/fem/shape_functions.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+/// x(η) and x'(η) of a Line2/Line3 facet, computed from the shape functions independently of the projector.
+void curve_at(CellType t, const Eigen::MatrixXd& xf, double eta, Eigen::VectorXd& x, Eigen::VectorXd& dx) {
+  double N[3], dN[3];
+  shape_functions(t, &eta, N, dN);
+  x.setZero(xf.rows());
+  dx.setZero(xf.rows());
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    x += N[a] * xf.col(a);
+    dx += dN[a] * xf.col(a);
+  }
+}
+
+Eigen::MatrixXd line2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  Eigen::MatrixXd xf(2, 2);
+  xf << a, b;
+  return xf;
+}
+
+/// Line3 on the circle of radius R centred at c, from angle t0 to t1 (middle node at the mean angle).
+Eigen::MatrixXd arc(const Eigen::Vector2d& c, double R, double t0, double t1) {
+  Eigen::MatrixXd xf(2, 3);
+  const double t[3] = {t0, t1, 0.5 * (t0 + t1)};
+  for (int a = 0; a < 3; ++a) xf.col(a) = c + R * Eigen::Vector2d(std::cos(t[a]), std::sin(t[a]));
+  return xf;
+}
+
+/// Minimum of |x(η) − p|² over a dense sampling of η ∈ [0, 1], refined by golden-section search.
+double sampled_min_distance2(CellType t, const Eigen::MatrixXd& xf, const Eigen::VectorXd& p, double* eta_min) {
+  Eigen::VectorXd x, dx;
+  auto f = [&](double e) {
+    curve_at(t, xf, e, x, dx);
+    return (x - p).squaredNorm();
+  };
+  const int n = 20000;
+  int best = 0;
+  double fb = f(0.0);
+  for (int k = 1; k <= n; ++k) {
+    const double v = f(static_cast<double>(k) / n);
+    if (v < fb) {
+      fb = v;
+      best = k;
+    }
+  }
+  double lo = std::max(0.0, (best - 1.0) / n), hi = std::min(1.0, (best + 1.0) / n);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 80; ++it) {
+    const double a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+    if (f(a) < f(b)) hi = b; else lo = a;
+  }
+  const double e = 0.5 * (lo + hi);
+  if (eta_min) *eta_min = e;
+  return std::min(fb, f(e));
+}
+
+double stationarity(CellType t, const Eigen::MatrixXd& xf, const Eigen::VectorXd& p, double eta) {
+  Eigen::VectorXd x, dx;
+  curve_at(t, xf, eta, x, dx);
+  return (x - p).dot(dx);
+}
+
+}  // namespace
+
+TEST(ClosestPointLine2, InteriorPointIsTheFootOfThePerpendicular) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::Vector2d a(U(rng), U(rng));
+    Eigen::Vector2d b(U(rng), U(rng));
+    if ((b - a).norm() < 0.2) b = a + Eigen::Vector2d(0.5, 0.3);
+    const Eigen::Vector2d t = (b - a).normalized(), n(-t.y(), t.x());
+    const double s = 0.05 + 0.9 * (0.5 * (U(rng) + 1.0));  // foot at fraction s of the segment
+    const double off = U(rng);
+    const Eigen::Vector2d foot = a + s * (b - a);
+    const Eigen::VectorXd p = foot + off * n;
+    const FacetProjection r = project_on_facet(CellType::kLine2, line2(a, b), p);
+    EXPECT_EQ(r.clamped_vertex, -1);
+    EXPECT_NEAR(r.eta[0], s, 1e-12);
+    EXPECT_NEAR((r.point.head<2>() - foot).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(r.point.z(), 0.0, 0.0);
+    EXPECT_NEAR(r.distance2, off * off, 1e-12);
+    EXPECT_NEAR(stationarity(CellType::kLine2, line2(a, b), p, r.eta[0]), 0.0, 1e-12);
+  }
+}
+
+TEST(ClosestPointLine2, PastEitherEndClampsToTheEndNode) {
+  const Eigen::Vector2d a(0.0, 0.0), b(2.0, 1.0);
+  const Eigen::MatrixXd xf = line2(a, b);
+  // Before a: along −(b − a) and off to the side.
+  const Eigen::VectorXd p0 = a - 0.3 * (b - a) + Eigen::Vector2d(-0.1, 0.2);
+  const FacetProjection r0 = project_on_facet(CellType::kLine2, xf, p0);
+  EXPECT_EQ(r0.clamped_vertex, 0);
+  EXPECT_DOUBLE_EQ(r0.eta[0], 0.0);
+  EXPECT_NEAR(r0.distance2, (p0 - a).squaredNorm(), 1e-14);
+  EXPECT_NEAR((r0.point.head<2>() - a).norm(), 0.0, 1e-15);
+  // After b.
+  const Eigen::VectorXd p1 = b + 0.4 * (b - a) + Eigen::Vector2d(0.2, -0.3);
+  const FacetProjection r1 = project_on_facet(CellType::kLine2, xf, p1);
+  EXPECT_EQ(r1.clamped_vertex, 1);
+  EXPECT_DOUBLE_EQ(r1.eta[0], 1.0);
+  EXPECT_NEAR(r1.distance2, (p1 - b).squaredNorm(), 1e-14);
+  EXPECT_NEAR((r1.point.head<2>() - b).norm(), 0.0, 1e-15);
+}
+
+TEST(ClosestPointLine2, PointOnTheFacetHasZeroDistance) {
+  const Eigen::Vector2d a(1.0, -1.0), b(3.0, 2.0);
+  for (double s : {0.0, 0.25, 0.5, 1.0}) {
+    const Eigen::VectorXd p = a + s * (b - a);
+    const FacetProjection r = project_on_facet(CellType::kLine2, line2(a, b), p);
+    EXPECT_NEAR(r.distance2, 0.0, 1e-28) << "s = " << s;
+    EXPECT_NEAR(r.eta[0], s, 1e-14);
+    EXPECT_NEAR((r.point.head<2>() - p).norm(), 0.0, 1e-14);
+  }
+}
+
+TEST(ClosestPointLine2, DegenerateZeroLengthFacetGivesNoNaN) {
+  const Eigen::Vector2d a(0.5, 0.5);
+  const Eigen::VectorXd p = Eigen::Vector2d(1.5, -0.5);
+  const FacetProjection r = project_on_facet(CellType::kLine2, line2(a, a), p);
+  EXPECT_TRUE(std::isfinite(r.eta[0]));
+  EXPECT_TRUE(r.point.allFinite());
+  EXPECT_NEAR(r.distance2, 2.0, 1e-14);
+  EXPECT_NEAR((r.point.head<2>() - a).norm(), 0.0, 1e-15);
+  EXPECT_GE(r.eta[0], 0.0);
+  EXPECT_LE(r.eta[0], 1.0);
+}
+
+TEST(ClosestPointLine3, StraightLine3MatchesLine2) {
+  const Eigen::Vector2d a(0.0, 0.0), b(1.0, 0.5);
+  Eigen::MatrixXd xf(2, 3);
+  xf << a, b, 0.5 * (a + b);
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.3, 0.7), Eigen::Vector2d(-0.5, 0.1), Eigen::Vector2d(1.7, 0.2)}) {
+    const FacetProjection r3 = project_on_facet(CellType::kLine3, xf, p);
+    const FacetProjection r2 = project_on_facet(CellType::kLine2, line2(a, b), p);
+    EXPECT_EQ(r3.clamped_vertex, r2.clamped_vertex);
+    EXPECT_NEAR(r3.eta[0], r2.eta[0], 1e-12);
+    EXPECT_NEAR(r3.distance2, r2.distance2, 1e-12);
+  }
+}
+
+TEST(ClosestPointLine3, CircularArcInteriorMatchesDenseSampling) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  const Eigen::Vector2d c(0.3, -0.2);
+  const double R = 1.5;
+  for (int trial = 0; trial < 40; ++trial) {
+    const double t0 = 2.0 * M_PI * U(rng), span = 0.2 + 0.8 * U(rng);
+    const Eigen::MatrixXd xf = arc(c, R, t0, t0 + span);
+    // A point at a radius from 0.5 R to 1.5 R, at an angle inside the arc's span.
+    const double ang = t0 + span * (0.1 + 0.8 * U(rng)), rad = R * (0.5 + U(rng));
+    const Eigen::VectorXd p = c + rad * Eigen::Vector2d(std::cos(ang), std::sin(ang));
+    const FacetProjection r = project_on_facet(CellType::kLine3, xf, p);
+    double eta_ref = 0.0;
+    const double d2_ref = sampled_min_distance2(CellType::kLine3, xf, p, &eta_ref);
+    EXPECT_EQ(r.clamped_vertex, -1) << "trial " << trial;
+    EXPECT_NEAR(r.distance2, d2_ref, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(r.eta[0], eta_ref, 1e-6) << "trial " << trial;
+    EXPECT_NEAR(stationarity(CellType::kLine3, xf, p, r.eta[0]), 0.0, 1e-12) << "trial " << trial;
+    // The reported point is x(η).
+    Eigen::VectorXd x, dx;
+    curve_at(CellType::kLine3, xf, r.eta[0], x, dx);
+    EXPECT_NEAR((r.point.head<2>() - x).norm(), 0.0, 1e-14);
+    // Close to the true circle: the parabola through three points of the arc is within O(span⁴).
+    EXPECT_NEAR(std::sqrt(r.distance2), std::abs(rad - R), 1e-2 * R);
+  }
+}
+
+TEST(ClosestPointLine3, PastEitherEndOfAnArcClampsToTheEndNode) {
+  const Eigen::Vector2d c(0.0, 0.0);
+  const double R = 1.0;
+  const Eigen::MatrixXd xf = arc(c, R, 0.0, 0.6);
+  const Eigen::VectorXd before = 1.2 * Eigen::Vector2d(std::cos(-0.4), std::sin(-0.4));
+  const FacetProjection r0 = project_on_facet(CellType::kLine3, xf, before);
+  EXPECT_EQ(r0.clamped_vertex, 0);
+  EXPECT_DOUBLE_EQ(r0.eta[0], 0.0);
+  EXPECT_NEAR(r0.distance2, (before - xf.col(0)).squaredNorm(), 1e-14);
+  const Eigen::VectorXd after = 0.9 * Eigen::Vector2d(std::cos(1.1), std::sin(1.1));
+  const FacetProjection r1 = project_on_facet(CellType::kLine3, xf, after);
+  EXPECT_EQ(r1.clamped_vertex, 1);
+  EXPECT_DOUBLE_EQ(r1.eta[0], 1.0);
+  EXPECT_NEAR(r1.distance2, (after - xf.col(1)).squaredNorm(), 1e-14);
+}
+
+TEST(ClosestPointLine3, PointOnTheCurvedFacetHasZeroDistance) {
+  const Eigen::MatrixXd xf = arc(Eigen::Vector2d(1.0, 2.0), 0.7, 0.3, 1.2);
+  for (double s : {0.1, 0.37, 0.5, 0.93}) {
+    Eigen::VectorXd x, dx;
+    curve_at(CellType::kLine3, xf, s, x, dx);
+    const FacetProjection r = project_on_facet(CellType::kLine3, xf, x);
+    EXPECT_EQ(r.clamped_vertex, -1);
+    EXPECT_NEAR(r.distance2, 0.0, 1e-26) << "s = " << s;
+    EXPECT_NEAR(r.eta[0], s, 1e-12);
+  }
+}
+
+TEST(ClosestPointLine3, StronglyCurvedFacetIsStationaryAndGlobal) {
+  // A parabola with a large bow (middle node far off the chord); points on both sides of it.
+  Eigen::MatrixXd xf(2, 3);
+  xf << 0.0, 1.0, 0.5,  //
+      0.0, 0.0, 0.4;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (int trial = 0; trial < 60; ++trial) {
+    const Eigen::VectorXd p = Eigen::Vector2d(-0.3 + 1.6 * U(rng), -0.5 + 1.2 * U(rng));
+    const FacetProjection r = project_on_facet(CellType::kLine3, xf, p);
+    const double d2_ref = sampled_min_distance2(CellType::kLine3, xf, p, nullptr);
+    EXPECT_NEAR(r.distance2, d2_ref, 1e-10) << "p = " << p.transpose();
+    if (r.clamped_vertex < 0) {
+      EXPECT_NEAR(stationarity(CellType::kLine3, xf, p, r.eta[0]), 0.0, 1e-12) << "p = " << p.transpose();
+      EXPECT_GE(r.eta[0], 0.0);
+      EXPECT_LE(r.eta[0], 1.0);
+    }
+  }
+}
+
+TEST(ClosestPointLine3, UnsupportedFacetTypeThrows) {
+  Eigen::MatrixXd xf = Eigen::MatrixXd::Identity(3, 3);
+  EXPECT_THROW(project_on_facet(CellType::kTri3, xf, Eigen::Vector3d(0.1, 0.1, 1.0)), std::logic_error);
+}
