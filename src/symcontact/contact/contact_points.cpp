@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "symcontact/contact/closest_point.hpp"
@@ -116,8 +117,14 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   const ContactSurface& ms = *master.surface;
   const int mpf = ms.nodes_per_facet();
   const Eigen::Vector3d p3 = pad3(p);
+  // The nearest FACING master facet: back-facing facets (a point's own facet in self-contact, the far
+  // face of a thin master) are skipped so that the search goes on to the one that matters.
   const int mf = master.tree.nearest(p3, search * search, [&](int k) {
-    return project_on_facet(ms.facet_type, facet_nodes(ms, master.x, k), p).distance2;
+    const Eigen::MatrixXd xk = facet_nodes(ms, master.x, k);
+    const FacetProjection q = project_on_facet(ms.facet_type, xk, p);
+    if (pad3(facet_normal(ms.facet_type, xk, q.eta)).dot(slave_normal) >= 0)
+      return std::numeric_limits<double>::infinity();
+    return q.distance2;
   });
   if (mf < 0) return false;
   const FacetProjection pr = project_on_facet(ms.facet_type, facet_nodes(ms, master.x, mf), p);

@@ -267,6 +267,16 @@ class Reader {
     return f;
   }
 
+  /// A count: an integer in [1, INT_MAX] (iteration limits).
+  int as_count(const toml::node& node, const std::string& key) const {
+    const std::int64_t i = as_integer(node, key);
+    if (i < 1 || i > std::numeric_limits<int>::max()) {
+      fail(key, "expected an integer in [1, " + std::to_string(std::numeric_limits<int>::max()) + "], got " +
+                    std::to_string(i));
+    }
+    return static_cast<int>(i);
+  }
+
   const toml::node& required(const toml::table& table, const std::string& path, std::string_view name,
                              const std::string& what) const {
     const toml::node* node = table.get(name);
@@ -509,7 +519,8 @@ class Reader {
 
   ContactSpec read_contact(const toml::table& t, const std::string& path, std::size_t index,
                            const ProblemSpec& spec) const {
-    check_keys(t, path, {"name", "a", "b", "obstacle", "mode", "slave", "search_distance"});
+    check_keys(t, path,
+               {"name", "a", "b", "obstacle", "mode", "slave", "search_distance", "friction", "mu", "tau", "alpha"});
     ContactSpec c;
     c.key = path;
 
@@ -568,7 +579,53 @@ class Reader {
       c.search_distance = as_number(*n, key);
       if (!(c.search_distance > 0.0)) fail(key, "expected a number > 0, got " + format_number(c.search_distance));
     }
+
+    read_friction(t, path, c);
     return c;
+  }
+
+  /// friction, mu, tau, alpha of a [[contact]]: `mu` belongs to "coulomb", `tau` to "tresca", `alpha` to
+  /// both; a key of another law is an error naming its law. With an obstacle too (the obstacle is fixed).
+  void read_friction(const toml::table& t, const std::string& path, ContactSpec& c) const {
+    const toml::node* friction = t.get("friction");
+    if (friction) {
+      const std::string key = child(path, "friction");
+      c.friction = as_string(*friction, key);
+      if (c.friction != "none" && c.friction != "tresca" && c.friction != "coulomb") {
+        fail(key, "expected \"none\", \"tresca\" or \"coulomb\", got " + in_quotes(c.friction));
+      }
+    }
+    const bool tresca = c.friction == "tresca";
+    const bool coulomb = c.friction == "coulomb";
+    const std::string got = "got friction = " + in_quotes(c.friction) + (friction ? "" : " (the default)");
+    if (t.get("mu") && !coulomb) {
+      fail(child(path, "mu"), "mu (the friction coefficient) is only used with friction = \"coulomb\", " + got);
+    }
+    if (t.get("tau") && !tresca) {
+      fail(child(path, "tau"), "tau (the sliding threshold) is only used with friction = \"tresca\", " + got);
+    }
+    if (t.get("alpha") && !tresca && !coulomb) {
+      fail(child(path, "alpha"),
+           "alpha (the regularisation of the slip) is only used with friction = \"tresca\" or \"coulomb\", " + got);
+    }
+
+    if (coulomb) {
+      const std::string key = child(path, "mu");
+      c.mu = as_number(required(t, path, "mu", "the friction coefficient, a number >= 0, with friction = \"coulomb\""),
+                       key);
+      if (!(c.mu >= 0.0)) fail(key, "expected a number >= 0, got " + format_number(c.mu));
+    }
+    if (tresca) {
+      const std::string key = child(path, "tau");
+      c.tau = as_number(required(t, path, "tau", "the sliding threshold, a number >= 0, with friction = \"tresca\""),
+                        key);
+      if (!(c.tau >= 0.0)) fail(key, "expected a number >= 0, got " + format_number(c.tau));
+    }
+    if (const toml::node* n = t.get("alpha")) {
+      const std::string key = child(path, "alpha");
+      c.alpha = as_number(*n, key);
+      if (!(c.alpha > 0.0)) fail(key, "expected a number > 0, got " + format_number(c.alpha));
+    }
   }
 
   /// A contact surface "<body>.<boundary>", split at the first dot (body names have none). The body
@@ -655,7 +712,8 @@ class Reader {
     const toml::node* node = root.get("contact_solver");
     if (!node) return;
     const toml::table& t = as_table(*node, "contact_solver");
-    check_keys(t, "contact_solver", {"geometry_tolerance", "max_geometry_iterations"});
+    check_keys(t, "contact_solver",
+               {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations"});
     ContactSolverSpec& s = spec.contact_solver;
     if (const toml::node* n = t.get("geometry_tolerance")) {
       const std::string key = "contact_solver.geometry_tolerance";
@@ -663,13 +721,15 @@ class Reader {
       if (!(s.geometry_tolerance > 0.0)) fail(key, "expected a number > 0, got " + format_number(s.geometry_tolerance));
     }
     if (const toml::node* n = t.get("max_geometry_iterations")) {
-      const std::string key = "contact_solver.max_geometry_iterations";
-      const std::int64_t iterations = as_integer(*n, key);
-      if (iterations < 1 || iterations > std::numeric_limits<int>::max()) {
-        fail(key, "expected an integer in [1, " + std::to_string(std::numeric_limits<int>::max()) + "], got " +
-                      std::to_string(iterations));
-      }
-      s.max_geometry_iterations = static_cast<int>(iterations);
+      s.max_geometry_iterations = as_count(*n, "contact_solver.max_geometry_iterations");
+    }
+    if (const toml::node* n = t.get("coulomb_tolerance")) {
+      const std::string key = "contact_solver.coulomb_tolerance";
+      s.coulomb_tolerance = as_number(*n, key);
+      if (!(s.coulomb_tolerance > 0.0)) fail(key, "expected a number > 0, got " + format_number(s.coulomb_tolerance));
+    }
+    if (const toml::node* n = t.get("max_coulomb_iterations")) {
+      s.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
     }
   }
 

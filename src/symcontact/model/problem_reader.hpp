@@ -13,8 +13,11 @@
 /// - contact ([[contact]], [contact_solver], [ipopt]): contact surfaces "<body>.<boundary>" naming a
 ///   declared body, exactly one of `b` and `[contact.obstacle]`, obstacle keys that belong to the
 ///   obstacle's type (circle only in 2D, sphere only in 3D, a nonzero plane normal), `slave` only with
-///   mode = "one-pass", unique contact names; [ipopt] values are strings, integers or floats and are
-///   otherwise passed on unchecked (IPOPT checks option names and ranges).
+///   mode = "one-pass", unique contact names; friction = "none" | "tresca" | "coulomb" with `tau` ≥ 0
+///   required for (and only allowed with) Tresca, `mu` ≥ 0 likewise for Coulomb, `alpha` > 0 optional
+///   with either law; positive tolerances and iteration counts ≥ 1 in [contact_solver]; [ipopt] values
+///   are strings, integers or floats and are otherwise passed on unchecked (IPOPT checks option names
+///   and ranges).
 ///
 /// Every failure throws InputError(file, key, message) where `key` is the TOML path of the offending
 /// value with bodies counted from 0 ("body[1].material.nu", "body[0].dirichlet[2]") and `message`

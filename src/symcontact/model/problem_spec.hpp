@@ -87,12 +87,20 @@ struct ContactSpec {
   std::string mode = "symmetric";  ///< "symmetric" (both sides in turn slave) | "one-pass"
   std::string slave = "a";         ///< one-pass: which surface is the slave, "a" or "b"
   double search_distance = 0.0;    ///< > 0; 0: automatic (see docs/input.md)
+  /// Friction on the pair (METHOD.md, "Friction"): "none", "tresca" (threshold `tau`, [stress]) or
+  /// "coulomb" (coefficient `mu`, solved as a fixed point on the Tresca threshold τ = μ p).
+  std::string friction = "none";
+  double mu = 0.0;                 ///< coulomb: ≥ 0
+  double tau = 0.0;                ///< tresca: ≥ 0
+  double alpha = 0.0;              ///< regularisation of |v| by sqrt(|v|² + α²) [length]; > 0; 0: automatic
 };
 
 /// Settings of the contact solve (Algorithm 2) and of IPOPT.
 struct ContactSolverSpec {
   double geometry_tolerance = 1e-6;   ///< ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ below which the fixed point stops
   int max_geometry_iterations = 50;
+  double coulomb_tolerance = 1e-6;    ///< ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ below which the Coulomb fixed point stops
+  int max_coulomb_iterations = 50;
   /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
   std::map<std::string, std::string> ipopt_string;
   std::map<std::string, double> ipopt_numeric;

@@ -225,6 +225,21 @@ TEST(ClosestPointLine3, StronglyCurvedFacetIsStationaryAndGlobal) {
   }
 }
 
+TEST(ClosestPointLine3, DegenerateFacetGivesNoNaN) {
+  // All three nodes at one point, and a Line3 whose ends coincide (a closed loop).
+  Eigen::MatrixXd point(2, 3), loop(2, 3);
+  point << 0.5, 0.5, 0.5, 0.5, 0.5, 0.5;
+  loop << 0.0, 0.0, 1.0, 0.0, 0.0, 0.0;
+  const Eigen::VectorXd p = Eigen::Vector2d(2.0, 1.0);
+  for (const Eigen::MatrixXd* xf : {&point, &loop}) {
+    const FacetProjection r = project_on_facet(CellType::kLine3, *xf, p);
+    EXPECT_TRUE(std::isfinite(r.eta[0]));
+    EXPECT_TRUE(r.point.allFinite());
+    EXPECT_TRUE(std::isfinite(r.distance2));
+    EXPECT_NEAR(r.distance2, sampled_min_distance2(CellType::kLine3, *xf, p, nullptr), 1e-10);
+  }
+}
+
 TEST(ClosestPointLine3, UnsupportedFacetTypeThrows) {
   Eigen::MatrixXd xf = Eigen::MatrixXd::Identity(3, 3);
   EXPECT_THROW(project_on_facet(CellType::kTri3, xf, Eigen::Vector3d(0.1, 0.1, 1.0)), std::logic_error);

@@ -470,7 +470,7 @@ Mesh two_part_body(int order, double gap) {
 // point's own neighbourhood, so with master == slave every point finds its own facet (distance 0),
 // which the facing filter then rejects: a self-contact pair never produces a constraint. Expected here:
 // one row per node of the upper part (gap 0.05 × nodal area) and of the lower part under it.
-TEST_P(GapConstraintsFlat, DISABLED_SelfContactOfTwoFacingPartsOfOneSurface) {
+TEST_P(GapConstraintsFlat, SelfContactOfTwoFacingPartsOfOneSurface) {
   const int order = GetParam();
   const double d0 = 0.05;
   const Mesh m = two_part_body(order, d0);
@@ -497,4 +497,30 @@ TEST_P(GapConstraintsFlat, DISABLED_SelfContactOfTwoFacingPartsOfOneSurface) {
   }
   EXPECT_EQ(upper_rows, order == 1 ? 8 : 15);
   EXPECT_GT(lin.b.size(), upper_rows);
+}
+
+// Same root cause with two bodies: the master's group holds both faces of a thin block (thickness 0.1).
+// A slave that has penetrated past the block's mid-plane is nearer to the back face, whose normal does
+// not face it; project_to_master keeps only that nearest facet, rejects it, and the penetration is lost.
+TEST_P(GapConstraintsFlat, DeepPenetrationOfAThinMasterKeepsItsConstraints) {
+  const int order = GetParam();
+  const double pen = 0.06;
+  Mesh lower = rectangle_mesh(0.0, -0.1, 1.0, 0.0, 5, 1, order);
+  std::vector<Index>& both = lower.facet_groups["both"].facets;
+  both = lower.facet_groups.at("top").facets;
+  for (Index v : lower.facet_groups.at("bottom").facets) both.push_back(v);
+  const Mesh upper = rectangle_mesh(0.13, -pen, 0.83, 0.4 - pen, 7, 2, order);
+  DofMap dofs(2);
+  dofs.add_body(lower.num_nodes());
+  dofs.add_body(upper.num_nodes());
+  const ContactSurface master = make_contact_surface(lower, "both", 0, "lower.both");
+  const ContactSurface slave = make_contact_surface(upper, "bottom", 1, "upper.bottom");
+  ContactSearchOptions opt;
+  opt.search_distance = 0.5;
+  const MasterGeometry mg = prepare_master(master, master.X);
+  const std::vector<ContactPoint> pts = contact_points(slave, slave.X, mg, opt);
+  const GapConstraints g = assemble_gap_constraints(slave, &master, pts, dofs);
+  ASSERT_EQ(g.num_rows(), slave.num_nodes());
+  for (Index row = 0; row < g.num_rows(); ++row)
+    EXPECT_NEAR(g.b[row], -pen * slave.nodal_area[g.slave_node[row]], 1e-13);
 }

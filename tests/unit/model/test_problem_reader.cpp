@@ -285,6 +285,8 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_TRUE(spec.contacts.empty());
   EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
   EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
@@ -348,11 +350,64 @@ TEST(ProblemReader, ContactDefaults) {
     EXPECT_EQ(c.slave, "a");
     EXPECT_EQ(c.search_distance, 0.0);
     EXPECT_FALSE(c.obstacle.has_value());
+    EXPECT_EQ(c.friction, "none");  // frictionless
+    EXPECT_EQ(c.mu, 0.0);
+    EXPECT_EQ(c.tau, 0.0);
+    EXPECT_EQ(c.alpha, 0.0);        // automatic
   }
   EXPECT_EQ(spec.contacts[1].body_a, "lower");
   EXPECT_EQ(spec.contacts[1].boundary_b, "bottom");
   EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
+}
+
+/// `text` with `keys` (lines "key = value\n") added to its first [[contact]] table, after `b` or `a`.
+std::string with_contact_keys(const std::string& text, const std::string& keys) {
+  const std::string after = text.find("b = \"lower.top\"\n") != std::string::npos ? "b = \"lower.top\"\n"
+                                                                                     : "a = \"block.bottom\"\n";
+  return replaced(text, after, after + keys);
+}
+
+TEST(ProblemReader, TrescaFriction) {
+  const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nalpha = 1e-6\n"));
+  const ContactSpec& c = spec.contacts.at(0);
+  EXPECT_EQ(c.friction, "tresca");
+  EXPECT_EQ(c.tau, 0.002);
+  EXPECT_EQ(c.alpha, 1e-6);
+  EXPECT_EQ(c.mu, 0.0);
+
+  // alpha is optional (0: automatic); a zero threshold, written as an integer, is accepted.
+  const ContactSpec d = parse(with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0\n")).contacts.at(0);
+  EXPECT_EQ(d.friction, "tresca");
+  EXPECT_EQ(d.tau, 0.0);
+  EXPECT_EQ(d.alpha, 0.0);
+}
+
+TEST(ProblemReader, CoulombFriction) {
+  const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = 2e-6\n") +
+                                 "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n");
+  const ContactSpec& c = spec.contacts.at(0);
+  EXPECT_EQ(c.friction, "coulomb");
+  EXPECT_EQ(c.mu, 0.3);
+  EXPECT_EQ(c.alpha, 2e-6);
+  EXPECT_EQ(c.tau, 0.0);
+  EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-8);
+  EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 12);
+  EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);  // the others keep their defaults
+  EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
+}
+
+TEST(ProblemReader, FrictionAgainstAnObstacle) {
+  const ContactSpec c = parse(with_contact_keys(kPlane, "friction = \"coulomb\"\nmu = 1\n")).contacts.at(0);
+  EXPECT_EQ(c.friction, "coulomb");
+  EXPECT_EQ(c.mu, 1.0);
+  EXPECT_EQ(c.alpha, 0.0);
+  ASSERT_TRUE(c.obstacle.has_value());
+
+  const ContactSpec d = parse(with_contact_keys(kCircle, "friction = \"none\"\n")).contacts.at(0);
+  EXPECT_EQ(d.friction, "none");
 }
 
 TEST(ProblemReader, SelfContactIsAllowed) {
@@ -446,7 +501,7 @@ std::vector<std::string> documentation_examples() {
 // The contact examples of docs/input.md are complete, valid files too.
 TEST(ProblemReader, DocumentationContactExamplesAreValid) {
   const std::vector<std::string> blocks = documentation_examples();
-  ASSERT_EQ(blocks.size(), 3u) << "expected the complete example and two contact examples";
+  ASSERT_EQ(blocks.size(), 4u) << "expected the complete example, two contact examples and a friction example";
 
   const ProblemSpec two_bodies = parse(blocks[1]);
   ASSERT_EQ(two_bodies.contacts.size(), 1u);
@@ -458,6 +513,14 @@ TEST(ProblemReader, DocumentationContactExamplesAreValid) {
   ASSERT_EQ(obstacles.contacts.size(), 2u);
   EXPECT_EQ(obstacles.contacts[0].obstacle.value().type, "plane");
   EXPECT_EQ(obstacles.contacts[1].obstacle.value().type, "circle");
+
+  const ProblemSpec friction = parse(blocks[3]);
+  ASSERT_EQ(friction.contacts.size(), 1u);
+  EXPECT_EQ(friction.contacts[0].friction, "coulomb");
+  EXPECT_EQ(friction.contacts[0].mu, 0.3);
+  EXPECT_GT(friction.contacts[0].alpha, 0.0);
+  EXPECT_EQ(friction.contacts[0].obstacle.value().type, "plane");
+  EXPECT_EQ(friction.contact_solver.max_coulomb_iterations, 50);
 }
 #endif
 
@@ -655,7 +718,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"ContactNotAnArray", replaced(kTwoBodies, "[[contact]]", "[contact]"), "contact",
                 "expected an array of tables ([[contact]]), got a table"},
         BadCase{"UnknownContactKey", replaced(kTwoBodies, "b = ", "master = \"a\"\nb = "), "contact[0].master",
-                "unknown key \"master\"; allowed keys in contact[0]: name, a, b, obstacle, mode, slave, search_distance"},
+                "unknown key \"master\"; allowed keys in contact[0]: name, a, b, obstacle, mode, slave, "
+                "search_distance, friction, mu, tau, alpha"},
         BadCase{"MissingContactA", replaced(kTwoBodies, "a = \"block.bottom\"\n", ""), "contact[0].a",
                 "missing required key (expected a surface \"<body>.<boundary>\")"},
         BadCase{"ContactANotAString", replaced(kTwoBodies, "a = \"block.bottom\"", "a = 1"), "contact[0].a",
@@ -706,6 +770,45 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"SearchDistanceNegative",
                 replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nsearch_distance = -0.5"),
                 "contact[0].search_distance", "expected a number > 0, got -0.5"},
+        // contact: friction
+        BadCase{"UnknownFrictionLaw", with_contact_keys(kTwoBodies, "friction = \"stick\"\n"), "contact[0].friction",
+                "expected \"none\", \"tresca\" or \"coulomb\", got \"stick\""},
+        BadCase{"FrictionNotAString", with_contact_keys(kTwoBodies, "friction = true\n"), "contact[0].friction",
+                "expected a string, got a boolean (true)"},
+        BadCase{"MisspeltFrictionKey", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmuu = 0.3\n"),
+                "contact[0].muu", "unknown key \"muu\" (did you mean \"mu\"?)"},
+        BadCase{"MuWithoutFriction", with_contact_keys(kTwoBodies, "mu = 0.3\n"), "contact[0].mu",
+                "mu (the friction coefficient) is only used with friction = \"coulomb\", got friction = \"none\" (the "
+                "default)"},
+        BadCase{"MuWithTresca", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nmu = 0.3\n"),
+                "contact[0].mu",
+                "mu (the friction coefficient) is only used with friction = \"coulomb\", got friction = \"tresca\""},
+        BadCase{"TauWithCoulomb", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\ntau = 0.002\n"),
+                "contact[0].tau",
+                "tau (the sliding threshold) is only used with friction = \"tresca\", got friction = \"coulomb\""},
+        BadCase{"AlphaWithExplicitNone", with_contact_keys(kTwoBodies, "friction = \"none\"\nalpha = 1e-6\n"),
+                "contact[0].alpha",
+                "alpha (the regularisation of the slip) is only used with friction = \"tresca\" or \"coulomb\", got "
+                "friction = \"none\""},
+        BadCase{"AlphaWithDefaultNone", with_contact_keys(kPlane, "alpha = 1e-6\n"), "contact[0].alpha",
+                "got friction = \"none\" (the default)"},
+        BadCase{"MissingMu", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\n"), "contact[0].mu",
+                "missing required key (expected the friction coefficient, a number >= 0, with friction = "
+                "\"coulomb\")"},
+        BadCase{"MissingTau", with_contact_keys(kPlane, "friction = \"tresca\"\nalpha = 1e-6\n"), "contact[0].tau",
+                "missing required key (expected the sliding threshold, a number >= 0, with friction = \"tresca\")"},
+        BadCase{"NegativeMu", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = -0.1\n"), "contact[0].mu",
+                "expected a number >= 0, got -0.1"},
+        BadCase{"MuNotANumber", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = \"0.3\"\n"),
+                "contact[0].mu", "expected a number, got a string (\"0.3\")"},
+        BadCase{"MuInfinite", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = inf\n"), "contact[0].mu",
+                "expected a finite number, got inf"},
+        BadCase{"NegativeTau", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = -2\n"), "contact[0].tau",
+                "expected a number >= 0, got -2"},
+        BadCase{"AlphaZero", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nalpha = 0\n"),
+                "contact[0].alpha", "expected a number > 0, got 0"},
+        BadCase{"AlphaNegative", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = -1e-6\n"),
+                "contact[0].alpha", "expected a number > 0, got -1e-06"},
         // contact: obstacles
         BadCase{"ObstacleNotATable", replaced(kTwoBodies, "b = \"lower.top\"", "obstacle = \"plane\""),
                 "contact[0].obstacle", "expected a table, got a string (\"plane\")"},
@@ -763,13 +866,22 @@ INSTANTIATE_TEST_SUITE_P(
         // contact solver and IPOPT options
         BadCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
-                "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations"},
+                "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
+                "coulomb_tolerance, max_coulomb_iterations"},
         BadCase{"GeometryToleranceZero", kTwoBodies + "[contact_solver]\ngeometry_tolerance = 0.0\n",
                 "contact_solver.geometry_tolerance", "expected a number > 0, got 0"},
         BadCase{"MaxGeometryIterationsZero", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 0\n",
                 "contact_solver.max_geometry_iterations", "expected an integer in [1, 2147483647], got 0"},
         BadCase{"MaxGeometryIterationsFloat", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 10.0\n",
                 "contact_solver.max_geometry_iterations", "expected an integer, got a floating-point number (10.0)"},
+        BadCase{"CoulombToleranceZero", kTwoBodies + "[contact_solver]\ncoulomb_tolerance = 0\n",
+                "contact_solver.coulomb_tolerance", "expected a number > 0, got 0"},
+        BadCase{"CoulombToleranceNegative", kTwoBodies + "[contact_solver]\ncoulomb_tolerance = -1e-6\n",
+                "contact_solver.coulomb_tolerance", "expected a number > 0, got -1e-06"},
+        BadCase{"MaxCoulombIterationsZero", kTwoBodies + "[contact_solver]\nmax_coulomb_iterations = 0\n",
+                "contact_solver.max_coulomb_iterations", "expected an integer in [1, 2147483647], got 0"},
+        BadCase{"MaxCoulombIterationsFloat", kTwoBodies + "[contact_solver]\nmax_coulomb_iterations = 5.5\n",
+                "contact_solver.max_coulomb_iterations", "expected an integer, got a floating-point number (5.5)"},
         BadCase{"ContactSolverNotATable", "contact_solver = 3\n" + kTwoBodies, "contact_solver",
                 "expected a table, got an integer (3)"},
         BadCase{"IpoptBoolean", kTwoBodies + "[ipopt]\ntol = 1e-8\nwarm_start_init_point = true\n",
