@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "symcontact/app/run.hpp"
 #include "symcontact/model/problem_reader.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
@@ -18,12 +19,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
   c->model = Model::build(c->spec, log, times);
   const DofMap& dofs = c->model->dofs();
   c->u = VectorXd::Zero(dofs.num_dofs());
-  ContactSolveOptions opt;
-  opt.geometry_tolerance = c->spec.contact_solver.geometry_tolerance;
-  opt.max_geometry_iterations = c->spec.contact_solver.max_geometry_iterations;
-  opt.ipopt.string_options = c->spec.contact_solver.ipopt_string;
-  opt.ipopt.numeric_options = c->spec.contact_solver.ipopt_numeric;
-  opt.ipopt.integer_options = c->spec.contact_solver.ipopt_integer;
+  const FrictionalOptions opt = contact_options(c->spec, log);
   for (int step = 0; step < c->model->num_steps(); ++step) {
     c->model->set_step(step);
     const FixedDofs fixed = c->model->fixed_dofs(step);
@@ -31,8 +27,10 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
       solve_equilibrium(c->model->energy(), fixed, c->u);
       continue;
     }
-    c->report = solve_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log);
-    c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report.contact_force);
+    c->frictional = solve_frictional_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log);
+    c->report = c->frictional.last;
+    c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
+    c->history.push_back(c->contact);
     c->constraint_values = c->report.linearization.A * c->u + c->report.linearization.b;
   }
   return c;

@@ -9,7 +9,7 @@
 
 #include "symcontact/model/model.hpp"
 #include "symcontact/post/contact_results.hpp"
-#include "symcontact/solvers/contact_solver.hpp"
+#include "symcontact/solvers/frictional_contact.hpp"
 
 namespace symcontact::testing {
 
@@ -17,7 +17,9 @@ struct SolvedCase {
   ProblemSpec spec;
   std::unique_ptr<Model> model;
   VectorXd u;
-  ContactSolveReport report;                  ///< of the last step (contact problems)
+  ContactSolveReport report;                  ///< the last contact solve of the last step
+  FrictionalReport frictional;                ///< of the last step (Coulomb iterations, totals)
+  std::vector<std::vector<ContactPairResult>> history;  ///< contact results of every step
   std::vector<ContactPairResult> contact;     ///< of the last step
   VectorXd constraint_values;                 ///< A u + b at the last linearisation
 };

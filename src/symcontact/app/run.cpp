@@ -14,7 +14,7 @@
 #include "symcontact/model/model.hpp"
 #include "symcontact/post/contact_results.hpp"
 #include "symcontact/post/stress_recovery.hpp"
-#include "symcontact/solvers/contact_solver.hpp"
+#include "symcontact/solvers/frictional_contact.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
 namespace symcontact {
@@ -44,38 +44,62 @@ std::string step_file(const std::string& body, int step, const char* ext = "vtu"
   return body + buf;
 }
 
-void write_contact_csv(const Model& model, const ContactPairResult& r, const std::string& path) {
+void write_contact_csv(const Model& model, const ContactPairResult& r, const std::vector<Eigen::VectorXd>& accumulated,
+                       const std::string& path) {
   write_file_atomically(path, [&](std::ostream& os) {
     const int D = model.dim();
-    os << "side,surface,node,x,y" << (D == 3 ? ",z" : "") << ",gap,pressure,fx,fy" << (D == 3 ? ",fz" : "")
-       << ",status\n";
+    const char* xyz[] = {"x", "y", "z"};
+    os << "side,surface,node";
+    for (int i = 0; i < D; ++i) os << ',' << xyz[i];
+    os << ",gap,pressure";
+    for (int i = 0; i < D; ++i) os << ",t" << xyz[i];
+    for (int i = 0; i < D; ++i) os << ",f" << xyz[i];
+    for (int i = 0; i < D; ++i) os << ",slip_" << xyz[i];
+    os << ",accumulated_slip,status\n";
     os.precision(17);
+    static const char* status[] = {"open", "contact", "slip"};
     for (std::size_t side = 0; side < r.sides.size(); ++side) {
       const auto& sr = r.sides[side];
       const ContactSurface& s = model.contacts().surfaces[sr.surface];
+      const bool friction = std::isfinite(sr.slip.maxCoeff()) || sr.slip.array().isFinite().any();
       for (Index k = 0; k < s.num_nodes(); ++k) {
         os << (side == 0 ? "a" : "b") << ',' << s.name << ',' << s.nodes[k] + 1;
         for (int i = 0; i < D; ++i) os << ',' << sr.x(i, k);
         os << ',';
         if (std::isfinite(sr.gap[k])) os << sr.gap[k];
         os << ',' << sr.pressure[k];
+        for (int i = 0; i < D; ++i) os << ',' << sr.tangential(i, k);
         for (int i = 0; i < D; ++i) os << ',' << sr.force(i, k);
-        os << ',' << (sr.status[k] ? "contact" : "open") << '\n';
+        for (int i = 0; i < D; ++i) {
+          os << ',';
+          if (std::isfinite(sr.slip(i, k))) os << sr.slip(i, k);
+        }
+        os << ',';
+        if (side < accumulated.size() && accumulated[side].size() > k && friction) os << accumulated[side][k];
+        const int st = sr.status[k];
+        os << ',' << (st == 1 && friction ? "stick" : status[st]) << '\n';
       }
     }
   });
 }
 
-ContactSolveOptions contact_options(const ProblemSpec& spec, const Logger& log) {
-  ContactSolveOptions o;
+}  // namespace
+
+FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
+  FrictionalOptions f;
+  ContactSolveOptions& o = f.contact;
   o.geometry_tolerance = spec.contact_solver.geometry_tolerance;
   o.max_geometry_iterations = spec.contact_solver.max_geometry_iterations;
   if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
   o.ipopt.string_options = spec.contact_solver.ipopt_string;
   o.ipopt.numeric_options = spec.contact_solver.ipopt_numeric;
   o.ipopt.integer_options = spec.contact_solver.ipopt_integer;
-  return o;
+  f.coulomb_tolerance = spec.contact_solver.coulomb_tolerance;
+  f.max_coulomb_iterations = spec.contact_solver.max_coulomb_iterations;
+  return f;
 }
+
+namespace {
 
 /// Contact fields of one body at its nodes (zero away from contact surfaces; status −1 there).
 struct BodyContactFields {
@@ -168,6 +192,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
 
   RunResult result;
   VectorXd u = VectorXd::Zero(dofs.num_dofs());
+  std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
   const int nsteps = model->num_steps();
   for (int step = 0; step < nsteps; ++step) {
     PhaseTimes st;
@@ -175,10 +200,10 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     const FixedDofs fixed = model->fixed_dofs(step);
     const bool has_contact = !model->contacts().empty();
     EquilibriumReport rep;
-    ContactSolveReport crep;
+    FrictionalReport frep;
     try {
       if (has_contact)
-        crep = solve_contact(model->energy(), fixed, model->contacts(), dofs, u, contact_options(spec, log), log);
+        frep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, contact_options(spec, log), log);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
     } catch (const SolveError& e) {
@@ -200,12 +225,16 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     Json js = Json::object();
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
+    const ContactSolveReport& crep = frep.last;
     if (has_contact) {
-      st.merge(crep.times);
-      js["geometry_iterations"] = crep.geometry_iterations;
-      js["ipopt_iterations"] = crep.ipopt_iterations;
-      js["ipopt_iterations_per_geometry_iteration"] = std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
-      js["geometry_change_history"] = crep.change_history;
+      st.merge(frep.times);
+      js["geometry_iterations"] = frep.geometry_iterations;
+      js["ipopt_iterations"] = frep.ipopt_iterations;
+      js["coulomb_iterations"] = frep.coulomb_iterations;
+      js["coulomb_change_history"] = frep.coulomb_change;
+      js["last_solve_ipopt_iterations_per_geometry_iteration"] =
+          std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
+      js["last_solve_geometry_change_history"] = crep.change_history;
       js["ipopt_status"] = crep.ipopt_status;
       js["num_constraints"] = static_cast<double>(crep.num_constraints);
       js["num_free_dofs"] = static_cast<double>(crep.num_free);
@@ -218,16 +247,30 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     std::vector<ContactPairResult> cres;
     if (has_contact) {
       ScopedPhase t(st, "output");
-      cres = contact_results(model->contacts(), dofs, u, crep.contact_force);
+      cres = contact_results(model->contacts(), dofs, u, crep);
       Json pairs = Json::array();
-      for (const auto& r : cres) {
+      accumulated_slip.resize(cres.size());
+      for (std::size_t pi = 0; pi < cres.size(); ++pi) {
+        const auto& r = cres[pi];
+        // Accumulated slip: Σ over steps of |slip increment| at each node.
+        accumulated_slip[pi].resize(r.sides.size());
+        for (std::size_t side = 0; side < r.sides.size(); ++side) {
+          auto& acc = accumulated_slip[pi][side];
+          if (acc.size() == 0) acc = Eigen::VectorXd::Zero(r.sides[side].slip.cols());
+          for (Index k = 0; k < acc.size(); ++k) {
+            const double sk = r.sides[side].slip.col(k).norm();
+            if (std::isfinite(sk)) acc[k] += sk;
+          }
+        }
         Json jp = Json::object();
         jp["name"] = r.name;
         jp["total_force"] = to_vector(r.total_force);
+        jp["normal_force"] = to_vector(r.normal_force);
+        jp["tangential_force"] = to_vector(r.tangential_force);
         jp["max_pressure"] = r.max_pressure;
         jp[spec.dim == 2 ? "contact_length" : "contact_area"] = r.contact_measure;
         const std::string csv = "contact_" + step_file(r.name, step + 1, "csv");
-        write_contact_csv(*model, r, (fs::path(options.out_dir) / csv).string());
+        write_contact_csv(*model, r, accumulated_slip[pi], (fs::path(options.out_dir) / csv).string());
         jp["csv"] = csv;
         pairs.push_back(jp);
       }
@@ -273,7 +316,8 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     write_summary();
     std::ostringstream s;
     if (has_contact)
-      s << "geometry iterations " << crep.geometry_iterations << ", IPOPT iterations " << crep.ipopt_iterations;
+      s << "geometry iterations " << frep.geometry_iterations << ", IPOPT iterations " << frep.ipopt_iterations
+        << (frep.coulomb_iterations ? ", Coulomb iterations " + std::to_string(frep.coulomb_iterations) : std::string());
     else
       s << "iterations " << rep.iterations << ", residual " << rep.residual;
     log.progress("load step", step + 1, nsteps, s.str());

@@ -15,6 +15,7 @@
 
 #include "symcontact/core/log.hpp"
 #include "symcontact/model/problem_spec.hpp"
+#include "symcontact/solvers/frictional_contact.hpp"
 
 namespace symcontact {
 
@@ -31,6 +32,9 @@ struct RunResult {
   std::string message;
   int steps_done = 0;
 };
+
+/// The contact-solver settings of a problem (its [contact_solver] and [ipopt] tables).
+FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log);
 
 /// Runs the problem. Input errors propagate as InputError before any file is written; a failed solve
 /// is recorded in summary.json (status "solve_failed", the message) and returned, finished steps kept.

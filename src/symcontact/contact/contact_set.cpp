@@ -20,6 +20,12 @@ void ContactSet::finalize() {
   }
 }
 
+int ContactSet::friction_family(int pair) const {
+  for (int f = 0; f < static_cast<int>(families_.size()); ++f)
+    if (families_[f].pair == pair) return f;
+  return -1;
+}
+
 ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u) const {
   ContactLinearization lin;
   std::vector<Eigen::MatrixXd> x(surfaces.size());

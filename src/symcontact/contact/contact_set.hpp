@@ -19,6 +19,7 @@
 namespace symcontact {
 
 enum class ContactMode { kSymmetric, kOnePass };
+enum class FrictionLaw { kNone, kTresca, kCoulomb };
 
 struct ContactPair {
   std::string name;
@@ -28,6 +29,10 @@ struct ContactPair {
   ContactMode mode = ContactMode::kSymmetric;
   bool slave_is_b = false;      ///< one-pass only
   double search_distance = 0.0; ///< resolved (> 0)
+  FrictionLaw friction = FrictionLaw::kNone;
+  double mu = 0.0;              ///< Coulomb coefficient
+  double tau = 0.0;             ///< Tresca threshold
+  double alpha = 0.0;           ///< regularisation length (resolved, > 0 with friction)
 };
 
 struct ContactFamily {
@@ -55,6 +60,8 @@ class ContactSet {
   /// Derives the families from the pairs (call after filling pairs).
   void finalize();
   const std::vector<ContactFamily>& families() const { return families_; }
+  /// The family that carries the pair's friction (its first: slave a, or the one-pass slave).
+  int friction_family(int pair) const;
   bool empty() const { return pairs.empty(); }
 
   /// Projections, normals and gap constraints from the configuration X + u.

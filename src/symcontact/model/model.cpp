@@ -184,14 +184,31 @@ void Model::build_contacts(const Logger& log, double mesh_size) {
       pair.surface_b = surface(cs.body_b, cs.boundary_b, cs.key + ".b");
       other = &contacts_.surfaces[pair.surface_b];
     }
+    pair.friction = cs.friction == "tresca"    ? FrictionLaw::kTresca
+                    : cs.friction == "coulomb" ? FrictionLaw::kCoulomb
+                                               : FrictionLaw::kNone;
+    pair.mu = cs.mu;
+    pair.tau = cs.tau;
+    if (pair.friction != FrictionLaw::kNone) {
+      // Automatic regularisation: 1e-6 × the diagonal of the pair's bounding box (docs/input.md).
+      const ContactSurface& sa = contacts_.surfaces[pair.surface_a];
+      Eigen::VectorXd lo = sa.X.rowwise().minCoeff(), hi = sa.X.rowwise().maxCoeff();
+      if (other) {
+        lo = lo.cwiseMin(other->X.rowwise().minCoeff());
+        hi = hi.cwiseMax(other->X.rowwise().maxCoeff());
+      }
+      pair.alpha = cs.alpha > 0 ? cs.alpha : 1e-6 * (hi - lo).norm();
+    }
     pair.search_distance = cs.search_distance > 0
                                ? cs.search_distance
                                : ContactSet::automatic_search_distance(contacts_.surfaces[pair.surface_a], other);
     std::ostringstream s;
     s << "contact '" << cs.name << "': " << contacts_.surfaces[pair.surface_a].name << " / "
       << (pair.obstacle >= 0 ? std::string("obstacle") : contacts_.surfaces[pair.surface_b].name) << ", "
-      << (pair.mode == ContactMode::kSymmetric ? "symmetric" : "one-pass") << ", search distance "
-      << pair.search_distance;
+      << (pair.obstacle >= 0 ? "obstacle" : pair.mode == ContactMode::kSymmetric ? "symmetric" : "one-pass")
+      << ", search distance " << pair.search_distance;
+    if (pair.friction == FrictionLaw::kTresca) s << ", Tresca friction tau = " << pair.tau << ", alpha = " << pair.alpha;
+    if (pair.friction == FrictionLaw::kCoulomb) s << ", Coulomb friction mu = " << pair.mu << ", alpha = " << pair.alpha;
     log.info(s.str());
     contacts_.pairs.push_back(pair);
   }

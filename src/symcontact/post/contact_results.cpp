@@ -3,15 +3,20 @@
 #include <cmath>
 #include <limits>
 
+#include "symcontact/contact/surface_tractions.hpp"
+#include "symcontact/fem/shape_functions.hpp"
+
 namespace symcontact {
 
 namespace {
 
-/// Signed distance of every node of `s` to the opposite side of its pair.
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Signed distance of every node of side `side` to the opposite side of its pair.
 Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int side, const DofMap& dofs,
                            const VectorXd& u, const Eigen::MatrixXd& xs, const Eigen::MatrixXd& ns) {
   const ContactSurface& s = cs.surfaces[side == 0 ? pair.surface_a : pair.surface_b];
-  Eigen::VectorXd gap = Eigen::VectorXd::Constant(s.num_nodes(), std::numeric_limits<double>::quiet_NaN());
+  Eigen::VectorXd gap = Eigen::VectorXd::Constant(s.num_nodes(), kNaN);
   if (pair.obstacle >= 0) {
     for (Index k = 0; k < s.num_nodes(); ++k) {
       Eigen::Vector3d p = Eigen::Vector3d::Zero(), xbar, n;
@@ -32,36 +37,80 @@ Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int si
   return gap;
 }
 
+/// Weak nodal average of the point slips of a friction term over its slave surface.
+Eigen::MatrixXd nodal_slips(const ContactSurface& s, const FrictionTerm& term, const VectorXd& u) {
+  const std::vector<Eigen::Vector3d> sq = term.slips(u);
+  Eigen::MatrixXd num = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
+  Eigen::VectorXd den = Eigen::VectorXd::Zero(s.num_nodes());
+  double N[10];
+  for (std::size_t q = 0; q < sq.size(); ++q) {
+    const ContactPoint& p = term.points()[q];
+    shape_functions(s.facet_type, p.xi, N, nullptr);
+    for (int a = 0; a < s.nodes_per_facet(); ++a) {
+      const Index k = s.facet(p.slave_facet)[a];
+      num.col(k) += p.weight * N[a] * sq[q].head(s.dim);
+      den[k] += p.weight * N[a];
+    }
+  }
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
+  for (Index k = 0; k < s.num_nodes(); ++k)
+    if (den[k] > 0) out.col(k) = num.col(k) / den[k];
+  return out;
+}
+
 }  // namespace
 
 std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMap& dofs, const VectorXd& u,
-                                               const VectorXd& contact_force) {
+                                               const ContactSolveReport& report) {
+  const VectorXd& contact_force = report.contact_force;
+  const auto& friction = report.friction;
   std::vector<ContactPairResult> out;
-  for (const ContactPair& pair : cs.pairs) {
+  for (int pi = 0; pi < static_cast<int>(cs.pairs.size()); ++pi) {
+    const ContactPair& pair = cs.pairs[pi];
     ContactPairResult r;
     r.name = pair.name;
     const int nsides = pair.obstacle >= 0 ? 1 : 2;
+    const bool has_friction = pi < static_cast<int>(friction.size()) && friction[pi];
+    const int friction_surface = has_friction ? cs.families()[cs.friction_family(pi)].slave : -1;
+    std::vector<Eigen::VectorXd> multiplier_pressure;
+    double max_multiplier_pressure = 0.0;
     for (int side = 0; side < nsides; ++side) {
       const int si = side == 0 ? pair.surface_a : pair.surface_b;
       const ContactSurface& s = cs.surfaces[si];
+      const SurfaceTractions t = surface_tractions(s, dofs, u, contact_force);
       ContactSideResult sr;
       sr.surface = si;
-      sr.x = current_positions(s, dofs, u);
-      const Eigen::MatrixXd n = nodal_normals(s, sr.x);
-      sr.force = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
-      sr.pressure = Eigen::VectorXd::Zero(s.num_nodes());
-      for (Index k = 0; k < s.num_nodes(); ++k) {
-        if (!s.is_rigid())
-          for (int i = 0; i < s.dim; ++i) sr.force(i, k) = contact_force[dofs.dof(s.body, s.nodes[k], i)];
-        if (s.nodal_area[k] > 0) sr.pressure[k] = -sr.force.col(k).dot(n.col(k)) / s.nodal_area[k];
-      }
-      sr.gap = nodal_gaps(cs, pair, side, dofs, u, sr.x, n);
+      sr.x = t.x;
+      sr.force = t.force;
+      sr.pressure = t.pressure;
+      sr.tangential = t.tangential;
+      sr.gap = nodal_gaps(cs, pair, side, dofs, u, sr.x, t.normals);
+      sr.slip = si == friction_surface ? nodal_slips(s, *friction[pi], u)
+                                       : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
       r.max_pressure = std::max(r.max_pressure, sr.pressure.maxCoeff());
+      // Contact status from the multipliers' normal force (see the header).
+      const SurfaceTractions tm = surface_tractions(s, dofs, u, report.multiplier_force);
+      sr.status = Eigen::VectorXi::Zero(s.num_nodes());
+      for (Index k = 0; k < s.num_nodes(); ++k) sr.status[k] = tm.pressure[k] > 0 ? 1 : 0;
+      multiplier_pressure.push_back(tm.pressure);
+      max_multiplier_pressure = std::max(max_multiplier_pressure, tm.pressure.maxCoeff());
+      if (side == 0) {
+        r.normal_force = Eigen::VectorXd::Zero(s.dim);
+        for (Index k = 0; k < s.num_nodes(); ++k)
+          r.normal_force += t.force.col(k).dot(t.normals.col(k)) * t.normals.col(k);
+      }
       r.sides.push_back(std::move(sr));
     }
     r.total_force = r.sides[0].force.rowwise().sum();
-    for (auto& sr : r.sides) {
-      sr.status = (sr.pressure.array() > 1e-4 * r.max_pressure).cast<int>();
+    r.tangential_force = r.total_force - r.normal_force;
+    for (std::size_t side = 0; side < r.sides.size(); ++side) {
+      auto& sr = r.sides[side];
+      sr.status = (multiplier_pressure[side].array() > 1e-4 * max_multiplier_pressure).cast<int>();
+      if (!(max_multiplier_pressure > 0)) sr.status.setZero();
+      for (Index k = 0; k < sr.status.size(); ++k) {
+        const double s = sr.slip.col(k).norm();
+        if (sr.status[k] && std::isfinite(s) && s >= 7.0 * pair.alpha) sr.status[k] = 2;
+      }
     }
     const ContactSurface& sa = cs.surfaces[pair.surface_a];
     for (Index k = 0; k < sa.num_nodes(); ++k)

@@ -8,16 +8,65 @@
 
 namespace symcontact {
 
+namespace {
+
+/// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
+/// solved by the method of multipliers with M = H + ρ A_Sᵀ A_S (H alone when S is empty).
+/// Returns false when M cannot be factorised.
+bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
+                  int& iterations) {
+  const bool quadratic = problem.hessian_is_constant();
+  const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
+  for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
+    SparseMatrix H;
+    problem.hessian_lower(xs, H);
+    VectorXd g;
+    problem.gradient(xs, g);
+    const double hdiag = H.diagonal().cwiseAbs().mean();
+    if (!(hdiag > 0)) return false;
+    SparseMatrix M = H;
+    double rho = 0.0;
+    if (AS.rows() > 0) {
+      const SparseMatrix AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
+      const double adiag = AtA.diagonal().cwiseAbs().maxCoeff();
+      if (!(adiag > 0)) return false;
+      // Large ρ: the nearly dependent rows of the two families give A_S tiny singular values, along which
+      // the method of multipliers converges at the rate 1/(1 + ρ σ²).
+      rho = 1e6 * hdiag / adiag;
+      M = H + rho * AtA;
+    }
+    CholeskySolver chol;
+    try {
+      chol.compute(M);
+    } catch (const SolveError&) {
+      return false;
+    }
+    const VectorXd x_start = xs;
+    // Inner iterations on the quadratic model f(x) ≈ f + gᵀΔ + ½ ΔᵀHΔ (exact for a quadratic f).
+    for (int it = 0; it < (AS.rows() > 0 ? 400 : 1); ++it) {
+      const VectorXd cS = AS * xs + bS;
+      const VectorXd dx = chol.solve(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS));
+      xs += dx;
+      g += H.selfadjointView<Eigen::Lower>() * dx;
+      ++iterations;
+      if (AS.rows() == 0) break;
+      const VectorXd cS1 = AS * xs + bS;
+      nu -= rho * cS1;
+      if (cS1.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0 && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0) break;
+    }
+    if ((xs - x_start).lpNorm<Eigen::Infinity>() <= 1e-13 * xscale0) break;
+  }
+  return true;
+}
+
+}  // namespace
+
 PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values) {
   PolishResult r;
   const SparseMatrix& A = problem.constraint_matrix();
   const VectorXd& b = problem.constraint_offset();
-  if (!problem.hessian_is_constant()) {
-    r.reason = "the objective is not quadratic";
-    return r;
-  }
-  if (A.rows() == 0 || mu.size() != A.rows() || mu.maxCoeff() <= 0) {
-    r.reason = "no active constraint";
+  if (mu.size() != A.rows()) {
+    r.reason = "multipliers and constraints differ in size";
     return r;
   }
   // Row scales: constraint values in the units of x (as IPOPT saw them).
@@ -25,13 +74,10 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
   for (int j = 0; j < A.outerSize(); ++j)
     for (SparseMatrix::InnerIterator it(A, j); it; ++it)
       row_scale[it.row()] = std::max(row_scale[it.row()], std::abs(it.value()));
-  const double mu_max = mu.maxCoeff();
+  const double mu_max = A.rows() > 0 ? mu.maxCoeff() : 0.0;
   const VectorXd c0 = A * x + b;
-  SparseMatrix H;
-  problem.hessian_lower(x, H);
-  const double hdiag = H.diagonal().cwiseAbs().mean();
   std::vector<char> in_set(A.rows(), 0);
-  for (Index i = 0; i < A.rows(); ++i) in_set[i] = mu[i] > 1e-6 * mu_max && row_scale[i] > 0;
+  for (Index i = 0; i < A.rows(); ++i) in_set[i] = mu_max > 0 && mu[i] > 1e-6 * mu_max && row_scale[i] > 0;
   // A few rounds: constraints that the equality solve wants to pull (negative multiplier) were not
   // really active; drop them and solve again.
   VectorXd xs, nu;
@@ -45,10 +91,6 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
         S.push_back(i);
       }
     r.active = static_cast<int>(S.size());
-    if (S.empty()) {
-      r.reason = "empty active set";
-      return r;
-    }
     // A_S with rows scaled to unit max entry (scaled multipliers ν = μ · scale).
     std::vector<Triplet> t;
     for (int j = 0; j < A.outerSize(); ++j)
@@ -63,37 +105,12 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
       if (hold_values) bS[k] -= c0[S[k]] / row_scale[S[k]];  // target: the constraint values IPOPT left
       nu[k] = mu[S[k]] * row_scale[S[k]];
     }
-    const SparseMatrix AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
-    const double adiag = AtA.diagonal().cwiseAbs().maxCoeff();
-    if (!(hdiag > 0) || !(adiag > 0)) {
-      r.reason = "degenerate Hessian or constraints";
-      return r;
-    }
-    // Large ρ: the nearly dependent rows of the two families give A_S tiny singular values, along which
-    // the method of multipliers converges at the rate 1/(1 + ρ σ²).
-    const double rho = 1e6 * hdiag / adiag;
-    CholeskySolver chol;
-    try {
-      chol.compute(SparseMatrix(H + rho * AtA));
-    } catch (const SolveError&) {
-      r.reason = "H + ρ AᵀA is not positive definite";
-      return r;
-    }
     xs = x;
-    VectorXd g;
-    problem.gradient(xs, g);
-    const double xscale = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
-    for (int it = 0; it < 400; ++it) {
-      const VectorXd cS = AS * xs + bS;
-      const VectorXd dx = chol.solve(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS));
-      xs += dx;
-      g += H.selfadjointView<Eigen::Lower>() * dx;
-      const VectorXd cS1 = AS * xs + bS;
-      nu -= rho * cS1;
-      r.iterations += 1;
-      if (cS1.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale) break;
+    if (!solve_on_set(problem, AS, bS, xs, nu, r.iterations)) {
+      r.reason = "the Hessian (+ ρ AᵀA) is not positive definite";
+      return r;
     }
-    const double numax = nu.cwiseAbs().maxCoeff();
+    const double numax = nu.size() ? nu.cwiseAbs().maxCoeff() : 0.0;
     bool dropped = false;
     for (std::size_t k = 0; k < S.size(); ++k)
       if (nu[k] < -1e-8 * numax) {

@@ -8,11 +8,12 @@
 /// tolerance suggests. Given IPOPT's solution and multipliers, the polish takes the active set
 /// S = {i : μ_i > 1e-6 max μ} and solves the equality-constrained problem
 ///     min f(x)  subject to  A_S x + b_S = 0
-/// for a quadratic f (constant Hessian H) by the method of multipliers (Hestenes 1969; Nocedal & Wright,
-/// Numerical Optimization, 2006, §17.3): with M = H + ρ A_Sᵀ A_S factorised once by CHOLMOD,
+/// by Newton steps on f (one for a quadratic f), each solved by the method of multipliers (Hestenes 1969;
+/// Nocedal & Wright, Numerical Optimization, 2006, §17.3): with M = H + ρ A_Sᵀ A_S factorised by CHOLMOD,
 ///     M Δx = −(∇f(x) − A_Sᵀ μ_S) − ρ A_Sᵀ c_S(x),   x ← x + Δx,   μ_S ← μ_S − ρ c_S(x),
 /// which converges whatever the rank of A_S (dependent rows get some split of the multiplier; A_Sᵀμ_S,
-/// the contact force, is unique). The polished point is accepted only if it is a KKT point of the
+/// the contact force, is unique). With no active constraint it is plain Newton on f (removing the
+/// optimiser's stationarity error). The polished point is accepted only if it is a KKT point of the
 /// inequality problem: μ_S ≥ 0 (up to round-off) and no other constraint violated; otherwise the IPOPT
 /// point is kept.
 
@@ -21,7 +22,7 @@
 namespace symcontact {
 
 struct PolishResult {
-  bool applied = false;      ///< false: x and μ unchanged (not quadratic, no active set, or rejected)
+  bool applied = false;      ///< false: x and μ unchanged (rejected, see reason)
   int iterations = 0;
   int active = 0;            ///< |S|
   double max_violation = 0;  ///< max_i max(0, −c_i(x)) after the polish, in the scaled units of the rows

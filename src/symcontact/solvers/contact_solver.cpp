@@ -3,16 +3,52 @@
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/contact/surface_tractions.hpp"
 #include "symcontact/solvers/active_set_polish.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
 
 namespace symcontact {
 
+namespace {
+/// The bodies' energy plus the friction terms of the current geometry iterate.
+class CompositeEnergy : public EnergyTerm {
+ public:
+  explicit CompositeEnergy(const EnergyTerm& base) : base_(base) {}
+  std::vector<std::shared_ptr<const FrictionTerm>> extra;
+  std::string name() const override { return "energy+friction"; }
+  double value(const VectorXd& u) const override {
+    double v = base_.value(u);
+    for (const auto& t : extra)
+      if (t) v += t->value(u);
+    return v;
+  }
+  void add_gradient(const VectorXd& u, VectorXd& g) const override {
+    base_.add_gradient(u, g);
+    for (const auto& t : extra)
+      if (t) t->add_gradient(u, g);
+  }
+  void add_hessian(const VectorXd& u, MatrixSink& sink) const override {
+    base_.add_hessian(u, sink);
+    for (const auto& t : extra)
+      if (t) t->add_hessian(u, sink);
+  }
+  bool hessian_is_constant() const override {
+    for (const auto& t : extra)
+      if (t) return false;
+    return base_.hessian_is_constant();
+  }
+
+ private:
+  const EnergyTerm& base_;
+};
+}  // namespace
+
 ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
-                                 const Logger& log) {
+                                 const Logger& log, const FrictionState* friction) {
   ContactSolveReport rep;
-  ReducedProblem problem(energy, fixed, dofs.num_dofs());
+  CompositeEnergy total(energy);
+  ReducedProblem problem(total, fixed, dofs.num_dofs());
   rep.num_free = problem.num_free();
   fixed.impose(u);
   VectorXd x = problem.restrict(u);
@@ -28,6 +64,18 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     {
       ScopedPhase t(rep.times, "assembly");
       problem.set_constraints(lin.A, lin.b);
+      total.extra.assign(contacts.pairs.size(), nullptr);
+      if (friction)
+        for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
+          if (p >= static_cast<int>(friction->nodal_tau.size()) || friction->nodal_tau[p].size() == 0) continue;
+          const int f = contacts.friction_family(p);
+          const ContactFamily& fam = contacts.families()[f];
+          const ContactSurface& slave = contacts.surfaces[fam.slave];
+          const std::vector<double> tau = interpolate_at_points(slave, lin.points[f], friction->nodal_tau[p]);
+          total.extra[p] = std::make_shared<FrictionTerm>(
+              "friction(" + contacts.pairs[p].name + ")", slave, fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
+              lin.points[f], tau, contacts.pairs[p].alpha, dofs, friction->u_start);
+        }
     }
     rep.num_constraints = lin.A.rows();
     // Warm start when the rows are the same (same families, same nodes).
@@ -85,16 +133,26 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     }
   }
   u = problem.expand(x);
-  // Contact forces: Aᵀμ. On free DOFs the equilibrium residual ∇E(u) equals Aᵀμ at the KKT point and
-  // carries no optimiser tolerance (it balances the applied loads to round-off), so it is used there;
-  // on fixed DOFs the residual also holds the support reaction, and Aᵀμ is kept.
+  rep.friction = total.extra;
+  // Contact forces: Aᵀμ (+ friction). On free DOFs the equilibrium residual ∇E(u) of the bodies' energy
+  // equals Aᵀμ + the friction force at the KKT point and carries no optimiser tolerance (it balances the
+  // applied loads to round-off), so it is used there; on fixed DOFs the residual also holds the support
+  // reaction, and Aᵀμ is kept (friction forces on fixed DOFs are not recovered).
   rep.contact_force = rep.linearization.A.transpose() * rep.multipliers;
+  rep.multiplier_force = rep.contact_force;
   VectorXd residual = VectorXd::Zero(u.size());
   energy.add_gradient(u, residual);
   std::vector<Index> free_index;
   fixed.free_numbering(u.size(), free_index);
-  for (Index d = 0; d < u.size(); ++d)
-    if (free_index[d] >= 0 && rep.contact_force[d] != 0.0) rep.contact_force[d] = residual[d];
+  // The residual of the bodies' energy holds the whole interface force, normal and frictional.
+  for (const ContactSurface& s : contacts.surfaces) {
+    if (s.is_rigid()) continue;
+    for (Index node : s.nodes)
+      for (int i = 0; i < s.dim; ++i) {
+        const Index d = dofs.dof(s.body, node, i);
+        if (free_index[d] >= 0) rep.contact_force[d] = residual[d];
+      }
+  }
   return rep;
 }
 

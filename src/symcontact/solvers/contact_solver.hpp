@@ -13,7 +13,10 @@
 #include <string>
 #include <vector>
 
+#include <memory>
+
 #include "symcontact/contact/contact_set.hpp"
+#include "symcontact/contact/friction_term.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/energy/energy_term.hpp"
@@ -33,6 +36,13 @@ struct ContactSolveOptions {
   bool polish = true;
 };
 
+/// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).
+struct FrictionState {
+  /// Per pair: τ at the nodes of the slave surface of the pair's friction family (empty: no friction).
+  std::vector<Eigen::VectorXd> nodal_tau;
+  VectorXd u_start;  ///< displacement at the start of the load step (slip increments are measured from it)
+};
+
 struct ContactSolveReport {
   int geometry_iterations = 0;
   int ipopt_iterations = 0;                 ///< summed over the geometry iterations
@@ -45,13 +55,17 @@ struct ContactSolveReport {
   ContactLinearization linearization;       ///< at the last geometry iterate
   VectorXd multipliers;                     ///< μ of the last solve (one per row)
   VectorXd contact_force;                   ///< F_c = Aᵀ μ (∇E(u) on free DOFs, see the .cpp), full DOF vector
+  VectorXd multiplier_force;                ///< Aᵀ μ alone (zero exactly where no constraint is active)
+  /// The friction terms of the last geometry iterate, per pair (null without friction).
+  std::vector<std::shared_ptr<const FrictionTerm>> friction;
 };
 
-/// On entry u is the starting point (previous load step); on exit the solution. Throws SolveError (with
-/// the IPOPT status or the fixed-point history) when a solve fails or the fixed point does not converge;
-/// u then holds the last iterate.
+/// On entry u is the starting point (previous load step); on exit the solution. `energy` is the bodies'
+/// energy (elastic + loads); friction terms, rebuilt at each geometry iteration from `friction`, are
+/// added to it. Throws SolveError (with the IPOPT status or the fixed-point history) when a solve fails
+/// or the fixed point does not converge; u then holds the last iterate.
 ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
-                                 const Logger& log);
+                                 const Logger& log, const FrictionState* friction = nullptr);
 
 }  // namespace symcontact

@@ -1,0 +1,29 @@
+#pragma once
+/// \file surface_tractions.hpp
+/// Nodal contact tractions of a surface from a nodal force vector F (force the other side exerts on
+/// the body): with n_k the smoothed outward normal and A_k = ∫ N_k dS the lumped reference area,
+///   pressure p_k = −F_k·n_k / A_k,   tangential traction t_k = (F_k − (F_k·n_k) n_k) / A_k.
+
+#include <vector>
+
+#include "symcontact/contact/contact_points.hpp"
+#include "symcontact/contact/contact_surface.hpp"
+
+namespace symcontact {
+
+struct SurfaceTractions {
+  Eigen::MatrixXd x;           ///< dim × n current positions
+  Eigen::MatrixXd normals;     ///< dim × n smoothed outward normals
+  Eigen::MatrixXd force;       ///< dim × n
+  Eigen::VectorXd pressure;    ///< n
+  Eigen::MatrixXd tangential;  ///< dim × n
+};
+
+SurfaceTractions surface_tractions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u,
+                                   const VectorXd& force);
+
+/// Interpolates nodal values of surface `s` to the slave points of a family on it.
+std::vector<double> interpolate_at_points(const ContactSurface& s, const std::vector<ContactPoint>& points,
+                                          const Eigen::VectorXd& nodal);
+
+}  // namespace symcontact

@@ -1,0 +1,40 @@
+#pragma once
+/// \file frictional_contact.hpp
+/// One load step of frictional contact: Algorithm 1 of the talk (METHOD.md) around Algorithm 2.
+///
+///  - Tresca pairs: the threshold τ is given; one regularised-Tresca solve (solve_contact).
+///  - Coulomb pairs (Raous 1999, eq. 17): σ_{n,0} from the frictionless problem, τ_0 = μ p_0; then
+///      solve regularised Tresca with τ_k → pressure p_k → τ_{k+1} = μ p_k,
+///    until ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that does not converge within the
+///    allowed iterations throws SolveError — never reported as success.
+/// τ and p live at the nodes of the slave surface of each pair's friction family; the pressure is the
+/// nodal one recovered from the contact forces (surface_tractions.hpp).
+
+#include <vector>
+
+#include "symcontact/solvers/contact_solver.hpp"
+
+namespace symcontact {
+
+struct FrictionalOptions {
+  ContactSolveOptions contact;
+  double coulomb_tolerance = 1e-6;
+  int max_coulomb_iterations = 50;
+};
+
+struct FrictionalReport {
+  ContactSolveReport last;                 ///< the final Tresca solve
+  int coulomb_iterations = 0;              ///< Tresca solves after the frictionless one (0: no Coulomb pair)
+  std::vector<double> coulomb_change;      ///< ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ per iteration
+  int geometry_iterations = 0;             ///< summed over all solves of the step
+  int ipopt_iterations = 0;                ///< summed over all solves of the step
+  FrictionState friction;                  ///< the thresholds of the final solve
+  PhaseTimes times;
+};
+
+/// u: on entry the start of the step (also the reference of the slip increments), on exit the solution.
+FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                          const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
+                                          const Logger& log);
+
+}  // namespace symcontact
