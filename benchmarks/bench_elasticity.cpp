@@ -13,6 +13,16 @@
 ///
 /// Options: --dim 2|3|all (all), --order 1|2 (1), --min-dofs N (1e4), --max-dofs N (1.1e6 in 2D,
 /// 3.1e5 in 3D), --dofs N... (explicit sizes instead of the ladder), --repeat R (1; each time is the minimum over R runs), --csv FILE, --markdown.
+///
+/// --case selects the benchmark: `elasticity` (the default, above), or the contact benchmarks
+/// `hertz2d` (cylinder on a rigid plane) and `hertz2d-cylinders` (two elastic cylinders), which solve
+/// the Hertz 2D examples at the fine mesh sizes --h (default 0.003 0.0015 0.00085 0.0006) and compare the
+/// contact solve with one Cholesky factor-and-solve of the same stiffness (bench_contact.hpp):
+///
+///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case hertz2d --h 0.004 0.002 --csv hertz.csv
+///
+/// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, and --repeat,
+/// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_contact.hpp"
 #include "bench_support.hpp"
 #include "elastic_block.hpp"
 #include "symcontact/core/error.hpp"
@@ -73,6 +84,10 @@ std::vector<ResultTable::Column> columns() {
 }
 
 struct Options {
+  std::string bench_case = "elasticity";
+  std::vector<double> h;           ///< contact: fine mesh sizes (default_hertz_sizes() when empty)
+  std::string examples = SYMCONTACT_BENCH_EXAMPLES;
+  bool keep_work = false;
   std::string dim = "all";
   int order = 1;
   double min_dofs = 1e4;
@@ -137,8 +152,16 @@ double sweep(int dim, const Options& opt, const MachineInfo& machine, bool appen
 
 int main(int argc, char** argv) {
   Options opt;
-  CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D",
+  CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
+               "Hertz 2D contact solves against that Cholesky floor",
                "symcontact-bench"};
+  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d or hertz2d-cylinders")
+      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders"}));
+  app.add_option("--h", opt.h, "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/")
+      ->check(CLI::ExistingDirectory);
+  app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
   app.add_option("--min-dofs", opt.min_dofs, "smallest size of the ladder 1e4, 3e4, 1e5, ... [DOFs]")
@@ -168,6 +191,18 @@ int main(int argc, char** argv) {
   print_machine_info(std::cout, machine);
 
   try {
+    if (opt.bench_case != "elasticity") {
+      ContactBenchOptions c;
+      c.which = opt.bench_case == "hertz2d" ? HertzCase::kCylinderOnPlane : HertzCase::kTwoCylinders;
+      c.h = opt.h.empty() ? default_hertz_sizes() : opt.h;
+      c.repeat = opt.repeat;
+      c.examples_dir = opt.examples;
+      c.csv = opt.csv;
+      c.markdown = opt.markdown;
+      c.keep_work = opt.keep_work;
+      run_hertz_sweep(c, machine);
+      return symcontact::kExitOk;
+    }
     bool append = false;
     for (const int dim : {2, 3}) {
       if (opt.dim != "all" && opt.dim != std::to_string(dim)) continue;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <iomanip>
 #include <limits>
 #include <set>
@@ -146,6 +147,12 @@ bool reset_peak_rss() {
   f << "5";
   f.close();
   return !f.fail();
+}
+
+double process_cpu_seconds() {
+  timespec ts{};
+  if (clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts) != 0) return std::numeric_limits<double>::quiet_NaN();
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 double min_time(int repeat, const std::function<void()>& f) {

@@ -48,6 +48,10 @@ double current_rss_mib();
 /// Returns false when the kernel refused; peak_rss_mib() is then a peak over the whole process.
 bool reset_peak_rss();
 
+/// CPU time of this process (all threads, user + system) in seconds: CLOCK_PROCESS_CPUTIME_ID.
+/// Differences of it are less sensitive than wall time to other processes sharing the cores.
+double process_cpu_seconds();
+
 /// Calls f() `repeat` times (at least once) and returns the smallest wall-clock time in seconds.
 double min_time(int repeat, const std::function<void()>& f);
 

@@ -13,6 +13,8 @@
 #include "symcontact/mesh/structured.hpp"
 #include "symcontact/solvers/cholesky.hpp"
 
+#include "bench_support.hpp"
+
 namespace symcontact::bench {
 
 namespace {
@@ -96,23 +98,30 @@ ElasticBlock::ElasticBlock(int dim_, int order_, int divisions_)
 }
 
 CholeskyFloor measure_cholesky_floor(const ElasticBlock& block, int repeat) {
+  return measure_cholesky_floor(block.energy(), block.free_index, block.num_free, block.load_free, repeat);
+}
+
+CholeskyFloor measure_cholesky_floor(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free,
+                                     const VectorXd& load_free, int repeat) {
   CholeskyFloor r;
   constexpr double inf = std::numeric_limits<double>::infinity();
-  r.assembly = r.gradient = r.analyze = r.factorize = r.solve = inf;
-  const Index n = block.num_free;
+  r.assembly = r.gradient = r.analyze = r.factorize = r.solve = r.cpu_factor_and_solve = inf;
+  const Index n = num_free;
+  const auto num_dofs = static_cast<Index>(free_index.size());
   VectorXd u_free;
   for (int rep = 0; rep < std::max(1, repeat); ++rep) {
     SparseMatrix K;
     auto t0 = std::chrono::steady_clock::now();
     {
-      ReducedTripletSink sink(block.free_index);
-      block.energy().add_hessian(VectorXd::Zero(block.dofs.num_dofs()), sink);  // K does not depend on u
+      ReducedTripletSink sink(free_index);
+      energy.add_hessian(VectorXd::Zero(num_dofs), sink);  // K does not depend on u
       r.num_triplets = static_cast<Index>(sink.triplets().size());
       K = sink.to_lower_matrix(n);
     }
     r.assembly = std::min(r.assembly, seconds_since(t0));
 
     CholeskySolver chol;
+    const double cpu0 = process_cpu_seconds();
     t0 = std::chrono::steady_clock::now();
     chol.analyze(K);
     r.analyze = std::min(r.analyze, seconds_since(t0));
@@ -121,25 +130,26 @@ CholeskyFloor measure_cholesky_floor(const ElasticBlock& block, int repeat) {
     chol.factorize(K);
     r.factorize = std::min(r.factorize, seconds_since(t0));
     t0 = std::chrono::steady_clock::now();
-    u_free = chol.solve(block.load_free);
+    u_free = chol.solve(load_free);
     r.solve = std::min(r.solve, seconds_since(t0));
+    r.cpu_factor_and_solve = std::min(r.cpu_factor_and_solve, process_cpu_seconds() - cpu0);
     r.nnz_factor = chol.factor_nonzeros();
 
     r.nnz_lower = K.nonZeros();
     r.nnz_full = 2 * r.nnz_lower - n;
-    const VectorXd res = K.selfadjointView<Eigen::Lower>() * u_free - block.load_free;
-    r.relative_residual = res.norm() / block.load_free.norm();
+    const VectorXd res = K.selfadjointView<Eigen::Lower>() * u_free - load_free;
+    r.relative_residual = res.norm() / load_free.norm();
     r.max_displacement = u_free.cwiseAbs().maxCoeff();
   }
 
   // The gradient at the solution (its value does not matter for the time, but it is a real state).
-  VectorXd u = VectorXd::Zero(block.dofs.num_dofs()), g(u.size());
+  VectorXd u = VectorXd::Zero(num_dofs), g(u.size());
   for (Index k = 0; k < u.size(); ++k)
-    if (block.free_index[k] >= 0) u[k] = u_free[block.free_index[k]];
+    if (free_index[k] >= 0) u[k] = u_free[free_index[k]];
   for (int rep = 0; rep < std::max(1, repeat); ++rep) {
     g.setZero();
     const auto t0 = std::chrono::steady_clock::now();
-    block.energy().add_gradient(u, g);
+    energy.add_gradient(u, g);
     r.gradient = std::min(r.gradient, seconds_since(t0));
   }
   return r;

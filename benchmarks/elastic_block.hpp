@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "symcontact/core/types.hpp"
+#include "symcontact/energy/energy_term.hpp"
 #include "symcontact/energy/linear_elastic_energy.hpp"
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/mesh/mesh.hpp"
@@ -62,6 +63,7 @@ struct CholeskyFloor {
   double nnz_factor = 0.0; ///< nonzeros of L (CHOLMOD's count, diagonal included)
   double relative_residual = 0.0;  ///< ‖K_ff u_f − f_f‖ / ‖f_f‖
   double max_displacement = 0.0;   ///< max |u_f|, a sanity check that the load went in
+  double cpu_factor_and_solve = 0.0;  ///< process CPU time of analyze + factorize + solve, s (min over runs)
   /// What a contact solve is compared with: analyze + factorize + solve.
   double factor_and_solve() const { return analyze + factorize + solve; }
 };
@@ -77,5 +79,11 @@ class FactorTooLarge : public std::runtime_error {
 double available_memory_bytes();
 
 CholeskyFloor measure_cholesky_floor(const ElasticBlock& block, int repeat);
+
+/// The same measurement for any energy whose Hessian does not depend on u (K = ∇²E(0)): K_ff is
+/// assembled over the DOFs with free_index[d] ≥ 0 (num_free of them, free_index has num_dofs entries)
+/// and solved for `load_free`. Throws SolveError when K_ff is not positive definite.
+CholeskyFloor measure_cholesky_floor(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free,
+                                     const VectorXd& load_free, int repeat);
 
 }  // namespace symcontact::bench

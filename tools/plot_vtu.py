@@ -2,12 +2,15 @@
 """Draws the deformed mesh of one or more symcontact .vtu files into a PNG.
 
     tools/plot_vtu.py OUT.png FILE.vtu [FILE.vtu ...] [--field von_mises] [--scale S] [--title T]
+                      [--xlim LO,HI] [--ylim LO,HI]
 
 Reads the ASCII VTK XML UnstructuredGrid files written by `symcontact run` (inline ASCII DataArrays).
 The mesh is moved by `--scale` times the point data "displacement" (default: the factor that makes the
 largest displacement 10 % of the model size), coloured by a point (or cell) data field (default
 "von_mises"; vector and tensor fields are shown by their Euclidean norm), with a colour bar, a title and
 the undeformed outline in grey. Every file is one body in the same picture, on a shared colour scale.
+In 2D, `--xlim` and `--ylim` zoom on a window (for example the contact zone); the colour scale is then
+that of the nodes inside the window.
 
 2D: triangles and quadrilaterals, linear or quadratic (quadratic cells are drawn by their vertices).
 3D: tetrahedra (linear or quadratic); the boundary faces are drawn in an orthographic view.
@@ -236,6 +239,35 @@ def draw_3d(ax, bodies, fields, scale, norm, cmap):
     return pc
 
 
+def _limits(text):
+    try:
+        lo, hi = (float(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected two numbers separated by a comma, got {text!r}")
+    if not lo < hi:
+        raise argparse.ArgumentTypeError(f"expected LO < HI, got {text!r}")
+    return lo, hi
+
+
+def _in_window(body, values, where, scale, xlim, ylim):
+    """The field values of the nodes (or cells, by their first vertex) whose deformed position lies in the
+    window; all of them when there is no window."""
+    if xlim is None and ylim is None:
+        return values
+    x = body.points[:, :2] + scale * body.u[:, :2]
+    inside = np.ones(len(x), dtype=bool)
+    if xlim:
+        inside &= (x[:, 0] >= xlim[0]) & (x[:, 0] <= xlim[1])
+    if ylim:
+        inside &= (x[:, 1] >= ylim[0]) & (x[:, 1] <= ylim[1])
+    if where == "point":
+        return values[inside]
+    keep = np.zeros(len(values), dtype=bool)
+    for idx, verts in body.cells:
+        keep[idx] = inside[verts[:, 0]]
+    return values[keep]
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -245,6 +277,9 @@ def main(argv=None):
     ap.add_argument("--scale", type=float, default=None,
                     help="displacement amplification (default: largest displacement = 10%% of the model size)")
     ap.add_argument("--title", default=None, help="picture title")
+    ap.add_argument("--xlim", type=_limits, default=None, metavar="LO,HI",
+                    help="2D: horizontal range to show (write --xlim=-1,1 when LO is negative)")
+    ap.add_argument("--ylim", type=_limits, default=None, metavar="LO,HI", help="2D: vertical range to show")
     args = ap.parse_args(argv)
 
     try:
@@ -258,9 +293,14 @@ def main(argv=None):
         print(f"plot_vtu: {e}", file=sys.stderr)
         return 2
 
+    if dim == 3 and (args.xlim or args.ylim):
+        print("plot_vtu: --xlim and --ylim are for 2D meshes", file=sys.stderr)
+        return 2
     scale = default_scale(bodies) if args.scale is None else args.scale
-    lo = min(float(v.min()) for v, _ in fields)
-    hi = max(float(v.max()) for v, _ in fields)
+    shown = [_in_window(b, v, where, scale, args.xlim, args.ylim) for b, (v, where) in zip(bodies, fields)]
+    shown = [v for v in shown if v.size] or [v for v, _ in fields]
+    lo = min(float(v.min()) for v in shown)
+    hi = max(float(v.max()) for v in shown)
     if hi - lo <= 1e-6 * max(abs(lo), abs(hi)):
         # A uniform field (as in a patch test): show it as one colour, not its round-off.
         mid = 0.5 * (lo + hi)
@@ -275,6 +315,10 @@ def main(argv=None):
     ax.set_aspect("equal")
     ax.autoscale_view()
     ax.margins(0.05)
+    if args.xlim:
+        ax.set_xlim(*args.xlim)
+    if args.ylim:
+        ax.set_ylim(*args.ylim)
     if dim == 3:
         ax.set_axis_off()
     else:

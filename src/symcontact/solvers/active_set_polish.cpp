@@ -1,6 +1,7 @@
 #include "symcontact/solvers/active_set_polish.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "symcontact/core/error.hpp"
@@ -43,6 +44,8 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     }
     const VectorXd x_start = xs;
     // Inner iterations on the quadratic model f(x) ≈ f + gᵀΔ + ½ ΔᵀHΔ (exact for a quadratic f).
+    double best = std::numeric_limits<double>::infinity();
+    int since_progress = 0;
     for (int it = 0; it < (AS.rows() > 0 ? 400 : 1); ++it) {
       const VectorXd cS = AS * xs + bS;
       const VectorXd dx = chol.solve(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS));
@@ -52,7 +55,15 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       if (AS.rows() == 0) break;
       const VectorXd cS1 = AS * xs + bS;
       nu -= rho * cS1;
-      if (cS1.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0 && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0) break;
+      const double viol = cS1.lpNorm<Eigen::Infinity>();
+      if (viol <= 1e-14 * xscale0 && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0) break;
+      // Stop when the violation no longer falls (inconsistent rows: the set must change instead).
+      if (viol < 0.99 * best) {
+        best = viol;
+        since_progress = 0;
+      } else if (++since_progress >= 40) {
+        break;
+      }
     }
     if ((xs - x_start).lpNorm<Eigen::Infinity>() <= 1e-13 * xscale0) break;
   }

@@ -99,6 +99,10 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
       u = problem.expand(res.x.size() == x.size() ? res.x : x);
       throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
     }
+    auto relative_change = [&]() {
+      return (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
+    };
+    double change = relative_change();
     if (options.polish) {
       ScopedPhase t(rep.times, "polish");
       PolishResult pr = polish_active_set(problem, res.x, res.multipliers);
@@ -107,8 +111,8 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
         pr = polish_active_set(problem, res.x, res.multipliers, true);
         if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
       }
+      change = relative_change();
     }
-    const double change = (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
     rep.change_history.push_back(change);
     x = res.x;
     mu_prev = res.multipliers;

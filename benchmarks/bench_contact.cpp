@@ -1,0 +1,138 @@
+#include "bench_contact.hpp"
+
+#include <stdlib.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <stdexcept>
+
+namespace symcontact::bench {
+
+namespace {
+
+using Kind = ResultTable::Kind;
+
+std::vector<ResultTable::Column> columns() {
+  return {
+      {"case", "", Kind::kText, 0},
+      {"h", "h", Kind::kFixed, 5},
+      {"nodes", "", Kind::kInteger, 0},
+      {"dofs", "DOFs", Kind::kInteger, 0},
+      {"free_dofs", "free", Kind::kInteger, 0},
+      {"constraints", "constr.", Kind::kInteger, 0},
+      {"geometry_iterations", "geom it", Kind::kInteger, 0},
+      {"ipopt_iterations", "IPOPT it", Kind::kInteger, 0},
+      {"meshing_s", "mesh [s]", Kind::kFixed, 3},
+      {"setup_s", "setup [s]", Kind::kFixed, 3},
+      {"search_s", "search [s]", Kind::kFixed, 3},
+      {"assembly_s", "assembly [s]", Kind::kFixed, 3},
+      {"optimizer_s", "optimizer [s]", Kind::kFixed, 3},
+      {"polish_s", "polish [s]", Kind::kFixed, 3},
+      {"contact_s", "contact [s]", Kind::kFixed, 3},
+      {"solve_contact_wall_s", "", Kind::kFixed, 3},
+      {"total_s", "total [s]", Kind::kFixed, 3},
+      {"peak_rss_contact_mib", "peak RSS [MiB]", Kind::kInteger, 0},
+      {"floor_free_dofs", "", Kind::kInteger, 0},
+      {"floor_pinned_dofs", "", Kind::kInteger, 0},
+      {"floor_assembly_s", "", Kind::kFixed, 3},
+      {"floor_analyze_s", "", Kind::kFixed, 3},
+      {"floor_factorize_s", "", Kind::kFixed, 3},
+      {"floor_solve_s", "", Kind::kFixed, 3},
+      {"floor_s", "floor [s]", Kind::kFixed, 3},
+      {"ratio", "ratio", Kind::kFixed, 1},
+      {"ratio_wall", "", Kind::kFixed, 1},
+      {"solve_contact_cpu_s", "contact CPU [s]", Kind::kFixed, 3},
+      {"floor_cpu_s", "floor CPU [s]", Kind::kFixed, 3},
+      {"ratio_cpu", "CPU ratio", Kind::kFixed, 1},
+      {"nnz_l", "", Kind::kInteger, 0},
+      {"floor_relative_residual", "", Kind::kScientific, 1},
+      {"peak_rss_floor_mib", "", Kind::kInteger, 0},
+      {"p0", "", Kind::kScientific, 6},
+      {"p0_error_pct", "p0 err [%]", Kind::kFixed, 3},
+      {"a", "", Kind::kScientific, 6},
+      {"a_error_pct", "a err [%]", Kind::kFixed, 2},
+      {"force_relative_error", "force err", Kind::kScientific, 1},
+      {"min_constraint", "", Kind::kScientific, 2},
+      {"ipopt_status", "", Kind::kText, 0},
+      {"repeat", "", Kind::kInteger, 0},
+      {"openblas_threads", "", Kind::kInteger, 0},
+  };
+}
+
+/// A fresh directory under the system temporary directory.
+std::string make_work_dir() {
+  std::string templ = (std::filesystem::temp_directory_path() / "symcontact-bench-XXXXXX").string();
+  if (!mkdtemp(templ.data())) throw std::runtime_error("cannot create a temporary directory " + templ);
+  return templ;
+}
+
+}  // namespace
+
+std::vector<double> default_hertz_sizes() { return {0.003, 0.0015, 0.00085, 0.0006}; }
+
+void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine) {
+  const HertzReference ref = hertz_reference();
+  const std::string name = hertz_case_name(opt.which);
+  std::cout << "\n## " << name << ": "
+            << (opt.which == HertzCase::kCylinderOnPlane ? "cylinder on a rigid plane" : "two elastic cylinders")
+            << ", plane strain, P1, half model; closed form a = " << std::setprecision(6) << ref.a
+            << ", p0 = " << ref.p0
+            << "; floor phases min of " << opt.repeat << " run(s), contact solve once\n";
+  std::cout << "# contact = search + assembly + optimizer + polish; total = mesh + setup + solve_contact wall;\n"
+            << "# floor = analyze + factorize + solve of K_ff (u_y also pinned at the contact point);"
+               " ratio = contact / floor;\n# CPU ratio = process CPU time of solve_contact() / of the floor"
+               " (less sensitive to other load on the machine)\n\n";
+  ResultTable table(columns(), std::cout, opt.markdown);
+  if (!opt.csv.empty()) table.write_csv(opt.csv);
+
+  const std::string work = make_work_dir();
+  const auto t_sweep = std::chrono::steady_clock::now();
+  bool rss_reset_ok = true;
+  for (const double h : opt.h) {
+    rss_reset_ok = reset_peak_rss() && rss_reset_ok;
+    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work);
+    const double peak_contact = peak_rss_mib();
+
+    rss_reset_ok = reset_peak_rss() && rss_reset_ok;
+    Index floor_free = 0;
+    int pinned = 0;
+    const CholeskyFloor floor = measure_hertz_floor(*run, opt.repeat, floor_free, pinned);
+    const double peak_floor = peak_rss_mib();
+
+    Index nodes = 0;
+    for (const auto& b : run->model->bodies()) nodes += b->mesh.num_nodes();
+    const PhaseTimes& t = run->report.times;
+    const double meshing = run->build_times.get("meshing"), setup = run->build_times.get("setup");
+    const double contact = run->contact_seconds();
+    table.add_row({name, h, static_cast<double>(nodes), static_cast<double>(run->model->dofs().num_dofs()),
+                   static_cast<double>(run->report.num_free), static_cast<double>(run->report.num_constraints),
+                   static_cast<double>(run->report.geometry_iterations),
+                   static_cast<double>(run->report.ipopt_iterations), meshing, setup, t.get("search"),
+                   t.get("assembly"), t.get("optimizer"), t.get("polish"), contact, run->solve_wall,
+                   meshing + setup + run->solve_wall, peak_contact, static_cast<double>(floor_free),
+                   static_cast<double>(pinned), floor.assembly, floor.analyze, floor.factorize, floor.solve,
+                   floor.factor_and_solve(), contact / floor.factor_and_solve(),
+                   run->solve_wall / floor.factor_and_solve(), run->solve_cpu, floor.cpu_factor_and_solve,
+                   run->solve_cpu / floor.cpu_factor_and_solve, floor.nnz_factor, floor.relative_residual,
+                   peak_floor, run->p0, 100 * (run->p0 / ref.p0 - 1), run->a, 100 * (run->a / ref.a - 1),
+                   std::abs(2 * run->force - HertzReference::kLoad) / HertzReference::kLoad,
+                   run->min_constraint, run->report.ipopt_status, static_cast<double>(opt.repeat),
+                   static_cast<double>(machine.openblas_threads)});
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_sweep).count();
+  std::cout << "\n# " << name << " sweep: " << std::fixed << std::setprecision(1) << wall << std::defaultfloat
+            << " s wall\n";
+  if (!rss_reset_ok)
+    std::cout << "# note: /proc/self/clear_refs refused the peak-RSS reset: peak RSS is monotone over the run\n";
+  else
+    std::cout << "# peak RSS: of meshing + setup + contact solve, per size (VmHWM reset before each size)\n";
+  if (opt.keep_work)
+    std::cout << "# wrapper .geo and .toml kept in " << work << "\n";
+  else
+    std::filesystem::remove_all(work);
+}
+
+}  // namespace symcontact::bench

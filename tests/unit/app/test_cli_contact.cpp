@@ -1,0 +1,219 @@
+/// End-to-end tests of `symcontact run` on contact problems (app/main.cpp, app/run.cpp): the contact
+/// outputs (contact_<pair>_<step>.csv, the "contact" entries of summary.json, the contact point data of
+/// the .vtu files), a failed contact solve (exit 3, what it keeps and what it must not leave behind) and a
+/// contact pair naming a missing boundary group (exit 2). Conventions of test_cli.cpp: the binary is
+/// SYMCONTACT_CLI, each test works in its own temporary folder and runs the program through the shell,
+/// capturing stdout and stderr together.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CliResult {
+  int exit_code = -1;  ///< the program's exit status, or -1 when it did not exit normally
+  std::string output;  ///< stdout and stderr, interleaved
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string shell_quote(const fs::path& p) { return "'" + p.string() + "'"; }
+
+const fs::path kHertzDir = fs::path(SYMCONTACT_EXAMPLES) / "hertz_2d";
+const fs::path kHertzCase = kHertzDir / "cylinder_on_plane.toml";
+
+/// The numbers of the JSON array that follows the `occurrence`-th (from 0) "key": in `json`; empty if
+/// there is none. Enough for the flat arrays of summary.json.
+std::vector<double> json_array(const std::string& json, const std::string& key, int occurrence = 0) {
+  std::size_t at = 0;
+  for (int i = 0; i <= occurrence; ++i) {
+    at = json.find("\"" + key + "\":", i == 0 ? 0 : at + 1);
+    if (at == std::string::npos) return {};
+  }
+  const std::size_t open = json.find('[', at), close = json.find(']', at);
+  if (open == std::string::npos || close == std::string::npos || close < open) return {};
+  std::string body = json.substr(open + 1, close - open - 1);
+  std::replace(body.begin(), body.end(), ',', ' ');
+  std::istringstream in(body);
+  std::vector<double> v;
+  for (double x; in >> x;) v.push_back(x);
+  return v;
+}
+
+/// The number that follows the first "key": in `json` (NaN if absent).
+double json_number(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\":");
+  if (at == std::string::npos) return std::nan("");
+  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(line);
+  while (std::getline(in, item, sep)) out.push_back(item);
+  if (!line.empty() && line.back() == sep) out.emplace_back();
+  return out;
+}
+
+class CliContact : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("symcontact_cli_contact_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    if (!HasFailure()) fs::remove_all(dir_, ec);  // kept on failure, for a look
+  }
+
+  /// Runs `symcontact ARGS` in the test's folder.
+  CliResult run(const std::string& args) const {
+    const fs::path log = dir_ / "cli_output.txt";
+    const std::string command = "cd " + shell_quote(dir_) + " && " + shell_quote(SYMCONTACT_CLI) + " " + args +
+                                " > " + shell_quote(log) + " 2>&1";
+    const int status = std::system(command.c_str());
+    CliResult r;
+    r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    r.output = read_text(log);
+    return r;
+  }
+
+  /// The Hertz example's problem file, its mesh referred to by absolute path, edited by `edit`, written
+  /// as `name` in the test's folder.
+  template <class Edit>
+  fs::path write_hertz_case(const std::string& name, Edit edit) const {
+    std::string toml = read_text(kHertzCase);
+    const std::string geo = "cylinder_on_plane.geo";
+    const std::size_t at = toml.find("\"" + geo + "\"");
+    EXPECT_NE(at, std::string::npos);
+    toml.replace(at, geo.size() + 2, "\"" + (kHertzDir / geo).string() + "\"");
+    edit(toml);
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << toml;
+    return p;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(CliContact, HertzExampleWritesContactResults) {
+  const fs::path out = dir_ / "out";
+  const CliResult r = run("run " + shell_quote(kHertzCase) + " --out " + shell_quote(out));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  // summary.json: one "contact" entry per pair and step, the force of the floor on the half cylinder
+  // balancing the load P/2 = 0.005.
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"ok\""), std::string::npos) << summary;
+  ASSERT_NE(summary.find("\"contact\":"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"name\": \"floor\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"csv\": \"contact_floor_0001.csv\""), std::string::npos) << summary;
+  const std::vector<double> force = json_array(summary, "total_force");
+  ASSERT_EQ(force.size(), 2u) << summary;
+  EXPECT_NEAR(force[0], 0.0, 1e-10);
+  EXPECT_NEAR(force[1], 0.005, 1e-10);
+  const double max_pressure = json_number(summary, "max_pressure");
+  EXPECT_GT(max_pressure, 0.05);  // Hertz: p0 = 0.059143
+  EXPECT_LT(max_pressure, 0.065);
+  EXPECT_GT(json_number(summary, "contact_length"), 0.05);  // a = 0.107641 on the half model
+
+  // contact_floor_0001.csv: one row per node of the contact surface, consistent with summary.json.
+  std::ifstream csv(out / "contact_floor_0001.csv");
+  ASSERT_TRUE(csv.good());
+  std::string line;
+  std::getline(csv, line);
+  // The columns this test reads, in this order; others (friction) may come between them.
+  const std::vector<std::string> columns = split(line, ',');
+  const auto column = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  EXPECT_EQ(line.rfind("side,surface,node,x,y,gap,pressure,", 0), 0u) << line;
+  EXPECT_LT(column("pressure"), column("fx")) << line;
+  EXPECT_EQ(column("fy"), column("fx") + 1) << line;
+  ASSERT_EQ(column("status"), columns.size() - 1) << line;
+  EXPECT_EQ(column("z"), columns.size()) << "no z column in 2D: " << line;
+  double p_max = 0.0, fy = 0.0;
+  int rows = 0, in_contact = 0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> v = split(line, ',');
+    ASSERT_EQ(v.size(), columns.size()) << line;
+    EXPECT_EQ(v[column("side")], "a") << line;  // an obstacle has no side b
+    EXPECT_EQ(v[column("surface")], "cylinder.contact") << line;
+    const double p = std::stod(v[column("pressure")]);
+    EXPECT_GE(p, -1e-12) << line;  // round-off on open nodes
+    p_max = std::max(p_max, p);
+    fy += std::stod(v[column("fy")]);
+    const std::string status = v[column("status")];
+    EXPECT_TRUE(status == "contact" || status == "open") << line;
+    in_contact += status == "contact" ? 1 : 0;
+    ++rows;
+  }
+  EXPECT_GT(rows, 50);  // 80 nodes on the arc of the example mesh
+  EXPECT_GT(in_contact, 10);
+  EXPECT_LT(in_contact, rows);
+  EXPECT_NEAR(p_max, max_pressure, 1e-12 * max_pressure);
+  EXPECT_NEAR(fy, force[1], 1e-12);
+
+  // The .vtu carries the contact fields as point data.
+  const std::string vtu = read_text(out / "cylinder_0001.vtu");
+  EXPECT_NE(vtu.find("Name=\"contact_pressure\""), std::string::npos);
+  EXPECT_NE(vtu.find("Name=\"contact_gap\""), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(out / "results.pvd"));
+}
+
+TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
+  const fs::path f = write_hertz_case("one_iteration.toml", [](std::string& t) { t += "\n[ipopt]\nmax_iter = 1\n"; });
+  const fs::path out = dir_ / "out";
+  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("solve failed"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Maximum_Iterations_Exceeded"), std::string::npos) << r.output;
+
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"solve_failed\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("Maximum_Iterations_Exceeded"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("cylinder_failed_step1.vtu"), std::string::npos) << summary;
+  const std::string vtu = read_text(out / "cylinder_failed_step1.vtu");
+  EXPECT_NE(vtu.find("</VTKFile>"), std::string::npos) << "the last iterate, written whole";
+  // Nothing else: no step results, no contact CSV, no collection, no temporary files.
+  std::set<std::string> files;
+  for (const auto& e : fs::directory_iterator(out)) files.insert(e.path().filename().string());
+  EXPECT_EQ(files, (std::set<std::string>{"summary.json", "cylinder_failed_step1.vtu"}));
+}
+
+TEST_F(CliContact, ContactOnAMissingBoundaryGroupIsAnInputError) {
+  const fs::path f = write_hertz_case("missing_group.toml", [](std::string& t) {
+    const std::string a = "a = \"cylinder.contact\"";
+    t.replace(t.find(a), a.size(), "a = \"cylinder.nowhere\"");
+  });
+  const fs::path out = dir_ / "out";
+  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
+  for (const std::string s : {"missing_group.toml", "contact[0].a", "nowhere"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
+  EXPECT_FALSE(fs::exists(out)) << "an input error must not create the output folder";
+}
+
+}  // namespace
