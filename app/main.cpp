@@ -5,10 +5,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 #include "symcontact/app/run.hpp"
+#include "symcontact/core/blas_threads.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/model/model.hpp"
@@ -25,6 +27,10 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "more output (-vv: debug, including Gmsh's log)");
   app.add_flag("-q,--quiet", quiet, "errors only");
+  int threads = 0;
+  app.add_option("--threads", threads,
+                 "BLAS threads for the sparse factorisations (default 1, or OPENBLAS_NUM_THREADS when set)")
+      ->check(CLI::PositiveNumber);
 
   std::string case_file, out_dir;
   double mesh_size = 0.0;
@@ -42,6 +48,10 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : kExitInputError;
   }
+  if (threads > 0)
+    set_blas_threads(threads);
+  else if (!std::getenv("OPENBLAS_NUM_THREADS"))
+    set_blas_threads(1);
   const Verbosity level = quiet ? Verbosity::kQuiet
                                 : (verbose >= 2 ? Verbosity::kDebug : (verbose == 1 ? Verbosity::kVerbose : Verbosity::kNormal));
   const Logger log(std::cerr, level);

@@ -1,5 +1,7 @@
 #include "symcontact/solvers/active_set_polish.hpp"
 
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -11,11 +13,16 @@ namespace symcontact {
 
 namespace {
 
+/// Up to this many active constraints the KKT system on S is solved directly (dense Schur complement);
+/// above it, by the method of multipliers.
+constexpr Index kDirectLimit = 3000;
+
 /// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
-/// solved by the method of multipliers with M = H + ρ A_Sᵀ A_S (H alone when S is empty).
+/// solved directly (range space, `direct`) or by the method of multipliers, with M = H + ρ A_Sᵀ A_S
+/// (H alone when S is empty).
 /// Returns false when M cannot be factorised.
 bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
-                  int& iterations) {
+                  int& iterations, bool direct) {
   const bool quadratic = problem.hessian_is_constant();
   const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
   for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
@@ -43,12 +50,29 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       return false;
     }
     const VectorXd x_start = xs;
-    // Inner iterations on the quadratic model f(x) ≈ f + gᵀΔ + ½ ΔᵀHΔ (exact for a quadratic f).
+    if (direct && AS.rows() > 0 && AS.rows() <= kDirectLimit) {
+      // Range-space solve of the KKT system on S, exact in one step (Nocedal & Wright §16.2):
+      //   M Δ − A_Sᵀ λ = −ĝ,  A_S Δ = −c_S,  ĝ = g + ρ A_Sᵀ c_S  (the ρ term vanishes on A_S Δ = −c_S)
+      //   ⇒ (A_S M⁻¹ A_Sᵀ) λ = A_S M⁻¹ ĝ − c_S, solved in the least-squares, minimum-norm sense
+      //   (complete orthogonal decomposition) because dependent rows make it singular.
+      const VectorXd cS = AS * xs + bS;
+      const VectorXd ghat = g + rho * (AS.transpose() * cS);
+      const MatrixXd MinvAt = chol.solve(MatrixXd(AS.transpose()));
+      const MatrixXd S = AS * MinvAt;
+      const VectorXd rhs = AS * chol.solve(VectorXd(ghat)) - cS;
+      Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod(S);
+      cod.setThreshold(1e-12);
+      const VectorXd lambda = cod.solve(rhs);
+      const VectorXd dx = MinvAt * lambda - chol.solve(VectorXd(ghat));
+      xs += dx;
+      nu = lambda;
+      ++iterations;
+    } else {
     double best = std::numeric_limits<double>::infinity();
     int since_progress = 0;
     for (int it = 0; it < (AS.rows() > 0 ? 400 : 1); ++it) {
       const VectorXd cS = AS * xs + bS;
-      const VectorXd dx = chol.solve(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS));
+      const VectorXd dx = chol.solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
       xs += dx;
       g += H.selfadjointView<Eigen::Lower>() * dx;
       ++iterations;
@@ -64,6 +88,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       } else if (++since_progress >= 40) {
         break;
       }
+    }
     }
     if ((xs - x_start).lpNorm<Eigen::Infinity>() <= 1e-13 * xscale0) break;
   }
@@ -117,7 +142,9 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
       nu[k] = mu[S[k]] * row_scale[S[k]];
     }
     xs = x;
-    if (!solve_on_set(problem, AS, bS, xs, nu, r.iterations)) {
+    // Holding the values is always consistent: solved directly. Closing may not be (curved symmetric
+    // pairs): the method of multipliers, which degrades gracefully there.
+    if (!solve_on_set(problem, AS, bS, xs, nu, r.iterations, hold_values) || !xs.allFinite() || !nu.allFinite()) {
       r.reason = "the Hessian (+ ρ AᵀA) is not positive definite";
       return r;
     }

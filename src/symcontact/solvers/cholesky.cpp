@@ -40,6 +40,8 @@ void CholeskySolver::compute(const SparseMatrix& lower) {
 
 VectorXd CholeskySolver::solve(const VectorXd& b) const { return impl_->llt.solve(b); }
 
+MatrixXd CholeskySolver::solve(const MatrixXd& B) const { return impl_->llt.solve(B); }
+
 double CholeskySolver::factor_nonzeros() const {
   auto& c = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(impl_->llt).cholmod();
   return c.lnz;

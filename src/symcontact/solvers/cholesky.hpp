@@ -26,6 +26,8 @@ class CholeskySolver {
   /// analyze() when needed (first call or new size), then factorize().
   void compute(const SparseMatrix& lower);
   VectorXd solve(const VectorXd& b) const;
+  /// Several right-hand sides at once (columns of B).
+  MatrixXd solve(const MatrixXd& B) const;
   /// Number of nonzeros in the factor L (after factorize()).
   double factor_nonzeros() const;
 

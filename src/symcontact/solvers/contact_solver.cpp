@@ -55,6 +55,7 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
   VectorXd mu_prev;
   std::vector<int> rows_prev_family;
   std::vector<Index> rows_prev_node;
+  bool closing_polish_works = true;
   for (int it = 1;; ++it) {
     {
       ScopedPhase t(rep.times, "search");
@@ -105,12 +106,22 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     double change = relative_change();
     if (options.polish) {
       ScopedPhase t(rep.times, "polish");
-      PolishResult pr = polish_active_set(problem, res.x, res.multipliers);
+      // Closing the active set fails for good when the two families of a curved symmetric pair cannot
+      // all be closed at once; after one failure this solve only balances forces (cheaper).
+      PolishResult pr;
+      if (closing_polish_works) {
+        pr = polish_active_set(problem, res.x, res.multipliers);
+        if (!pr.applied) {
+          closing_polish_works = false;
+          log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
+        }
+      }
       if (!pr.applied) {
-        log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
         pr = polish_active_set(problem, res.x, res.multipliers, true);
         if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
       }
+      log.debug("  polish: " + std::to_string(pr.iterations) + " iterations on " + std::to_string(pr.active) +
+                " active constraints");
       change = relative_change();
     }
     rep.change_history.push_back(change);
