@@ -40,7 +40,9 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       if (!(adiag > 0)) return false;
       // Large ρ: the nearly dependent rows of the two families give A_S tiny singular values, along which
       // the method of multipliers converges at the rate 1/(1 + ρ σ²).
-      rho = 1e6 * hdiag / adiag;
+      // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced
+      // ρ keeps M well conditioned.
+      rho = (direct ? 1.0 : 1e6) * hdiag / adiag;
       M = H + rho * AtA;
     }
     CholeskySolver chol;
@@ -57,7 +59,11 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       //   (complete orthogonal decomposition) because dependent rows make it singular.
       const VectorXd cS = AS * xs + bS;
       const VectorXd ghat = g + rho * (AS.transpose() * cS);
-      const MatrixXd MinvAt = chol.solve(MatrixXd(AS.transpose()));
+      // Column by column: a multi-column solve goes through BLAS-3 kernels whose rounding depends on
+      // buffer alignment, and the same input must give the same digits.
+      const MatrixXd At = MatrixXd(AS.transpose());
+      MatrixXd MinvAt(At.rows(), At.cols());
+      for (Index j = 0; j < At.cols(); ++j) MinvAt.col(j) = chol.solve(VectorXd(At.col(j)));
       const MatrixXd S = AS * MinvAt;
       const VectorXd rhs = AS * chol.solve(VectorXd(ghat)) - cS;
       Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod(S);
