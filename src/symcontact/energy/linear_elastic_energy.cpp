@@ -25,7 +25,7 @@ void LinearElasticEnergy::for_each_cell(F&& f) const {
       const Index* n = mesh_.cell(c);
       const auto X = gather_coordinates<D, NN>(mesh_.x, n);
       if (linear_elastic_stiffness<D, NN>(X, tab_, material_.lambda, material_.mu, K) >= 0)
-        throw InputError("", label_ + ": cell " + std::to_string(c + 1),
+        throw InputError("", label_ + ": " + mesh_.cell_label(c),
                          "inverted or degenerate element (Jacobian determinant <= 0 inside the cell)");
       for (int a = 0; a < NN; ++a)
         for (int i = 0; i < D; ++i) dofs[D * a + i] = offset_ + D * n[a] + i;

@@ -100,8 +100,9 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
         throw InputError(path, "", "unsupported element type '" + name +
                                        "': symcontact uses triangles and tetrahedra (order 1 or 2)");
       }
-      MeshFile::Block blk{ct, {}};
+      MeshFile::Block blk{ct, {}, {}};
       blk.nodes.reserve(nodes[b].size());
+      blk.tags.assign(tags[b].begin(), tags[b].end());
       for (std::size_t t : nodes[b]) {
         auto it = index_of.find(t);
         if (it == index_of.end())
@@ -191,8 +192,10 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   m.x.resize(dim, n);
   for (Index v = 0; v < file.x.cols(); ++v)
     if (local[v] >= 0) m.x.col(local[v]) = file.x.col(v).head(dim);
-  for (const auto& b : *cells)
+  for (const auto& b : *cells) {
     for (Index v : b.nodes) m.cells.push_back(local[v]);
+    m.cell_tags.insert(m.cell_tags.end(), b.tags.begin(), b.tags.end());
+  }
   // Lower-dimensional groups, restricted to this body.
   const CellType ft = facet_type(m.cell_type);
   for (const auto& g : file.groups) {

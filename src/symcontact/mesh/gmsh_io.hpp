@@ -26,6 +26,7 @@ struct MeshFile {
   struct Block {
     CellType type;
     std::vector<Index> nodes;  ///< compact node indices, cell after cell
+    std::vector<Index> tags;   ///< the file's element tags, one per cell (for messages)
   };
   struct Group {
     int dim = 0;

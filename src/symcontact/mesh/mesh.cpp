@@ -26,6 +26,11 @@ std::vector<Index> Mesh::group_nodes(const std::string& name) const {
   return nodes;
 }
 
+std::string Mesh::cell_label(Index c) const {
+  if (c >= 0 && c < static_cast<Index>(cell_tags.size())) return "element " + std::to_string(cell_tags[c]);
+  return "cell " + std::to_string(c + 1);
+}
+
 bool Mesh::has_group(const std::string& name) const {
   return facet_groups.count(name) > 0 || node_groups.count(name) > 0;
 }
@@ -91,7 +96,7 @@ void Mesh::check() const {
   for (Index c = 0; c < num_cells(); ++c) {
     const double d = simplex_determinant(*this, c);
     if (!(d > 1e-14 * ref))
-      throw InputError("", "cell " + std::to_string(c + 1),
+      throw InputError("", cell_label(c),
                        d < 0 ? "inverted element (negative Jacobian determinant " + std::to_string(d) + ")"
                              : "degenerate element (zero area/volume)");
   }

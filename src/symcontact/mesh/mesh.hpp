@@ -30,6 +30,7 @@ struct Mesh {
   CellType cell_type = CellType::kTri3;
   Eigen::MatrixXd x;          ///< dim × num_nodes reference coordinates
   std::vector<Index> cells;   ///< num_cells × nodes-per-cell
+  std::vector<Index> cell_tags;  ///< element tag of each cell in its mesh file (empty: built in code)
   std::map<std::string, FacetGroup> facet_groups;
   std::map<std::string, std::vector<Index>> node_groups;  ///< physical points (and any node set)
 
@@ -40,6 +41,8 @@ struct Mesh {
   int nodes_per_facet() const { return cell_num_nodes(facet_type(cell_type)); }
   Index num_facets(const FacetGroup& g) const { return static_cast<Index>(g.facets.size()) / nodes_per_facet(); }
   const Index* cell(Index c) const { return cells.data() + c * nodes_per_cell(); }
+  /// How messages name cell c: "element <tag>" (the mesh file's tag) or "cell <c + 1>".
+  std::string cell_label(Index c) const;
 
   /// Nodes of a facet group, or of a node group, sorted and unique. Throws std::out_of_range if absent.
   std::vector<Index> group_nodes(const std::string& name) const;

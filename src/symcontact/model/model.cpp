@@ -57,8 +57,13 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
       try {
         body->mesh = extract_body(it->second, spec.dim, bs.group, bs.key + ".group");
       } catch (const InputError& e) {
-        if (e.key() != bs.key + ".group") throw;
-        throw InputError(spec.file, e.key(), e.message() + " (mesh " + bs.mesh_file + ")");
+        if (e.key() == bs.key + ".group")
+          throw InputError(spec.file, e.key(), e.message() + " (mesh " + bs.mesh_file + ")");
+        // A fault of the mesh itself (an inverted element, a facet off the boundary): name the problem
+        // file, the body and the mesh file.
+        throw InputError(spec.file, bs.key + ".mesh",
+                         "body '" + bs.name + "', mesh " + bs.mesh_file + ": " + (e.key().empty() ? "" : e.key() + ": ") +
+                             e.message());
       }
       body->material = LinearElastic::from_young_poisson(bs.material.young, bs.material.poisson, spec.model);
       m->dofs_.add_body(body->mesh.num_nodes());

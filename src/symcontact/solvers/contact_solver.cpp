@@ -62,6 +62,20 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
       rep.linearization = contacts.linearize(dofs, problem.expand(x));
     }
     const ContactLinearization& lin = rep.linearization;
+    if (it == 1) {
+      // A pair that sees nothing at all is usually a mistake (a meshed obstacle whose facets face away,
+      // a search distance too small): say so rather than let the bodies pass through each other.
+      for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
+        std::size_t n = 0;
+        for (int f = 0; f < static_cast<int>(contacts.families().size()); ++f)
+          if (contacts.families()[f].pair == p) n += lin.points[f].size();
+        if (n == 0)
+          log.warning("contact '" + contacts.pairs[p].name +
+                      "': no point of its surfaces faces the opposite side within the search distance " +
+                      std::to_string(contacts.pairs[p].search_distance) +
+                      " (a meshed obstacle's facets must be oriented with their normal towards the body)");
+      }
+    }
     {
       ScopedPhase t(rep.times, "assembly");
       problem.set_constraints(lin.A, lin.b);

@@ -51,8 +51,9 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
       // One exact Newton step solves a quadratic problem; a large residual left means the
       // factorisation was meaningless (a nearly singular stiffness).
       if (r > 1e-6 * scale)
-        throw SolveError("the linear solve is inaccurate (relative residual " + std::to_string(r / scale) +
-                         "): the stiffness matrix is singular or nearly so — check the Dirichlet conditions");
+        throw SolveError("the stiffness matrix is singular: a body can move without deforming (a rigid-body "
+                         "motion no Dirichlet condition prevents) — add Dirichlet conditions (the linear solve left a "
+                         "relative residual of " + std::to_string(r / scale) + ")");
       break;
     }
     if (!std::isfinite(r)) throw SolveError("Newton iteration produced a non-finite residual");

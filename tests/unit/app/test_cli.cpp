@@ -188,10 +188,11 @@ TEST_F(Cli, TruncatedMshIsAnInputError) {
 }
 
 TEST_F(Cli, DegenerateTriangleIsAnInputErrorNamingTheCell) {
-  // The third triangle of the body, (0,0) (0.5,0) (1,0), has zero area.
+  // The third triangle of the body, (0,0) (0.5,0) (1,0), has zero area; it is element 5 of the file,
+  // and the message names it by that tag, with the problem file, the body and the mesh file.
   const fs::path f = write("degenerate.toml", problem_toml(test_mesh("degenerate_triangle.msh"), "square", "0.3",
                                                            kClampBottom + kPressTop));
-  expect_input_error(f, {"degenerate_triangle.msh", "cell 3", "degenerate"});
+  expect_input_error(f, {"degenerate.toml", "body[0].mesh", "degenerate_triangle.msh", "element 5", "degenerate"});
 }
 
 TEST_F(Cli, UnconstrainedBodyIsASolveFailure) {
