@@ -225,4 +225,52 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
   return points;
 }
 
+std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                               const MasterGeometry* master, const Obstacle* obstacle,
+                                               double search_distance) {
+  const int npf = slave.nodes_per_facet();
+  const int d = cell_dim(slave.facet_type);
+  const std::vector<double> ref = reference_nodes(slave.facet_type);
+  const Eigen::MatrixXd normals = nodal_normals(slave, xs);
+  // The first facet (and local index) holding each node.
+  std::vector<std::pair<Index, int>> where(slave.num_nodes(), {-1, -1});
+  for (Index f = 0; f < slave.num_facets(); ++f)
+    for (int a = 0; a < npf; ++a)
+      if (where[slave.facet(f)[a]].first < 0) where[slave.facet(f)[a]] = {f, a};
+  std::vector<ContactPoint> points;
+  for (Index k = 0; k < slave.num_nodes(); ++k) {
+    if (where[k].first < 0 || slave.nodal_area[k] <= 0) continue;
+    const Eigen::Vector3d ns = pad3(normals.col(k));
+    ContactPoint cp;
+    if (master) {
+      if (!project_to_master(*master, xs.col(k), ns, search_distance, cp)) continue;
+    } else {
+      const Eigen::Vector3d p = pad3(xs.col(k));
+      Eigen::Vector3d xbar, n;
+      obstacle->project(p, xbar, n);
+      if (ns.dot(n) >= 0) continue;
+      const double theta = (p - xbar).dot(n);
+      if (std::abs(theta) > search_distance) continue;
+      cp.x = p;
+      cp.xbar = xbar;
+      cp.normal = n;
+      cp.gap = theta;
+    }
+    cp.slave_facet = where[k].first;
+    for (int i = 0; i < d; ++i) cp.xi[i] = ref[where[k].second * d + i];
+    cp.weight = slave.nodal_area[k];
+    cp.slave_node = k;
+    points.push_back(cp);
+  }
+  return points;
+}
+
+Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
+                                  const Obstacle* obstacle, double search_distance) {
+  Eigen::MatrixXd n = nodal_normals(slave, xs);
+  for (const ContactPoint& p : nodal_contact_points(slave, xs, master, obstacle, search_distance))
+    n.col(p.slave_node) = -p.normal.head(slave.dim);
+  return n;
+}
+
 }  // namespace symcontact

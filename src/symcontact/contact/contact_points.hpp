@@ -31,6 +31,7 @@ struct ContactPoint {
   Eigen::Vector3d xbar = Eigen::Vector3d::Zero();  ///< current projection
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< unit smoothed master normal n̄ at x̄
   double gap = 0.0;                ///< θ = (x − x̄)·n̄
+  Index slave_node = -1;           ///< nodal points only (nodal_contact_points): the slave surface node
 };
 
 struct ContactSearchOptions {
@@ -61,6 +62,19 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
 /// Slave points against an analytic obstacle.
 std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
                                          const Obstacle& obstacle, const ContactSearchOptions& options);
+
+/// One point per slave NODE (for nodal friction): the node itself, as a point of the first facet that
+/// holds it, with weight = its lumped area A_k and its projection on the master (or the obstacle); nodes
+/// that project onto nothing (the rules above, with the smoothed nodal normal) are left out.
+/// `master` or `obstacle` is given, not both.
+std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                               const MasterGeometry* master, const Obstacle* obstacle,
+                                               double search_distance);
+
+/// The interface normal at every node of `slave`, outward for the slave (dim × n): −n̄ at the node's
+/// projection (nodal_contact_points), or the node's own smoothed normal where it projects onto nothing.
+Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
+                                  const Obstacle* obstacle, double search_distance);
 
 /// Bounding box of a facet from its node positions (for Line3/Tri6 also the Bézier control points of the
 /// edges, which bound the curved facet), padded by `pad`.

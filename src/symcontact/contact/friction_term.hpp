@@ -3,6 +3,7 @@
 /// Regularised Tresca friction as one more energy term (talk eq. 16–18, METHOD.md "Friction"):
 ///
 ///   j_{α,τ}(u) = Σ_q w_q τ_q η_α(s_q(u)),   η_α(v) = sqrt(|v|² + α²),
+/// (the solver uses one point per slave node, w_q = its lumped area: nodal_contact_points()),
 ///   s_q(u) = P_q [ (u_s(ξ_q) − u⁰_s(ξ_q)) − (u_m(η_q) − u⁰_m(η_q)) ],   P_q = I − n̄_q n̄_qᵀ,
 ///
 /// over the integration points of ONE constraint family of the pair (the interface is counted once,

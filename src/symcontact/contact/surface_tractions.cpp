@@ -6,10 +6,10 @@
 namespace symcontact {
 
 SurfaceTractions surface_tractions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u,
-                                   const VectorXd& force) {
+                                   const VectorXd& force, const Eigen::MatrixXd* normals) {
   SurfaceTractions t;
   t.x = current_positions(s, dofs, u);
-  t.normals = nodal_normals(s, t.x);
+  t.normals = normals ? *normals : nodal_normals(s, t.x);
   t.force = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
   t.pressure = Eigen::VectorXd::Zero(s.num_nodes());
   t.tangential = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());

@@ -19,8 +19,11 @@ struct SurfaceTractions {
   Eigen::MatrixXd tangential;  ///< dim × n
 };
 
+/// `normals` (dim × n), when given, replaces the surface's own smoothed normals for the decomposition
+/// (the contact results use the opposite surface's normal at each node's projection, the normal the
+/// constraints and the friction term use).
 SurfaceTractions surface_tractions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u,
-                                   const VectorXd& force);
+                                   const VectorXd& force, const Eigen::MatrixXd* normals = nullptr);
 
 /// Interpolates nodal values of surface `s` to the slave points of a family on it.
 std::vector<double> interpolate_at_points(const ContactSurface& s, const std::vector<ContactPoint>& points,

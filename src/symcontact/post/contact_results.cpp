@@ -12,17 +12,21 @@ namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// Signed distance of every node of side `side` to the opposite side of its pair.
+/// Signed distance of every node of side `side` to the opposite side of its pair, and the interface normal
+/// there (minus the opposite surface's normal at the projection, i.e. outward for this side); nodes
+/// that project onto nothing get a NaN gap and keep their own normal.
 Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int side, const DofMap& dofs,
-                           const VectorXd& u, const Eigen::MatrixXd& xs, const Eigen::MatrixXd& ns) {
+                           const VectorXd& u, const Eigen::MatrixXd& xs, Eigen::MatrixXd& normals) {
   const ContactSurface& s = cs.surfaces[side == 0 ? pair.surface_a : pair.surface_b];
   Eigen::VectorXd gap = Eigen::VectorXd::Constant(s.num_nodes(), kNaN);
+  const Eigen::MatrixXd own = normals;
   if (pair.obstacle >= 0) {
     for (Index k = 0; k < s.num_nodes(); ++k) {
       Eigen::Vector3d p = Eigen::Vector3d::Zero(), xbar, n;
       p.head(s.dim) = xs.col(k);
       cs.obstacles[pair.obstacle].project(p, xbar, n);
       gap[k] = (p - xbar).dot(n);
+      normals.col(k) = -n.head(s.dim);
     }
     return gap;
   }
@@ -30,9 +34,12 @@ Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int si
   const MasterGeometry mg = prepare_master(other, current_positions(other, dofs, u));
   for (Index k = 0; k < s.num_nodes(); ++k) {
     Eigen::Vector3d n3 = Eigen::Vector3d::Zero();
-    n3.head(s.dim) = ns.col(k);
+    n3.head(s.dim) = own.col(k);
     ContactPoint cp;
-    if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp)) gap[k] = cp.gap;
+    if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp)) {
+      gap[k] = cp.gap;
+      normals.col(k) = -cp.normal.head(s.dim);
+    }
   }
   return gap;
 }
@@ -77,19 +84,22 @@ std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMa
     for (int side = 0; side < nsides; ++side) {
       const int si = side == 0 ? pair.surface_a : pair.surface_b;
       const ContactSurface& s = cs.surfaces[si];
-      const SurfaceTractions t = surface_tractions(s, dofs, u, contact_force);
+      // Decompose along the interface normal of each node (see nodal_gaps).
+      const Eigen::MatrixXd x = current_positions(s, dofs, u);
+      Eigen::MatrixXd normals = nodal_normals(s, x);
       ContactSideResult sr;
+      sr.gap = nodal_gaps(cs, pair, side, dofs, u, x, normals);
+      const SurfaceTractions t = surface_tractions(s, dofs, u, contact_force, &normals);
       sr.surface = si;
       sr.x = t.x;
       sr.force = t.force;
       sr.pressure = t.pressure;
       sr.tangential = t.tangential;
-      sr.gap = nodal_gaps(cs, pair, side, dofs, u, sr.x, t.normals);
       sr.slip = si == friction_surface ? nodal_slips(s, *friction[pi], u)
                                        : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
       r.max_pressure = std::max(r.max_pressure, sr.pressure.maxCoeff());
       // Contact status from the multipliers' normal force (see the header).
-      const SurfaceTractions tm = surface_tractions(s, dofs, u, report.multiplier_force);
+      const SurfaceTractions tm = surface_tractions(s, dofs, u, report.multiplier_force, &normals);
       sr.status = Eigen::VectorXi::Zero(s.num_nodes());
       for (Index k = 0; k < s.num_nodes(); ++k) sr.status[k] = tm.pressure[k] > 0 ? 1 : 0;
       multiplier_pressure.push_back(tm.pressure);

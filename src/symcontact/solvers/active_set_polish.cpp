@@ -176,6 +176,21 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
     r.reason = "a constraint outside the active set became violated";
     return r;
   }
+  // For a non-quadratic f (friction), Newton on a strongly curved term can land anywhere: keep the polished
+  // point only if the stationarity error ‖∇f − Aᵀμ‖∞ actually fell.
+  if (!problem.hessian_is_constant()) {
+    auto stationarity = [&](const VectorXd& xx, const VectorXd& m) {
+      VectorXd g;
+      problem.gradient(xx, g);
+      return (g - A.transpose() * m).lpNorm<Eigen::Infinity>();
+    };
+    VectorXd mu_new = VectorXd::Zero(A.rows());
+    for (std::size_t k = 0; k < S.size(); ++k) mu_new[S[k]] = std::max(0.0, nu[k]) / row_scale[S[k]];
+    if (!(stationarity(xs, mu_new) < stationarity(x, mu))) {
+      r.reason = "the Newton steps did not reduce the stationarity error";
+      return r;
+    }
+  }
   x = xs;
   mu.setZero();
   for (std::size_t k = 0; k < S.size(); ++k) mu[S[k]] = std::max(0.0, nu[k]) / row_scale[S[k]];

@@ -86,10 +86,26 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
           const int f = contacts.friction_family(p);
           const ContactFamily& fam = contacts.families()[f];
           const ContactSurface& slave = contacts.surfaces[fam.slave];
-          const std::vector<double> tau = interpolate_at_points(slave, lin.points[f], friction->nodal_tau[p]);
+          // Friction is integrated node by node (weight A_k, the node's own slip and threshold), so that
+          // at every node σ_T = −τ_k s_k / sqrt(|s_k|² + α²) with the same lumped A_k the pressure is
+          // recovered with: the nodal friction law then holds exactly, |σ_T| ≤ μ σ_n included. A
+          // quadrature of the interpolated τ and s instead mixes neighbouring nodes' thresholds, which
+          // breaks the law where the pressure varies (measured: 0.6 μ at the ends of a dragged block).
+          const VectorXd up = problem.expand(x);
+          std::vector<ContactPoint> nodal;
+          if (fam.master >= 0) {
+            const ContactSurface& ms = contacts.surfaces[fam.master];
+            const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, up));
+            nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), &mg, nullptr,
+                                         contacts.pairs[p].search_distance);
+          } else {
+            nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), nullptr,
+                                         &contacts.obstacles[contacts.pairs[p].obstacle], contacts.pairs[p].search_distance);
+          }
+          const std::vector<double> tau = interpolate_at_points(slave, nodal, friction->nodal_tau[p]);
           total.extra[p] = std::make_shared<FrictionTerm>(
               "friction(" + contacts.pairs[p].name + ")", slave, fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
-              lin.points[f], tau, contacts.pairs[p].alpha, dofs, friction->u_start);
+              std::move(nodal), tau, contacts.pairs[p].alpha, dofs, friction->u_start);
         }
     }
     rep.num_constraints = lin.A.rows();

@@ -1,0 +1,64 @@
+/// The same input twice gives bit-identical numbers: summary.json of two runs of the same problem is
+/// the same text once the timings (and the wall time) are taken out, and so are the contact CSVs.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// summary.json without its "timings" objects and "wall_time" entries.
+std::string without_timings(const std::string& json) {
+  std::istringstream in(json);
+  std::ostringstream out;
+  std::string line;
+  int skipping = 0;
+  while (std::getline(in, line)) {
+    if (skipping > 0) {
+      for (char c : line) skipping += (c == '{') - (c == '}');
+      continue;
+    }
+    if (line.find("\"timings\": {") != std::string::npos) {
+      for (char c : line) skipping += (c == '{') - (c == '}');
+      continue;
+    }
+    if (line.find("\"wall_time\"") != std::string::npos) continue;
+    out << line << '\n';
+  }
+  return out.str();
+}
+
+int run(const fs::path& out) {
+  const std::string cmd = std::string("'") + SYMCONTACT_CLI + "' run '" + SYMCONTACT_EXAMPLES +
+                          "/friction_block/block.toml' --out '" + out.string() + "' -q > /dev/null 2>&1";
+  return std::system(cmd.c_str());
+}
+
+}  // namespace
+
+TEST(Determinism, SameInputTwiceGivesIdenticalNumbers) {
+  const fs::path dir = fs::temp_directory_path() / ("symcontact_determinism_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  ASSERT_EQ(run(dir / "a"), 0);
+  ASSERT_EQ(run(dir / "b"), 0);
+  const std::string a = without_timings(read_text(dir / "a" / "summary.json"));
+  const std::string b = without_timings(read_text(dir / "b" / "summary.json"));
+  ASSERT_GT(a.size(), 1000u);
+  EXPECT_EQ(a, b);
+  for (const char* csv : {"contact_floor_0001.csv", "contact_floor_0011.csv"})
+    EXPECT_EQ(read_text(dir / "a" / csv), read_text(dir / "b" / csv)) << csv;
+  fs::remove_all(dir);
+}

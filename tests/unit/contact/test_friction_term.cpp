@@ -1,0 +1,283 @@
+// FrictionTerm, the regularised Tresca energy j = Σ_q w_q τ_q sqrt(|s_q|² + α²) (friction_term.hpp):
+// its gradient and Hessian against finite differences (the shared check_derivatives), P1 and P2, between
+// two non-matching flat blocks and against a plane obstacle, at random states, at zero slip and at
+// slips of order α; its value at the start of the step, its convexity, and the regularised law at one
+// point (tangential force −τ w s / sqrt(s² + α²)).
+//
+// Choice of the finite-difference step. η_α(s) = sqrt(s² + α²) bends on the length α: η'' = α²/r³ and
+// η''' = −3 α² s / r⁵, so |η'''| ~ 1/α² near s ~ α. A central difference of the gradient with step h
+// errs by h² η''''/6 ~ h²/α³ against a Hessian of size 1/α: relative error (h/α)². With h ≥ α the
+// check compares the Hessian with a secant over the whole bend and fails for a correct term; with
+// h = 1e-3 α the truncation error is ~1e-6 relative, and the round-off (ε ‖g‖ / h ~ 1e-16 / 1e-3 α)
+// stays far below it for the α used here. So every check below uses h = 1e-3 α.
+#include "symcontact/contact/friction_term.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "support/finite_difference.hpp"
+#include "symcontact/contact/contact_points.hpp"
+#include "symcontact/mesh/structured.hpp"
+
+using namespace symcontact;
+using namespace symcontact::testing;
+
+namespace {
+
+const double kAlpha = 1e-4;
+const double kFdStep = 1e-3 * kAlpha;  // well below α: see the file comment
+const double kTol = 1e-6;
+
+/// Two flat blocks in one DofMap: the lower [0, 1] × [−0.5, 0] (body 0, 5 × 2) is the master through
+/// its "top"; the upper [0.13, 0.83] × [0, 0.4] (body 1, 7 × 2, non-matching) is the slave through its
+/// "bottom". Without `with_master` only the upper block exists, over a plane obstacle.
+struct Interface {
+  Mesh lower, upper;
+  DofMap dofs{2};
+  ContactSurface master, slave;
+  bool with_master = true;
+  int slave_body = 0;
+  std::vector<ContactPoint> points;
+  Eigen::Vector2d tangent = Eigen::Vector2d::UnitX();  ///< tangent of the frozen normal (all points alike)
+};
+
+/// Rigid rotation by `angle` about the origin of every node of `body`, added to u.
+void add_rotation(const Interface& s, const Mesh& m, int body, double angle, VectorXd& u) {
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(angle).toRotationMatrix() - Eigen::Matrix2d::Identity();
+  for (Index k = 0; k < m.num_nodes(); ++k) {
+    const Eigen::Vector2d d = R * Eigen::Vector2d(m.x.col(k).head<2>());
+    for (int i = 0; i < 2; ++i) u[s.dofs.dof(body, k, i)] += d[i];
+  }
+}
+
+/// The body–body interface, its contact points computed at the configuration rotated by `tilt`
+/// (both blocks together), so that the frozen normals are n = (−sin tilt, cos tilt).
+Interface body_body(int order, double tilt) {
+  Interface s;
+  s.lower = rectangle_mesh(0.0, -0.5, 1.0, 0.0, 5, 2, order);
+  s.upper = rectangle_mesh(0.13, 0.0, 0.83, 0.4, 7, 2, order);
+  const int b0 = s.dofs.add_body(s.lower.num_nodes());
+  s.slave_body = s.dofs.add_body(s.upper.num_nodes());
+  s.master = make_contact_surface(s.lower, "top", b0, "lower.top");
+  s.slave = make_contact_surface(s.upper, "bottom", s.slave_body, "upper.bottom");
+  VectorXd u = VectorXd::Zero(s.dofs.num_dofs());
+  add_rotation(s, s.lower, b0, tilt, u);
+  add_rotation(s, s.upper, s.slave_body, tilt, u);
+  const MasterGeometry mg = prepare_master(s.master, current_positions(s.master, s.dofs, u));
+  ContactSearchOptions opt;
+  opt.search_distance = 0.5;
+  s.points = contact_points(s.slave, current_positions(s.slave, s.dofs, u), mg, opt);
+  s.tangent = Eigen::Vector2d(std::cos(tilt), std::sin(tilt));
+  return s;
+}
+
+/// The upper block alone over the plane through (0, −0.02) with normal (−sin tilt, cos tilt).
+Interface against_plane(int order, double tilt) {
+  Interface s;
+  s.with_master = false;
+  s.upper = rectangle_mesh(0.13, 0.0, 0.83, 0.4, 7, 2, order);
+  s.slave_body = s.dofs.add_body(s.upper.num_nodes());
+  s.slave = make_contact_surface(s.upper, "bottom", s.slave_body, "upper.bottom");
+  Obstacle plane;
+  plane.point = Eigen::Vector3d(0.0, -0.02, 0.0);
+  plane.normal = Eigen::Vector3d(-std::sin(tilt), std::cos(tilt), 0.0);
+  ContactSearchOptions opt;
+  opt.search_distance = 0.5;
+  s.points = contact_points(s.slave, current_positions(s.slave, s.dofs, VectorXd::Zero(s.dofs.num_dofs())), plane, opt);
+  s.tangent = Eigen::Vector2d(std::cos(tilt), std::sin(tilt));
+  return s;
+}
+
+std::vector<double> random_tau(std::size_t n, unsigned seed) {
+  // τ of order 10 so that the gradients are of order 1 and the FD check's scale max(1, ‖g‖∞) is theirs.
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(5.0, 20.0);
+  std::vector<double> tau(n);
+  for (double& t : tau) t = U(rng);
+  return tau;
+}
+
+VectorXd random_vector(Index n, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  VectorXd v(n);
+  for (Index i = 0; i < n; ++i) v[i] = amplitude * U(rng);
+  return v;
+}
+
+/// Translation of the slave body by c along the tangent: every point slips by exactly c.
+VectorXd slave_slide(const Interface& s, double c) {
+  VectorXd v = VectorXd::Zero(s.dofs.num_dofs());
+  for (Index k = 0; k < s.upper.num_nodes(); ++k)
+    for (int i = 0; i < 2; ++i) v[s.dofs.dof(s.slave_body, k, i)] = c * s.tangent[i];
+  return v;
+}
+
+FrictionTerm make_term(const Interface& s, const std::vector<double>& tau, const VectorXd& u_start) {
+  return FrictionTerm("friction", s.slave, s.with_master ? &s.master : nullptr, s.points, tau, kAlpha, s.dofs, u_start);
+}
+
+Eigen::MatrixXd dense_hessian(const FrictionTerm& term, const VectorXd& u) {
+  TripletSink sink;
+  term.add_hessian(u, sink);
+  return Eigen::MatrixXd(sink.to_matrix(u.size()));
+}
+
+struct Case {
+  int order;
+  bool with_master;
+  double tilt;
+};
+
+std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+  return std::string(info.param.with_master ? "BodyBody" : "Plane") + "P" + std::to_string(info.param.order) +
+         (info.param.tilt != 0.0 ? "Tilted" : "Flat");
+}
+
+class FrictionTermCase : public ::testing::TestWithParam<Case> {
+ protected:
+  Interface interface() const {
+    const Case c = GetParam();
+    return c.with_master ? body_body(c.order, c.tilt) : against_plane(c.order, c.tilt);
+  }
+};
+
+}  // namespace
+
+TEST_P(FrictionTermCase, HasContactPointsWithTheFrozenNormal) {
+  const Interface s = interface();
+  ASSERT_GE(s.points.size(), 7u * 3u);  // at least 3 points per slave facet
+  const Eigen::Vector2d n(-s.tangent[1], s.tangent[0]);
+  for (const ContactPoint& p : s.points) EXPECT_NEAR((p.normal.head<2>() - n).norm(), 0.0, 1e-12);
+}
+
+TEST_P(FrictionTermCase, DerivativesAtRandomStates) {
+  const Interface s = interface();
+  const Index n = s.dofs.num_dofs();
+  const std::vector<double> tau = random_tau(s.points.size(), 3);
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    const VectorXd u0 = random_vector(n, 0.01, 10 + seed);
+    const FrictionTerm term = make_term(s, tau, u0);
+    // Increments of 10 α per DOF: slips from ~0 to ~30 α, in every direction of the tangent.
+    const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 20 + seed);
+    const FdResult r = check_derivatives(term, u, kFdStep, 6, 400, seed);
+    EXPECT_LT(r.gradient_error, kTol) << "seed " << seed;
+    EXPECT_LT(r.hessian_error, kTol) << "seed " << seed;
+  }
+}
+
+TEST_P(FrictionTermCase, DerivativesAtZeroSlip) {
+  const Interface s = interface();
+  const VectorXd u0 = random_vector(s.dofs.num_dofs(), 0.01, 7);
+  const FrictionTerm term = make_term(s, random_tau(s.points.size(), 4), u0);
+  for (const Eigen::Vector3d& sq : term.slips(u0)) EXPECT_EQ(sq.norm(), 0.0);  // u = u_start: exactly 0
+  // At s = 0 the gradient vanishes and the Hessian is w τ PBᵀPB / α, its largest value.
+  VectorXd g = VectorXd::Zero(u0.size());
+  term.add_gradient(u0, g);
+  EXPECT_EQ(g.cwiseAbs().maxCoeff(), 0.0);
+  const FdResult r = check_derivatives(term, u0, kFdStep, 6);
+  EXPECT_LT(r.gradient_error, kTol);
+  EXPECT_LT(r.hessian_error, kTol);
+}
+
+TEST_P(FrictionTermCase, DerivativesAtSlipsOfOrderAlpha) {
+  const Interface s = interface();
+  const Index n = s.dofs.num_dofs();
+  const VectorXd u0 = random_vector(n, 0.01, 8);
+  const FrictionTerm term = make_term(s, random_tau(s.points.size(), 5), u0);
+  for (double factor : {1e-3, 1.0, 10.0}) {
+    const double c = factor * kAlpha;
+    // A uniform slide by c, spread by ±10 % so that the points differ.
+    const VectorXd u = u0 + slave_slide(s, c) + random_vector(n, 0.1 * c, 30);
+    double smin = 1e300, smax = 0.0;
+    for (const Eigen::Vector3d& sq : term.slips(u)) {
+      smin = std::min(smin, sq.norm());
+      smax = std::max(smax, sq.norm());
+    }
+    EXPECT_GT(smin, 0.5 * c);
+    EXPECT_LT(smax, 1.5 * c);
+    const FdResult r = check_derivatives(term, u, kFdStep, 6);
+    std::printf("  slip %g alpha: FD gradient error %.2e, Hessian error %.2e\n", factor, r.gradient_error,
+                r.hessian_error);
+    EXPECT_LT(r.gradient_error, kTol) << "slip " << factor << " alpha";
+    EXPECT_LT(r.hessian_error, kTol) << "slip " << factor << " alpha";
+  }
+}
+
+TEST_P(FrictionTermCase, ValueAtTheStartIsSumOfWeightTauAlpha) {
+  const Interface s = interface();
+  const std::vector<double> tau = random_tau(s.points.size(), 6);
+  const VectorXd u0 = random_vector(s.dofs.num_dofs(), 0.01, 9);
+  const FrictionTerm term = make_term(s, tau, u0);
+  double expected = 0.0;
+  for (std::size_t q = 0; q < s.points.size(); ++q) expected += s.points[q].weight * tau[q] * kAlpha;
+  EXPECT_NEAR(term.value(u0), expected, 1e-14 * expected);
+  // A uniform slide by c: every point adds w τ (sqrt(c² + α²) − α).
+  const double c = 3 * kAlpha;
+  EXPECT_NEAR(term.value(u0 + slave_slide(s, c)), expected * std::sqrt(c * c + kAlpha * kAlpha) / kAlpha,
+              1e-12 * expected);
+}
+
+TEST_P(FrictionTermCase, HessianIsPositiveSemidefinite) {
+  const Interface s = interface();
+  const Index n = s.dofs.num_dofs();
+  const VectorXd u0 = random_vector(n, 0.01, 11);
+  const FrictionTerm term = make_term(s, random_tau(s.points.size(), 7), u0);
+  for (double amplitude : {0.0, kAlpha, 10 * kAlpha}) {
+    const VectorXd u = u0 + random_vector(n, amplitude, 12);
+    const Eigen::MatrixXd H = dense_hessian(term, u);
+    const double scale = H.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT((H - H.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
+    for (unsigned seed = 0; seed < 20; ++seed) {
+      const VectorXd x = random_vector(n, 1.0, 100 + seed);
+      EXPECT_GE(x.dot(H * x), -1e-12 * scale * x.squaredNorm()) << "amplitude " << amplitude;
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H, Eigen::EigenvaluesOnly);
+    EXPECT_GE(eig.eigenvalues().minCoeff(), -1e-12 * scale) << "amplitude " << amplitude;
+    // Along a line the energy is convex: midpoint below the chord.
+    const VectorXd a = u0 + random_vector(n, 10 * kAlpha, 13), b = u0 + random_vector(n, 10 * kAlpha, 14);
+    EXPECT_LE(term.value(0.5 * (a + b)), 0.5 * (term.value(a) + term.value(b)) + 1e-15);
+  }
+}
+
+TEST_P(FrictionTermCase, RegularisedLawAtOnePoint) {
+  const Interface s = interface();
+  // One point in the middle of the slave, alone in its term.
+  const std::size_t q = s.points.size() / 2;
+  Interface one = s;
+  one.points = {s.points[q]};
+  const double tau = 2.5, w = s.points[q].weight;
+  const VectorXd u0 = random_vector(s.dofs.num_dofs(), 0.01, 15);
+  const FrictionTerm term = make_term(one, {tau}, u0);
+  for (double c : {0.0, 1e-3 * kAlpha, -0.5 * kAlpha, kAlpha, 3 * kAlpha, -10 * kAlpha, 1e3 * kAlpha}) {
+    const VectorXd u = u0 + slave_slide(one, c);
+    ASSERT_NEAR(term.slips(u)[0].head<2>().dot(one.tangent), c, 1e-15);
+    // The force on the slave is −∇j over its DOFs; its tangential resultant is the law's.
+    VectorXd g = VectorXd::Zero(u.size());
+    term.add_gradient(u, g);
+    Eigen::Vector2d f_slave = Eigen::Vector2d::Zero(), f_master = Eigen::Vector2d::Zero();
+    for (Index k = 0; k < one.upper.num_nodes(); ++k)
+      for (int i = 0; i < 2; ++i) f_slave[i] -= g[one.dofs.dof(one.slave_body, k, i)];
+    if (one.with_master)
+      for (Index k = 0; k < one.lower.num_nodes(); ++k)
+        for (int i = 0; i < 2; ++i) f_master[i] -= g[one.dofs.dof(0, k, i)];
+    const double law = -tau * w * c / std::sqrt(c * c + kAlpha * kAlpha);
+    EXPECT_NEAR(f_slave.dot(one.tangent), law, 1e-12 * tau * w) << "slip " << c;
+    EXPECT_NEAR(f_slave.dot(Eigen::Vector2d(-one.tangent[1], one.tangent[0])), 0.0, 1e-12 * tau * w);  // purely tangential
+    if (one.with_master) {
+      EXPECT_NEAR((f_slave + f_master).norm(), 0.0, 1e-12 * tau * w);  // action = reaction
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FrictionTerm, FrictionTermCase,
+                         ::testing::Values(Case{1, true, 0.0}, Case{2, true, 0.0}, Case{1, true, 0.3},
+                                           Case{2, true, 0.3}, Case{1, false, 0.0}, Case{2, false, 0.0},
+                                           Case{1, false, 0.3}, Case{2, false, 0.3}),
+                         case_name);
