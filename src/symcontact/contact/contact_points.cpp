@@ -113,7 +113,7 @@ int default_gauss(const ContactSurface& s, const ContactSearchOptions& o) {
 }  // namespace
 
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
-                       double search, ContactPoint& cp) {
+                       double search, ContactPoint& cp, bool allow_past_end) {
   const ContactSurface& ms = *master.surface;
   const int mpf = ms.nodes_per_facet();
   const Eigen::Vector3d p3 = pad3(p);
@@ -128,7 +128,8 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   });
   if (mf < 0) return false;
   const FacetProjection pr = project_on_facet(ms.facet_type, facet_nodes(ms, master.x, mf), p);
-  if (pr.clamped_vertex >= 0 && ms.valence[ms.facet(mf)[pr.clamped_vertex]] <= 1) return false;  // past an end
+  if (!allow_past_end && pr.clamped_vertex >= 0 && ms.valence[ms.facet(mf)[pr.clamped_vertex]] <= 1)
+    return false;  // past an end
   double M[10];
   shape_functions(ms.facet_type, pr.eta, M, nullptr);
   Eigen::Vector3d nbar = Eigen::Vector3d::Zero();
@@ -243,7 +244,7 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
     const Eigen::Vector3d ns = pad3(normals.col(k));
     ContactPoint cp;
     if (master) {
-      if (!project_to_master(*master, xs.col(k), ns, search_distance, cp)) continue;
+      if (!project_to_master(*master, xs.col(k), ns, search_distance, cp, true)) continue;
     } else {
       const Eigen::Vector3d p = pad3(xs.col(k));
       Eigen::Vector3d xbar, n;

@@ -52,8 +52,10 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// Projects point p (dim entries) with outward slave normal `slave_normal` on the master; fills the master
 /// part of `cp` (facet, η, x, x̄, n̄, gap) and returns true when the point is a contact candidate
 /// (the rules above).
+/// With `allow_past_end`, a point past an end of the master surface projects onto that end (used for
+/// nodal friction: a slave node that hangs over the master's end can still carry pressure).
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
-                       double search, ContactPoint& cp);
+                       double search, ContactPoint& cp, bool allow_past_end = false);
 
 /// Slave points against a master surface (xs: current slave node positions).
 std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
@@ -65,7 +67,8 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
 
 /// One point per slave NODE (for nodal friction): the node itself, as a point of the first facet that
 /// holds it, with weight = its lumped area A_k and its projection on the master (or the obstacle); nodes
-/// that project onto nothing (the rules above, with the smoothed nodal normal) are left out.
+/// that project onto nothing (the rules above, with the smoothed nodal normal, except that a node past
+/// an end of the master projects onto that end) are left out.
 /// `master` or `obstacle` is given, not both.
 std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
                                                const MasterGeometry* master, const Obstacle* obstacle,

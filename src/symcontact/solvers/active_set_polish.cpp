@@ -32,25 +32,32 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     problem.gradient(xs, g);
     const double hdiag = H.diagonal().cwiseAbs().mean();
     if (!(hdiag > 0)) return false;
-    SparseMatrix M = H;
-    double rho = 0.0;
+    SparseMatrix AtA;
+    double adiag = 0.0;
     if (AS.rows() > 0) {
-      const SparseMatrix AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
-      const double adiag = AtA.diagonal().cwiseAbs().maxCoeff();
+      AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
+      adiag = AtA.diagonal().cwiseAbs().maxCoeff();
       if (!(adiag > 0)) return false;
-      // Large ρ: the nearly dependent rows of the two families give A_S tiny singular values, along which
-      // the method of multipliers converges at the rate 1/(1 + ρ σ²).
-      // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced
-      // ρ keeps M well conditioned.
-      rho = (direct ? 1.0 : 1e6) * hdiag / adiag;
-      M = H + rho * AtA;
     }
+    // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced ρ
+    // keeps M well conditioned. The method of multipliers wants a large ρ: the nearly dependent rows of
+    // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
+    // If the balanced ρ does not make M definite, the large one is used (and the method of multipliers).
+    double rho = 0.0;
     CholeskySolver chol;
-    try {
-      chol.compute(M);
-    } catch (const SolveError&) {
-      return false;
+    bool factorised = false;
+    for (const double factor : {direct ? 1.0 : 1e6, 1e6}) {
+      rho = AS.rows() > 0 ? factor * hdiag / adiag : 0.0;
+      try {
+        chol.compute(AS.rows() > 0 ? SparseMatrix(H + rho * AtA) : H);
+        factorised = true;
+        if (factor != 1.0) direct = false;
+        break;
+      } catch (const SolveError&) {
+        if (AS.rows() == 0) break;
+      }
     }
+    if (!factorised) return false;
     const VectorXd x_start = xs;
     if (direct && AS.rows() > 0 && AS.rows() <= kDirectLimit) {
       // Range-space solve of the KKT system on S, exact in one step (Nocedal & Wright §16.2):
@@ -186,7 +193,13 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
     };
     VectorXd mu_new = VectorXd::Zero(A.rows());
     for (std::size_t k = 0; k < S.size(); ++k) mu_new[S[k]] = std::max(0.0, nu[k]) / row_scale[S[k]];
-    if (!(stationarity(xs, mu_new) < stationarity(x, mu))) {
+    // Scale: the larger of the constraint force and the gradient at the IPOPT point. A polish that only
+    // closes the constraints keeps stationarity at round-off level; a Newton overshoot raises it by
+    // orders of magnitude.
+    VectorXd g0;
+    problem.gradient(x, g0);
+    const double scale = std::max((A.transpose() * mu).lpNorm<Eigen::Infinity>(), g0.lpNorm<Eigen::Infinity>());
+    if (!(stationarity(xs, mu_new) <= 10.0 * stationarity(x, mu) + 1e-6 * scale)) {
       r.reason = "the Newton steps did not reduce the stationarity error";
       return r;
     }

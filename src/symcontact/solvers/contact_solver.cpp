@@ -56,6 +56,7 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
   std::vector<int> rows_prev_family;
   std::vector<Index> rows_prev_node;
   bool closing_polish_works = true;
+  std::vector<std::shared_ptr<const FrictionTerm>> friction_terms;  ///< per pair, for the reported slips
   for (int it = 1;; ++it) {
     {
       ScopedPhase t(rep.times, "search");
@@ -80,6 +81,7 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
       ScopedPhase t(rep.times, "assembly");
       problem.set_constraints(lin.A, lin.b);
       total.extra.assign(contacts.pairs.size(), nullptr);
+      friction_terms.assign(contacts.pairs.size(), nullptr);
       if (friction)
         for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
           if (p >= static_cast<int>(friction->nodal_tau.size()) || friction->nodal_tau[p].size() == 0) continue;
@@ -103,9 +105,12 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
                                          &contacts.obstacles[contacts.pairs[p].obstacle], contacts.pairs[p].search_distance);
           }
           const std::vector<double> tau = interpolate_at_points(slave, nodal, friction->nodal_tau[p]);
-          total.extra[p] = std::make_shared<FrictionTerm>(
+          friction_terms[p] = std::make_shared<FrictionTerm>(
               "friction(" + contacts.pairs[p].name + ")", slave, fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
               std::move(nodal), tau, contacts.pairs[p].alpha, dofs, friction->u_start);
+          // A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: left out
+          // so that the problem stays quadratic; the term is kept for the slips it reports.
+          if (friction->nodal_tau[p].maxCoeff() > 0.0) total.extra[p] = friction_terms[p];
         }
     }
     rep.num_constraints = lin.A.rows();
@@ -121,6 +126,16 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     {
       ScopedPhase t(rep.times, "optimizer");
       res = solve_with_ipopt(problem, x, opt, same_rows ? &mu0 : nullptr);
+      if (!res.success && friction) {
+        // Stiff regularised friction (small α) can defeat IPOPT's line search from a start that is
+        // already close; one cold retry from the start of the load step before giving up.
+        log.detail("  IPOPT failed (" + res.status_text + "); retrying from the start of the load step");
+        IpoptOptions cold = options.ipopt;
+        VectorXd x_retry = problem.restrict(friction->u_start);
+        const IpoptResult retry = solve_with_ipopt(problem, x_retry, cold);
+        rep.ipopt_iterations += res.iterations;
+        res = retry;
+      }
     }
     rep.ipopt_iterations += res.iterations;
     rep.ipopt_per_iteration.push_back(res.iterations);
@@ -178,7 +193,7 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     }
   }
   u = problem.expand(x);
-  rep.friction = total.extra;
+  rep.friction = friction_terms;
   // Contact forces: Aᵀμ (+ friction). On free DOFs the equilibrium residual ∇E(u) of the bodies' energy
   // equals Aᵀμ + the friction force at the KKT point and carries no optimiser tolerance (it balances the
   // applied loads to round-off), so it is used there; on fixed DOFs the residual also holds the support
