@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/energy/hyperelastic_energy.hpp"
 #include "symcontact/energy/linear_elastic_energy.hpp"
 #include "symcontact/mesh/gmsh_io.hpp"
 
@@ -28,6 +29,18 @@ const FacetGroup& require_facets(const ProblemSpec& spec, const Body& b, const s
                      "body '" + b.name + "' (mesh " + b.spec->mesh_file + ") has no boundary group '" + group +
                          "'; its groups: " + available_groups(b.mesh));
   return it->second;
+}
+
+/// The strain energy of a body: linear elastic, or finite-strain hyperelastic (materials/hyperelastic.hpp).
+std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs, int b) {
+  const MaterialSpec& ms = body.spec->material;
+  if (ms.model == "linear_elastic")
+    return std::make_unique<LinearElasticEnergy>(body.mesh, dofs, b, body.material, body.name);
+  const HyperelasticLaw law = ms.model == "neo_hookean" ? HyperelasticLaw::kNeoHookean : HyperelasticLaw::kMooneyRivlin;
+  const Hyperelastic material = !ms.own_constants ? Hyperelastic::from_young_poisson(law, ms.young, ms.poisson)
+                                : law == HyperelasticLaw::kNeoHookean ? Hyperelastic::neo_hookean(ms.mu, ms.lambda)
+                                                                      : Hyperelastic::mooney_rivlin(ms.c1, ms.c2, ms.kappa);
+  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, material, body.name);
 }
 }  // namespace
 
@@ -79,7 +92,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
   for (int b = 0; b < static_cast<int>(m->bodies_.size()); ++b) {
     const Body& body = *m->bodies_[b];
     const BodySpec& bs = *body.spec;
-    m->energy_.add(std::make_unique<LinearElasticEnergy>(body.mesh, m->dofs_, b, body.material, body.name));
+    m->energy_.add(elastic_energy(body, m->dofs_, b));
     if (!bs.body_force.empty()) {
       const std::vector<double> bf = bs.body_force;
       VectorXd f = body_force_vector(body.mesh, m->dofs_, b, [&](const double*, double* out) {

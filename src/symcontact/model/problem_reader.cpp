@@ -382,7 +382,7 @@ class Reader {
 
     const std::string material_key = child(path, "material");
     body.material = read_material(as_table(required(t, path, "material", "a table [body.material]"), material_key),
-                                  material_key);
+                                  material_key, spec);
 
     if (const toml::node* n = t.get("dirichlet")) {
       const std::string key = child(path, "dirichlet");
@@ -430,16 +430,103 @@ class Reader {
     if (fs::is_directory(status)) fail(key, "expected a mesh file, got the folder " + in_quotes(mesh_path));
   }
 
-  MaterialSpec read_material(const toml::table& t, const std::string& path) const {
-    check_keys(t, path, {"model", "E", "nu"});
+  /// [body.material]: model "linear_elastic" (E, nu), "neo_hookean" (E, nu | mu, lambda) or
+  /// "mooney_rivlin" (E, nu | c1, c2, kappa); exactly one parameter set. Hyperelastic models need plane
+  /// strain or 3D. With the model's own constants, young/poisson get the small-strain equivalent.
+  MaterialSpec read_material(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
     MaterialSpec material;
     material.key = path;
+    const std::string model_key = child(path, "model");
     if (const toml::node* n = t.get("model")) {
-      material.model = as_string(*n, child(path, "model"));
-      if (material.model != "linear_elastic") {
-        fail(child(path, "model"), "expected \"linear_elastic\", got " + in_quotes(material.model));
+      material.model = as_string(*n, model_key);
+      if (material.model != "linear_elastic" && material.model != "neo_hookean" && material.model != "mooney_rivlin") {
+        fail(model_key, "expected \"linear_elastic\", \"neo_hookean\" or \"mooney_rivlin\", got " +
+                            in_quotes(material.model));
       }
     }
+    if (material.model == "linear_elastic") {
+      // A hyperelastic constant without its model: say which model it belongs to.
+      for (std::string_view k : {"mu", "lambda", "c1", "c2", "kappa"}) {
+        if (!t.get(k)) continue;
+        const bool neo_key = k == "mu" || k == "lambda";
+        fail(child(path, k), "unknown key " + in_quotes(k) + " for model \"linear_elastic\" (" +
+                                 (neo_key ? "mu, lambda are constants of model = \"neo_hookean\""
+                                          : "c1, c2, kappa are constants of model = \"mooney_rivlin\"") +
+                                 "); allowed keys in " + path + ": model, E, nu");
+      }
+      check_keys(t, path, {"model", "E", "nu"});
+      read_young_poisson(t, path, material);
+      return material;
+    }
+    if (spec.model == AnalysisModel::kPlaneStress) {
+      fail(model_key, "the hyperelastic model " + in_quotes(material.model) +
+                          " needs problem.model = \"plane_strain\" (or dimension = 3), got \"plane_stress\"");
+    }
+    const bool neo = material.model == "neo_hookean";
+    const std::vector<std::string_view> own =
+        neo ? std::vector<std::string_view>{"mu", "lambda"} : std::vector<std::string_view>{"c1", "c2", "kappa"};
+    if (neo) {
+      check_keys(t, path, {"model", "E", "nu", "mu", "lambda"});
+    } else {
+      check_keys(t, path, {"model", "E", "nu", "c1", "c2", "kappa"});
+    }
+    // Exactly one parameter set: (E, nu) or the model's own constants.
+    const std::string_view given_young = t.get("E") ? "E" : t.get("nu") ? "nu" : "";
+    std::string_view given_own;
+    std::string own_list;
+    for (std::string_view k : own) {
+      if (given_own.empty() && t.get(k)) given_own = k;
+      own_list += (own_list.empty() ? "" : ", ") + std::string(k);
+    }
+    if (!given_young.empty() && !given_own.empty()) {
+      fail(child(path, given_own), "give either E, nu or " + own_list + " for " + in_quotes(material.model) +
+                                       ", not both (" + std::string(given_young) + " is also given)");
+    }
+    if (given_own.empty()) {
+      if (given_young.empty()) {
+        fail(path, "missing material parameters (expected E, nu or " + own_list + " for " +
+                       in_quotes(material.model) + ")");
+      }
+      read_young_poisson(t, path, material);
+      return material;
+    }
+    material.own_constants = true;
+    auto constant = [&](std::string_view name, const std::string& what) {
+      return as_number(required(t, path, name, what), child(path, name));
+    };
+    double mu = 0.0, lambda = 0.0;  // small-strain equivalents
+    if (neo) {
+      material.mu = constant("mu", "the shear modulus, a number > 0");
+      if (!(material.mu > 0.0)) fail(child(path, "mu"), "expected a number > 0, got " + format_number(material.mu));
+      material.lambda = constant("lambda", "the Lame constant, a number > -2 mu / 3");
+      if (!(material.lambda + 2.0 * material.mu / 3.0 > 0.0)) {
+        fail(child(path, "lambda"), "expected a number > -2 mu / 3 = " + format_number(-2.0 * material.mu / 3.0) +
+                                        " (a positive bulk modulus lambda + 2 mu / 3), got " +
+                                        format_number(material.lambda));
+      }
+      mu = material.mu;
+      lambda = material.lambda;
+    } else {
+      material.c1 = constant("c1", "a number >= 0");
+      if (!(material.c1 >= 0.0)) fail(child(path, "c1"), "expected a number >= 0, got " + format_number(material.c1));
+      material.c2 = constant("c2", "a number >= 0");
+      if (!(material.c2 >= 0.0)) fail(child(path, "c2"), "expected a number >= 0, got " + format_number(material.c2));
+      if (!(material.c1 + material.c2 > 0.0)) {
+        fail(child(path, "c2"), "expected c1 + c2 > 0 (the shear modulus is 2 (c1 + c2)), got c1 = c2 = 0");
+      }
+      material.kappa = constant("kappa", "the bulk modulus, a number > 0");
+      if (!(material.kappa > 0.0)) {
+        fail(child(path, "kappa"), "expected a number > 0, got " + format_number(material.kappa));
+      }
+      mu = 2.0 * (material.c1 + material.c2);
+      lambda = material.kappa - 2.0 * mu / 3.0;
+    }
+    material.young = mu * (3.0 * lambda + 2.0 * mu) / (lambda + mu);
+    material.poisson = lambda / (2.0 * (lambda + mu));
+    return material;
+  }
+
+  void read_young_poisson(const toml::table& t, const std::string& path, MaterialSpec& material) const {
     const std::string e_key = child(path, "E");
     material.young = as_number(required(t, path, "E", "Young's modulus, a number > 0"), e_key);
     if (!(material.young > 0.0)) fail(e_key, "expected a number > 0, got " + format_number(material.young));
@@ -449,7 +536,6 @@ class Reader {
     if (!(material.poisson > -1.0 && material.poisson < 0.5)) {
       fail(nu_key, "expected a number in (-1, 0.5), got " + format_number(material.poisson));
     }
-    return material;
   }
 
   DirichletSpec read_dirichlet(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {

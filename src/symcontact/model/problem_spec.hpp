@@ -17,11 +17,21 @@
 
 namespace symcontact {
 
+/// A body's material. `model` is "linear_elastic", "neo_hookean" or "mooney_rivlin" (finite strain,
+/// materials/hyperelastic.hpp). Parameters: (E, nu) for every model, or the model's own constants
+/// (mu, lambda for neo_hookean; c1, c2, kappa for mooney_rivlin), exactly one set.
 struct MaterialSpec {
   std::string key;             ///< e.g. "body[0].material"
   std::string model = "linear_elastic";
-  double young = 0.0;          ///< E > 0, [stress]
-  double poisson = 0.0;        ///< nu in (-1, 0.5)
+  double young = 0.0;          ///< E > 0, [stress]; with own_constants, the small-strain equivalent
+  double poisson = 0.0;        ///< nu in (-1, 0.5); with own_constants, the small-strain equivalent
+  /// True when the model's own constants were given instead of (E, nu); young/poisson then hold the
+  /// small-strain equivalent (used for the linear-elastic stress output).
+  bool own_constants = false;
+  double mu = 0.0;             ///< neo_hookean: shear modulus > 0, [stress]
+  double lambda = 0.0;         ///< neo_hookean: Lamé lambda, lambda + 2 mu / 3 > 0, [stress]
+  double c1 = 0.0, c2 = 0.0;   ///< mooney_rivlin: >= 0, c1 + c2 > 0, [stress]
+  double kappa = 0.0;          ///< mooney_rivlin: bulk modulus > 0, [stress]
 };
 
 /// u_i = value_i × factor on a named boundary (facet group) or node group; unset components are free.

@@ -236,6 +236,45 @@ traction = [1, 2, 3]
   EXPECT_EQ(spec.bodies[0].tractions[0].traction, (std::vector<double>{1.0, 2.0, 3.0}));
 }
 
+// ---- hyperelastic materials ----
+
+TEST(ProblemReader, HyperelasticMaterialsFromYoungAndPoisson) {
+  for (const char* model : {"neo_hookean", "mooney_rivlin"}) {
+    const ProblemSpec spec = parse(edit("E = 1.0", std::string("model = \"") + model + "\"\nE = 1.0"));
+    const MaterialSpec& m = spec.bodies[0].material;
+    EXPECT_EQ(m.model, model);
+    EXPECT_FALSE(m.own_constants);
+    EXPECT_EQ(m.young, 1.0);
+    EXPECT_EQ(m.poisson, 0.3);
+  }
+}
+
+TEST(ProblemReader, NeoHookeanOwnConstants) {
+  const ProblemSpec spec = parse(edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0.5\nlambda = 1.5"));
+  const MaterialSpec& m = spec.bodies[0].material;
+  EXPECT_EQ(m.model, "neo_hookean");
+  EXPECT_TRUE(m.own_constants);
+  EXPECT_EQ(m.mu, 0.5);
+  EXPECT_EQ(m.lambda, 1.5);
+  // Small-strain equivalent: E = μ(3λ + 2μ)/(λ + μ) = 1.375, ν = λ/(2(λ + μ)) = 0.375.
+  EXPECT_DOUBLE_EQ(m.young, 1.375);
+  EXPECT_DOUBLE_EQ(m.poisson, 0.375);
+}
+
+TEST(ProblemReader, MooneyRivlinOwnConstantsIn3D) {
+  const ProblemSpec spec =
+      parse(with_dimension_3(edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0.3\nc2 = 0\nkappa = 2")));
+  const MaterialSpec& m = spec.bodies[0].material;
+  EXPECT_EQ(m.model, "mooney_rivlin");
+  EXPECT_TRUE(m.own_constants);
+  EXPECT_EQ(m.c1, 0.3);
+  EXPECT_EQ(m.c2, 0.0);
+  EXPECT_EQ(m.kappa, 2.0);
+  // μ = 2(c1 + c2) = 0.6, K = 2: E = 9Kμ/(3K + μ), ν = (3K − 2μ)/(2(3K + μ)).
+  EXPECT_DOUBLE_EQ(m.young, 9 * 2 * 0.6 / (6 + 0.6));
+  EXPECT_DOUBLE_EQ(m.poisson, (6 - 1.2) / (2 * (6 + 0.6)));
+}
+
 // ---- contact ----
 
 /// kBase plus a second body "lower" and one contact between them; bad contact cases edit it.
@@ -668,8 +707,51 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"PoissonNan", edit("nu = 0.3", "nu = nan"), "body[0].material.nu", "expected a finite number, got nan"},
         BadCase{"InfiniteLoadFactor", edit("[0.5, 1.0]", "[0.5, inf]"), "steps.load_factors[1]",
                 "expected a finite number, got inf"},
-        BadCase{"UnknownMaterialModel", edit("E = 1.0", "model = \"neo_hookean\"\nE = 1.0"), "body[0].material.model",
-                "expected \"linear_elastic\", got \"neo_hookean\""},
+        BadCase{"UnknownMaterialModel", edit("E = 1.0", "model = \"saint_venant\"\nE = 1.0"), "body[0].material.model",
+                "expected \"linear_elastic\", \"neo_hookean\" or \"mooney_rivlin\", got \"saint_venant\""},
+        // hyperelastic materials
+        BadCase{"NeoHookeanConstantsForLinearElastic", edit("nu = 0.3", "nu = 0.3\nmu = 1.0"), "body[0].material.mu",
+                "unknown key \"mu\" for model \"linear_elastic\" (mu, lambda are constants of model = \"neo_hookean\"); "
+                "allowed keys in body[0].material: model, E, nu"},
+        BadCase{"MooneyRivlinConstantsForLinearElastic", edit("nu = 0.3", "nu = 0.3\nkappa = 1.0"),
+                "body[0].material.kappa", "c1, c2, kappa are constants of model = \"mooney_rivlin\""},
+        BadCase{"MooneyRivlinKeyForNeoHookean", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nc1 = 1.0"),
+                "body[0].material.c1", "allowed keys in body[0].material: model, E, nu, mu, lambda"},
+        BadCase{"NeoHookeanMixedParameterSets", edit("E = 1.0", "model = \"neo_hookean\"\nmu = 1.0\nE = 1.0"),
+                "body[0].material.mu", "give either E, nu or mu, lambda for \"neo_hookean\", not both (E is also given)"},
+        BadCase{"MooneyRivlinMixedParameterSets",
+                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nnu = 0.3\nc1 = 1\nc2 = 1\nkappa = 1"),
+                "body[0].material.c1", "give either E, nu or c1, c2, kappa for \"mooney_rivlin\", not both (nu is also given)"},
+        BadCase{"HyperelasticNoParameters", edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\""), "body[0].material",
+                "missing material parameters (expected E, nu or c1, c2, kappa for \"mooney_rivlin\")"},
+        BadCase{"NeoHookeanMissingLambda", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 1.0"),
+                "body[0].material.lambda", "missing required key"},
+        BadCase{"MooneyRivlinMissingKappa", edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = 0"),
+                "body[0].material.kappa", "missing required key (expected the bulk modulus, a number > 0)"},
+        BadCase{"NeoHookeanMissingNu", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nE = 1.0"),
+                "body[0].material.nu", "missing required key"},
+        BadCase{"NeoHookeanPoissonHalf", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nE = 1.0\nnu = 0.5"),
+                "body[0].material.nu", "expected a number in (-1, 0.5), got 0.5"},
+        BadCase{"MooneyRivlinYoungNegative", edit("E = 1.0", "model = \"mooney_rivlin\"\nE = -2"),
+                "body[0].material.E", "expected a number > 0, got -2"},
+        BadCase{"NeoHookeanMuZero", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0\nlambda = 1"),
+                "body[0].material.mu", "expected a number > 0, got 0"},
+        BadCase{"NeoHookeanLambdaTooNegative",
+                edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 3\nlambda = -2"), "body[0].material.lambda",
+                "expected a number > -2 mu / 3 = -2 (a positive bulk modulus lambda + 2 mu / 3), got -2"},
+        BadCase{"MooneyRivlinNegativeC2",
+                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = -0.5\nkappa = 1"),
+                "body[0].material.c2", "expected a number >= 0, got -0.5"},
+        BadCase{"MooneyRivlinZeroShear",
+                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0\nc2 = 0\nkappa = 1"),
+                "body[0].material.c2", "expected c1 + c2 > 0"},
+        BadCase{"MooneyRivlinZeroKappa",
+                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = 0\nkappa = 0"),
+                "body[0].material.kappa", "expected a number > 0, got 0"},
+        BadCase{"HyperelasticPlaneStress",
+                replaced(edit("dimension = 2", "dimension = 2\nmodel = \"plane_stress\""), "E = 1.0",
+                         "model = \"neo_hookean\"\nE = 1.0"),
+                "body[0].material.model", "needs problem.model = \"plane_strain\" (or dimension = 3)"},
         BadCase{"DimensionFour", edit("dimension = 2", "dimension = 4"), "problem.dimension", "expected 2 or 3, got 4"},
         BadCase{"OrderThree", edit("dimension = 2", "dimension = 2\norder = 3"), "problem.order",
                 "expected 1 or 2, got 3"},

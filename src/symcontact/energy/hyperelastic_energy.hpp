@@ -1,0 +1,56 @@
+#pragma once
+/// \file hyperelastic_energy.hpp
+/// Total-Lagrangian strain energy of one hyperelastic body (talk eq. 6, METHOD.md "Bodies and energies"):
+///   E(u) = Σ_cells ∫_{Ω_c} ψ(F) dX,  F = I + ∇_X u,
+/// with ψ a pointwise law (materials/hyperelastic.hpp). Element kernel (per cell, quadrature point q,
+/// G_a = ∇_X N_a, w_q = quadrature weight × det of the reference map):
+///   E_e = Σ_q w_q ψ(F_q),  F_q = I + Σ_a u_a ⊗ G_a,
+///   f_(a,i) = Σ_q w_q P_iJ G_aJ,
+///   K_(a,i),(b,k) = Σ_q w_q A_iJkL G_aJ G_bL,  A = ∂P/∂F,
+/// local DOF (a, i) at row D·a + i (node-major, as DofMap). Summed over J, L.
+///
+/// Quadrature: the same rule as LinearElasticEnergy — degree 0 (one point) for P1, where F is constant
+/// on a cell so every integrand is exact; degree 3 = 2(p−1) + 1 for P2: ψ(F) is not a polynomial, but its
+/// small-strain limit (the linear stiffness integrand, degree 2(p−1) = 2 on straight cells) is then
+/// integrated exactly, one degree is left for the nonlinearity and curved cells, and the linearisation at
+/// u = 0 is exactly the linear-elastic stiffness of the same mesh.
+///
+/// Errors: a reference element with det(∂X/∂ξ) ≤ 0 → InputError at construction (as the linear term);
+/// a deformed state with det F ≤ 0 at a quadrature point → EvaluationError naming the body and the cell
+/// (Mesh::cell_label), so that a solver can back away.
+
+#include <string>
+
+#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/fem/dof_map.hpp"
+#include "symcontact/fem/shape_functions.hpp"
+#include "symcontact/materials/hyperelastic.hpp"
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+class HyperelasticEnergy : public EnergyTerm {
+ public:
+  /// `label` names the body in messages. The mesh must be 2D (plane strain) or 3D and outlive the term.
+  HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, const Hyperelastic& material,
+                     std::string label);
+  std::string name() const override { return "hyperelastic(" + label_ + ")"; }
+  double value(const VectorXd& u) const override;
+  void add_gradient(const VectorXd& u, VectorXd& g) const override;
+  void add_hessian(const VectorXd& u, MatrixSink& sink) const override;
+  bool hessian_is_constant() const override { return false; }
+
+ private:
+  /// Runs the element kernel on every cell at state u, with what = 0 (value), 1 (+ gradient) or
+  /// 2 (+ Hessian), and calls f(dofs, e, g_e, K_e) with the local results.
+  template <int What, class F>
+  void for_each_cell(const VectorXd& u, F&& f) const;
+
+  const Mesh& mesh_;
+  Index offset_;
+  Hyperelastic material_;
+  std::string label_;
+  Tabulation tab_;
+};
+
+}  // namespace symcontact
