@@ -21,6 +21,12 @@
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case hertz2d --h 0.004 0.002 --csv hertz.csv
 ///
+/// `inclined` solves the inclined interface with Coulomb friction mu = 0.2 (examples/inclined_2d,
+/// VALIDATION.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
+/// 0.05 0.025 0.0125) against the same floor (bench_inclined.hpp):
+///
+///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
+///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
@@ -36,6 +42,7 @@
 #include <vector>
 
 #include "bench_contact.hpp"
+#include "bench_inclined.hpp"
 #include "bench_support.hpp"
 #include "elastic_block.hpp"
 #include "symcontact/core/error.hpp"
@@ -155,11 +162,13 @@ int main(int argc, char** argv) {
   CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
                "Hertz 2D contact solves against that Cholesky floor",
                "symcontact-bench"};
-  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d or hertz2d-cylinders")
-      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders"}));
-  app.add_option("--h", opt.h, "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006)")
+  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders or inclined")
+      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "inclined"}));
+  app.add_option("--h", opt.h,
+                 "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
+                 "inclined: element sizes (default 0.05 0.025 0.0125)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/")
+  app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/ and inclined_2d/")
       ->check(CLI::ExistingDirectory);
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
@@ -191,6 +200,17 @@ int main(int argc, char** argv) {
   print_machine_info(std::cout, machine);
 
   try {
+    if (opt.bench_case == "inclined") {
+      InclinedBenchOptions c;
+      c.h = opt.h.empty() ? default_inclined_sizes() : opt.h;
+      c.repeat = opt.repeat;
+      c.examples_dir = opt.examples;
+      c.csv = opt.csv;
+      c.markdown = opt.markdown;
+      c.keep_work = opt.keep_work;
+      run_inclined_sweep(c, machine);
+      return symcontact::kExitOk;
+    }
     if (opt.bench_case != "elasticity") {
       ContactBenchOptions c;
       c.which = opt.bench_case == "hertz2d" ? HertzCase::kCylinderOnPlane : HertzCase::kTwoCylinders;
