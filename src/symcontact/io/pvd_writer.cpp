@@ -6,27 +6,10 @@
 
 #include "symcontact/io/atomic_file.hpp"
 #include "symcontact/io/json_writer.hpp"
+#include "symcontact/io/xml_escape.hpp"
 
 namespace symcontact {
 
-namespace {
-
-std::string xml_attr(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 PvdCollection::PvdCollection(std::string path) : path_(std::move(path)) {}
 
@@ -44,8 +27,8 @@ void PvdCollection::write() const {
        << "  <Collection>\n";
     for (const Entry& e : entries_) {
       os << "    <DataSet timestep=\"" << format_double(e.time) << "\" group=\"\" part=\"" << e.part
-         << "\" file=\"" << xml_attr(e.file) << "\"";
-      if (!e.name.empty()) os << " name=\"" << xml_attr(e.name) << "\"";
+         << "\" file=\"" << xml_escape(e.file) << "\"";
+      if (!e.name.empty()) os << " name=\"" << xml_escape(e.name) << "\"";
       os << "/>\n";
     }
     os << "  </Collection>\n"

@@ -8,27 +8,12 @@
 
 #include "symcontact/io/atomic_file.hpp"
 #include "symcontact/io/json_writer.hpp"
+#include "symcontact/io/xml_escape.hpp"
 #include "symcontact/mesh/mesh.hpp"
 
 namespace symcontact {
 
 namespace {
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  out.reserve(s.size());
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 bool host_is_little_endian() {
   const std::uint16_t one = 1;
