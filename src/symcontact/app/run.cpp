@@ -104,15 +104,21 @@ namespace {
 /// Contact fields of one body at its nodes (zero away from contact surfaces; status −1 there).
 struct BodyContactFields {
   Eigen::VectorXd pressure, gap, status;
-  Eigen::MatrixXd force;  ///< 3 × n
+  Eigen::MatrixXd force;       ///< 3 × n
+  Eigen::MatrixXd tangential;  ///< 3 × n tangential traction
+  Eigen::MatrixXd slip;        ///< 3 × n slip increment of the step (friction side; 0 elsewhere)
+  Eigen::VectorXd accumulated; ///< accumulated slip (friction side)
 };
 
-BodyContactFields body_contact_fields(const Model& model, int b, const std::vector<ContactPairResult>& results) {
+BodyContactFields body_contact_fields(const Model& model, int b, const std::vector<ContactPairResult>& results,
+                                      const std::vector<std::vector<Eigen::VectorXd>>& accumulated) {
   const Index n = model.bodies()[b]->mesh.num_nodes();
-  BodyContactFields f{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Eigen::VectorXd::Constant(n, -1.0),
-                      Eigen::MatrixXd::Zero(3, n)};
-  for (const auto& r : results)
-    for (const auto& side : r.sides) {
+  BodyContactFields f{Eigen::VectorXd::Zero(n),    Eigen::VectorXd::Zero(n),    Eigen::VectorXd::Constant(n, -1.0),
+                      Eigen::MatrixXd::Zero(3, n), Eigen::MatrixXd::Zero(3, n), Eigen::MatrixXd::Zero(3, n),
+                      Eigen::VectorXd::Zero(n)};
+  for (std::size_t pi = 0; pi < results.size(); ++pi)
+    for (std::size_t side_index = 0; side_index < results[pi].sides.size(); ++side_index) {
+      const auto& side = results[pi].sides[side_index];
       const ContactSurface& s = model.contacts().surfaces[side.surface];
       if (s.body != b) continue;
       for (Index k = 0; k < s.num_nodes(); ++k) {
@@ -121,6 +127,10 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
         f.gap[v] = std::isfinite(side.gap[k]) ? side.gap[k] : 0.0;
         f.status[v] = std::max(f.status[v], static_cast<double>(side.status[k]));
         f.force.col(v).head(s.dim) += side.force.col(k);
+        f.tangential.col(v).head(s.dim) += side.tangential.col(k);
+        if (side.slip.col(k).allFinite()) f.slip.col(v).head(s.dim) = side.slip.col(k);
+        if (pi < accumulated.size() && side_index < accumulated[pi].size() && k < accumulated[pi][side_index].size())
+          f.accumulated[v] = std::max(f.accumulated[v], accumulated[pi][side_index][k]);
       }
     }
   return f;
@@ -135,6 +145,9 @@ void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd&
     w.add_point_data("contact_gap", contact->gap);
     w.add_point_data("contact_status", contact->status);
     w.add_point_data("contact_force", contact->force);
+    w.add_point_data("contact_tangential_traction", contact->tangential);
+    w.add_point_data("slip_increment", contact->slip);
+    w.add_point_data("accumulated_slip", contact->accumulated);
   }
   w.add_point_data("displacement", f.displacement);
   w.add_point_data("strain", f.strain, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
@@ -300,7 +313,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
         const Body& body = *model->bodies()[b];
         const std::string name = step_file(body.name, step + 1);
         if (has_contact) {
-          const BodyContactFields cf = body_contact_fields(*model, b, cres);
+          const BodyContactFields cf = body_contact_fields(*model, b, cres, accumulated_slip);
           write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string(), &cf);
         } else {
           write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string());

@@ -217,3 +217,22 @@ TEST_F(CliContact, ContactOnAMissingBoundaryGroupIsAnInputError) {
 }
 
 }  // namespace
+
+TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
+  // The V4 friction block (Coulomb μ = 0.3): the last step is in gross slip.
+  const fs::path out = dir_ / "out";
+  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/friction_block/block.toml";
+  const CliResult r = run("run " + shell_quote(example) + " --out " + shell_quote(out) + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string csv = read_text(out / "contact_floor_0011.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  for (const char* column : {"pressure", "tx", "ty", "slip_x", "slip_y", "accumulated_slip", "status"})
+    EXPECT_NE(header.find(column), std::string::npos) << column << " missing from " << header;
+  EXPECT_NE(csv.find(",slip\n"), std::string::npos) << "no slipping node in gross slip";
+  const std::string vtu = read_text(out / "block_0011.vtu");
+  for (const char* field : {"contact_tangential_traction", "slip_increment", "accumulated_slip", "contact_pressure"})
+    EXPECT_NE(vtu.find(std::string("Name=\"") + field + "\""), std::string::npos) << field;
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_NE(summary.find("\"tangential_force\""), std::string::npos);
+  EXPECT_NE(summary.find("\"coulomb_iterations\""), std::string::npos);
+}
