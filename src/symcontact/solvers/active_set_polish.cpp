@@ -103,7 +103,9 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       }
     }
     }
-    if ((xs - x_start).lpNorm<Eigen::Infinity>() <= 1e-13 * xscale0) break;
+    // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the
+    // augmented systems lose a few digits).
+    if ((xs - x_start).lpNorm<Eigen::Infinity>() <= 1e-10 * xscale0) break;
   }
   return true;
 }
