@@ -4,6 +4,8 @@
 /// parallel) and runs the program through the shell, capturing stdout and stderr together.
 
 #include <gtest/gtest.h>
+
+#include "support/cli_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -18,23 +20,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exit_code = -1;  ///< the program's exit status, or -1 when it did not exit normally
-  std::string output;  ///< stdout and stderr, interleaved
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using symcontact::testing::CliResult;
+using symcontact::testing::read_text;
+using symcontact::testing::shell_quote;
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path);
   out << text;
   ASSERT_TRUE(out.good()) << "cannot write " << path;
 }
-
-std::string shell_quote(const fs::path& p) { return "'" + p.string() + "'"; }
 
 /// The [problem] table and one 2D linear-elastic body; `extra` is appended (dirichlet, pressure, ...).
 std::string problem_toml(const std::string& mesh, const std::string& group, const std::string& nu,
@@ -50,31 +44,9 @@ const std::string kPressTop = "[[body.pressure]]\nboundary = \"top\"\npressure =
 std::string example_geo() { return std::string(SYMCONTACT_EXAMPLES) + "/block_2d/block.geo"; }
 std::string test_mesh(const std::string& name) { return std::string(SYMCONTACT_TEST_DATA) + "/meshes/" + name; }
 
-class Cli : public ::testing::Test {
+class Cli : public symcontact::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("symcontact_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    if (!HasFailure()) fs::remove_all(dir_, ec);  // kept on failure, for a look
-  }
-
-  /// Runs `symcontact ARGS` in the test's folder.
-  CliResult run(const std::string& args) const {
-    const fs::path log = dir_ / "cli_output.txt";
-    const std::string command = "cd " + shell_quote(dir_) + " && " + shell_quote(SYMCONTACT_CLI) + " " + args +
-                                " > " + shell_quote(log) + " 2>&1";
-    const int status = std::system(command.c_str());
-    CliResult r;
-    r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-    r.output = read_text(log);
-    return r;
-  }
+  Cli() : CliTest("symcontact_cli_") {}
 
   /// Writes `text` as `name` in the test's folder and returns its path.
   fs::path write(const std::string& name, const std::string& text) const {
@@ -95,8 +67,6 @@ class Cli : public ::testing::Test {
     }
     EXPECT_FALSE(fs::exists(out)) << "an input error must not create the output folder";
   }
-
-  fs::path dir_;
 };
 
 TEST_F(Cli, VersionPrintsTheVersion) {

@@ -6,6 +6,8 @@
 /// capturing stdout and stderr together.
 
 #include <gtest/gtest.h>
+
+#include "support/cli_fixture.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -24,17 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exit_code = -1;  ///< the program's exit status, or -1 when it did not exit normally
-  std::string output;  ///< stdout and stderr, interleaved
-};
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::string shell_quote(const fs::path& p) { return "'" + p.string() + "'"; }
+using symcontact::testing::CliResult;
+using symcontact::testing::read_text;
+using symcontact::testing::shell_quote;
 
 const fs::path kHertzDir = fs::path(SYMCONTACT_EXAMPLES) / "hertz_2d";
 const fs::path kHertzCase = kHertzDir / "cylinder_on_plane.toml";
@@ -73,31 +67,9 @@ std::vector<std::string> split(const std::string& line, char sep) {
   return out;
 }
 
-class CliContact : public ::testing::Test {
+class CliContact : public symcontact::testing::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("symcontact_cli_contact_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    if (!HasFailure()) fs::remove_all(dir_, ec);  // kept on failure, for a look
-  }
-
-  /// Runs `symcontact ARGS` in the test's folder.
-  CliResult run(const std::string& args) const {
-    const fs::path log = dir_ / "cli_output.txt";
-    const std::string command = "cd " + shell_quote(dir_) + " && " + shell_quote(SYMCONTACT_CLI) + " " + args +
-                                " > " + shell_quote(log) + " 2>&1";
-    const int status = std::system(command.c_str());
-    CliResult r;
-    r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-    r.output = read_text(log);
-    return r;
-  }
+  CliContact() : CliTest("symcontact_cli_contact_") {}
 
   /// The Hertz example's problem file, its mesh referred to by absolute path, edited by `edit`, written
   /// as `name` in the test's folder.
@@ -114,7 +86,6 @@ class CliContact : public ::testing::Test {
     return p;
   }
 
-  fs::path dir_;
 };
 
 TEST_F(CliContact, HertzExampleWritesContactResults) {
