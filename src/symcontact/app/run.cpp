@@ -138,7 +138,8 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
 
 void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd& u, const std::string& path,
                     const BodyContactFields* contact = nullptr) {
-  const BodyFields f = recover_fields(body.mesh, dofs, b, body.material, u);
+  const PointLaw law = body.hyperelastic ? hyperelastic_point_law(*body.hyperelastic) : linear_point_law(body.material);
+  const BodyFields f = recover_fields(body.mesh, dofs, b, law, u);
   VtuWriter w(body.mesh);
   if (contact) {
     w.add_point_data("contact_pressure", contact->pressure);
@@ -155,6 +156,8 @@ void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd&
   w.add_point_data("von_mises", f.von_mises);
   w.add_cell_data("stress", f.cell_stress, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
   w.add_cell_data("von_mises", f.cell_von_mises);
+  w.add_point_data("J", f.volume_ratio);
+  w.add_cell_data("J", f.cell_volume_ratio);
   w.write(path);
 }
 

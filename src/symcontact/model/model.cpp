@@ -31,16 +31,19 @@ const FacetGroup& require_facets(const ProblemSpec& spec, const Body& b, const s
   return it->second;
 }
 
-/// The strain energy of a body: linear elastic, or finite-strain hyperelastic (materials/hyperelastic.hpp).
-std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs, int b) {
-  const MaterialSpec& ms = body.spec->material;
-  if (ms.model == "linear_elastic")
-    return std::make_unique<LinearElasticEnergy>(body.mesh, dofs, b, body.material, body.name);
+/// The finite-strain law of a hyperelastic body (materials/hyperelastic.hpp); none for linear elasticity.
+std::optional<Hyperelastic> hyperelastic_law(const MaterialSpec& ms) {
+  if (ms.model == "linear_elastic") return std::nullopt;
   const HyperelasticLaw law = ms.model == "neo_hookean" ? HyperelasticLaw::kNeoHookean : HyperelasticLaw::kMooneyRivlin;
-  const Hyperelastic material = !ms.own_constants ? Hyperelastic::from_young_poisson(law, ms.young, ms.poisson)
-                                : law == HyperelasticLaw::kNeoHookean ? Hyperelastic::neo_hookean(ms.mu, ms.lambda)
-                                                                      : Hyperelastic::mooney_rivlin(ms.c1, ms.c2, ms.kappa);
-  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, material, body.name);
+  if (!ms.own_constants) return Hyperelastic::from_young_poisson(law, ms.young, ms.poisson);
+  return law == HyperelasticLaw::kNeoHookean ? Hyperelastic::neo_hookean(ms.mu, ms.lambda)
+                                             : Hyperelastic::mooney_rivlin(ms.c1, ms.c2, ms.kappa);
+}
+
+/// The strain energy of a body: linear elastic, or finite-strain hyperelastic.
+std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs, int b) {
+  if (!body.hyperelastic) return std::make_unique<LinearElasticEnergy>(body.mesh, dofs, b, body.material, body.name);
+  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, *body.hyperelastic, body.name);
 }
 }  // namespace
 
@@ -79,6 +82,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
                              e.message());
       }
       body->material = LinearElastic::from_young_poisson(bs.material.young, bs.material.poisson, spec.model);
+      body->hyperelastic = hyperelastic_law(bs.material);
       m->dofs_.add_body(body->mesh.num_nodes());
       std::ostringstream s;
       s << "body '" << bs.name << "': " << body->mesh.num_nodes() << " nodes, " << body->mesh.num_cells() << " "

@@ -15,6 +15,9 @@
 #include "symcontact/energy/energy_sum.hpp"
 #include "symcontact/energy/external_load.hpp"
 #include "symcontact/fem/dof_map.hpp"
+#include <optional>
+
+#include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
 #include "symcontact/mesh/mesh.hpp"
 #include "symcontact/model/problem_spec.hpp"
@@ -26,7 +29,8 @@ struct Body {
   std::string name;
   const BodySpec* spec = nullptr;
   Mesh mesh;
-  LinearElastic material;
+  LinearElastic material;                   ///< the small-strain law (for every body)
+  std::optional<Hyperelastic> hyperelastic; ///< the finite-strain law, for hyperelastic bodies
 };
 
 /// One named Dirichlet boundary of a body, for reaction forces.

@@ -1,5 +1,8 @@
 #include "symcontact/post/stress_recovery.hpp"
 
+#include <limits>
+
+#include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
 #include "symcontact/fem/element_geometry.hpp"
 #include "symcontact/fem/shape_functions.hpp"
@@ -12,8 +15,40 @@ Eigen::Matrix<double, 6, 1> to_voigt6(const Eigen::Matrix3d& t) {
   return v;
 }
 
+PointLaw linear_point_law(const LinearElastic& material) {
+  return [material](const Eigen::Matrix3d& H) {
+    PointState s;
+    s.strain = 0.5 * (H + H.transpose());
+    s.stress = material.stress(s.strain);
+    s.volume_ratio = (Eigen::Matrix3d::Identity() + H).determinant();
+    return s;
+  };
+}
+
+PointLaw hyperelastic_point_law(const Hyperelastic& material) {
+  return [material](const Eigen::Matrix3d& H) {
+    PointState s;
+    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;  // F₃₃ = 1 in plane strain
+    s.strain = 0.5 * (H + H.transpose() + H.transpose() * H);
+    s.volume_ratio = F.determinant();
+    try {
+      Eigen::Matrix3d P;
+      material.evaluate_displacement_gradient<3>(H, &P, nullptr);
+      s.stress = P * F.transpose() / s.volume_ratio;
+      s.stress = 0.5 * (s.stress + s.stress.transpose());  // symmetric up to round-off
+    } catch (const EvaluationError&) {
+      s.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
+    }
+    return s;
+  };
+}
+
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                           const VectorXd& u) {
+  return recover_fields(mesh, dofs, body, linear_point_law(material), u);
+}
+
+BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u) {
   BodyFields f;
   const Index nn = mesh.num_nodes(), nc = mesh.num_cells();
   const int D = mesh.dim;
@@ -25,6 +60,8 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
   f.von_mises = Eigen::VectorXd::Zero(nn);
   f.cell_stress = Eigen::MatrixXd::Zero(6, nc);
   f.cell_von_mises = Eigen::VectorXd::Zero(nc);
+  f.volume_ratio = Eigen::VectorXd::Zero(nn);
+  f.cell_volume_ratio = Eigen::VectorXd::Zero(nc);
   Eigen::VectorXd weight = Eigen::VectorXd::Zero(nn);
 
   // Evaluation points: the cell's own nodes (nodal values) and its quadrature points (cell values).
@@ -39,33 +76,36 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
     constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;
     Eigen::Matrix<double, NN, DD> G;
     Eigen::Matrix<double, DD, NN> U;
-    auto strain_at = [&](const Eigen::Matrix<double, DD, NN>& X, const double* dN, double& det) {
+    auto state_at = [&](const Eigen::Matrix<double, DD, NN>& X, const double* dN, double& det) {
       det = physical_gradients<DD, NN>(X, dN, G);
-      Eigen::Matrix3d eps = Eigen::Matrix3d::Zero();
-      if (det > 0) {
-        const Eigen::Matrix<double, DD, DD> H = U * G;  // ∇u
-        eps.topLeftCorner<DD, DD>() = 0.5 * (H + H.transpose());
-      }
-      return eps;
+      Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+      if (det > 0) H.topLeftCorner<DD, DD>() = U * G;  // ∇_X u
+      return law(H);
     };
     for (Index c = 0; c < nc; ++c) {
       const Index* n = mesh.cell(c);
       const auto X = gather_coordinates<DD, NN>(mesh.x, n);
       for (int a = 0; a < NN; ++a) U.col(a) = f.displacement.col(n[a]).template head<DD>();
-      double det = 0.0, vol = 0.0;
+      double det = 0.0, vol = 0.0, J_avg = 0.0;
       Eigen::Matrix3d sig_avg = Eigen::Matrix3d::Zero();
       for (int q = 0; q < tq.rule.size(); ++q) {
-        const Eigen::Matrix3d eps = strain_at(X, tq.dN_at(q), det);
-        sig_avg += tq.rule.weights[q] * det * material.stress(eps);
+        const PointState s = state_at(X, tq.dN_at(q), det);
+        sig_avg += tq.rule.weights[q] * det * s.stress;
+        J_avg += tq.rule.weights[q] * det * s.volume_ratio;
         vol += tq.rule.weights[q] * det;
       }
-      if (vol > 0) sig_avg /= vol;
+      if (vol > 0) {
+        sig_avg /= vol;
+        J_avg /= vol;
+      }
       f.cell_stress.col(c) = to_voigt6(sig_avg);
       f.cell_von_mises[c] = von_mises(sig_avg);
+      f.cell_volume_ratio[c] = J_avg;
       for (int a = 0; a < NN; ++a) {
-        const Eigen::Matrix3d eps = strain_at(X, tn.dN_at(a), det);
-        f.strain.col(n[a]) += vol * to_voigt6(eps);
-        f.stress.col(n[a]) += vol * to_voigt6(material.stress(eps));
+        const PointState s = state_at(X, tn.dN_at(a), det);
+        f.strain.col(n[a]) += vol * to_voigt6(s.strain);
+        f.stress.col(n[a]) += vol * to_voigt6(s.stress);
+        f.volume_ratio[n[a]] += vol * s.volume_ratio;
         weight[n[a]] += vol;
       }
     }
@@ -74,6 +114,7 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
     if (weight[v] > 0) {
       f.strain.col(v) /= weight[v];
       f.stress.col(v) /= weight[v];
+      f.volume_ratio[v] /= weight[v];
     }
     Eigen::Matrix3d s;
     const auto& c = f.stress.col(v);

@@ -1,13 +1,25 @@
 #pragma once
 /// \file stress_recovery.hpp
-/// Strain and stress of a linear-elastic body from its displacement, for output.
+/// Strain, stress and volume ratio of a body from its displacement, for output.
 ///  - cell values: the average over the cell's quadrature points (exact for P1);
 ///  - nodal values: at each node, the average of the cells' values evaluated at that node, weighted by
 ///    cell measure (a simple, local recovery; contact tractions are never taken from these).
 /// Tensors are 6 components in ParaView's order XX, YY, ZZ, XY, YZ, XZ. In 2D the strain is the in-plane
 /// strain (ε_zz reported as 0) and σ_zz follows the model (λ tr ε in plane strain, 0 in plane stress).
+///
+/// What is reported at a point comes from a PointLaw, evaluated on the displacement gradient H = ∇_X u
+/// (3 × 3, zero third row and column in 2D):
+///  - linear elasticity: ε = sym H, σ = C : ε;
+///  - hyperelasticity (finite strain): the Green–Lagrange strain E = ½(FᵀF − I) and the Cauchy stress
+///    σ = J⁻¹ P Fᵀ, P the first Piola–Kirchhoff stress of the law at F = I + H (F₃₃ = 1 in plane strain,
+///    so σ_zz is the out-of-plane stress of the 3D law; Bonet & Wood 2008, eq. 5.43).
+/// J = det F in both cases (for linear bodies a measure of how far from small strain they are).
+/// Fields are on the reference mesh; the deformed shape is X + displacement (ParaView: Warp By Vector).
+/// A point where the law cannot be evaluated (J ≤ 0, as in a failed iterate) reports NaN stress.
+#include <functional>
 
 #include "symcontact/fem/dof_map.hpp"
+#include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
 #include "symcontact/mesh/mesh.hpp"
 
@@ -20,8 +32,25 @@ struct BodyFields {
   Eigen::VectorXd von_mises;      ///< num_nodes
   Eigen::MatrixXd cell_stress;    ///< 6 × num_cells
   Eigen::VectorXd cell_von_mises; ///< num_cells
+  Eigen::VectorXd volume_ratio;   ///< J = det F per node
+  Eigen::VectorXd cell_volume_ratio; ///< J per cell
 };
 
+/// Strain, stress and J at a point.
+struct PointState {
+  Eigen::Matrix3d strain = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d stress = Eigen::Matrix3d::Zero();
+  double volume_ratio = 1.0;
+};
+/// The material's output at a point, from H = ∇_X u (3 × 3; dim = 2: zero third row and column).
+using PointLaw = std::function<PointState(const Eigen::Matrix3d& H)>;
+
+PointLaw linear_point_law(const LinearElastic& material);
+/// Plane strain is the 3D law with F₃₃ = 1, which H's zero third row and column give.
+PointLaw hyperelastic_point_law(const Hyperelastic& material);
+
+BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u);
+/// The linear-elastic case (ε, σ = C : ε).
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                           const VectorXd& u);
 

@@ -1,5 +1,6 @@
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -16,6 +17,109 @@ double free_norm(const VectorXd& g, const std::vector<Index>& free_index) {
     if (free_index[d] >= 0) s += g[d] * g[d];
   return std::sqrt(s);
 }
+
+/// Collects K_ff (lower, free numbering) and adds −K_fD Δu_D to `rhs` (free numbering) from the same
+/// element blocks, so that the coupling to moving Dirichlet DOFs costs no second assembly.
+class CouplingSink : public MatrixSink {
+ public:
+  CouplingSink(const std::vector<Index>& free_index, const VectorXd& jump, VectorXd& rhs)
+      : reduced_(free_index), free_index_(free_index), jump_(jump), rhs_(rhs) {}
+  void add(const Index* dofs, int n, const double* K) override {
+    reduced_.add(dofs, n, K);
+    for (int c = 0; c < n; ++c) {
+      if (free_index_[dofs[c]] >= 0 || jump_[dofs[c]] == 0.0) continue;
+      for (int r = 0; r < n; ++r)
+        if (free_index_[dofs[r]] >= 0) rhs_[free_index_[dofs[r]]] -= K[c * n + r] * jump_[dofs[c]];
+    }
+  }
+  SparseMatrix to_lower_matrix(Index num_free) const { return reduced_.to_lower_matrix(num_free); }
+
+ private:
+  ReducedTripletSink reduced_;
+  const std::vector<Index>& free_index_;
+  const VectorXd& jump_;
+  VectorXd& rhs_;
+};
+
+/// Δu_D = target − u on fixed DOFs (0 elsewhere); returns max |Δu_D|.
+double dirichlet_jump(const FixedDofs& fixed, const VectorXd& u, VectorXd& jump) {
+  VectorXd target = u;
+  fixed.impose(target);
+  jump = target - u;
+  return jump.size() ? jump.cwiseAbs().maxCoeff() : 0.0;
+}
+
+/// Factorises K, or K + τ I when K is not positive definite and the energy is not quadratic (see the
+/// header); a quadratic energy with a singular K is a modelling error and is reported as such.
+void factorize_descent(CholeskySolver& chol, const SparseMatrix& K, bool constant, EquilibriumReport& rep) {
+  try {
+    chol.compute(K);
+    return;
+  } catch (const SolveError&) {
+    if (constant) throw;
+  }
+  const double dmax = K.diagonal().cwiseAbs().maxCoeff();
+  SparseMatrix I(K.rows(), K.cols());
+  I.setIdentity();
+  for (double tau = 1e-8 * dmax; tau <= 1e4 * dmax; tau *= 10.0) {
+    try {
+      chol.compute(K + tau * I);
+      ++rep.shifted_factorizations;
+      return;
+    } catch (const SolveError&) {
+    }
+  }
+  throw SolveError("Newton: the tangent stiffness stays indefinite after shifting it by 1e4 × its largest diagonal "
+                   "entry (an unstable or unconstrained state)");
+}
+
+/// u + s du for the largest s = 2^-k (k ≤ max_backtracks) at which E can be evaluated.
+VectorXd admissible_step(const EnergyTerm& energy, const VectorXd& u, const VectorXd& du,
+                         const EquilibriumOptions& options, EquilibriumReport& rep) {
+  double s = 1.0;
+  std::string failure;
+  for (int k = 0; k <= options.max_backtracks; ++k, s *= 0.5) {
+    if (k > 0) ++rep.backtracks;
+    VectorXd trial = u + s * du;
+    try {
+      if (std::isfinite(energy.value(trial))) return trial;
+    } catch (const EvaluationError& e) {
+      failure = e.what();
+    }
+  }
+  throw SolveError("Newton: no admissible step toward the imposed Dirichlet values after " +
+                   std::to_string(options.max_backtracks) + " halvings (" + failure + "); try smaller load steps");
+}
+
+/// Backtracking line search from u along du (g = ∇E(u), r = ‖g_f‖); returns the accepted point.
+VectorXd line_search(const EnergyTerm& energy, const std::vector<Index>& free_index, const VectorXd& u,
+                     const VectorXd& g, double r, const VectorXd& du, const EquilibriumOptions& options,
+                     EquilibriumReport& rep) {
+  constexpr double c = 1e-4;
+  const double e0 = energy.value(u);
+  const double slope = g.dot(du);  // < 0 for a descent direction
+  VectorXd trial(u.size()), gt(u.size());
+  double s = 1.0;
+  std::string last_failure = "no decrease of the energy or the residual";
+  for (int k = 0; k <= options.max_backtracks; ++k, s *= 0.5) {
+    if (k > 0) ++rep.backtracks;
+    trial = u + s * du;
+    try {
+      const double e1 = energy.value(trial);
+      if (std::isfinite(e1) && e1 <= e0 + c * s * slope) return trial;
+      gt.setZero();
+      energy.add_gradient(trial, gt);
+      const double rt = free_norm(gt, free_index);
+      if (std::isfinite(rt) && rt <= (1.0 - c * s) * r) return trial;
+    } catch (const EvaluationError& e) {
+      last_failure = e.what();
+    }
+  }
+  std::ostringstream m;
+  m << "Newton line search found no acceptable step after " << options.max_backtracks
+    << " halvings (last failure: " << last_failure << "); try smaller load steps";
+  throw SolveError(m.str());
+}
 }  // namespace
 
 EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u,
@@ -24,7 +128,10 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
   const Index n = u.size();
   std::vector<Index> free_index;
   rep.num_free = fixed.free_numbering(n, free_index);
-  fixed.impose(u);
+  const bool constant = energy.hessian_is_constant();
+  if (constant) fixed.impose(u);
+  VectorXd jump;
+  dirichlet_jump(fixed, u, jump);
 
   // Scale of the problem: the load vector seen at u = 0 (−∇E(0) restricted to free DOFs).
   VectorXd g0 = VectorXd::Zero(n);
@@ -34,8 +141,9 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
   CholeskySolver chol;
   SparseMatrix K;
   bool have_factor = false;
-  const bool constant = energy.hessian_is_constant();
+  double reaction_scale = 0.0;
   VectorXd g(n), rhs(rep.num_free);
+  try {
   for (int it = 0;; ++it) {
     {
       ScopedPhase t(rep.times, "assembly");
@@ -45,8 +153,12 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
     const double r = free_norm(g, free_index);
     if (it == 0) rep.residual0 = r;
     rep.residual = r;
-    const double scale = std::max(load_scale, rep.residual0);
-    if (r <= options.tolerance * scale || scale == 0.0) break;
+    // Force scale: the loads, the first residual, and the support reactions (the only forces of a
+    // problem driven by Dirichlet values alone).
+    reaction_scale = std::max(reaction_scale, std::sqrt(std::max(0.0, g.squaredNorm() - r * r)));
+    const double scale = std::max({load_scale, rep.residual0, reaction_scale});
+    const bool boundary_moving = !constant && dirichlet_jump(fixed, u, jump) > 0.0;
+    if (!boundary_moving && (r <= options.tolerance * scale || scale == 0.0)) break;
     if (constant && it >= 1) {
       // One exact Newton step solves a quadratic problem; a large residual left means the
       // factorisation was meaningless (a nearly singular stiffness).
@@ -63,27 +175,81 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
         << ", tolerance " << options.tolerance * scale << ")";
       throw SolveError(s.str());
     }
+    for (Index d = 0; d < n; ++d)
+      if (free_index[d] >= 0) rhs[free_index[d]] = -g[d];
     if (!have_factor || !constant) {
       {
         ScopedPhase t(rep.times, "assembly");
-        ReducedTripletSink sink(free_index);
+        CouplingSink sink(free_index, jump, rhs);
         energy.add_hessian(u, sink);
         K = sink.to_lower_matrix(rep.num_free);
       }
       ScopedPhase t(rep.times, "factorization");
-      chol.compute(K);
+      factorize_descent(chol, K, constant, rep);
       rep.factor_nonzeros = chol.factor_nonzeros();
       have_factor = true;
     }
-    ScopedPhase t(rep.times, "solve");
-    for (Index d = 0; d < n; ++d)
-      if (free_index[d] >= 0) rhs[free_index[d]] = -g[d];
-    const VectorXd du = chol.solve(rhs);
-    for (Index d = 0; d < n; ++d)
-      if (free_index[d] >= 0) u[d] += du[free_index[d]];
+    VectorXd du_full = boundary_moving ? jump : VectorXd::Zero(n);
+    {
+      ScopedPhase t(rep.times, "solve");
+      const VectorXd du = chol.solve(rhs);
+      for (Index d = 0; d < n; ++d)
+        if (free_index[d] >= 0) du_full[d] = du[free_index[d]];
+    }
     rep.iterations = it + 1;
+    if (constant) {
+      u += du_full;
+      continue;
+    }
+    ScopedPhase t(rep.times, "line search");
+    u = boundary_moving ? admissible_step(energy, u, du_full, options, rep)
+                        : line_search(energy, free_index, u, g, r, du_full, options, rep);
+  }
+  } catch (const EvaluationError& e) {
+    // Only the start of a step can get here (the line search backs away from inadmissible trial points):
+    // the imposed Dirichlet values alone invert an element.
+    throw SolveError(std::string("the state at the start of the Newton solve cannot be evaluated: ") + e.what() +
+                     " — use smaller load steps");
   }
   return rep;
+}
+
+double predict_dirichlet_increment(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u) {
+  if (energy.hessian_is_constant()) {
+    fixed.impose(u);
+    return 1.0;
+  }
+  VectorXd jump;
+  if (dirichlet_jump(fixed, u, jump) == 0.0) return 1.0;
+  std::vector<Index> free_index;
+  const Index nf = fixed.free_numbering(u.size(), free_index);
+  VectorXd rhs = VectorXd::Zero(nf);
+  SparseMatrix K;
+  CholeskySolver chol;
+  EquilibriumReport rep;
+  try {
+    CouplingSink sink(free_index, jump, rhs);
+    energy.add_hessian(u, sink);
+    K = sink.to_lower_matrix(nf);
+    factorize_descent(chol, K, false, rep);
+  } catch (const EvaluationError&) {
+    return 0.0;
+  }
+  VectorXd du = jump;
+  const VectorXd duf = chol.solve(rhs);
+  for (Index d = 0; d < u.size(); ++d)
+    if (free_index[d] >= 0) du[d] = duf[free_index[d]];
+  for (double s = 1.0; s > 1e-3; s *= 0.5) {
+    try {
+      const VectorXd trial = u + s * du;
+      if (std::isfinite(energy.value(trial))) {
+        u = trial;
+        return s;
+      }
+    } catch (const EvaluationError&) {
+    }
+  }
+  return 0.0;
 }
 
 }  // namespace symcontact
