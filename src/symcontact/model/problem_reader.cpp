@@ -257,12 +257,44 @@ class Reader {
     return v;
   }
 
-  /// Per-step multipliers: as many as steps.load_factors.
+  /// Per-step multipliers: an array of one entry per load step, or a load curve (curve_factors).
   std::vector<double> as_factors(const toml::node& node, const std::string& key, const ProblemSpec& spec) const {
+    const std::size_t steps = spec.load_factors.size();
+    if (node.is_table()) return curve_factors(*node.as_table(), key, steps);
     std::vector<double> f = as_number_array(node, key);
-    if (f.size() != spec.load_factors.size()) {
-      fail(key, "expected " + std::to_string(spec.load_factors.size()) +
-                    " entries (one per load step, as in steps.load_factors), got " + std::to_string(f.size()));
+    if (f.size() != steps) {
+      fail(key, "expected " + std::to_string(steps) + " entries (one per load step, as in steps.load_factors), got " +
+                    std::to_string(f.size()) + " (or a load curve: { at = [step numbers], values = [factors] })");
+    }
+    return f;
+  }
+
+  /// A load curve { at = [k0, k1, ...], values = [v0, v1, ...] }: the factor is piecewise linear in the
+  /// step number k (k = 0 is the unloaded start), through the points (k_i, v_i); k_i are integers,
+  /// strictly increasing, from 0 up to at least the number of steps. Returns the factors of steps 1..n.
+  std::vector<double> curve_factors(const toml::table& t, const std::string& key, std::size_t steps) const {
+    check_keys(t, key, {"at", "values"});
+    const toml::node* at_node = t.get("at");
+    const toml::node* values_node = t.get("values");
+    if (!at_node || !values_node) fail(key, "a load curve needs both 'at' (step numbers) and 'values'");
+    const std::vector<double> at = as_number_array(*at_node, child(key, "at"));
+    const std::vector<double> v = as_number_array(*values_node, child(key, "values"));
+    if (at.size() != v.size() || at.size() < 2)
+      fail(key, "expected 'at' and 'values' of the same length, at least 2; got " + std::to_string(at.size()) + " and " +
+                    std::to_string(v.size()));
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      if (at[i] != std::floor(at[i]) || (i == 0 && at[i] != 0.0) || (i > 0 && at[i] <= at[i - 1]))
+        fail(indexed(child(key, "at"), i), "expected whole step numbers, strictly increasing from 0, got " +
+                                               format_number(at[i]));
+    }
+    if (at.back() < static_cast<double>(steps))
+      fail(child(key, "at"), "the curve ends at step " + format_number(at.back()) + ", before the last load step " +
+                                 std::to_string(steps));
+    std::vector<double> f(steps);
+    std::size_t seg = 0;
+    for (std::size_t k = 1; k <= steps; ++k) {
+      while (at[seg + 1] < static_cast<double>(k)) ++seg;
+      f[k - 1] = v[seg] + (static_cast<double>(k) - at[seg]) * (v[seg + 1] - v[seg]) / (at[seg + 1] - at[seg]);
     }
     return f;
   }
@@ -336,8 +368,20 @@ class Reader {
     const toml::node* node = root.get("steps");
     if (!node) return;
     const toml::table& t = as_table(*node, "steps");
-    check_keys(t, "steps", {"load_factors"});
-    if (const toml::node* n = t.get("load_factors")) {
+    check_keys(t, "steps", {"count", "load_factors"});
+    const toml::node* count = t.get("count");
+    const toml::node* n = t.get("load_factors");
+    if (count) {
+      const std::int64_t c = as_integer(*count, "steps.count");
+      if (c < 1 || c > 1000000) fail("steps.count", "expected a number of load steps in [1, 1000000], got " + std::to_string(c));
+      // Without load_factors: a linear ramp k/count.
+      spec.load_factors.resize(static_cast<std::size_t>(c));
+      for (std::int64_t k = 1; k <= c; ++k) spec.load_factors[k - 1] = static_cast<double>(k) / static_cast<double>(c);
+      if (n) spec.load_factors = as_factors(*n, "steps.load_factors", spec);
+      return;
+    }
+    if (n) {
+      if (n->is_table()) fail("steps.load_factors", "a load curve needs steps.count (the number of load steps)");
       spec.load_factors = as_number_array(*n, "steps.load_factors");
       if (spec.load_factors.empty()) {
         fail("steps.load_factors", "expected at least one load factor, got an empty array");

@@ -203,6 +203,18 @@ material = { E = 1e3, nu = -0.2 }
   EXPECT_TRUE(f.dirichlet.empty() && f.tractions.empty() && f.pressures.empty());
 }
 
+// steps.count alone is a linear ramp; a load curve { at, values } is piecewise linear in the step number.
+TEST(ProblemReader, StepCountAndLoadCurves) {
+  const ProblemSpec ramp = parse(edit("load_factors = [0.5, 1.0]", "count = 4"));
+  EXPECT_EQ(ramp.load_factors, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
+  const ProblemSpec curve = parse(
+      edit("load_factors = [0.5, 1.0]", "count = 5\nload_factors = { at = [0, 2, 6], values = [0, 1, 3] }"));
+  EXPECT_EQ(curve.load_factors, (std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5}));
+  const ProblemSpec own = parse(replaced(edit("load_factors = [0.5, 1.0]", "count = 4"), "uy = 0.0",
+                                         "uy = 0.0\nfactors = { at = [0, 1, 4], values = [0, 1, -2] }"));
+  EXPECT_EQ(own.bodies[0].dirichlet[0].factors, (std::vector<double>{1.0, 0.0, -1.0, -2.0}));
+}
+
 TEST(ProblemReader, DefaultsIn3D) {
   const ProblemSpec spec = parse(R"(
 [problem]
@@ -775,6 +787,25 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"BodyForceFactorsLength",
                 edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\nbody_force = [0, -1]\nbody_force_factors = [1]"),
                 "body[0].body_force_factors", "expected 2 entries"},
+        // load curves (steps.count, { at, values })
+        BadCase{"CurveWithoutCount", edit("load_factors = [0.5, 1.0]", "load_factors = { at = [0, 2], values = [0, 1] }"),
+                "steps.load_factors", "a load curve needs steps.count"},
+        BadCase{"CountNotPositive", edit("load_factors = [0.5, 1.0]", "count = 0"), "steps.count",
+                "expected a number of load steps in [1, 1000000], got 0"},
+        BadCase{"CurveTooShort", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 1], values = [0, 1] }"),
+                "body[0].dirichlet[0].factors.at", "the curve ends at step 1, before the last load step 2"},
+        BadCase{"CurveNotIncreasing", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2, 2], values = [0, 1, 1] }"),
+                "body[0].dirichlet[0].factors.at[2]", "strictly increasing from 0, got 2"},
+        BadCase{"CurveNotFromZero", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [1, 2], values = [0, 1] }"),
+                "body[0].dirichlet[0].factors.at[0]", "strictly increasing from 0, got 1"},
+        BadCase{"CurveFractionalStep", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 1.5, 2], values = [0, 1, 1] }"),
+                "body[0].dirichlet[0].factors.at[1]", "expected whole step numbers"},
+        BadCase{"CurveLengthsDiffer", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2], values = [0, 1, 1] }"),
+                "body[0].dirichlet[0].factors", "expected 'at' and 'values' of the same length"},
+        BadCase{"CurveUnknownKey", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2], values = [0, 1], kind = 1 }"),
+                "body[0].dirichlet[0].factors.kind", ""},
+        BadCase{"CurveMissingValues", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2] }"),
+                "body[0].dirichlet[0].factors", "needs both 'at'"},
         BadCase{"BodyForceFactorsWithoutBodyForce",
                 edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\nbody_force_factors = [1, 1]"),
                 "body[0].body_force_factors", "given without body_force"},
