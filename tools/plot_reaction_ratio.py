@@ -31,8 +31,8 @@ class SummaryError(Exception):
     pass
 
 
-def reaction_ratios(path, body, boundary):
-    """[(step, |R_x / R_y|)] of one summary.json."""
+def reaction_history(path, body, boundary):
+    """[(step, R_x, R_y)] of one summary.json: the summed reactions of `body` (on `boundary`, if given)."""
     try:
         with open(path) as f:
             summary = json.load(f)
@@ -58,9 +58,17 @@ def reaction_ratios(path, body, boundary):
             names = sorted({(r.get("body"), r.get("boundary")) for r in step.get("reactions", [])})
             raise SummaryError(f"{path}: steps[{k}]: no reaction of body {body!r}"
                                + (f" on {boundary!r}" if boundary else "") + f" (reactions: {names})")
+        out.append((int(step.get("step", k + 1)), rx, ry))
+    return out
+
+
+def reaction_ratios(path, body, boundary):
+    """[(step, |R_x / R_y|)] of one summary.json."""
+    out = []
+    for step, rx, ry in reaction_history(path, body, boundary):
         if ry == 0.0:
-            raise SummaryError(f"{path}: steps[{k}]: R_y = 0, the ratio is undefined")
-        out.append((int(step.get("step", k + 1)), abs(rx / ry)))
+            raise SummaryError(f"{path}: step {step}: R_y = 0, the ratio is undefined")
+        out.append((step, abs(rx / ry)))
     return out
 
 

@@ -25,13 +25,16 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
     const FixedDofs fixed = c->model->fixed_dofs(step);
     if (c->model->contacts().empty()) {
       solve_equilibrium(c->model->energy(), fixed, c->u);
-      continue;
+    } else {
+      c->frictional = solve_frictional_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log);
+      c->report = c->frictional.last;
+      c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
+      c->history.push_back(c->contact);
+      c->constraint_values = c->report.linearization.A * c->u + c->report.linearization.b;
     }
-    c->frictional = solve_frictional_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log);
-    c->report = c->frictional.last;
-    c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
-    c->history.push_back(c->contact);
-    c->constraint_values = c->report.linearization.A * c->u + c->report.linearization.b;
+    VectorXd g = VectorXd::Zero(dofs.num_dofs());
+    c->model->energy().add_gradient(c->u, g);
+    c->reactions.push_back(c->model->reactions(fixed, g));
   }
   return c;
 }

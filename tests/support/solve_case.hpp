@@ -22,6 +22,8 @@ struct SolvedCase {
   std::vector<std::vector<ContactPairResult>> history;  ///< contact results of every step
   std::vector<ContactPairResult> contact;     ///< of the last step
   VectorXd constraint_values;                 ///< A u + b at the last linearisation
+  /// Reactions of every step: reactions[step][k] for model->dirichlet_boundaries()[k].
+  std::vector<std::vector<Eigen::VectorXd>> reactions;
 };
 
 /// `base_dir` resolves relative mesh paths. Throws what the library throws.

@@ -1,7 +1,5 @@
 #include "symcontact/post/stress_recovery.hpp"
 
-#include <limits>
-
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
 #include "symcontact/fem/element_geometry.hpp"
@@ -37,7 +35,7 @@ PointLaw hyperelastic_point_law(const Hyperelastic& material) {
       s.stress = P * F.transpose() / s.volume_ratio;
       s.stress = 0.5 * (s.stress + s.stress.transpose());  // symmetric up to round-off
     } catch (const EvaluationError&) {
-      s.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
+      s.stress.setZero();  // J ≤ 0: no stress exists; J itself marks the point
     }
     return s;
   };

@@ -15,7 +15,8 @@
 ///    so σ_zz is the out-of-plane stress of the 3D law; Bonet & Wood 2008, eq. 5.43).
 /// J = det F in both cases (for linear bodies a measure of how far from small strain they are).
 /// Fields are on the reference mesh; the deformed shape is X + displacement (ParaView: Warp By Vector).
-/// A point where the law cannot be evaluated (J ≤ 0, as in a failed iterate) reports NaN stress.
+/// A point where the law cannot be evaluated (J ≤ 0, as in a failed iterate) reports zero stress; its
+/// J ≤ 0 marks it (VTU files cannot hold NaN).
 #include <functional>
 
 #include "symcontact/fem/dof_map.hpp"

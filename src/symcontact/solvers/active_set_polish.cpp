@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/energy/energy_term.hpp"
 #include "symcontact/solvers/cholesky.hpp"
 
 namespace symcontact {
@@ -110,9 +111,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
   return true;
 }
 
-}  // namespace
-
-PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values) {
+PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values) {
   PolishResult r;
   const SparseMatrix& A = problem.constraint_matrix();
   const VectorXd& b = problem.constraint_offset();
@@ -211,6 +210,20 @@ PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorX
   for (std::size_t k = 0; k < S.size(); ++k) mu[S[k]] = std::max(0.0, nu[k]) / row_scale[S[k]];
   r.applied = true;
   return r;
+}
+
+}  // namespace
+
+PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values) {
+  // x and mu change only when the polish is applied; a full Newton step of a finite-strain energy may
+  // reach a state it cannot be evaluated at (an inverted cell): then the IPOPT point is kept.
+  try {
+    return polish_on_active_set(problem, x, mu, hold_values);
+  } catch (const EvaluationError& e) {
+    PolishResult r;
+    r.reason = std::string("a Newton step reached a state the energy cannot be evaluated at (") + e.what() + ")";
+    return r;
+  }
 }
 
 }  // namespace symcontact

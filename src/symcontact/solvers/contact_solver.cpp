@@ -46,9 +46,10 @@ class CompositeEnergy : public EnergyTerm {
 };
 }  // namespace
 
-ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
-                                 const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
-                                 const Logger& log, const FrictionState* friction) {
+namespace {
+ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                      const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
+                                      const Logger& log, const FrictionState* friction) {
   ContactSolveReport rep;
   CompositeEnergy total(energy);
   ReducedProblem problem(total, fixed, dofs.num_dofs());
@@ -141,7 +142,9 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
         // already close; one cold retry from the start of the load step before giving up.
         log.detail("  IPOPT failed (" + res.status_text + "); retrying from the start of the load step");
         IpoptOptions cold = options.ipopt;
-        VectorXd x_retry = problem.restrict(friction->u_start);
+        VectorXd u_retry = friction->u_start;  // the start of the step, moved as at the first solve
+        predict_dirichlet_increment(energy, fixed, u_retry);
+        VectorXd x_retry = problem.restrict(u_retry);
         const IpoptResult retry = solve_with_ipopt(problem, x_retry, cold);
         rep.ipopt_iterations += res.iterations;
         res = retry;
@@ -224,6 +227,21 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
       }
   }
   return rep;
+}
+
+}  // namespace
+
+ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                 const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
+                                 const Logger& log, const FrictionState* friction) {
+  // IPOPT and the polish back away from states the energy cannot be evaluated at; one left over (the
+  // start point of a step) is a failed solve, not an internal error.
+  try {
+    return solve_contact_impl(energy, fixed, contacts, dofs, u, options, log, friction);
+  } catch (const EvaluationError& e) {
+    throw SolveError(std::string("the contact solve reached a state the energy cannot be evaluated at: ") + e.what() +
+                     " — use smaller load steps");
+  }
 }
 
 }  // namespace symcontact

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""Plots the reaction-force history of a body (R_x and R_y against the load step) from symcontact
+summary.json files, one pair of curves per file, and prints the mean ratio |R_x / R_y| over a range of
+steps (for ironing: the steady-sliding ratio of the frictional case, to set beside mu).
+
+    tools/plot_reactions.py OUT.png SUMMARY.json [SUMMARY.json ...] [--labels L ...] --body die
+                            [--boundary die_ends] [--steady FIRST LAST] [--title T]
+
+R is the sum of the "force" of every entry of steps[k].reactions whose "body" is `--body` (and, with
+`--boundary`, whose "boundary" is that group), as in tools/plot_reaction_ratio.py. The force is the one
+the supports exert on the body; the plot shows its opposite, the force the body exerts on its supports
+(for a die pressed into a slab: positive R_y pushes up).
+
+Needs only python3 and matplotlib (Debian: python3-matplotlib).
+"""
+
+import argparse
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_reaction_ratio import SummaryError, reaction_history  # noqa: E402
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter, epilog=__doc__)
+    ap.add_argument("out", metavar="OUT.png", help="picture to write")
+    ap.add_argument("files", metavar="SUMMARY.json", nargs="+", help="summary.json of `symcontact run`")
+    ap.add_argument("--labels", nargs="+", default=None, help="one legend label per file")
+    ap.add_argument("--body", required=True, help="the body whose reactions are summed")
+    ap.add_argument("--boundary", default=None, help="only the reactions of this boundary group")
+    ap.add_argument("--steady", nargs=2, type=int, default=None, metavar=("FIRST", "LAST"),
+                    help="steps over which the mean |R_x / R_y| is printed")
+    ap.add_argument("--title", default=None, help="picture title")
+    args = ap.parse_args(argv)
+    if args.labels is not None and len(args.labels) != len(args.files):
+        print(f"plot_reactions: --labels: expected {len(args.files)} values, got {len(args.labels)}", file=sys.stderr)
+        return 2
+    labels = args.labels or args.files
+    try:
+        series = [reaction_history(f, args.body, args.boundary) for f in args.files]
+    except SummaryError as e:
+        print(f"plot_reactions: {e}", file=sys.stderr)
+        return 2
+
+    fig, ax = plt.subplots(figsize=(7.5, 4.6), dpi=130)
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    for i, (label, points) in enumerate(zip(labels, series)):
+        colour = colours[i % len(colours)]
+        steps = [p[0] for p in points]
+        ax.plot(steps, [-p[2] for p in points], "-", color=colour, label=f"{label}: vertical")
+        ax.plot(steps, [-p[1] for p in points], "--", color=colour, label=f"{label}: horizontal")
+        if args.steady:
+            first, last = args.steady
+            sel = [p for p in points if first <= p[0] <= last and p[2] != 0.0]
+            if sel:
+                ratio = sum(abs(p[1] / p[2]) for p in sel) / len(sel)
+                print(f"plot_reactions: {label}: mean |Rx/Ry| over steps {first}-{last} = {ratio:.4f}")
+    ax.set_xlabel("load step")
+    ax.set_ylabel("force on the supports")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    ax.set_title(args.title or f"Reactions of body {args.body!r}", fontsize=11)
+    fig.tight_layout()
+    try:
+        fig.savefig(args.out)
+    except OSError as e:
+        print(f"plot_reactions: cannot write {args.out}: {e}", file=sys.stderr)
+        return 1
+    print(args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
