@@ -62,12 +62,6 @@ std::vector<ResultTable::Column> columns() {
   };
 }
 
-/// A fresh directory under the system temporary directory.
-std::string make_work_dir() {
-  std::string templ = (std::filesystem::temp_directory_path() / "symcontact-bench-XXXXXX").string();
-  if (!mkdtemp(templ.data())) throw std::runtime_error("cannot create a temporary directory " + templ);
-  return templ;
-}
 
 }  // namespace
 

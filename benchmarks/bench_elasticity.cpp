@@ -27,6 +27,11 @@
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
 ///
+/// `problem` solves any problem files --problem FILE... as `symcontact run` does, one row each, with
+/// the per-step figures in --steps-csv FILE (bench_problem.hpp); e.g. the 110-step ironing:
+///
+///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
+///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
@@ -43,6 +48,7 @@
 
 #include "bench_contact.hpp"
 #include "bench_inclined.hpp"
+#include "bench_problem.hpp"
 #include "bench_support.hpp"
 #include "elastic_block.hpp"
 #include "symcontact/core/error.hpp"
@@ -95,6 +101,8 @@ struct Options {
   std::vector<double> h;           ///< contact: fine mesh sizes (default_hertz_sizes() when empty)
   std::string examples = SYMCONTACT_BENCH_EXAMPLES;
   bool keep_work = false;
+  std::vector<std::string> problems;  ///< --case problem
+  std::string steps_csv;
   std::string dim = "all";
   int order = 1;
   double min_dofs = 1e4;
@@ -162,7 +170,7 @@ int main(int argc, char** argv) {
   CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
                "Hertz 2D contact solves against that Cholesky floor",
                "symcontact-bench"};
-  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders or inclined")
+  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, inclined or problem")
       ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "inclined"}));
   app.add_option("--h", opt.h,
                  "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
@@ -170,6 +178,8 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/ and inclined_2d/")
       ->check(CLI::ExistingDirectory);
+  app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
+  app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
@@ -200,6 +210,17 @@ int main(int argc, char** argv) {
   print_machine_info(std::cout, machine);
 
   try {
+    if (opt.bench_case == "problem") {
+      ProblemBenchOptions c;
+      c.files = opt.problems;
+      c.repeat = opt.repeat;
+      c.csv = opt.csv;
+      c.steps_csv = opt.steps_csv;
+      c.markdown = opt.markdown;
+      if (c.files.empty()) throw std::runtime_error("--case problem needs --problem FILE...");
+      run_problem_files(c, machine);
+      return symcontact::kExitOk;
+    }
     if (opt.bench_case == "inclined") {
       InclinedBenchOptions c;
       c.h = opt.h.empty() ? default_inclined_sizes() : opt.h;

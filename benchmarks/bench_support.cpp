@@ -1,6 +1,7 @@
 #include "bench_support.hpp"
 
 #include <dlfcn.h>
+#include <stdlib.h>
 #include <sched.h>
 #include <sys/utsname.h>
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <ctime>
 #include <iomanip>
 #include <limits>
@@ -257,6 +259,12 @@ void ResultTable::add_row(const std::vector<Value>& row) {
     }
     csv_ << "\n" << std::flush;
   }
+}
+
+std::string make_work_dir() {
+  std::string templ = (std::filesystem::temp_directory_path() / "symcontact-bench-XXXXXX").string();
+  if (!mkdtemp(templ.data())) throw std::runtime_error("cannot create a temporary directory " + templ);
+  return templ;
 }
 
 }  // namespace symcontact::bench

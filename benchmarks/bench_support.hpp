@@ -59,6 +59,10 @@ double min_time(int repeat, const std::function<void()>& f);
 /// in [min_size, max_size].
 std::vector<double> size_ladder(double min_size, double max_size);
 
+/// A fresh directory under the system temporary directory (symcontact-bench-XXXXXX); throws
+/// std::runtime_error when it cannot be made.
+std::string make_work_dir();
+
 /// A result table with a fixed set of columns. Rows are printed as soon as they are added, so a long
 /// sweep shows its progress; the same rows go, at full precision, to an optional CSV file.
 class ResultTable {

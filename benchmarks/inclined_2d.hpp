@@ -17,37 +17,18 @@
 #include <memory>
 #include <string>
 
-#include "elastic_block.hpp"
-#include "symcontact/model/model.hpp"
-#include "symcontact/solvers/frictional_contact.hpp"
+#include "problem_run.hpp"
 
 namespace symcontact::bench {
 
 /// (tan α + μ) / (1 − μ tan α) with tan α = 0.1, μ = 0.2.
 double inclined_exact_ratio();
 
-/// One solved instance. Not copyable (the model refers to the spec).
+/// One solved instance: the problem run and the accuracy measure.
 struct InclinedRun {
   double h = 0.0;
-  ProblemSpec spec;
-  std::unique_ptr<Model> model;
-  PhaseTimes build_times;      ///< "meshing" (Gmsh), "setup"
-  FixedDofs fixed;             ///< the Dirichlet conditions of the last step
-  VectorXd u;                  ///< solution of the last step, full DOF vector
-  int steps = 0;
-  int coulomb_iterations = 0;  ///< Σ over the steps (Tresca solves after each step's frictionless one)
-  int contact_solves = 0;      ///< Σ over the steps of the contact solves (frictionless + Tresca)
-  int geometry_iterations = 0; ///< Σ over every contact solve
-  int ipopt_iterations = 0;    ///< Σ over every contact solve
-  Index num_free = 0, num_constraints = 0;  ///< of the last solve
-  PhaseTimes times;            ///< "search", "assembly", "optimizer", "polish", … summed over the steps
-  double solve_wall = 0.0;     ///< wall time of all the steps' solve_frictional_contact(), s
-  double solve_cpu = 0.0;      ///< process CPU time of the same, s
+  std::unique_ptr<ProblemRun> problem;
   double ratio = 0.0;          ///< |R_x / R_y| on the upper body at the last step
-  std::string ipopt_status;    ///< of the last solve
-
-  /// search + assembly + optimizer + polish (the contact solves proper).
-  double contact_seconds() const;
 };
 
 /// Writes the wrapper .geo and a copy of inclined.toml (pointing at it) into `work_dir`, builds the model
@@ -55,9 +36,5 @@ struct InclinedRun {
 /// the library throws (InputError, SolveError).
 std::unique_ptr<InclinedRun> solve_inclined(double h, const std::string& examples_dir, const std::string& work_dir);
 
-/// The Cholesky floor of run.model: K_ff of the whole energy with the problem's own Dirichlet conditions
-/// (lower body clamped at the bottom, upper body's top edge fully imposed, so K_ff is positive definite
-/// without contact), solved for the load of the last step's imposed displacements, −(K u_D)_f.
-CholeskyFloor measure_inclined_floor(const InclinedRun& run, int repeat, Index& num_free);
 
 }  // namespace symcontact::bench
