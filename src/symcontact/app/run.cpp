@@ -248,6 +248,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
       js["ipopt_iterations"] = frep.ipopt_iterations;
       js["coulomb_iterations"] = frep.coulomb_iterations;
       js["coulomb_change_history"] = frep.coulomb_change;
+      js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
       js["last_solve_ipopt_iterations_per_geometry_iteration"] =
           std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
       js["last_solve_geometry_change_history"] = crep.change_history;

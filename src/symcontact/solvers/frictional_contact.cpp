@@ -1,5 +1,6 @@
 #include "symcontact/solvers/frictional_contact.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "symcontact/contact/surface_tractions.hpp"
@@ -55,23 +56,46 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   };
   solve();
   if (!any_coulomb) return rep;
+  std::vector<Eigen::VectorXd> r_prev;  // r_{k−1}, per pair (empty before the first Tresca solve)
+  double omega = 1.0;
   for (int k = 1;; ++k) {
-    // τ_{k} = μ p from the last solve, for every Coulomb pair; the change against the thresholds used.
+    // r_k = μ p_k − τ_k for every Coulomb pair (τ_0 = 0: the frictionless solve).
     double num = 0.0, den = 0.0;
-    std::vector<Eigen::VectorXd> next = rep.friction.nodal_tau;
+    std::vector<Eigen::VectorXd> r(np);
     for (int p = 0; p < np; ++p) {
       if (contacts.pairs[p].friction != FrictionLaw::kCoulomb) continue;
-      next[p] = contacts.pairs[p].mu * friction_side_pressure(contacts, p, dofs, u, rep.last.contact_force);
+      r[p] = contacts.pairs[p].mu * friction_side_pressure(contacts, p, dofs, u, rep.last.contact_force) -
+             rep.friction.nodal_tau[p];
       if (k > 1) {
-        num = std::max(num, (next[p] - rep.friction.nodal_tau[p]).lpNorm<Eigen::Infinity>());
+        Index at = 0;
+        const double d = r[p].cwiseAbs().maxCoeff(&at);
+        num = std::max(num, d);
         den = std::max(den, rep.friction.nodal_tau[p].lpNorm<Eigen::Infinity>());
+        if (log.level() >= Verbosity::kDebug && d > 0) {
+          const ContactSurface& s = contacts.surfaces[contacts.families()[contacts.friction_family(p)].slave];
+          std::ostringstream m;
+          m << "    pair " << contacts.pairs[p].name << ": largest threshold change at surface node " << at << " (X = "
+            << s.X.col(at).transpose() << "): " << rep.friction.nodal_tau[p][at] << " -> "
+            << rep.friction.nodal_tau[p][at] + r[p][at];
+          log.debug(m.str());
+        }
       }
     }
     if (k > 1) {
       const double change = den > 0 ? num / den : (num > 0 ? 1.0 : 0.0);
       rep.coulomb_change.push_back(change);
+      // Aitken: ω_k from r_{k−1} and r_k (all Coulomb pairs as one vector).
+      double dot = 0.0, dd = 0.0;
+      for (int p = 0; p < np; ++p) {
+        if (r[p].size() == 0 || r_prev[p].size() != r[p].size()) continue;
+        const Eigen::VectorXd dr = r[p] - r_prev[p];
+        dot += r_prev[p].dot(dr);
+        dd += dr.squaredNorm();
+      }
+      omega = dd > 0 ? std::clamp(-omega * dot / dd, 0.1, 1.0) : 1.0;
+      rep.coulomb_relaxation.push_back(omega);
       std::ostringstream s;
-      s << "  Coulomb iteration " << k - 1 << ": threshold change " << change;
+      s << "  Coulomb iteration " << k - 1 << ": threshold change " << change << ", relaxation " << omega;
       log.detail(s.str());
       if (change < options.coulomb_tolerance) break;
       if (k - 1 >= options.max_coulomb_iterations) {
@@ -82,7 +106,10 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
         throw SolveError(e.str());
       }
     }
-    rep.friction.nodal_tau = next;
+    for (int p = 0; p < np; ++p)
+      if (r[p].size() > 0)
+        rep.friction.nodal_tau[p] = (rep.friction.nodal_tau[p] + (k > 1 ? omega : 1.0) * r[p]).cwiseMax(0.0);
+    r_prev = std::move(r);
     rep.coulomb_iterations = k;
     solve();
   }

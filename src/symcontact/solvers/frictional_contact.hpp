@@ -4,9 +4,15 @@
 ///
 ///  - Tresca pairs: the threshold τ is given; one regularised-Tresca solve (solve_contact).
 ///  - Coulomb pairs (Raous 1999, eq. 17): σ_{n,0} from the frictionless problem, τ_0 = μ p_0; then
-///      solve regularised Tresca with τ_k → pressure p_k → τ_{k+1} = μ p_k,
-///    until ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that does not converge within the
-///    allowed iterations throws SolveError — never reported as success.
+///      solve regularised Tresca with τ_k → pressure p_k → residual r_k = μ p_k − τ_k,
+///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that does not converge within the allowed
+///    iterations throws SolveError — never reported as success.
+///    The update is relaxed by Aitken's Δ² rule (Irons & Tuck 1969; in the vector form of Küttler &
+///    Wall, Comput. Mech. 43 (2008), eq. 44): τ_{k+1} = max(0, τ_k + ω_k r_k) with
+///      ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖²,  ω_1 = 1, clipped to [0.1, 1].
+///    ω = 1 is the plain fixed point τ_{k+1} = μ p_k. Where the map τ ↦ μ p(τ) has a slope near −1
+///    (nodes where the slip changes direction, at μ ≈ 0.3 and large deformation), the plain iteration
+///    falls into a 2-cycle; the relaxation removes it. The converged τ is the same fixed point.
 /// τ and p live at the nodes of the slave surface of each pair's friction family; the pressure is the
 /// nodal one recovered from the contact forces (surface_tractions.hpp).
 
@@ -25,7 +31,8 @@ struct FrictionalOptions {
 struct FrictionalReport {
   ContactSolveReport last;                 ///< the final Tresca solve
   int coulomb_iterations = 0;              ///< Tresca solves after the frictionless one (0: no Coulomb pair)
-  std::vector<double> coulomb_change;      ///< ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ per iteration
+  std::vector<double> coulomb_change;      ///< ‖r_k‖∞ / ‖τ_k‖∞ per iteration
+  std::vector<double> coulomb_relaxation;  ///< ω_k per iteration
   int geometry_iterations = 0;             ///< summed over all solves of the step
   int ipopt_iterations = 0;                ///< summed over all solves of the step
   FrictionState friction;                  ///< the thresholds of the final solve
