@@ -10,6 +10,11 @@ void ContactSet::finalize() {
     const ContactPair& cp = pairs[p];
     if (cp.obstacle >= 0) {
       families_.push_back({p, cp.surface_a, -1});
+    } else if (cp.surface_a == cp.surface_b) {
+      // Self-contact: one family, the surface against itself — every point is a slave point and every
+      // facet a master facet, so the family is already symmetric; a second, identical family would
+      // only duplicate the constraints (IPOPT then leaves a barrier offset the polish cannot remove).
+      families_.push_back({p, cp.surface_a, cp.surface_a});
     } else if (cp.mode == ContactMode::kSymmetric) {
       families_.push_back({p, cp.surface_a, cp.surface_b});
       families_.push_back({p, cp.surface_b, cp.surface_a});

@@ -7,7 +7,11 @@
 ///  - symmetric: a onto b AND b onto a (no master/slave choice; the two families are nearly
 ///    dependent, which the interior point method tolerates),
 ///  - one-pass: the slave onto the master only,
-///  - obstacle: a onto the obstacle.
+///  - obstacle: a onto the obstacle,
+///  - self-contact (a and b the same surface): one family, the surface onto itself, whatever the mode —
+///    every point is both slave and master, so it is symmetric by construction. A point never contacts
+///    its own neighbourhood: its own facet and the facets around it face the same way as the point
+///    (n_s·n̄ ≥ 0), and only facing facets (n_s·n̄ < 0) are candidates (contact_points.hpp).
 /// Stacking the families' rows gives g(u) = A u + b ≥ 0.
 
 #include <string>

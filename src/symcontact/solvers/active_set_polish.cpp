@@ -128,11 +128,14 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
   const VectorXd c0 = A * x + b;
   std::vector<char> in_set(A.rows(), 0);
   for (Index i = 0; i < A.rows(); ++i) in_set[i] = mu_max > 0 && mu[i] > 1e-6 * mu_max && row_scale[i] > 0;
-  // A few rounds: constraints that the equality solve wants to pull (negative multiplier) were not
-  // really active; drop them and solve again.
+  // Rounds: constraints that the equality solve wants to pull (negative multiplier) were not really
+  // active; drop them and solve again. After a warm-started IPOPT solve the multipliers of inactive
+  // constraints can stay above the threshold, so the first set may hold ten times the active ones and
+  // need several rounds to shrink.
+  constexpr int kMaxRounds = 30;
   VectorXd xs, nu;
   std::vector<Index> S;
-  for (int round = 0; round < 5; ++round) {
+  for (int round = 0; round < kMaxRounds; ++round) {
     S.clear();
     std::vector<Index> pos(A.rows(), -1);
     for (Index i = 0; i < A.rows(); ++i)
@@ -170,7 +173,7 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
         dropped = true;
       }
     if (!dropped) break;
-    if (round == 4) {
+    if (round == kMaxRounds - 1) {
       r.reason = "the active set did not settle (negative multipliers remain)";
       return r;
     }
