@@ -81,6 +81,26 @@ GapConstraints assemble_gap_constraints(const ContactSurface& slave, const Conta
     }
   }
   flush();
+  // A row whose support Σ w φ_i is not positive carries no information and the wrong sign: with P2 test
+  // functions (negative in parts of a facet) a node whose facets are only partly integrated — cut by the
+  // search distance — can get g_i = (negative weight) × (a large positive gap) < 0, a violated constraint
+  // far from any contact. Such rows are left out.
+  std::vector<Index> keep(g.num_rows(), -1);
+  Index kept = 0;
+  for (Index r = 0; r < g.num_rows(); ++r)
+    if (g.support[r] > 1e-12 * slave.nodal_area[g.slave_node[r]]) keep[r] = kept++;
+  if (kept < g.num_rows()) {
+    GapConstraints f;
+    for (Index r = 0; r < g.num_rows(); ++r)
+      if (keep[r] >= 0) {
+        f.b.push_back(g.b[r]);
+        f.slave_node.push_back(g.slave_node[r]);
+        f.support.push_back(g.support[r]);
+      }
+    for (const Triplet& t : g.A)
+      if (keep[t.row()] >= 0) f.A.emplace_back(static_cast<int>(keep[t.row()]), t.col(), t.value());
+    return f;
+  }
   return g;
 }
 
