@@ -60,11 +60,14 @@ Eigen::MatrixXd nodal_normals(const ContactSurface& s, const Eigen::MatrixXd& x)
 /// Weights of the weak gap constraints on one facet (φ_a in gap_constraints.hpp), at reference point ξ.
 /// They are the trace shape functions N_a, except on Tri6 facets, whose vertex functions integrate to
 /// zero over a flat facet (so weak gaps tested with them carry no information, and their lumped areas
-/// vanish). There the modified quadratic basis of Puso, Laursen & Solberg (CMAME 197, 2008, §3) and
-/// Popp, Gee & Wall (SIAM J. Sci. Comput. 34, 2012, eq. 28) is used:
-///   φ_v = N_v + c (N_e + N_e'),  e, e' the two edges at vertex v;   φ_e = (1 − 2c) N_e,   c = 1/5,
-/// which still sums to one, is still quadratic, and integrates positively on a flat facet of area A:
-/// ∫ φ_v = 2cA/3 = 2A/15, ∫ φ_e = (1 − 2c)A/3 = A/5. Geometry and displacements keep the standard N.
+/// vanish). There a modified quadratic basis is used, of the kind introduced for quadratic mortar
+/// contact by Puso, Laursen & Solberg (CMAME 197, 2008, "A segment-to-segment mortar contact method for
+/// quadratic elements and large deformations") and used by Popp, Gee & Wall (SIAM J. Sci. Comput. 34,
+/// 2012, "Dual quadratic mortar finite element methods for 3D finite deformation contact"):
+///   φ_v = N_v + c (N_e + N_e'),  e, e' the two edges at vertex v;   φ_e = (1 − 2c) N_e,   c = 1/5.
+/// For any c it still sums to one and is still quadratic; on a flat facet of area A it integrates to
+/// ∫ φ_v = 2cA/3 = 2A/15 and ∫ φ_e = (1 − 2c)A/3 = A/5, all positive for 0 < c < 1/2 (checked in
+/// tests/unit/contact/test_contact_surface.cpp). Geometry and displacements keep the standard N.
 void test_functions(CellType type, const double* xi, double* phi);
 
 /// The coefficient c of the modified Tri6 test basis (test_functions()).
