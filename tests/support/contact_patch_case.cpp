@@ -146,6 +146,10 @@ pressure = 0.01
     char buf[64];
     std::snprintf(buf, sizeof buf, "friction = \"coulomb\"\nmu = %.17g\n", c.mu);
     t += buf;
+    if (c.alpha > 0) {
+      std::snprintf(buf, sizeof buf, "alpha = %.17g\n", c.alpha);
+      t += buf;
+    }
   }
   return t;
 }

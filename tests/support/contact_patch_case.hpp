@@ -25,6 +25,7 @@ struct ContactPatchCase {
   std::string mode = "symmetric";  ///< "symmetric" or "one-pass" (slave: surface b, the upper block's bottom unless swapped)
   bool swap = false;               ///< declare the upper body first
   double mu = -1.0;                ///< < 0: frictionless; ≥ 0: Coulomb friction with this coefficient
+  double alpha = 0.0;              ///< friction regularisation length; 0: automatic
 };
 
 struct ContactPatchErrors {

@@ -55,11 +55,16 @@ INSTANTIATE_TEST_SUITE_P(V3, ContactPatch3D,
                                            patch(4, 3, 2, "symmetric"), patch(3, 4, 2, "one-pass")),
                          [](const auto& p) { return contact_patch_name(p.param); });
 
-// P1 only: with P2 (3, 4) symmetric the frictional solve is right (pressure error 2.6e-8, shear 1e-8 p)
-// but IPOPT, started from the frictionless solution, crawls through its 1000 iterations against the stiff
-// regularised friction (α = 1.4e-6) before the cold retry from the start of the load step converges in
-// 11: 190 s, too long for a test.
+// P2 with α = 1e-4 (the answer has no slip, so α does not change it): with the automatic α = 1.4e-6,
+// IPOPT started from the frictionless solution crawls through its 1000 iterations against the stiff
+// regularised friction (line search cut to ~0.03 at every step) before the cold retry from the start of
+// the load step converges in 11 (190 s; one-pass: Restoration_Failed after 158, then 9). The 2D P2 patch
+// test converges from the same start; the difference is IPOPT's path, not the 3D geometry.
 INSTANTIATE_TEST_SUITE_P(V3Friction, ContactPatch3D,
                          ::testing::Values(patch(3, 4, 1, "symmetric", 0.3), patch(4, 3, 1, "symmetric", 0.3),
-                                           patch(3, 4, 1, "one-pass", 0.3)),
+                                           patch(3, 4, 1, "one-pass", 0.3), [] {
+                                             ContactPatchCase c = patch(3, 4, 2, "symmetric", 0.3);
+                                             c.alpha = 1e-4;
+                                             return c;
+                                           }()),
                          [](const auto& p) { return contact_patch_name(p.param); });
