@@ -1,7 +1,9 @@
 #include "symcontact/contact/closest_point.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "symcontact/fem/shape_functions.hpp"
@@ -77,15 +79,196 @@ FacetProjection project_on_line(CellType t, const Eigen::MatrixXd& xf, const Eig
   return r;
 }
 
+/// Barycentric tolerance of "inside" for triangles: a point on an edge up to round-off is inside.
+constexpr double kInsideTol = 1e-12;
+
+/// x(η), ∂x/∂η_i (columns of d1) of a triangle facet.
+Eigen::Vector3d triangle_point(CellType t, const Eigen::MatrixXd& xf, const double* eta, Eigen::Matrix<double, 3, 2>* d1) {
+  double N[6], dN[12];
+  shape_functions(t, eta, N, dN);
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  if (d1) d1->setZero();
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    x += N[a] * xf.col(a).head<3>();
+    if (d1) {
+      d1->col(0) += dN[2 * a] * xf.col(a).head<3>();
+      d1->col(1) += dN[2 * a + 1] * xf.col(a).head<3>();
+    }
+  }
+  return x;
+}
+
+/// Closest point of the segment [a, b] to p: parameter t ∈ [0, 1].
+double segment_parameter(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d ab = b - a;
+  const double L2 = ab.squaredNorm();
+  return L2 > 0 ? std::clamp((p - a).dot(ab) / L2, 0.0, 1.0) : 0.0;
+}
+
+/// The foot of the perpendicular from p on the plane of the vertex triangle, in (η1, η2) (unclamped).
+Eigen::Vector2d plane_coordinates(const Eigen::MatrixXd& xf, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d a = xf.col(0).head<3>();
+  const Eigen::Vector3d e1 = xf.col(1).head<3>() - a, e2 = xf.col(2).head<3>() - a;
+  Eigen::Matrix2d G;
+  G << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
+  const Eigen::Vector2d r((p - a).dot(e1), (p - a).dot(e2));
+  const double det = G.determinant();
+  if (!(std::abs(det) > 1e-300 * std::max(1.0, G.squaredNorm()))) return Eigen::Vector2d(1.0 / 3, 1.0 / 3);
+  return G.inverse() * r;
+}
+
+bool inside_triangle(const double* eta) {
+  return eta[0] >= -kInsideTol && eta[1] >= -kInsideTol && 1.0 - eta[0] - eta[1] >= -kInsideTol;
+}
+
+/// Snaps round-off excursions past the edges back onto the reference triangle.
+void snap_inside(double* eta) {
+  eta[0] = std::max(eta[0], 0.0);
+  eta[1] = std::max(eta[1], 0.0);
+  const double s = eta[0] + eta[1];
+  if (s > 1.0) {
+    eta[0] /= s;
+    eta[1] /= s;
+  }
+}
+
+/// Edge parameter t ∈ [0, 1] → clamping report: a vertex at the ends, else the edge.
+void report_edge(int e, double t, FacetProjection& r) {
+  r.clamped_edge = -1;
+  r.clamped_vertex = -1;
+  if (t <= 0.0) r.clamped_vertex = triangle_edge(e)[0];
+  else if (t >= 1.0) r.clamped_vertex = triangle_edge(e)[1];
+  else r.clamped_edge = e;
+}
+
+FacetProjection project_on_tri3(const Eigen::MatrixXd& xf, const Eigen::Vector3d& p) {
+  FacetProjection r;
+  const Eigen::Vector2d e = plane_coordinates(xf, p);
+  double eta[2] = {e[0], e[1]};
+  if (inside_triangle(eta)) {
+    snap_inside(eta);
+    r.eta[0] = eta[0];
+    r.eta[1] = eta[1];
+    r.point = triangle_point(CellType::kTri3, xf, eta, nullptr);
+    r.distance2 = (r.point - p).squaredNorm();
+    return r;
+  }
+  r.distance2 = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d a = xf.col(triangle_edge(k)[0]).head<3>(), b = xf.col(triangle_edge(k)[1]).head<3>();
+    const double t = segment_parameter(a, b, p);
+    const Eigen::Vector3d x = a + t * (b - a);
+    const double d2 = (x - p).squaredNorm();
+    if (d2 < r.distance2) {
+      r.distance2 = d2;
+      r.point = x;
+      triangle_edge_point(k, t, r.eta);
+      report_edge(k, t, r);
+    }
+  }
+  return r;
+}
+
+FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d& p) {
+  FacetProjection r;
+  r.distance2 = std::numeric_limits<double>::infinity();
+  // Interior: Newton on ∇f = 0, f(η) = ½ |x(η) − p|², from the vertex triangle's foot point.
+  Eigen::Vector2d eta = plane_coordinates(xf, p);
+  Eigen::Matrix<double, 3, 2> d1, dp, dm;
+  bool converged = false, local_min = false;
+  for (int it = 0; it < 40; ++it) {
+    eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
+    const Eigen::Vector3d x = triangle_point(CellType::kTri6, xf, eta.data(), &d1);
+    const Eigen::Vector3d res = x - p;
+    const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
+    Eigen::Matrix2d H = d1.transpose() * d1;
+    // Second derivatives x_,ij: ∂x/∂η_i is linear in η, so a central difference of it is exact.
+    Eigen::Matrix2d S;
+    for (int j = 0; j < 2; ++j) {
+      Eigen::Vector2d ep = eta, em = eta;
+      ep[j] += 0.5;
+      em[j] -= 0.5;
+      triangle_point(CellType::kTri6, xf, ep.data(), &dp);
+      triangle_point(CellType::kTri6, xf, em.data(), &dm);
+      for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
+    }
+    S = 0.5 * (S + S.transpose());
+    const Eigen::Matrix2d Hn = H + S;
+    const bool spd = Hn(0, 0) > 0 && Hn.determinant() > 1e-14 * Hn.squaredNorm();
+    const Eigen::Matrix2d& Hs = spd ? Hn : H;  // Gauss–Newton away from a minimum
+    if (!(std::abs(Hs.determinant()) > 0)) break;
+    Eigen::Vector2d step = -Hs.inverse() * g;
+    const double len = step.norm();
+    if (len > 0.5) step *= 0.5 / len;
+    eta += step;
+    if (len < 1e-14) {
+      converged = true;
+      local_min = spd;
+      break;
+    }
+    // Heading well outside the facet: the boundary decides, no need to converge out there.
+    if (it >= 6 && std::min({eta[0], eta[1], 1.0 - eta[0] - eta[1]}) < -0.1) break;
+  }
+  double e[2] = {eta[0], eta[1]};
+  const bool inside = converged && inside_triangle(e);
+  if (inside && local_min) {
+    // A local minimum inside the facet: on a facet whose curvature radius exceeds its size (any
+    // sensible mesh), the squared distance is convex over the facet and this is the closest point.
+    snap_inside(e);
+    r.eta[0] = e[0];
+    r.eta[1] = e[1];
+    r.point = triangle_point(CellType::kTri6, xf, e, nullptr);
+    r.distance2 = (r.point - p).squaredNorm();
+    return r;
+  }
+  // Boundary: the three edges are Line3 curves (vertex a, vertex b, edge node).
+  Eigen::MatrixXd xe(xf.rows(), 3);
+  for (int k = 0; k < 3; ++k) {
+    xe.col(0) = xf.col(triangle_edge(k)[0]);
+    xe.col(1) = xf.col(triangle_edge(k)[1]);
+    xe.col(2) = xf.col(3 + k);
+    const FacetProjection q = project_on_line(CellType::kLine3, xe, p);
+    if (q.distance2 < r.distance2) {
+      r.distance2 = q.distance2;
+      r.point = q.point;
+      triangle_edge_point(k, q.eta[0], r.eta);
+      report_edge(k, q.eta[0], r);
+    }
+  }
+  if (inside) {
+    snap_inside(e);
+    const Eigen::Vector3d x = triangle_point(CellType::kTri6, xf, e, nullptr);
+    const double d2 = (x - p).squaredNorm();
+    if (d2 <= r.distance2 * (1 + 1e-14) + 1e-300) {
+      r.eta[0] = e[0];
+      r.eta[1] = e[1];
+      r.point = x;
+      r.distance2 = d2;
+      r.clamped_vertex = r.clamped_edge = -1;
+    }
+  }
+  return r;
+}
+
 }  // namespace
+
+void triangle_edge_point(int e, double t, double* eta) {
+  switch (e) {
+    case 0: eta[0] = t; eta[1] = 0.0; break;
+    case 1: eta[0] = 1.0 - t; eta[1] = t; break;
+    default: eta[0] = 0.0; eta[1] = 1.0 - t; break;
+  }
+}
 
 FacetProjection project_on_facet(CellType type, const Eigen::MatrixXd& xf, const Eigen::VectorXd& p) {
   switch (type) {
     case CellType::kLine2:
     case CellType::kLine3: return project_on_line(type, xf, p);
+    case CellType::kTri3: return project_on_tri3(xf, p.head<3>());
+    case CellType::kTri6: return project_on_tri6(xf, p.head<3>());
     default: break;
   }
-  throw std::logic_error("project_on_facet: " + cell_name(type) + " facets are not supported yet (3D contact)");
+  throw std::logic_error("project_on_facet: " + cell_name(type) + " is not a contact facet type");
 }
 
 }  // namespace symcontact

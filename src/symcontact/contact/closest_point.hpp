@@ -1,10 +1,19 @@
 #pragma once
 /// \file closest_point.hpp
-/// Closest-point projection of a point onto one contact facet (Line2 or Line3 in 2D).
-/// The facet is x(η) = Σ_a N_a(η) x_a, η ∈ [0, 1]. The minimiser of |x(η) − p|² is found in closed form
-/// for Line2 and by a safeguarded Newton iteration for Line3 (the stationarity condition
-/// (x(η) − p)·x'(η) = 0, Wriggers, Computational Contact Mechanics, 2006, §4.1), and compared with the
-/// ends. `unclamped` tells whether the stationary point lies inside the facet or past one of its ends.
+/// Closest-point projection of a point onto one contact facet: Line2/Line3 in 2D, Tri3/Tri6 in 3D.
+/// The facet is x(η) = Σ_a N_a(η) x_a, η in the reference simplex ([0, 1], or η1, η2 ≥ 0, η1 + η2 ≤ 1).
+///  - Line2: closed form; Line3: safeguarded Newton on the stationarity condition (x(η) − p)·x'(η) = 0
+///    (Wriggers, Computational Contact Mechanics, 2006, §4.1), compared with the ends.
+///  - Tri3: closed form on the plane of the triangle; when the foot of the perpendicular is outside,
+///    the closest point of the three edges (segments), i.e. on an edge or at a vertex (Ericson,
+///    Real-Time Collision Detection, 2005, §5.1.5).
+///  - Tri6: safeguarded Newton on (η1, η2) with the stationarity conditions (x(η) − p)·∂x/∂η_i = 0
+///    (Gauss–Newton where the Hessian is not positive definite, steps limited), started from the
+///    projection on the vertex triangle; compared with the closest points of the three boundary edges,
+///    which are Line3 curves. The interior stationary point wins ties.
+/// The report tells where the closest point is: inside (a true normal projection), on edge e (3D),
+/// or at vertex v. Facet edges are numbered like the Tri6 edge nodes: e0 = (0, 1), e1 = (1, 2),
+/// e2 = (2, 0).
 
 #include <Eigen/Core>
 
@@ -16,12 +25,26 @@ struct FacetProjection {
   double eta[2] = {0.0, 0.0};  ///< reference coordinates of the closest point (η, or (η1, η2) in 3D)
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   double distance2 = 0.0;
-  /// −1 if the closest point is inside the facet (a true normal projection); otherwise the local
-  /// index of the facet vertex it was clamped to.
+  /// −1 unless the closest point was clamped to a vertex of the facet: then its local index.
   int clamped_vertex = -1;
+  /// 3D only: −1 unless the closest point was clamped to the interior of an edge of the facet (local
+  /// edge index, see the file comment). Inside the facet iff both are −1.
+  int clamped_edge = -1;
+  bool inside() const { return clamped_vertex < 0 && clamped_edge < 0; }
 };
 
-/// `xf` is dim × npf (facet node positions), p has dim entries.
+/// `xf` is dim × npf (facet node positions), p has dim entries (3 for triangles).
 FacetProjection project_on_facet(CellType type, const Eigen::MatrixXd& xf, const Eigen::VectorXd& p);
+
+/// Local vertices (a, b) of edge e of a triangle (e0 = (0, 1), e1 = (1, 2), e2 = (2, 0)); the Tri6 node of
+/// the edge is 3 + e.
+inline const int* triangle_edge(int e) {
+  static const int edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  return edges[e];
+}
+
+/// Triangle reference coordinates (η1, η2) of the point at parameter t ∈ [0, 1] along edge e (from its
+/// vertex a to its vertex b).
+void triangle_edge_point(int e, double t, double* eta);
 
 }  // namespace symcontact

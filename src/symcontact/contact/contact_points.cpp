@@ -1,11 +1,13 @@
 #include "symcontact/contact/contact_points.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "symcontact/contact/closest_point.hpp"
+#include "symcontact/contact/polygon_clipping.hpp"
 #include "symcontact/fem/quadrature.hpp"
 #include "symcontact/fem/shape_functions.hpp"
 
@@ -106,6 +108,14 @@ void for_each_sub_point(std::vector<double> cuts, int ng, F&& f) {
   }
 }
 
+/// A projection clamped onto an end of the surface: in 2D a vertex of valence 1, in 3D a border edge or a
+/// vertex of one (contact_surface.hpp).
+bool past_end(const ContactSurface& s, Index f, const FacetProjection& pr) {
+  if (s.dim == 2) return pr.clamped_vertex >= 0 && s.valence[s.facet(f)[pr.clamped_vertex]] <= 1;
+  if (pr.clamped_edge >= 0) return s.boundary_edge[3 * f + pr.clamped_edge] != 0;
+  return pr.clamped_vertex >= 0 && s.boundary_vertex[s.facet(f)[pr.clamped_vertex]] != 0;
+}
+
 int default_gauss(const ContactSurface& s, const ContactSearchOptions& o) {
   return o.gauss_points > 0 ? o.gauss_points : 2 * cell_order(s.facet_type) + 1;
 }
@@ -128,8 +138,7 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   });
   if (mf < 0) return false;
   const FacetProjection pr = project_on_facet(ms.facet_type, facet_nodes(ms, master.x, mf), p);
-  if (!allow_past_end && pr.clamped_vertex >= 0 && ms.valence[ms.facet(mf)[pr.clamped_vertex]] <= 1)
-    return false;  // past an end
+  if (!allow_past_end && past_end(ms, mf, pr)) return false;
   double M[10];
   shape_functions(ms.facet_type, pr.eta, M, nullptr);
   Eigen::Vector3d nbar = Eigen::Vector3d::Zero();
@@ -149,9 +158,10 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   return true;
 }
 
-std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
-                                         const MasterGeometry& master, const ContactSearchOptions& options) {
-  if (slave.dim != 2) throw std::logic_error("contact_points: 3D contact surfaces are not supported yet");
+namespace {
+
+std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                            const MasterGeometry& master, const ContactSearchOptions& options) {
   const ContactSurface& ms = *master.surface;
   const double search = options.search_distance;
   const int ng = default_gauss(slave, options);
@@ -183,6 +193,84 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
     });
   }
   return points;
+}
+
+std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                            const MasterGeometry& master, const ContactSearchOptions& options) {
+  const int npf = slave.nodes_per_facet();
+  // Degree 2·order + 1 per clip triangle (exact for the flat-interface integrand θ φ, of degree
+  // 2·order in ξ), unless gauss_points is given: 2·gauss_points − 1 as on segments.
+  const int degree = options.gauss_points > 0 ? 2 * options.gauss_points - 1 : 2 * cell_order(slave.facet_type) + 1;
+  const QuadratureRule rule = simplex_quadrature(2, degree);
+  std::vector<ContactPoint> points;
+  std::vector<double> N(npf);
+  for (Index f = 0; f < slave.num_facets(); ++f) {
+    const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
+    const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
+    for (const MortarCell& cell : mortar_cells(slave, xs, f, master, options.search_distance)) {
+      for (const auto& tri : triangulate_from_centroid(cell.polygon)) {
+        // ξ(ζ) = t0 + ζ1 (t1 − t0) + ζ2 (t2 − t0): the rule's weights (sum 1/2) times 2 × the sub-area.
+        const double jac = (tri[1] - tri[0]).x() * (tri[2] - tri[0]).y() - (tri[1] - tri[0]).y() * (tri[2] - tri[0]).x();
+        if (!(jac > 0)) continue;
+        for (int q = 0; q < rule.size(); ++q) {
+          const double* z = rule.point(q);
+          const Eigen::Vector2d xi2 = tri[0] + z[0] * (tri[1] - tri[0]) + z[1] * (tri[2] - tri[0]);
+          const double xi[2] = {xi2.x(), xi2.y()};
+          shape_functions(slave.facet_type, xi, N.data(), nullptr);
+          const Eigen::VectorXd p = xf * Eigen::Map<const Eigen::VectorXd>(N.data(), npf);
+          const Eigen::Vector3d ns = facet_normal(slave.facet_type, xf, xi).head<3>();
+          ContactPoint cp;
+          if (!project_to_master(master, p, ns, options.search_distance, cp)) continue;
+          cp.slave_facet = f;
+          cp.xi[0] = xi[0];
+          cp.xi[1] = xi[1];
+          cp.weight = rule.weights[q] * jac * facet_normal(slave.facet_type, Xf, xi).norm();
+          points.push_back(cp);
+        }
+      }
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::MatrixXd& xs, Index f,
+                                     const MasterGeometry& master, double search) {
+  std::vector<MortarCell> cells;
+  const ContactSurface& ms = *master.surface;
+  const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
+  // The slave facet's vertex triangle: origin x0, edges e1, e2, unit normal n0 (the auxiliary plane).
+  const Eigen::Vector3d x0 = xf.col(0), e1 = xf.col(1) - x0, e2 = xf.col(2) - x0;
+  Eigen::Vector3d n0 = e1.cross(e2);
+  if (!(n0.norm() > 0)) return cells;
+  n0.normalize();
+  Eigen::Matrix2d G;
+  G << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
+  const Eigen::Matrix2d Ginv = G.inverse();
+  const Polygon2 reference = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1)};
+  master.tree.for_each_overlap(facet_box(slave.facet_type, xf, search), [&](int mf) {
+    const Index* mn = ms.facet(mf);
+    const Eigen::Vector3d y0 = master.x.col(mn[0]), y1 = master.x.col(mn[1]), y2 = master.x.col(mn[2]);
+    if ((y1 - y0).cross(y2 - y0).dot(n0) >= 0) return;  // not facing the slave facet
+    // Master vertices projected along n0 onto the auxiliary plane, in the slave's reference coordinates
+    // (the component along n0 is orthogonal to e1, e2, so it drops out of the normal equations).
+    Polygon2 poly;
+    for (const Eigen::Vector3d& y : {y0, y1, y2}) poly.push_back(Ginv * Eigen::Vector2d((y - x0).dot(e1), (y - x0).dot(e2)));
+    const double area = polygon_area(poly);
+    if (std::abs(area) < 1e-14) return;
+    if (area < 0) std::reverse(poly.begin(), poly.end());
+    MortarCell c;
+    c.master_facet = mf;
+    c.polygon = clip_convex_polygon(reference, poly);
+    if (c.polygon.size() >= 3 && polygon_area(c.polygon) > 1e-14) cells.push_back(std::move(c));
+  });
+  return cells;
+}
+
+std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                         const MasterGeometry& master, const ContactSearchOptions& options) {
+  return slave.dim == 2 ? contact_points_2d(slave, xs, master, options) : contact_points_3d(slave, xs, master, options);
 }
 
 std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,

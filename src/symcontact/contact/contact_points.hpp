@@ -9,6 +9,18 @@
 /// gap integrand is smooth on it (segment-based mortar integration, Puso 2004; Popp et al. 2009, §3.3);
 /// each sub-segment carries Gauss–Legendre points. Weights are reference-configuration measures.
 ///
+/// Integration (3D, segment-based mortar integration: Puso & Laursen, CMAME 193, 2004; Popp, Gee & Wall,
+/// IJNME 79, 2009, §3.2): for each slave facet, the vertices of every nearby facing master facet are
+/// projected along the normal n0 of the slave's vertex triangle onto its plane, in the slave's reference
+/// coordinates; the reference triangle is clipped by the projected master triangle (Sutherland–Hodgman,
+/// polygon_clipping.hpp), and each clip polygon is triangulated from its centroid and carries a
+/// triangle rule of degree 2·order + 1 (2·gauss_points − 1 when given): exact for θ φ on flat facets,
+/// whose degree in ξ is 2·order within a cell. Each point is evaluated on the (possibly curved, Tri6)
+/// slave facet and projected onto the master by closest point, as in 2D. Curved Tri6 facets are clipped
+/// through their vertex triangles (the standard approach; exact for flat facets).
+/// A slave region that no projected master facet covers gets no points: past the border of the master
+/// there is no contact, which the 3D end rule (contact_surface.hpp, border edges) also enforces.
+///
 /// A point contributes only if: a master facet lies within `search_distance`; its projection is not
 /// past an end of the master surface; the slave and master normals face each other (n_s·n̄ < 0); and
 /// |θ| ≤ search_distance.
@@ -36,7 +48,7 @@ struct ContactPoint {
 
 struct ContactSearchOptions {
   double search_distance = 0.0;  ///< > 0
-  int gauss_points = 0;          ///< per sub-segment; 0: 2·order + 1
+  int gauss_points = 0;          ///< per sub-segment; 0: 2·order + 1 (3D: see the file comment)
 };
 
 /// A master surface in its current configuration, ready for queries.
@@ -56,6 +68,18 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// nodal friction: a slave node that hangs over the master's end can still carry pressure).
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
                        double search, ContactPoint& cp, bool allow_past_end = false);
+
+/// One cell of the 3D segmentation: the part of slave facet f (reference coordinates, counter-clockwise)
+/// covered by master facet `master_facet` projected along the slave normal.
+struct MortarCell {
+  Index master_facet = -1;
+  std::vector<Eigen::Vector2d> polygon;
+};
+
+/// The 3D segmentation of slave facet f (xs: current slave node positions): every master facet whose box
+/// overlaps the slave facet's box padded by `search` and whose vertex triangle faces the slave's.
+std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::MatrixXd& xs, Index f,
+                                     const MasterGeometry& master, double search);
 
 /// Slave points against a master surface (xs: current slave node positions).
 std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,

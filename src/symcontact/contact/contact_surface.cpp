@@ -2,7 +2,10 @@
 
 #include <Eigen/Geometry>
 #include <stdexcept>
+#include <map>
 #include <unordered_map>
+
+#include "symcontact/contact/closest_point.hpp"
 
 #include "symcontact/fem/shape_functions.hpp"
 
@@ -26,6 +29,36 @@ Eigen::VectorXd facet_normal(CellType type, const Eigen::MatrixXd& xf, const dou
   return t0.cross(t1);
 }
 
+void test_functions(CellType type, const double* xi, double* phi) {
+  shape_functions(type, xi, phi, nullptr);
+  if (type != CellType::kTri6) return;
+  constexpr double c = kModifiedTri6Coefficient;
+  for (int e = 0; e < 3; ++e) {
+    const int* ab = triangle_edge(e);
+    phi[ab[0]] += c * phi[3 + e];
+    phi[ab[1]] += c * phi[3 + e];
+    phi[3 + e] *= 1.0 - 2.0 * c;
+  }
+}
+
+Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd& F) {
+  if (s.facet_type != CellType::kTri6) return F;
+  constexpr double c = kModifiedTri6Coefficient;
+  Eigen::MatrixXd out = F;
+  // Every edge node once: it belongs to one or two facets, with the same two vertices.
+  std::vector<char> done(s.num_nodes(), 0);
+  for (Index f = 0; f < s.num_facets(); ++f)
+    for (int e = 0; e < 3; ++e) {
+      const Index m = s.facet(f)[3 + e];
+      if (done[m]) continue;
+      done[m] = 1;
+      out.col(s.facet(f)[triangle_edge(e)[0]]) += c * F.col(m);
+      out.col(s.facet(f)[triangle_edge(e)[1]]) += c * F.col(m);
+      out.col(m) = (1.0 - 2.0 * c) * F.col(m);
+    }
+  return out;
+}
+
 ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name) {
   const FacetGroup& g = mesh.facet_groups.at(group);
   ContactSurface s;
@@ -45,7 +78,26 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   s.valence.assign(s.num_nodes(), 0);
   for (Index f = 0; f < s.num_facets(); ++f)
     for (int a = 0; a < nv; ++a) ++s.valence[s.facet(f)[a]];
-  // Lumped areas ∫ N_k dS with a rule exact for the (polynomial, straight-facet) integrand.
+  if (s.dim == 3) {
+    // Border edges: edges held by a single facet.
+    std::map<std::pair<Index, Index>, int> count;
+    auto key = [&](Index f, int e) {
+      const Index a = s.facet(f)[triangle_edge(e)[0]], b = s.facet(f)[triangle_edge(e)[1]];
+      return std::make_pair(std::min(a, b), std::max(a, b));
+    };
+    for (Index f = 0; f < s.num_facets(); ++f)
+      for (int e = 0; e < 3; ++e) ++count[key(f, e)];
+    s.boundary_edge.assign(3 * s.num_facets(), 0);
+    s.boundary_vertex.assign(s.num_nodes(), 0);
+    for (Index f = 0; f < s.num_facets(); ++f)
+      for (int e = 0; e < 3; ++e)
+        if (count[key(f, e)] == 1) {
+          s.boundary_edge[3 * f + e] = 1;
+          s.boundary_vertex[s.facet(f)[triangle_edge(e)[0]]] = 1;
+          s.boundary_vertex[s.facet(f)[triangle_edge(e)[1]]] = 1;
+        }
+  }
+  // Lumped areas ∫ φ_k dS with a rule exact for the (polynomial, straight-facet) integrand.
   s.nodal_area = Eigen::VectorXd::Zero(s.num_nodes());
   const QuadratureRule rule = simplex_quadrature(s.dim - 1, 2 * cell_order(s.facet_type) + 1);
   Eigen::MatrixXd xf(s.dim, npf);
@@ -53,7 +105,7 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   for (Index f = 0; f < s.num_facets(); ++f) {
     for (int a = 0; a < npf; ++a) xf.col(a) = s.X.col(s.facet(f)[a]);
     for (int q = 0; q < rule.size(); ++q) {
-      shape_functions(s.facet_type, rule.point(q), N.data(), nullptr);
+      test_functions(s.facet_type, rule.point(q), N.data());
       const double J = facet_normal(s.facet_type, xf, rule.point(q)).norm();
       for (int a = 0; a < npf; ++a) s.nodal_area[s.facet(f)[a]] += rule.weights[q] * J * N[a];
     }

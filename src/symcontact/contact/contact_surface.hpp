@@ -27,7 +27,16 @@ struct ContactSurface {
   /// Number of facets that share each surface node as a vertex (0 for edge-midpoint nodes). In 2D a
   /// vertex of valence 1 is an end of the surface: projections past it find no contact.
   std::vector<int> valence;
-  Eigen::VectorXd nodal_area;   ///< ∫_Γ N_k dS in the reference configuration (lumped area)
+  /// 3D only (empty in 2D): num_facets × 3 flags, 1 when edge e of facet f (closest_point.hpp numbering)
+  /// belongs to no other facet of the surface. Such edges form the border of the surface, the 3D
+  /// analogue of the 2D ends: a projection clamped onto a border edge, or onto a vertex of one, is past
+  /// the end of the surface and finds no contact (boundary_vertex).
+  std::vector<char> boundary_edge;
+  /// 3D only (empty in 2D): 1 for the surface nodes that are vertices of a border edge.
+  std::vector<char> boundary_vertex;
+  /// ∫_Γ φ_k dS in the reference configuration (lumped area), φ_k the test functions of the gap
+  /// constraints (test_functions(): the shape functions, except on Tri6 facets).
+  Eigen::VectorXd nodal_area;
 
   int nodes_per_facet() const { return cell_num_nodes(facet_type); }
   Index num_facets() const { return static_cast<Index>(facets.size()) / nodes_per_facet(); }
@@ -47,6 +56,28 @@ Eigen::MatrixXd current_positions(const ContactSurface& s, const DofMap& dofs, c
 /// around it, evaluated at the node and weighted by the local surface Jacobian, summed and normalised
 /// (the averaged-normal field of Yang, Laursen and Meng 2005, §2.2, interpolated by the shape functions).
 Eigen::MatrixXd nodal_normals(const ContactSurface& s, const Eigen::MatrixXd& x);
+
+/// Weights of the weak gap constraints on one facet (φ_a in gap_constraints.hpp), at reference point ξ.
+/// They are the trace shape functions N_a, except on Tri6 facets, whose vertex functions integrate to
+/// zero over a flat facet (so weak gaps tested with them carry no information, and their lumped areas
+/// vanish). There a modified quadratic basis is used, of the kind introduced for quadratic mortar
+/// contact by Puso, Laursen & Solberg (CMAME 197, 2008, "A segment-to-segment mortar contact method for
+/// quadratic elements and large deformations") and used by Popp, Gee & Wall (SIAM J. Sci. Comput. 34,
+/// 2012, "Dual quadratic mortar finite element methods for 3D finite deformation contact"):
+///   φ_v = N_v + c (N_e + N_e'),  e, e' the two edges at vertex v;   φ_e = (1 − 2c) N_e,   c = 1/5.
+/// For any c it still sums to one and is still quadratic; on a flat facet of area A it integrates to
+/// ∫ φ_v = 2cA/3 = 2A/15 and ∫ φ_e = (1 − 2c)A/3 = A/5, all positive for 0 < c < 1/2 (checked in
+/// tests/unit/contact/test_contact_surface.cpp). Geometry and displacements keep the standard N.
+void test_functions(CellType type, const double* xi, double* phi);
+
+/// The coefficient c of the modified Tri6 test basis (test_functions()).
+constexpr double kModifiedTri6Coefficient = 0.2;
+
+/// Nodal forces F (dim × n, F_k = ∫ t N_k dS for a traction t) turned into the test basis:
+/// (T F)_i = ∫ t φ_i dS, with φ_i = Σ_k T_ik N_k (test_functions()). The identity except on Tri6 surfaces,
+/// where (T F)_v = F_v + c Σ_{edge nodes e next to v} F_e and (T F)_e = (1 − 2c) F_e. Dividing by the lumped
+/// area nodal_area[i] = ∫ φ_i dS then gives back a uniform traction exactly.
+Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd& F);
 
 /// Unnormalised outward normal of facet geometry `xf` (dim × npf) at reference point ξ; its norm is the
 /// surface Jacobian dS/dξ. In 2D, for a facet traversed with the body on its left, n = (t_y, −t_x).

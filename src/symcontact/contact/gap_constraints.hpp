@@ -6,8 +6,10 @@
 ///   g_i(u) = Σ_q w_q φ_i(ξ_q) θ_q(u) ≥ 0,   θ_q(u) = (x_s(ξ_q) − x̄_q)·n̄_q,
 ///   x_s(ξ) = Σ_a N_a(ξ)(X_a + u_a),   x̄ = Σ_b M_b(η)(Y_b + u_b)  (fixed for an obstacle),
 ///
-/// one row per slave surface node i with at least one contributing point (φ_i = N_i, the trace shape
-/// functions). g(u) = A u + b with A in global DOF numbering.
+/// one row per slave surface node i with at least one contributing point. φ_i are the test functions of
+/// contact_surface.hpp: the trace shape functions N_i, except on Tri6 facets (a modified quadratic basis
+/// whose every function integrates positively). g(u) = A u + b with A in global DOF numbering.
+/// In 3D, rows whose support Σ_q w_q φ_i(ξ_q) is not positive (partly integrated P2 facets) are left out.
 
 #include <vector>
 

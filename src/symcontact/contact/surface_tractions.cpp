@@ -13,13 +13,16 @@ SurfaceTractions surface_tractions(const ContactSurface& s, const DofMap& dofs, 
   t.force = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
   t.pressure = Eigen::VectorXd::Zero(s.num_nodes());
   t.tangential = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
-  for (Index k = 0; k < s.num_nodes(); ++k) {
-    if (!s.is_rigid())
+  if (!s.is_rigid())
+    for (Index k = 0; k < s.num_nodes(); ++k)
       for (int i = 0; i < s.dim; ++i) t.force(i, k) = force[dofs.dof(s.body, s.nodes[k], i)];
+  // In the test basis (the identity but on Tri6 surfaces), whose lumped areas A_k are all positive.
+  const Eigen::MatrixXd f = test_basis_forces(s, t.force);
+  for (Index k = 0; k < s.num_nodes(); ++k) {
     if (s.nodal_area[k] <= 0) continue;
-    const double fn = t.force.col(k).dot(t.normals.col(k));
+    const double fn = f.col(k).dot(t.normals.col(k));
     t.pressure[k] = -fn / s.nodal_area[k];
-    t.tangential.col(k) = (t.force.col(k) - fn * t.normals.col(k)) / s.nodal_area[k];
+    t.tangential.col(k) = (f.col(k) - fn * t.normals.col(k)) / s.nodal_area[k];
   }
   return t;
 }

@@ -3,6 +3,9 @@
 /// Nodal contact tractions of a surface from a nodal force vector F (force the other side exerts on
 /// the body): with n_k the smoothed outward normal and A_k = ∫ N_k dS the lumped reference area,
 ///   pressure p_k = −F_k·n_k / A_k,   tangential traction t_k = (F_k − (F_k·n_k) n_k) / A_k.
+/// On Tri6 surfaces F is first turned into the test basis (test_basis_forces(), contact_surface.hpp),
+/// whose lumped areas are all positive (the vertex shape functions of a Tri6 integrate to zero); a
+/// uniform traction is recovered exactly either way.
 
 #include <vector>
 

@@ -207,3 +207,27 @@ TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
   EXPECT_NE(summary.find("\"tangential_force\""), std::string::npos);
   EXPECT_NE(summary.find("\"coulomb_iterations\""), std::string::npos);
 }
+
+TEST_F(CliContact, Hertz3DExampleWritesContactResults) {
+  // examples/hertz_3d/sphere_on_plane.toml (quarter sphere on a rigid plane, P1, ~3 s): 3D contact output.
+  const fs::path out = dir_ / "out";
+  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/hertz_3d/sphere_on_plane.toml";
+  const CliResult r = run("run " + shell_quote(example) + " --out " + shell_quote(out) + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string summary = read_text(out / "summary.json");
+  const std::vector<double> force = json_array(summary, "total_force");
+  ASSERT_EQ(force.size(), 3u) << summary;
+  // P/4 = 0.0025 on the quarter disk, less 0.84 % for its polygonal mesh (test_hertz_3d.cpp).
+  EXPECT_NEAR(force[2], 0.0025 * (1 - 0.0084), 1e-5);
+  EXPECT_NEAR(force[0], 0.0, 1e-10);
+  EXPECT_NEAR(force[1], 0.0, 1e-10);
+  EXPECT_NEAR(json_number(summary, "max_pressure"), 0.132701, 0.05 * 0.132701);
+  // The contact area of the quarter model, π a² / 4 = 0.0283 for a = 0.1897, to about one element.
+  const double area = json_number(summary, "contact_area");
+  EXPECT_GT(area, 0.02);
+  EXPECT_LT(area, 0.04);
+  const std::string csv = read_text(out / "contact_floor_0001.csv");
+  EXPECT_EQ(csv.rfind("side,surface,node,x,y,z,gap,pressure,", 0), 0u) << csv.substr(0, csv.find('\n'));
+  const std::string vtu = read_text(out / "sphere_0001.vtu");
+  EXPECT_NE(vtu.find("Name=\"contact_pressure\""), std::string::npos);
+}

@@ -2,7 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "symcontact/fem/shape_functions.hpp"
@@ -241,6 +246,220 @@ TEST(ClosestPointLine3, DegenerateFacetGivesNoNaN) {
 }
 
 TEST(ClosestPointLine3, UnsupportedFacetTypeThrows) {
-  Eigen::MatrixXd xf = Eigen::MatrixXd::Identity(3, 3);
-  EXPECT_THROW(project_on_facet(CellType::kTri3, xf, Eigen::Vector3d(0.1, 0.1, 1.0)), std::logic_error);
+  Eigen::MatrixXd xf = Eigen::MatrixXd::Identity(3, 4);
+  EXPECT_THROW(project_on_facet(CellType::kTet4, xf, Eigen::Vector3d(0.1, 0.1, 1.0)), std::logic_error);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Triangles (3D).
+
+namespace {
+
+Eigen::Vector3d surface_at(CellType t, const Eigen::MatrixXd& xf, double e1, double e2,
+                           Eigen::Matrix<double, 3, 2>* d = nullptr) {
+  const double eta[2] = {e1, e2};
+  double N[6], dN[12];
+  shape_functions(t, eta, N, dN);
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  if (d) d->setZero();
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    x += N[a] * xf.col(a);
+    if (d) {
+      d->col(0) += dN[2 * a] * xf.col(a);
+      d->col(1) += dN[2 * a + 1] * xf.col(a);
+    }
+  }
+  return x;
+}
+
+/// Minimum of |x(η) − p|² over a dense grid of the reference triangle, refined by a finer grid around the
+/// best sample (brute force, independent of the projector).
+double sampled_min_distance2_tri(CellType t, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, double* eta_min) {
+  double best = std::numeric_limits<double>::infinity(), b1 = 0, b2 = 0;
+  const int n = 400;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) {
+      const double d2 = (surface_at(t, xf, double(i) / n, double(j) / n) - p).squaredNorm();
+      if (d2 < best) {
+        best = d2;
+        b1 = double(i) / n;
+        b2 = double(j) / n;
+      }
+    }
+  // Refine around the best sample, staying in the triangle.
+  double h = 1.0 / n;
+  for (int level = 0; level < 30; ++level) {
+    const double c1 = b1, c2 = b2;
+    for (int i = -4; i <= 4; ++i)
+      for (int j = -4; j <= 4; ++j) {
+        const double e1 = c1 + 0.25 * i * h, e2 = c2 + 0.25 * j * h;
+        if (e1 < 0 || e2 < 0 || e1 + e2 > 1) continue;
+        const double d2 = (surface_at(t, xf, e1, e2) - p).squaredNorm();
+        if (d2 < best) {
+          best = d2;
+          b1 = e1;
+          b2 = e2;
+        }
+      }
+    h *= 0.5;
+  }
+  if (eta_min) {
+    eta_min[0] = b1;
+    eta_min[1] = b2;
+  }
+  return best;
+}
+
+Eigen::MatrixXd tri3(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  Eigen::MatrixXd xf(3, 3);
+  xf << a, b, c;
+  return xf;
+}
+
+/// A Tri6 on the sphere of radius R about the origin: vertices at the given unit directions, edge nodes
+/// on the sphere above the chord midpoints.
+Eigen::MatrixXd spherical_tri6(double R, const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  Eigen::MatrixXd xf(3, 6);
+  const Eigen::Vector3d v[3] = {a.normalized(), b.normalized(), c.normalized()};
+  for (int k = 0; k < 3; ++k) xf.col(k) = R * v[k];
+  for (int e = 0; e < 3; ++e) xf.col(3 + e) = R * (v[triangle_edge(e)[0]] + v[triangle_edge(e)[1]]).normalized();
+  return xf;
+}
+
+}  // namespace
+
+TEST(ClosestPointTri3, InsideEdgeAndVertexRegions) {
+  const Eigen::Vector3d a(0, 0, 0), b(2, 0, 0), c(0, 1, 0.5);
+  const Eigen::MatrixXd xf = tri3(a, b, c);
+  const Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+  // Inside: the foot of the perpendicular, at (η1, η2) = (0.3, 0.4).
+  const Eigen::Vector3d foot = a + 0.3 * (b - a) + 0.4 * (c - a);
+  FacetProjection r = project_on_facet(CellType::kTri3, xf, foot + 0.7 * n);
+  EXPECT_TRUE(r.inside());
+  EXPECT_NEAR(r.eta[0], 0.3, 1e-14);
+  EXPECT_NEAR(r.eta[1], 0.4, 1e-14);
+  EXPECT_NEAR(r.distance2, 0.49, 1e-14);
+  EXPECT_NEAR((r.point - foot).norm(), 0.0, 1e-14);
+  // Past edge 0 (a, b), in the triangle's plane: clamped onto that edge.
+  const Eigen::Vector3d below = a + 0.6 * (b - a) - 0.3 * n.cross(b - a).normalized();
+  r = project_on_facet(CellType::kTri3, xf, below + 0.2 * n);
+  EXPECT_EQ(r.clamped_edge, 0);
+  EXPECT_EQ(r.clamped_vertex, -1);
+  EXPECT_FALSE(r.inside());
+  EXPECT_NEAR(r.eta[0], 0.6, 1e-14);
+  EXPECT_NEAR(r.eta[1], 0.0, 1e-14);
+  EXPECT_NEAR(r.distance2, 0.09 + 0.04, 1e-14);
+  // Beyond vertex b along its outward bisector: clamped to vertex 1.
+  r = project_on_facet(CellType::kTri3, xf, b + 0.5 * ((b - a).normalized() + (b - c).normalized()) + 0.1 * n);
+  EXPECT_EQ(r.clamped_vertex, 1);
+  EXPECT_EQ(r.clamped_edge, -1);
+  EXPECT_NEAR(r.eta[0], 1.0, 0.0);
+  EXPECT_NEAR(r.eta[1], 0.0, 0.0);
+  // A point on the facet, on edge 2 (c, a): inside, zero distance.
+  r = project_on_facet(CellType::kTri3, xf, 0.5 * (a + c));
+  EXPECT_TRUE(r.inside());
+  EXPECT_NEAR(r.distance2, 0.0, 1e-28);
+}
+
+TEST(ClosestPointTri3, RandomPointsMatchBruteForceSampling) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  int inside = 0, edge = 0, vertex = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Eigen::MatrixXd xf = tri3(Eigen::Vector3d(U(rng), U(rng), U(rng)), Eigen::Vector3d(U(rng), U(rng), U(rng)),
+                                    Eigen::Vector3d(U(rng), U(rng), U(rng)));
+    if (Eigen::Vector3d(xf.col(1) - xf.col(0)).cross(Eigen::Vector3d(xf.col(2) - xf.col(0))).norm() < 0.1) continue;
+    const Eigen::Vector3d p(1.5 * U(rng), 1.5 * U(rng), 1.5 * U(rng));
+    const FacetProjection r = project_on_facet(CellType::kTri3, xf, p);
+    double eta_ref[2];
+    const double d2_ref = sampled_min_distance2_tri(CellType::kTri3, xf, p, eta_ref);
+    EXPECT_NEAR(r.distance2, d2_ref, 1e-10) << "trial " << trial;
+    EXPECT_LE(r.distance2, d2_ref + 1e-14) << "trial " << trial;
+    EXPECT_NEAR(r.eta[0], eta_ref[0], 1e-5) << "trial " << trial;
+    EXPECT_NEAR(r.eta[1], eta_ref[1], 1e-5) << "trial " << trial;
+    EXPECT_NEAR((surface_at(CellType::kTri3, xf, r.eta[0], r.eta[1]) - r.point).norm(), 0.0, 1e-14);
+    // The report agrees with where η is.
+    const double l[3] = {1 - r.eta[0] - r.eta[1], r.eta[0], r.eta[1]};
+    if (r.inside()) {
+      ++inside;
+    } else if (r.clamped_edge >= 0) {
+      ++edge;
+      EXPECT_NEAR(l[(r.clamped_edge + 2) % 3], 0.0, 1e-14);  // the barycentric of the opposite vertex
+    } else {
+      ++vertex;
+      EXPECT_NEAR(l[r.clamped_vertex], 1.0, 1e-14);
+    }
+  }
+  // The random points visit all three kinds of region.
+  EXPECT_GT(inside, 0);
+  EXPECT_GT(edge, 0);
+  EXPECT_GT(vertex, 0);
+}
+
+TEST(ClosestPointTri6, FlatTri6MatchesTri3) {
+  const Eigen::Vector3d a(0, 0, 0), b(1, 0, 0.2), c(0.1, 1, 0);
+  Eigen::MatrixXd xf6(3, 6);
+  xf6 << a, b, c, 0.5 * (a + b), 0.5 * (b + c), 0.5 * (c + a);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(-1.0, 1.5);
+  for (int trial = 0; trial < 30; ++trial) {
+    const Eigen::Vector3d p(U(rng), U(rng), U(rng));
+    const FacetProjection r6 = project_on_facet(CellType::kTri6, xf6, p);
+    const FacetProjection r3 = project_on_facet(CellType::kTri3, tri3(a, b, c), p);
+    EXPECT_NEAR(r6.distance2, r3.distance2, 1e-12) << "trial " << trial;
+    EXPECT_NEAR(r6.eta[0], r3.eta[0], 1e-9) << "trial " << trial;
+    EXPECT_NEAR(r6.eta[1], r3.eta[1], 1e-9) << "trial " << trial;
+    EXPECT_EQ(r6.clamped_edge, r3.clamped_edge) << "trial " << trial;
+    EXPECT_EQ(r6.clamped_vertex, r3.clamped_vertex) << "trial " << trial;
+  }
+}
+
+TEST(ClosestPointTri6, CurvedFacetNewtonIsStationaryAndMatchesSampling) {
+  // A spherical Tri6 patch (R = 1, an octant-sized curved facet) and points inside and outside it.
+  const Eigen::MatrixXd xf = spherical_tri6(1.0, Eigen::Vector3d(1, 0.1, 0.1), Eigen::Vector3d(0.1, 1, 0.1),
+                                            Eigen::Vector3d(0.1, 0.1, 1));
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  int interior = 0, boundary = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    // Directions spread over and beyond the patch, radii 0.6–1.4.
+    const Eigen::Vector3d dir = Eigen::Vector3d(U(rng), U(rng), U(rng)) * 1.2 - Eigen::Vector3d::Constant(0.1);
+    if (dir.norm() < 0.2) continue;
+    const Eigen::Vector3d p = (0.6 + 0.8 * U(rng)) * dir.normalized();
+    const FacetProjection r = project_on_facet(CellType::kTri6, xf, p);
+    double eta_ref[2];
+    const double d2_ref = sampled_min_distance2_tri(CellType::kTri6, xf, p, eta_ref);
+    EXPECT_NEAR(r.distance2, d2_ref, 1e-10) << "trial " << trial;
+    EXPECT_LE(r.distance2, d2_ref + 1e-13) << "trial " << trial;
+    EXPECT_NEAR((surface_at(CellType::kTri6, xf, r.eta[0], r.eta[1]) - r.point).norm(), 0.0, 1e-14);
+    if (r.inside()) {
+      ++interior;
+      // Stationarity: the residual is normal to the facet, (x − p)·∂x/∂η_i = 0.
+      Eigen::Matrix<double, 3, 2> d;
+      const Eigen::Vector3d x = surface_at(CellType::kTri6, xf, r.eta[0], r.eta[1], &d);
+      EXPECT_NEAR((x - p).dot(d.col(0)), 0.0, 1e-12) << "trial " << trial;
+      EXPECT_NEAR((x - p).dot(d.col(1)), 0.0, 1e-12) << "trial " << trial;
+      EXPECT_NEAR(r.eta[0], eta_ref[0], 1e-5) << "trial " << trial;
+      EXPECT_NEAR(r.eta[1], eta_ref[1], 1e-5) << "trial " << trial;
+    } else {
+      ++boundary;
+      const double l[3] = {1 - r.eta[0] - r.eta[1], r.eta[0], r.eta[1]};
+      EXPECT_NEAR(std::min({l[0], l[1], l[2]}), 0.0, 1e-14) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(interior, 10);
+  EXPECT_GT(boundary, 5);
+}
+
+TEST(ClosestPointTri6, PointOnTheCurvedFacetHasZeroDistance) {
+  const Eigen::MatrixXd xf = spherical_tri6(2.0, Eigen::Vector3d(1, 0.2, 0), Eigen::Vector3d(0.2, 1, 0.1),
+                                            Eigen::Vector3d(0.3, 0.3, 1));
+  for (const auto& e : {std::array<double, 2>{0.2, 0.3}, std::array<double, 2>{0.6, 0.1}, std::array<double, 2>{1.0 / 3, 1.0 / 3}}) {
+    const Eigen::Vector3d x = surface_at(CellType::kTri6, xf, e[0], e[1]);
+    const FacetProjection r = project_on_facet(CellType::kTri6, xf, x);
+    EXPECT_TRUE(r.inside());
+    EXPECT_NEAR(r.distance2, 0.0, 1e-26);
+    EXPECT_NEAR(r.eta[0], e[0], 1e-12);
+    EXPECT_NEAR(r.eta[1], e[1], 1e-12);
+  }
 }

@@ -6,6 +6,9 @@
 #include <random>
 #include <stdexcept>
 
+#include "symcontact/contact/closest_point.hpp"
+#include "symcontact/fem/quadrature.hpp"
+#include "symcontact/fem/shape_functions.hpp"
 #include "symcontact/mesh/gmsh_io.hpp"
 #include "symcontact/mesh/structured.hpp"
 
@@ -158,4 +161,122 @@ TEST(ContactSurface, DiskRimNormalsAreRadial) {
     EXPECT_NEAR(s.nodal_area.sum(), 2 * M_PI, order == 1 ? 0.05 : 1e-3);
   }
   EXPECT_LT(worst[2], worst[1]);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// 3D surfaces (Tri3, Tri6) and the modified Tri6 test basis.
+
+class ContactSurfaceBox : public ::testing::TestWithParam<int> {};
+
+TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
+  const int order = GetParam();
+  const Mesh m = box_mesh(Vec3(0, 0, 0), Vec3(2, 1, 0.5), 4, 3, 2, order);
+  for (const char* name : {"zmax", "zmin", "xmax", "ymin"}) {
+    const ContactSurface s = make_contact_surface(m, name, 0, name);
+    EXPECT_EQ(s.dim, 3);
+    EXPECT_EQ(s.facet_type, order == 1 ? CellType::kTri3 : CellType::kTri6);
+    const std::string g = name;
+    const int axis = g[0] - 'x';
+    const double sign = g.substr(1) == "max" ? 1.0 : -1.0;
+    // Smoothed normals: exactly ±e_axis, at every node.
+    const Eigen::MatrixXd n = nodal_normals(s, s.X);
+    for (Index k = 0; k < s.num_nodes(); ++k)
+      EXPECT_NEAR((n.col(k) - sign * Eigen::Vector3d::Unit(axis)).norm(), 0.0, 1e-14) << name;
+    // Facet normals are outward with norm dS/dξ = 2 × facet area.
+    double area = 0.0;
+    for (Index f = 0; f < s.num_facets(); ++f) {
+      const double xi[2] = {0.2, 0.3};
+      const Eigen::VectorXd nf = facet_normal(s.facet_type, facet_coords(s, s.X, f), xi);
+      EXPECT_GT(sign * nf[axis], 0.0);
+      area += 0.5 * nf.norm();
+    }
+    // Lumped areas: all positive (P2 too, with the modified test basis), summing to the face area.
+    const double face = (axis == 0 ? 1 * 0.5 : axis == 1 ? 2 * 0.5 : 2 * 1);
+    EXPECT_NEAR(area, face, 1e-13);
+    EXPECT_NEAR(s.nodal_area.sum(), face, 1e-13);
+    EXPECT_GT(s.nodal_area.minCoeff(), 0.0);
+    // Border: the edges on the face's perimeter, and their vertices.
+    ASSERT_EQ(s.boundary_edge.size(), 3 * static_cast<std::size_t>(s.num_facets()));
+    double border = 0.0;
+    for (Index f = 0; f < s.num_facets(); ++f)
+      for (int e = 0; e < 3; ++e)
+        if (s.boundary_edge[3 * f + e])
+          border += (s.X.col(s.facet(f)[triangle_edge(e)[0]]) - s.X.col(s.facet(f)[triangle_edge(e)[1]])).norm();
+    const double perimeter = axis == 0 ? 3.0 : axis == 1 ? 5.0 : 6.0;
+    EXPECT_NEAR(border, perimeter, 1e-13) << name;
+    const Eigen::VectorXd lo = s.X.rowwise().minCoeff(), hi = s.X.rowwise().maxCoeff();
+    for (Index k = 0; k < s.num_nodes(); ++k) {
+      bool on_perimeter = false;
+      for (int i = 0; i < 3; ++i)
+        if (i != axis && (std::abs(s.X(i, k) - lo[i]) < 1e-12 || std::abs(s.X(i, k) - hi[i]) < 1e-12)) on_perimeter = true;
+      if (s.valence[k] > 0) {
+        EXPECT_EQ(s.boundary_vertex[k] != 0, on_perimeter) << name << " node " << k;
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactSurface, ContactSurfaceBox, ::testing::Values(1, 2),
+                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
+
+TEST(ContactSurfaceTestBasis, ModifiedTri6BasisIsAPartitionOfUnityWithPositiveIntegrals) {
+  // A curved Tri6 (edge nodes lifted) and a flat one: Σ φ_a = 1 everywhere, ∫ φ_a > 0 for every a, and on
+  // the flat one ∫ φ_v = 2A/15, ∫ φ_e = A/5 — while the standard vertex functions integrate to 0.
+  const QuadratureRule rule = simplex_quadrature(2, 8);
+  Eigen::MatrixXd flat(3, 6), curved(3, 6);
+  flat << 0, 2, 0, 1, 1, 0,  //
+      0, 0, 1, 0, 0.5, 0.5,  //
+      0, 0, 0, 0, 0, 0;
+  curved = flat;
+  curved.row(2) << 0, 0, 0, 0.3, 0.2, 0.25;
+  for (const Eigen::MatrixXd* xf : {&flat, &curved}) {
+    double phi_int[6] = {}, N_int[6] = {}, A = 0.0;
+    for (int q = 0; q < rule.size(); ++q) {
+      double phi[6], N[6];
+      test_functions(CellType::kTri6, rule.point(q), phi);
+      shape_functions(CellType::kTri6, rule.point(q), N, nullptr);
+      double sum = 0.0;
+      for (double v : phi) sum += v;
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+      const double J = facet_normal(CellType::kTri6, *xf, rule.point(q)).norm();
+      A += rule.weights[q] * J;
+      for (int a = 0; a < 6; ++a) {
+        phi_int[a] += rule.weights[q] * J * phi[a];
+        N_int[a] += rule.weights[q] * J * N[a];
+      }
+    }
+    for (int a = 0; a < 6; ++a) EXPECT_GT(phi_int[a], 0.05 * A) << "node " << a;
+    if (xf == &flat) {
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(N_int[a], 0.0, 1e-14);
+        EXPECT_NEAR(phi_int[a], 2.0 * A / 15.0, 1e-14);
+        EXPECT_NEAR(phi_int[3 + a], A / 5.0, 1e-14);
+      }
+    }
+  }
+  // Other facet types keep the shape functions.
+  const double xi[2] = {0.2, 0.3};
+  double phi[3], N[3];
+  test_functions(CellType::kTri3, xi, phi);
+  shape_functions(CellType::kTri3, xi, N, nullptr);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(phi[a], N[a]);
+}
+
+TEST(ContactSurfaceTestBasis, UniformTractionIsRecoveredAtEveryTri6Node) {
+  // Consistent nodal forces of a uniform traction t on a P2 face, F_k = ∫ t N_k dS (zero at the vertices),
+  // turned into the test basis and divided by the lumped areas: t at every node.
+  const Mesh m = box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 2, 2, 2);
+  const ContactSurface s = make_contact_surface(m, "zmax", 0, "top");
+  const Eigen::Vector3d t(0.1, -0.2, -1.0);
+  Eigen::MatrixXd F = Eigen::MatrixXd::Zero(3, s.num_nodes());
+  const QuadratureRule rule = simplex_quadrature(2, 4);
+  for (Index f = 0; f < s.num_facets(); ++f)
+    for (int q = 0; q < rule.size(); ++q) {
+      double N[6];
+      shape_functions(CellType::kTri6, rule.point(q), N, nullptr);
+      const double J = facet_normal(CellType::kTri6, facet_coords(s, s.X, f), rule.point(q)).norm();
+      for (int a = 0; a < 6; ++a) F.col(s.facet(f)[a]) += rule.weights[q] * J * N[a] * t;
+    }
+  const Eigen::MatrixXd T = test_basis_forces(s, F);
+  for (Index k = 0; k < s.num_nodes(); ++k) EXPECT_NEAR((T.col(k) / s.nodal_area[k] - t).norm(), 0.0, 1e-13);
 }

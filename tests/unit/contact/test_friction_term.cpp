@@ -281,3 +281,50 @@ INSTANTIATE_TEST_SUITE_P(FrictionTerm, FrictionTermCase,
                                            Case{2, true, 0.3}, Case{1, false, 0.0}, Case{2, false, 0.0},
                                            Case{1, false, 0.3}, Case{2, false, 0.3}),
                          case_name);
+
+// ---------------------------------------------------------------------------------------------------
+// 3D: two-component slips in the tangent plane, between two non-matching boxes (Tri3 / Tri6 facets), with
+// the nodal points the solver uses (nodal_contact_points) and with the segment-based mortar points.
+
+class FrictionTerm3D : public ::testing::TestWithParam<int> {};
+
+TEST_P(FrictionTerm3D, DerivativesAtRandomStatesAndAtZeroSlip) {
+  const int order = GetParam();
+  const Mesh lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), 3, 3, 1, order);
+  const Mesh upper = box_mesh(Vec3(0.13, 0.1, 0), Vec3(0.83, 0.9, 0.4), 4, 3, 1, order);
+  DofMap dofs(3);
+  const int b0 = dofs.add_body(lower.num_nodes()), b1 = dofs.add_body(upper.num_nodes());
+  const ContactSurface master = make_contact_surface(lower, "zmax", b0, "lower.top");
+  const ContactSurface slave = make_contact_surface(upper, "zmin", b1, "upper.bottom");
+  const MasterGeometry mg = prepare_master(master, master.X);
+  ContactSearchOptions opt;
+  opt.search_distance = 0.5;
+  const std::vector<std::vector<ContactPoint>> point_sets = {
+      contact_points(slave, slave.X, mg, opt), nodal_contact_points(slave, slave.X, &mg, nullptr, 0.5)};
+  for (const auto& points : point_sets) {
+    ASSERT_GT(points.size(), 10u);
+    for (const ContactPoint& p : points) ASSERT_NEAR((p.normal - Eigen::Vector3d(0, 0, 1)).norm(), 0.0, 1e-14);  // the master's n̄
+    const std::vector<double> tau = random_tau(points.size(), 6);
+    const Index n = dofs.num_dofs();
+    const VectorXd u0 = random_vector(n, 0.01, 41);
+    const FrictionTerm term("friction", slave, &master, points, tau, kAlpha, dofs, u0);
+    // Slips have both tangential components, none along the normal.
+    const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 42);
+    double sx = 0, sy = 0;
+    for (const Eigen::Vector3d& s : term.slips(u)) {
+      EXPECT_EQ(s.z(), 0.0);
+      sx = std::max(sx, std::abs(s.x()));
+      sy = std::max(sy, std::abs(s.y()));
+    }
+    EXPECT_GT(sx, kAlpha);
+    EXPECT_GT(sy, kAlpha);
+    for (const VectorXd& state : {u, u0}) {
+      const FdResult r = check_derivatives(term, state, kFdStep, 6, 400, 3);
+      EXPECT_LT(r.gradient_error, kTol);
+      EXPECT_LT(r.hessian_error, kTol);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FrictionTerm, FrictionTerm3D, ::testing::Values(1, 2),
+                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });

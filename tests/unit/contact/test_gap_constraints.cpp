@@ -524,3 +524,116 @@ TEST_P(GapConstraintsFlat, DeepPenetrationOfAThinMasterKeepsItsConstraints) {
   for (Index row = 0; row < g.num_rows(); ++row)
     EXPECT_NEAR(g.b[row], -pen * slave.nodal_area[g.slave_node[row]], 1e-13);
 }
+
+// ---------------------------------------------------------------------------------------------------
+// 3D: the same finite-difference check on a flat interface between two boxes (Tri3 / Tri6 facets).
+
+namespace {
+
+struct Interface3D {
+  Mesh lower, upper;
+  DofMap dofs{3};
+  ContactSurface master, slave;
+};
+
+/// Lower box [0, 1]² × [−0.5, 0] (body 0, 3 × 3 divisions) is the master through "zmax"; upper box
+/// [0.13, 0.83] × [0.1, 0.9] × [sz, sz + 0.4] (body 1, 4 × 3 divisions) the slave through "zmin".
+Interface3D make_interface_3d(int order, double sz) {
+  Interface3D it;
+  it.lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), 3, 3, 1, order);
+  it.upper = box_mesh(Vec3(0.13, 0.1, sz), Vec3(0.83, 0.9, sz + 0.4), 4, 3, 1, order);
+  const int b0 = it.dofs.add_body(it.lower.num_nodes());
+  const int b1 = it.dofs.add_body(it.upper.num_nodes());
+  it.master = make_contact_surface(it.lower, "zmax", b0, "lower.top");
+  it.slave = make_contact_surface(it.upper, "zmin", b1, "upper.bottom");
+  return it;
+}
+
+/// Random everywhere; on the contact faces u_x, u_y affine in (X, Y) and u_z constant per body, so that
+/// the faces stay flat and parallel (P2 edge nodes stay at midpoints).
+VectorXd flat_random_state_3d(const Interface3D& it, double amplitude, std::mt19937& rng, bool touching) {
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  VectorXd u(it.dofs.num_dofs());
+  for (Index i = 0; i < u.size(); ++i) u[i] = amplitude * U(rng);
+  const double uz0 = amplitude * U(rng);
+  for (int body = 0; body < 2; ++body) {
+    const ContactSurface& s = body == 0 ? it.master : it.slave;
+    Eigen::Matrix<double, 2, 3> a;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 3; ++j) a(i, j) = amplitude * U(rng);
+    const double uz = touching ? uz0 : amplitude * U(rng);
+    for (Index k = 0; k < s.num_nodes(); ++k) {
+      for (int i = 0; i < 2; ++i) u[it.dofs.dof(body, s.nodes[k], i)] = a(i, 0) + a(i, 1) * s.X(0, k) + a(i, 2) * s.X(1, k);
+      u[it.dofs.dof(body, s.nodes[k], 2)] = uz;
+    }
+  }
+  return u;
+}
+
+ContactSet two_surface_set_3d(const Interface3D& it, ContactMode mode, double search) {
+  ContactSet set;
+  set.surfaces = {it.master, it.slave};
+  ContactPair p;
+  p.name = "pair";
+  p.surface_a = 0;
+  p.surface_b = 1;
+  p.mode = mode;
+  p.slave_is_b = true;
+  p.search_distance = search;
+  set.pairs.push_back(p);
+  set.finalize();
+  return set;
+}
+
+}  // namespace
+
+class GapConstraints3D : public ::testing::TestWithParam<int> {};
+
+TEST_P(GapConstraints3D, UniformSeparationGivesSeparationTimesLumpedArea) {
+  // g_i = ∫ θ φ_i = δ ∫ φ_i = δ A_i, every slave node (P2: vertices included, modified basis).
+  const int order = GetParam();
+  const double delta = 0.03;
+  const Interface3D it = make_interface_3d(order, delta);
+  const ContactSet set = two_surface_set_3d(it, ContactMode::kOnePass, 0.2);
+  const ContactLinearization lin = set.linearize(it.dofs, VectorXd::Zero(it.dofs.num_dofs()));
+  ASSERT_EQ(lin.A.rows(), it.slave.num_nodes());
+  for (Index r = 0; r < lin.A.rows(); ++r) {
+    const Index k = lin.row_node[r];
+    EXPECT_GT(it.slave.nodal_area[k], 0.0);
+    EXPECT_NEAR(lin.b[r], delta * it.slave.nodal_area[k], 1e-14) << "node " << k;
+    EXPECT_NEAR(lin.row_support[r], it.slave.nodal_area[k], 1e-14) << "node " << k;
+  }
+}
+
+TEST_P(GapConstraints3D, FrozenJacobianIsTheDerivativeOnAFlatInterfaceOnePass) {
+  const int order = GetParam();
+  const Interface3D it = make_interface_3d(order, 0.05);
+  const ContactSet set = two_surface_set_3d(it, ContactMode::kOnePass, 0.5);
+  std::mt19937 rng(60 + order);
+  for (int trial = 0; trial < 3; ++trial) {
+    const VectorXd u0 = flat_random_state_3d(it, 1e-2, rng, false);
+    const FdCheck c = fd_check(set, it.dofs, u0, rng);
+    ASSERT_TRUE(c.same_rows);
+    EXPECT_EQ(c.rows, it.slave.num_nodes());
+    EXPECT_LT(c.error, 1e-6) << "trial " << trial;
+  }
+}
+
+TEST_P(GapConstraints3D, FrozenJacobianIsTheDerivativeOnAFlatInterfaceSymmetric) {
+  // Both families; touching (θ = 0), so that the moving border of the reverse family's contact region
+  // does not enter the derivative (as in 2D).
+  const int order = GetParam();
+  const Interface3D it = make_interface_3d(order, 0.0);
+  const ContactSet set = two_surface_set_3d(it, ContactMode::kSymmetric, 0.5);
+  std::mt19937 rng(70 + order);
+  for (int trial = 0; trial < 3; ++trial) {
+    const VectorXd u0 = flat_random_state_3d(it, 1e-2, rng, true);
+    const FdCheck c = fd_check(set, it.dofs, u0, rng);
+    ASSERT_TRUE(c.same_rows);
+    EXPECT_GT(c.rows, it.slave.num_nodes());
+    EXPECT_LT(c.error, 1e-6) << "trial " << trial;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(GapConstraints, GapConstraints3D, ::testing::Values(1, 2),
+                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });

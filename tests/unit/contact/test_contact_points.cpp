@@ -1,0 +1,91 @@
+#include "symcontact/contact/contact_points.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "symcontact/contact/polygon_clipping.hpp"
+#include "symcontact/mesh/structured.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+/// A slave face (top of a box, size 1/ns) under a master face (bottom of a box above it, size 1/nm),
+/// with the master covering [mx0, mx1] × [0, 1] and a gap `gap`.
+struct Faces3D {
+  Mesh lower, upper;
+  ContactSurface slave, master;
+};
+
+Faces3D make_faces(int order, int ns, int nm, double mx0, double mx1, double gap) {
+  Faces3D f;
+  f.lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), ns, ns, 1, order);
+  f.upper = box_mesh(Vec3(mx0, 0, gap), Vec3(mx1, 1, gap + 0.5), nm, nm + 1, 1, order);
+  f.slave = make_contact_surface(f.lower, "zmax", 0, "lower.top");
+  f.master = make_contact_surface(f.upper, "zmin", 1, "upper.bottom");
+  return f;
+}
+
+}  // namespace
+
+class MortarCells3D : public ::testing::TestWithParam<int> {};
+
+TEST_P(MortarCells3D, CellAreasSumToTheSlaveFacetAreaWhenTheMasterCoversIt) {
+  const Faces3D f = make_faces(GetParam(), 3, 4, -0.1, 1.1, 0.02);
+  const MasterGeometry mg = prepare_master(f.master, f.master.X);
+  for (Index k = 0; k < f.slave.num_facets(); ++k) {
+    double area = 0.0;
+    for (const MortarCell& c : mortar_cells(f.slave, f.slave.X, k, mg, 0.1)) {
+      EXPECT_GE(c.master_facet, 0);
+      area += polygon_area(c.polygon);
+    }
+    EXPECT_NEAR(area, 0.5, 1e-13) << "slave facet " << k;  // the whole reference triangle
+  }
+  // The points' weights then add up to the face area, and their gaps are the separation.
+  ContactSearchOptions opt;
+  opt.search_distance = 0.1;
+  const std::vector<ContactPoint> pts = contact_points(f.slave, f.slave.X, mg, opt);
+  double w = 0.0;
+  for (const ContactPoint& p : pts) {
+    w += p.weight;
+    EXPECT_NEAR(p.gap, 0.02, 1e-14);  // open: θ = (x − x̄)·n̄ with n̄ = −e_z
+    EXPECT_NEAR((p.normal - Eigen::Vector3d(0, 0, -1)).norm(), 0.0, 1e-14);
+  }
+  EXPECT_NEAR(w, 1.0, 1e-13);
+}
+
+TEST_P(MortarCells3D, PartialCoverageIntegratesOnlyTheOverlap) {
+  // The master covers x ∈ [0.25, 0.8] only: the weights add up to the overlap area 0.55, and no point
+  // projects past the master's border.
+  const Faces3D f = make_faces(GetParam(), 4, 3, 0.25, 0.8, 0.0);
+  const MasterGeometry mg = prepare_master(f.master, f.master.X);
+  ContactSearchOptions opt;
+  opt.search_distance = 0.1;
+  double w = 0.0;
+  for (const ContactPoint& p : contact_points(f.slave, f.slave.X, mg, opt)) {
+    w += p.weight;
+    EXPECT_GE(p.x.x(), 0.25 - 1e-14);
+    EXPECT_LE(p.x.x(), 0.8 + 1e-14);
+  }
+  EXPECT_NEAR(w, 0.55, 1e-13);
+}
+
+TEST_P(MortarCells3D, PastTheBorderOfTheMasterIsNoContact) {
+  const Faces3D f = make_faces(GetParam(), 2, 2, 0.25, 0.8, 0.01);
+  const MasterGeometry mg = prepare_master(f.master, f.master.X);
+  ContactPoint cp;
+  const Eigen::Vector3d ns(0, 0, 1);
+  // Over the master: contact; past its border at x = 0.8 (the projection is clamped onto a border
+  // edge) or past its corner: none, unless allowed (nodal friction).
+  EXPECT_TRUE(project_to_master(mg, Eigen::Vector3d(0.5, 0.5, 0.0), ns, 0.1, cp));
+  EXPECT_FALSE(project_to_master(mg, Eigen::Vector3d(0.9, 0.5, 0.0), ns, 0.1, cp));
+  EXPECT_FALSE(project_to_master(mg, Eigen::Vector3d(0.9, 1.05, 0.0), ns, 0.1, cp));
+  EXPECT_TRUE(project_to_master(mg, Eigen::Vector3d(0.9, 0.5, 0.0), ns, 0.2, cp, true));
+  EXPECT_NEAR(cp.xbar.x(), 0.8, 1e-14);
+  // A point exactly above the border edge is still in contact.
+  EXPECT_TRUE(project_to_master(mg, Eigen::Vector3d(0.8, 0.5, 0.0), ns, 0.1, cp));
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactPoints, MortarCells3D, ::testing::Values(1, 2),
+                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
