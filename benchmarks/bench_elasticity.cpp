@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
                "Hertz 2D contact solves against that Cholesky floor",
                "symcontact-bench"};
   app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, inclined or problem")
-      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "inclined"}));
+      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "inclined", "problem"}));
   app.add_option("--h", opt.h,
                  "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
                  "inclined: element sizes (default 0.05 0.025 0.0125)")
