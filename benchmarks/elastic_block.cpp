@@ -146,6 +146,13 @@ CholeskyFloor measure_cholesky_floor(const EnergyTerm& energy, const std::vector
   VectorXd u = VectorXd::Zero(num_dofs), g(u.size());
   for (Index k = 0; k < u.size(); ++k)
     if (free_index[k] >= 0) u[k] = u_free[free_index[k]];
+  // A finite-strain energy may not be evaluable there (the linear response inverts cells): then at a
+  // small multiple of it.
+  try {
+    energy.add_gradient(u, g);
+  } catch (const EvaluationError&) {
+    u *= 1e-6 / std::max(u.cwiseAbs().maxCoeff(), 1e-300);
+  }
   for (int rep = 0; rep < std::max(1, repeat); ++rep) {
     g.setZero();
     const auto t0 = std::chrono::steady_clock::now();

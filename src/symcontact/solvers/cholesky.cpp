@@ -11,7 +11,12 @@ struct CholeskySolver::Impl {
   Index n = -1;
 };
 
-CholeskySolver::CholeskySolver() : impl_(std::make_unique<Impl>()) {}
+CholeskySolver::CholeskySolver() : impl_(std::make_unique<Impl>()) {
+  // CHOLMOD prints its warnings ("matrix not positive definite") to stdout by default; every failure is
+  // reported here through info()/status instead, and callers that probe definiteness (the Newton shift,
+  // the polish) expect failures.
+  impl_->llt.cholmod().print = 0;
+}
 CholeskySolver::~CholeskySolver() = default;
 
 void CholeskySolver::analyze(const SparseMatrix& lower) {
