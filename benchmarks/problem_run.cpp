@@ -43,6 +43,7 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
   const bool contact = !model.contacts().empty();
   run->u = VectorXd::Zero(dofs.num_dofs());
   run->steps = model.num_steps();
+  FrictionState previous;  // the last step's thresholds (Coulomb warm start)
   for (int step = 0; step < run->steps; ++step) {
     model.set_step(step);
     run->fixed = model.fixed_dofs(step);
@@ -50,8 +51,9 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
     const double t0 = wall_seconds();
     StepFigures f;
     if (contact) {
-      const FrictionalReport rep =
-          solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u, opt, log);
+      const FrictionalReport rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u,
+                                                            opt, log, step > 0 ? &previous : nullptr);
+      previous = rep.friction;
       run->times.merge(rep.times);
       f.contact_solves = 1 + rep.coulomb_iterations;
       f.geometry_iterations = rep.geometry_iterations;

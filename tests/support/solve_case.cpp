@@ -26,7 +26,8 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
     if (c->model->contacts().empty()) {
       solve_equilibrium(c->model->energy(), fixed, c->u);
     } else {
-      c->frictional = solve_frictional_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log);
+      c->frictional = solve_frictional_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log,
+                                               step > 0 ? &c->frictional.friction : nullptr);
       c->report = c->frictional.last;
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
       c->history.push_back(c->contact);

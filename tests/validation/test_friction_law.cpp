@@ -377,7 +377,8 @@ TEST(V4FrictionLaw, TrescaWithTheCoulombThresholdReproducesCoulomb) {
   for (int step = 0; step < model->num_steps(); ++step) {
     model->set_step(step);
     u_prev = u;
-    rep = solve_frictional_contact(model->energy(), model->fixed_dofs(step), model->contacts(), dofs, u, opt, log);
+    rep = solve_frictional_contact(model->energy(), model->fixed_dofs(step), model->contacts(), dofs, u, opt, log,
+                                   step > 0 ? &rep.friction : nullptr);
   }
   const std::vector<ContactPairResult> res = contact_results(model->contacts(), dofs, u, rep.last);
   const Eigen::VectorXd p = res[0].sides[0].pressure.cwiseMax(0.0);

@@ -81,10 +81,13 @@ std::vector<StepResult> solve_inclined(const std::string& file, double h) {
   const FrictionalOptions opt = contact_options(spec, log);
   VectorXd u = VectorXd::Zero(dofs.num_dofs());
   std::vector<StepResult> steps;
+  FrictionState previous;
   for (int step = 0; step < model->num_steps(); ++step) {
     model->set_step(step);
     const FixedDofs fixed = model->fixed_dofs(step);
-    const FrictionalReport rep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, opt, log);
+    const FrictionalReport rep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, opt, log,
+                                                          step > 0 ? &previous : nullptr);
+    previous = rep.friction;
     const std::vector<ContactPairResult> pairs = contact_results(model->contacts(), dofs, u, rep.last);
     StepResult s;
     VectorXd g = VectorXd::Zero(dofs.num_dofs());

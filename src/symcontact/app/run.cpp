@@ -210,6 +210,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   VectorXd u = VectorXd::Zero(dofs.num_dofs());
   std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
   const int nsteps = model->num_steps();
+  FrictionState previous_friction;  ///< the thresholds the last step converged to (Coulomb warm start)
   for (int step = 0; step < nsteps; ++step) {
     PhaseTimes st;
     model->set_step(step);
@@ -219,7 +220,8 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     FrictionalReport frep;
     try {
       if (has_contact)
-        frep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, contact_options(spec, log), log);
+        frep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, contact_options(spec, log), log,
+                                        step > 0 ? &previous_friction : nullptr);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
     } catch (const SolveError& e) {
@@ -242,6 +244,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
     const ContactSolveReport& crep = frep.last;
+    if (has_contact) previous_friction = frep.friction;
     if (has_contact) {
       st.merge(frep.times);
       js["geometry_iterations"] = frep.geometry_iterations;

@@ -30,21 +30,28 @@ Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap
 
 FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                           const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
-                                          const Logger& log) {
+                                          const Logger& log, const FrictionState* previous) {
   FrictionalReport rep;
   const int np = static_cast<int>(contacts.pairs.size());
   rep.friction.u_start = u;
   rep.friction.nodal_tau.assign(np, Eigen::VectorXd());
-  bool any_friction = false, any_coulomb = false;
+  bool any_friction = false, any_coulomb = false, warm = false;
   for (int p = 0; p < np; ++p) {
     const ContactPair& pair = contacts.pairs[p];
     if (pair.friction == FrictionLaw::kNone) continue;
     any_friction = true;
     const ContactSurface& s = contacts.surfaces[contacts.families()[contacts.friction_family(p)].slave];
-    // Tresca: the given threshold; Coulomb: 0 for the frictionless first solve.
+    // Tresca: the given threshold; Coulomb: the previous step's, or 0 for a frictionless first solve.
     rep.friction.nodal_tau[p] =
         Eigen::VectorXd::Constant(s.num_nodes(), pair.friction == FrictionLaw::kTresca ? pair.tau : 0.0);
-    any_coulomb = any_coulomb || pair.friction == FrictionLaw::kCoulomb;
+    if (pair.friction == FrictionLaw::kCoulomb) {
+      any_coulomb = true;
+      if (previous && p < static_cast<int>(previous->nodal_tau.size()) &&
+          previous->nodal_tau[p].size() == s.num_nodes() && previous->nodal_tau[p].maxCoeff() > 0.0) {
+        rep.friction.nodal_tau[p] = previous->nodal_tau[p];
+        warm = true;
+      }
+    }
   }
   auto solve = [&]() {
     ContactSolveReport r =
@@ -66,7 +73,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
       if (contacts.pairs[p].friction != FrictionLaw::kCoulomb) continue;
       r[p] = contacts.pairs[p].mu * friction_side_pressure(contacts, p, dofs, u, rep.last.contact_force) -
              rep.friction.nodal_tau[p];
-      if (k > 1) {
+      if (k > 1 || warm) {
         Index at = 0;
         const double d = r[p].cwiseAbs().maxCoeff(&at);
         num = std::max(num, d);
@@ -81,13 +88,13 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
         }
       }
     }
-    if (k > 1) {
+    if (k > 1 || warm) {
       const double change = den > 0 ? num / den : (num > 0 ? 1.0 : 0.0);
       rep.coulomb_change.push_back(change);
       // Aitken: ω_k from r_{k−1} and r_k (all Coulomb pairs as one vector).
       double dot = 0.0, dd = 0.0;
       for (int p = 0; p < np; ++p) {
-        if (r[p].size() == 0 || r_prev[p].size() != r[p].size()) continue;
+        if (r[p].size() == 0 || p >= static_cast<int>(r_prev.size()) || r_prev[p].size() != r[p].size()) continue;
         const Eigen::VectorXd dr = r[p] - r_prev[p];
         dot += r_prev[p].dot(dr);
         dd += dr.squaredNorm();
@@ -95,10 +102,10 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
       omega = dd > 0 ? std::clamp(-omega * dot / dd, 0.1, 1.0) : 1.0;
       rep.coulomb_relaxation.push_back(omega);
       std::ostringstream s;
-      s << "  Coulomb iteration " << k - 1 << ": threshold change " << change << ", relaxation " << omega;
+      s << "  Coulomb iteration " << k - (warm ? 0 : 1) << ": threshold change " << change << ", relaxation " << omega;
       log.detail(s.str());
       if (change < options.coulomb_tolerance) break;
-      if (k - 1 >= options.max_coulomb_iterations) {
+      if (k - (warm ? 0 : 1) >= options.max_coulomb_iterations) {
         std::ostringstream e;
         e << "the Coulomb fixed point did not converge in " << options.max_coulomb_iterations
           << " iterations (last relative change of the threshold " << change << ", tolerance "
@@ -108,7 +115,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     }
     for (int p = 0; p < np; ++p)
       if (r[p].size() > 0)
-        rep.friction.nodal_tau[p] = (rep.friction.nodal_tau[p] + (k > 1 ? omega : 1.0) * r[p]).cwiseMax(0.0);
+        rep.friction.nodal_tau[p] = (rep.friction.nodal_tau[p] + (k > 1 || warm ? omega : 1.0) * r[p]).cwiseMax(0.0);
     r_prev = std::move(r);
     rep.coulomb_iterations = k;
     solve();

@@ -3,7 +3,11 @@
 /// One load step of frictional contact: Algorithm 1 of the talk (METHOD.md) around Algorithm 2.
 ///
 ///  - Tresca pairs: the threshold τ is given; one regularised-Tresca solve (solve_contact).
-///  - Coulomb pairs (Raous 1999, eq. 17): σ_{n,0} from the frictionless problem, τ_0 = μ p_0; then
+///  - Coulomb pairs (Raous 1999, eq. 17): σ_{n,0} from the frictionless problem, τ_0 = μ p_0 — or, from
+///    the second load step on (`previous` given), τ_0 = the thresholds the previous step converged to,
+///    without a frictionless solve: under large sliding the frictionless solve lets everything friction
+///    held spring back (a dragged flexible die: 40 % of the solution's size), and dragging it back
+///    defeated the geometry fixed point (2D ironing, step 40); it also saves one contact solve per step. Then
 ///      solve regularised Tresca with τ_k → pressure p_k → residual r_k = μ p_k − τ_k,
 ///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that does not converge within the allowed
 ///    iterations throws SolveError — never reported as success.
@@ -30,7 +34,7 @@ struct FrictionalOptions {
 
 struct FrictionalReport {
   ContactSolveReport last;                 ///< the final Tresca solve
-  int coulomb_iterations = 0;              ///< Tresca solves after the frictionless one (0: no Coulomb pair)
+  int coulomb_iterations = 0;              ///< solves after the first (frictionless, or warm) one; 0: no Coulomb pair
   std::vector<double> coulomb_change;      ///< ‖r_k‖∞ / ‖τ_k‖∞ per iteration
   std::vector<double> coulomb_relaxation;  ///< ω_k per iteration
   int geometry_iterations = 0;             ///< summed over all solves of the step
@@ -40,8 +44,10 @@ struct FrictionalReport {
 };
 
 /// u: on entry the start of the step (also the reference of the slip increments), on exit the solution.
+/// `previous`: the friction state the previous load step ended with (its report's `friction`), or null
+/// for the first step.
 FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                           const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
-                                          const Logger& log);
+                                          const Logger& log, const FrictionState* previous = nullptr);
 
 }  // namespace symcontact
