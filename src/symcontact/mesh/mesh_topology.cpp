@@ -1,8 +1,12 @@
 #include "symcontact/mesh/mesh_topology.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
+#include <unordered_map>
 
 #include "symcontact/core/error.hpp"
 
@@ -60,15 +64,37 @@ std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double rela
   if (n < 2) return pairs;
   const double diagonal = (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).norm();
   const double tol = relative_tolerance * diagonal;
-  std::vector<Index> order(n);
-  std::iota(order.begin(), order.end(), Index(0));
-  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return m.x(0, a) < m.x(0, b) || (m.x(0, a) == m.x(0, b) && a < b); });
-  for (Index i = 0; i < n; ++i) {
-    const Index a = order[i];
-    for (Index j = i + 1; j < n && m.x(0, order[j]) - m.x(0, a) <= tol; ++j) {
-      const Index b = order[j];
-      if ((m.x.col(a) - m.x.col(b)).norm() <= tol) pairs.emplace_back(std::min(a, b), std::max(a, b));
+  // A hash grid of cells of size tol over the bounding box: twins lie in the same or neighbouring cells.
+  // O(n), whatever the layout (a sweep along one axis would be quadratic on structured meshes).
+  const double cell = tol > 0 ? tol : 1.0;
+  const Eigen::VectorXd lo = m.x.rowwise().minCoeff();
+  using Key = std::array<std::int64_t, 3>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      std::size_t h = 1469598103934665603ull;
+      for (std::int64_t v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+      return h;
     }
+  };
+  auto key_of = [&](Index v) {
+    Key k{0, 0, 0};
+    for (int i = 0; i < m.dim; ++i) k[i] = static_cast<std::int64_t>(std::floor((m.x(i, v) - lo[i]) / cell));
+    return k;
+  };
+  std::unordered_map<Key, std::vector<Index>, KeyHash> grid;
+  grid.reserve(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v) grid[key_of(v)].push_back(v);
+  const int reach_z = m.dim == 3 ? 1 : 0;
+  for (Index a = 0; a < n; ++a) {
+    const Key k = key_of(a);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -reach_z; dz <= reach_z; ++dz) {
+          const auto it = grid.find(Key{k[0] + dx, k[1] + dy, k[2] + dz});
+          if (it == grid.end()) continue;
+          for (Index b : it->second)
+            if (b > a && (m.x.col(a) - m.x.col(b)).norm() <= tol) pairs.emplace_back(a, b);
+        }
   }
   if (pairs.empty()) return pairs;
   // Keep the pairs that share no cell (two coincident nodes of one cell make it degenerate, which

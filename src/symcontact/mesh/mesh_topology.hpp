@@ -25,8 +25,7 @@ namespace symcontact {
 Index cell_components(const Mesh& m, std::vector<Index>* component = nullptr);
 
 /// Pairs (a, b), a < b, of nodes at the same position (distance ≤ relative_tolerance × bounding-box
-/// diagonal) that belong to no common cell, sorted. Sorting along x and a sweep: O(n log n) for
-/// meshes whose nodes are spread along x.
+/// diagonal) that belong to no common cell, sorted. A hash grid of that cell size: O(n) expected.
 std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double relative_tolerance = 1e-10);
 
 /// Throws InputError(file = "", key = "", message) when the body has coincident nodes sharing no cell

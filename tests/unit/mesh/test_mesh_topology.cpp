@@ -84,5 +84,13 @@ TEST(MeshTopology, NearlyCoincidentNodesWithinTheTolerance) {
   EXPECT_EQ(coincident_nodes(m).size(), 1u);
 }
 
+TEST(MeshTopology, LargeStructuredMeshHasNoTwins) {
+  // 40,401 nodes on a lattice whose columns share their x: the hash grid keeps this linear (a sweep
+  // along x would compare every pair of a column).
+  const Mesh m = rectangle_mesh(0, 0, 1, 1, 200, 200);
+  EXPECT_TRUE(coincident_nodes(m).empty());
+  EXPECT_EQ(cell_components(m), 1);
+}
+
 }  // namespace
 }  // namespace symcontact
