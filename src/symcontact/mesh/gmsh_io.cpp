@@ -7,6 +7,8 @@
 #include <unordered_map>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/mesh/mesh_topology.hpp"
+#include "symcontact/mesh/msh_validation.hpp"
 
 namespace symcontact {
 
@@ -80,9 +82,11 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
   std::unordered_map<std::size_t, Index> index_of;
   index_of.reserve(node_tags.size());
   f.x.resize(3, static_cast<Index>(node_tags.size()));
+  f.node_tags.resize(node_tags.size());
   for (std::size_t j = 0; j < order.size(); ++j) {
     const std::size_t k = order[j];
     index_of[node_tags[k]] = static_cast<Index>(j);
+    f.node_tags[j] = static_cast<Index>(node_tags[k]);
     for (int i = 0; i < 3; ++i) f.x(i, static_cast<Index>(j)) = coords[3 * k + i];
   }
 
@@ -140,6 +144,8 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
   if (ext != ".geo" && ext != ".msh")
     throw InputError(path, "", "expected a Gmsh .geo or .msh file, got extension '" + ext + "'");
   if (options.order != 1 && options.order != 2) throw InputError(path, "", "element order must be 1 or 2");
+  // Gmsh's own parser trusts the file's structure: check it first (msh_validation.hpp).
+  if (ext == ".msh") validate_msh_file(path);
   GmshSession session(options.verbose);
   try {
     return read_with_gmsh(path, options, ext == ".geo");
@@ -190,8 +196,13 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   for (auto& l : local)
     if (l == 0) l = n++;
   m.x.resize(dim, n);
-  for (Index v = 0; v < file.x.cols(); ++v)
-    if (local[v] >= 0) m.x.col(local[v]) = file.x.col(v).head(dim);
+  m.node_tags.resize(n);
+  for (Index v = 0; v < file.x.cols(); ++v) {
+    if (local[v] < 0) continue;
+    m.x.col(local[v]) = file.x.col(v).head(dim);
+    if (v < static_cast<Index>(file.node_tags.size())) m.node_tags[local[v]] = file.node_tags[v];
+  }
+  if (file.node_tags.size() != static_cast<std::size_t>(file.x.cols())) m.node_tags.clear();
   for (const auto& b : *cells) {
     for (Index v : b.nodes) m.cells.push_back(local[v]);
     m.cell_tags.insert(m.cell_tags.end(), b.tags.begin(), b.tags.end());
@@ -202,16 +213,18 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
     if (g.dim >= dim) continue;
     if (g.dim == dim - 1) {
       FacetGroup fg;
+      const std::size_t npf = cell_num_nodes(ft);
       for (const auto& b : g.blocks) {
         if (b.type != ft) continue;
-        const int npf = cell_num_nodes(ft);
         for (std::size_t k = 0; k + npf <= b.nodes.size(); k += npf) {
           bool inside = true;
-          for (int a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
+          for (std::size_t a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
           if (!inside) continue;
-          for (int a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);
+          for (std::size_t a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);
+          if (k / npf < b.tags.size()) fg.tags.push_back(b.tags[k / npf]);
         }
       }
+      if (fg.tags.size() * npf != fg.facets.size()) fg.tags.clear();
       if (!fg.facets.empty()) m.facet_groups[g.name] = std::move(fg);
     } else {
       std::vector<Index> nodes;
@@ -226,6 +239,7 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   m.orient_cells();
   try {
     m.check();
+    check_topology(m);
     m.locate_facets();
   } catch (const InputError& e) {
     throw e.in_file(file.path);

@@ -36,19 +36,26 @@ struct MeshFile {
   };
   std::string path;
   Eigen::MatrixXd x;
+  std::vector<Index> node_tags;  ///< the file's tag of each node (increasing: nodes are numbered by tag)
   std::vector<Block> all_cells;  ///< every element of dimension `dim`, in or out of physical groups
   std::vector<Group> groups;
   const Group* find(const std::string& name, int dim) const;
 };
 
-/// Reads or meshes `path`. Throws InputError(file = path) for a missing or malformed file, an
-/// unsupported element type, or a failed meshing.
+/// Reads or meshes `path`. A `.msh` file is first checked by validate_msh_file() (msh_validation.hpp:
+/// ASCII MSH 2.x or 4.1, sound structure), so that Gmsh never parses a malformed one. Throws
+/// InputError(file = path) for a missing or malformed file (key "line L" when the structural check
+/// locates the fault), an unsupported element type, or a failed meshing.
 MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options);
 
 /// The mesh of one body: the cells of dimension `dim` in physical group `group` (all cells of that
 /// dimension when `group` is empty), renumbered; lower-dimensional groups restricted to its nodes
 /// (facet groups from dimension dim − 1, node groups from the rest). Cells are oriented, checked and
-/// facets located. Throws InputError(file, key = `group_key`) when the group is absent or empty.
+/// facets located; the mesh keeps the file's node and element tags for messages. Throws
+/// InputError(file, key = `group_key`) when the group is absent or empty, and InputError(file, ...)
+/// for a fault of the body's mesh: Mesh::check() (a non-finite coordinate, an inverted or degenerate
+/// element), check_topology() (coincident nodes that make a crack, a body in several pieces;
+/// mesh_topology.hpp) and Mesh::locate_facets() (a group facet inside the body or off it).
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key);
 
 /// A rigid surface: the facets of group `group` (dimension dim − 1), with no cells. The mesh's cell_type is

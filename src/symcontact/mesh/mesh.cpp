@@ -31,6 +31,11 @@ std::string Mesh::cell_label(Index c) const {
   return "cell " + std::to_string(c + 1);
 }
 
+std::string Mesh::node_label(Index v) const {
+  if (v >= 0 && v < static_cast<Index>(node_tags.size())) return "node " + std::to_string(node_tags[v]);
+  return "node " + std::to_string(v + 1);
+}
+
 bool Mesh::has_group(const std::string& name) const {
   return facet_groups.count(name) > 0 || node_groups.count(name) > 0;
 }
@@ -86,7 +91,7 @@ void Mesh::check() const {
   for (Index j = 0; j < num_nodes(); ++j)
     for (int i = 0; i < dim; ++i)
       if (!std::isfinite(x(i, j)))
-        throw InputError("", "node " + std::to_string(j + 1), "coordinate is not a finite number");
+        throw InputError("", node_label(j), "coordinate is not a finite number");
   const Index nn = num_nodes();
   for (Index v : cells)
     if (v < 0 || v >= nn) throw InputError("", "", "a cell refers to node index out of range");
@@ -117,8 +122,14 @@ void Mesh::locate_facets() {
   const int nfv = cell_num_vertices(ft);
   const int npf = cell_num_nodes(ft);
   const int nf = cell_num_facets(cell_type);
-  // Boundary-facet lookup keyed by the sorted vertex triple (third entry -1 in 2D).
-  std::unordered_map<std::array<Index, 3>, std::pair<Index, int>, KeyHash> where;
+  // Facet lookup keyed by the sorted vertex triple (third entry -1 in 2D): the first cell that has the
+  // facet, its local number, and the second cell (-1 while there is none: a boundary facet).
+  struct Where {
+    Index first;
+    int facet;
+    Index second;
+  };
+  std::unordered_map<std::array<Index, 3>, Where, KeyHash> where;
   auto key_of = [&](const Index* v) {
     std::array<Index, 3> k{-1, -1, -1};
     for (int i = 0; i < nfv; ++i) k[i] = v[i];
@@ -135,9 +146,9 @@ void Mesh::locate_facets() {
       auto k = key_of(fv.data());
       auto it = where.find(k);
       if (it == where.end())
-        where.emplace(k, std::make_pair(c, f));
+        where.emplace(k, Where{c, f, -1});
       else
-        it->second.first = -1;  // interior facet: seen twice
+        it->second.second = c;  // interior facet: seen twice
     }
   }
   for (auto& [name, g] : facet_groups) {
@@ -147,11 +158,20 @@ void Mesh::locate_facets() {
     for (Index k = 0; k < m; ++k) {
       Index* fn = g.facets.data() + k * npf;
       auto it = where.find(key_of(fn));
-      if (it == where.end() || it->second.first < 0)
+      const std::string facet = k < static_cast<Index>(g.tags.size()) ? "element " + std::to_string(g.tags[k])
+                                                                      : "facet " + std::to_string(k + 1);
+      if (it == where.end())
         throw InputError("", name,
-                         "facet " + std::to_string(k + 1) + " of this group is not on the boundary of the body");
+                         facet + " of this group is not a facet of any element of the body, so not on its boundary "
+                                 "(a boundary group must be made of facets of the body's boundary)");
+      if (it->second.second >= 0)
+        throw InputError("", name,
+                         facet + " of this group is shared by " + cell_label(it->second.first) + " and " +
+                             cell_label(it->second.second) +
+                             ": it lies inside the body, not on its boundary (a boundary group, such as a "
+                             "contact surface, a load or a support, must be made of facets of the body's boundary)");
       const Index c = it->second.first;
-      const int f = it->second.second;
+      const int f = it->second.facet;
       const int* loc = cell_facet_nodes(cell_type, f);
       for (int i = 0; i < npf; ++i) fn[i] = cell(c)[loc[i]];  // outward orientation from the cell
       g.cell[k] = c;

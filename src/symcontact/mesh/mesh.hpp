@@ -20,6 +20,7 @@ namespace symcontact {
 /// A named set of boundary facets (a Gmsh physical curve in 2D, surface in 3D).
 struct FacetGroup {
   std::vector<Index> facets;  ///< num_facets × nodes-per-facet node indices
+  std::vector<Index> tags;    ///< element tag of each facet in its mesh file (empty: built in code)
   /// The cell each facet bounds and its local facet number (filled by Mesh::locate_facets()).
   std::vector<Index> cell;
   std::vector<int> local_facet;
@@ -31,6 +32,7 @@ struct Mesh {
   Eigen::MatrixXd x;          ///< dim × num_nodes reference coordinates
   std::vector<Index> cells;   ///< num_cells × nodes-per-cell
   std::vector<Index> cell_tags;  ///< element tag of each cell in its mesh file (empty: built in code)
+  std::vector<Index> node_tags;  ///< node tag of each node in its mesh file (empty: built in code)
   std::map<std::string, FacetGroup> facet_groups;
   std::map<std::string, std::vector<Index>> node_groups;  ///< physical points (and any node set)
 
@@ -43,6 +45,8 @@ struct Mesh {
   const Index* cell(Index c) const { return cells.data() + c * nodes_per_cell(); }
   /// How messages name cell c: "element <tag>" (the mesh file's tag) or "cell <c + 1>".
   std::string cell_label(Index c) const;
+  /// How messages name node v: "node <tag>" (the mesh file's tag) or "node <v + 1>".
+  std::string node_label(Index v) const;
 
   /// Nodes of a facet group, or of a node group, sorted and unique. Throws std::out_of_range if absent.
   std::vector<Index> group_nodes(const std::string& name) const;
@@ -52,11 +56,13 @@ struct Mesh {
 
   /// Finds, for every facet of every group, the cell it bounds and its local facet number, and
   /// reorders its nodes to the outward orientation of that cell. Throws InputError(file="", key=group)
-  /// when a facet bounds no cell (it is not on the boundary of this body).
+  /// when a facet is not on the boundary of this body: shared by two cells (inside the body; the
+  /// message names both) or a facet of no cell. The facet is named by its element tag (FacetGroup::tags).
   void locate_facets();
 
   /// Checks the mesh: finite coordinates, node indices in range, no cell with a non-positive
-  /// Jacobian determinant at any node (inverted or degenerate). Throws InputError naming the cell.
+  /// Jacobian determinant at any node (inverted or degenerate). Throws InputError naming the node or
+  /// the cell (node_label(), cell_label()).
   void check() const;
 
   /// Reorients cells whose Jacobian at the first vertex is negative (swaps two vertices and the

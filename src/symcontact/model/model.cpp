@@ -65,7 +65,15 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
         opt.mesh_size = mesh_size;
         opt.verbose = log.level() >= Verbosity::kDebug;
         log.detail("reading mesh " + bs.mesh_path);
-        it = files.emplace(bs.mesh_path, read_mesh_file(bs.mesh_path, opt)).first;
+        try {
+          it = files.emplace(bs.mesh_path, read_mesh_file(bs.mesh_path, opt)).first;
+        } catch (const InputError& e) {
+          // A malformed mesh file: name the problem file, the body that reads it, the mesh file and
+          // where in it ("line L" from the structural check).
+          throw InputError(spec.file, bs.key + ".mesh",
+                           "body '" + bs.name + "', mesh " + e.file() + (e.key().empty() ? "" : ", " + e.key()) +
+                               ": " + e.message());
+        }
       }
       auto body = std::make_unique<Body>();
       body->name = bs.name;
@@ -179,7 +187,13 @@ void Model::build_contacts(const Logger& log, double mesh_size) {
         opt.dim = D;
         opt.order = spec.order;
         opt.mesh_size = mesh_size;
-        const MeshFile f = read_mesh_file(os.mesh_path, opt);
+        MeshFile f;
+        try {
+          f = read_mesh_file(os.mesh_path, opt);
+        } catch (const InputError& e) {
+          throw InputError(spec.file, os.key + ".mesh",
+                           "obstacle mesh " + e.file() + (e.key().empty() ? "" : ", " + e.key()) + ": " + e.message());
+        }
         rigid_meshes_.push_back(extract_surface(f, D, os.boundary, os.key + ".boundary"));
         contacts_.surfaces.push_back(make_contact_surface(rigid_meshes_.back(), os.boundary, -1, cs.name + ".obstacle"));
         pair.surface_b = static_cast<int>(contacts_.surfaces.size()) - 1;

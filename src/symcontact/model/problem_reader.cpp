@@ -151,6 +151,7 @@ class Reader {
     }
 
     read_contacts(root, spec);
+    check_held(spec);
     read_contact_solver(root, spec);
     read_ipopt(root, spec);
     return spec;
@@ -626,6 +627,49 @@ class Reader {
     return s;
   }
 
+  /// Every body must be held: by a [[body.dirichlet]] of its own, by a [[contact]] with an obstacle,
+  /// or by a [[contact]] with another body that is held (transitively). A body held by nothing is free
+  /// to move rigidly whatever the loads, and the solve could only fail: an input error, found before
+  /// any mesh is read. (This needs no mesh; a body whose Dirichlet conditions leave some rigid motion
+  /// free, such as uy alone, is found by the solve: SolveError.)
+  void check_held(const ProblemSpec& spec) const {
+    const std::size_t n = spec.bodies.size();
+    auto index_of = [&](const std::string& name) {
+      for (std::size_t i = 0; i < n; ++i)
+        if (spec.bodies[i].name == name) return i;
+      return n;
+    };
+    std::vector<bool> held(n, false), in_pair(n, false);
+    for (std::size_t i = 0; i < n; ++i) held[i] = !spec.bodies[i].dirichlet.empty();
+    for (const ContactSpec& c : spec.contacts) {
+      const std::size_t a = index_of(c.body_a);
+      const std::size_t b = c.obstacle ? n : index_of(c.body_b);
+      if (a < n && c.obstacle) held[a] = true;
+      if (a < n && b < n && a != b) in_pair[a] = in_pair[b] = true;
+    }
+    for (bool changed = true; changed;) {  // a contact with a held body holds
+      changed = false;
+      for (const ContactSpec& c : spec.contacts) {
+        const std::size_t a = index_of(c.body_a);
+        const std::size_t b = c.obstacle ? n : index_of(c.body_b);
+        if (a < n && b < n && held[a] != held[b]) {
+          held[a] = held[b] = true;
+          changed = true;
+        }
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      if (held[i]) continue;
+      const BodySpec& body = spec.bodies[i];
+      fail(body.key, "body " + in_quotes(body.name) + " has no [[body.dirichlet]] and " +
+                         (in_pair[i] ? "its [[contact]] pairs link it only to bodies that nothing holds either (no "
+                                       "Dirichlet condition, no obstacle among them)"
+                                     : "is in no [[contact]] with another body or an obstacle") +
+                         ": nothing holds it against rigid motion (expected a Dirichlet condition on it or on a body "
+                         "it is in contact with, or a contact with an obstacle)");
+    }
+  }
+
   // ---- contact ----
 
   /// [[contact]]: optional; surfaces name declared bodies, names are unique.
@@ -894,9 +938,88 @@ class Reader {
   std::string base_dir_;
 };
 
+// ---- a guard in front of toml++ --------------------------------------------------------------
+
+/// Rejects the non-ASCII characters that toml++ 3.3 (Debian 12) cannot look at safely. Its
+/// is_non_ascii_horizontal_whitespace() reaches __builtin_unreachable() for U+00A1 to U+0499 (Latin-1,
+/// Latin Extended, Greek, Cyrillic: "ν = 0.3" is enough), which is undefined behaviour; it is called
+/// on characters outside strings and comments, and in multi-line basic strings after a backslash.
+/// Outside strings and comments TOML allows ASCII only (bare keys are A-Z a-z 0-9 _ -), so rejecting
+/// every non-ASCII character there changes no valid file; in a multi-line basic string, a non-ASCII
+/// character right after a backslash (and the white space and line breaks that follow it) is
+/// rejected too: an invalid escape, or a line-ending backslash followed by such a character (valid
+/// TOML, but rare; the message says how to write it). Found by fuzz/fuzz_problem_reader under UBSan.
+/// Throws InputError(file, "", "line L, column C: ...") like a syntax error.
+void check_toml_characters(const std::string& text, const std::string& file) {
+  const std::size_t n = text.size();
+  auto is_continuation = [&](std::size_t k) { return (static_cast<unsigned char>(text[k]) & 0xC0) == 0x80; };
+  auto fail_at = [&](std::size_t at, const std::string& what) {
+    std::size_t line = 1, column = 1;
+    for (std::size_t k = 0; k < at; ++k) {
+      if (text[k] == '\n') {
+        ++line;
+        column = 1;
+      } else if (!is_continuation(k)) {
+        ++column;
+      }
+    }
+    std::size_t end = at + 1;
+    while (end < n && end < at + 4 && is_continuation(end)) ++end;
+    throw InputError(file, "",
+                     "line " + std::to_string(line) + ", column " + std::to_string(column) + ": the character '" +
+                         text.substr(at, end - at) + "' " + what);
+  };
+  auto non_ascii = [&](std::size_t k) { return static_cast<unsigned char>(text[k]) >= 0x80; };
+  auto starts = [&](std::size_t k, const char* s3) { return text.compare(k, 3, s3) == 0; };
+  std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
+  while (i < n) {
+    const char c = text[i];
+    if (c == '#') {  // a comment, to the end of the line
+      while (i < n && text[i] != '\n') ++i;
+    } else if (c == '"' && starts(i, "\"\"\"")) {  // multi-line basic string
+      i += 3;
+      while (i < n && !starts(i, "\"\"\"")) {
+        if (text[i] != '\\') {
+          ++i;
+          continue;
+        }
+        std::size_t j = i + 1;
+        if (j < n && !non_ascii(j) && text[j] != ' ' && text[j] != '\t' && text[j] != '\r' && text[j] != '\n') {
+          i = j + 1;  // an escape: \" \\ \n \uXXXX ...
+          continue;
+        }
+        while (j < n && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n')) ++j;
+        if (j < n && non_ascii(j)) {
+          fail_at(j, "right after a backslash in a multi-line string is not supported (write it with an escape, "
+                     "\\uXXXX, or start the line with an ASCII character)");
+        }
+        i = j;
+      }
+      for (int q = 0; q < 5 && i < n && text[i] == '"'; ++q) ++i;  // the closing quotes, and up to 2 of the content
+    } else if (c == '\'' && starts(i, "'''")) {  // multi-line literal string
+      i += 3;
+      while (i < n && !starts(i, "'''")) ++i;
+      for (int q = 0; q < 5 && i < n && text[i] == '\''; ++q) ++i;
+    } else if (c == '"') {  // basic string, to the closing quote (or the end of the line: an error for toml++)
+      ++i;
+      while (i < n && text[i] != '"' && text[i] != '\n') i += text[i] == '\\' && i + 1 < n && text[i + 1] != '\n' ? 2 : 1;
+      if (i < n && text[i] == '"') ++i;
+    } else if (c == '\'') {  // literal string
+      ++i;
+      while (i < n && text[i] != '\'' && text[i] != '\n') ++i;
+      if (i < n && text[i] == '\'') ++i;
+    } else if (non_ascii(i)) {
+      fail_at(i, "is not allowed outside strings and comments (keys are written with A-Z a-z 0-9 _ -, or quoted)");
+    } else {
+      ++i;
+    }
+  }
+}
+
 }  // namespace
 
 ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir) {
+  check_toml_characters(toml_text, file_name);
   toml::table root;
   try {
     root = toml::parse(toml_text, file_name);

@@ -74,8 +74,12 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       for (Index j = 0; j < At.cols(); ++j) MinvAt.col(j) = chol.solve(VectorXd(At.col(j)));
       const MatrixXd S = AS * MinvAt;
       const VectorXd rhs = AS * chol.solve(VectorXd(ghat)) - cS;
-      Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod(S);
+      // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z
+      // are formed, and solve() must use that same rank (set afterwards, solve() read coefficients
+      // compute() never wrote: uninitialised memory, found by the ASan build of the V5 tests).
+      Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
       cod.setThreshold(1e-12);
+      cod.compute(S);
       const VectorXd lambda = cod.solve(rhs);
       const VectorXd dx = MinvAt * lambda - chol.solve(VectorXd(ghat));
       xs += dx;

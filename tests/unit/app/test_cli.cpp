@@ -165,8 +165,18 @@ TEST_F(Cli, DegenerateTriangleIsAnInputErrorNamingTheCell) {
   expect_input_error(f, {"degenerate.toml", "body[0].mesh", "degenerate_triangle.msh", "element 5", "degenerate"});
 }
 
-TEST_F(Cli, UnconstrainedBodyIsASolveFailure) {
+TEST_F(Cli, BodyHeldByNothingIsAnInputError) {
+  // No Dirichlet condition and no contact: nothing can hold the body, whatever the loads (docs/input.md).
   const fs::path f = write("rigid.toml", problem_toml(example_geo(), "block", "0.3", kPressTop));
+  expect_input_error(f, {"rigid.toml", "body[0]", "body \"block\"", "no [[body.dirichlet]]", "no [[contact]]",
+                         "rigid motion"});
+}
+
+TEST_F(Cli, PartlyConstrainedBodyIsASolveFailure) {
+  // A Dirichlet condition on ux alone leaves the pressed body free to move along y: found by the solve.
+  const fs::path f = write("sliding.toml", problem_toml(example_geo(), "block", "0.3",
+                                                        "[[body.dirichlet]]\nboundary = \"bottom\"\nux = 0.0\n\n" +
+                                                            kPressTop));
   const fs::path out = dir_ / "out";
   const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
   EXPECT_EQ(r.exit_code, 3) << r.output;
@@ -174,6 +184,42 @@ TEST_F(Cli, UnconstrainedBodyIsASolveFailure) {
   EXPECT_NE(r.output.find("Dirichlet"), std::string::npos) << r.output;
   // A failed solve is recorded, not lost.
   EXPECT_NE(read_text(out / "summary.json").find("solve_failed"), std::string::npos);
+}
+
+TEST_F(Cli, DuplicateNodesAreAnInputErrorNamingTheNodes) {
+  // Node 6 repeats node 1 at (0, 0) but no triangle has both: the square is cut from (0, 0) to its
+  // centre. The message names the problem file, the body, the mesh file and the two node tags.
+  const fs::path f = write("crack.toml", problem_toml(test_mesh("crack_duplicate_nodes.msh"), "square", "0.3",
+                                                      kClampBottom + kPressTop));
+  expect_input_error(f, {"crack.toml", "body[0].mesh", "body 'block'", "crack_duplicate_nodes.msh",
+                         "node 1 and node 6 at (0, 0)", "same position without sharing any element"});
+}
+
+TEST_F(Cli, DisconnectedBodyIsAnInputErrorGivingThePieces) {
+  // Two unit squares, [0, 1] and [2, 3] along x, in one physical group.
+  const fs::path f = write("two_pieces.toml", problem_toml(test_mesh("disconnected.msh"), "square", "0.3",
+                                                           kClampBottom + kPressTop));
+  expect_input_error(f, {"two_pieces.toml", "body[0].mesh", "body 'block'", "disconnected.msh", "disconnected",
+                         "2 separate pieces", "2 elements from element 5, 2 elements from element 7"});
+}
+
+TEST_F(Cli, NonFiniteMshCoordinateIsAnInputErrorNamingTheLine) {
+  // unit_square.msh with node 3's x written "nan" (line 25): found before Gmsh reads the file.
+  const fs::path f = write("nan.toml", problem_toml(test_mesh("nan_coordinate.msh"), "square", "0.3",
+                                                    kClampBottom + kPressTop));
+  expect_input_error(f, {"nan.toml", "body[0].mesh", "body 'block'", "nan_coordinate.msh", "line 25", "node 3",
+                         "not a finite number"});
+}
+
+TEST_F(Cli, ContactSurfaceInsideTheBodyIsAnInputError) {
+  // The group "diagonal" (element 3) is the edge shared by the square's two triangles (elements 4 and 5).
+  const std::string contact =
+      "[[contact]]\na = \"block.diagonal\"\n[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, -1.0]\n"
+      "normal = [0.0, 1.0]\n";
+  const fs::path f = write("inside.toml", problem_toml(test_mesh("interior_facet_group.msh"), "square", "0.3",
+                                                       kClampBottom + kPressTop + contact));
+  expect_input_error(f, {"inside.toml", "body[0].mesh", "body 'block'", "interior_facet_group.msh", "diagonal",
+                         "element 3 of this group is shared by element 4 and element 5", "not on its boundary"});
 }
 
 }  // namespace

@@ -88,6 +88,18 @@ std::string with_dimension_3(const std::string& text) {
 
 TEST(ProblemReader, BaseFileIsValid) { EXPECT_NO_THROW(parse(kBase)); }
 
+TEST(ProblemReader, NonAsciiInStringsAndCommentsIsValid) {
+  // Non-ASCII text in comments, basic, literal and multi-line strings, quoted keys; a byte order mark.
+  const std::string text = "\xEF\xBB\xBF# \u03bd = 0.3, in a comment\n" +
+                           edit("title = \"base\"", "title = \"Bloc d'\u00e9t\u00e9 \\\" \u03bd\"") +
+                           "[ipopt]\n\"\u03bd\" = \"\"\"\u0436\n\u013e\"\"\"\nother = '''\n\u013e'''\nlit = '\u00e9'\n";
+  ProblemSpec spec;
+  ASSERT_NO_THROW(spec = parse(text));
+  EXPECT_EQ(spec.title, "Bloc d'\u00e9t\u00e9 \" \u03bd");
+  EXPECT_EQ(spec.contact_solver.ipopt_string.at("\u03bd"), "\u0436\n\u013e");
+  EXPECT_EQ(spec.contact_solver.ipopt_string.at("other"), "\u013e");
+}
+
 TEST(ProblemReader, CompleteFileRoundTrips) {
   const std::string text = R"(
 title = "Block under pressure"
@@ -140,6 +152,11 @@ pressure = 0.01
 name = "foundation-2"
 mesh = "meshes/../meshes/foundation.msh"
 material = { E = 1e3, nu = -0.2 }
+
+# holds the foundation, which has no boundary condition of its own (its defaults are checked below)
+[[contact]]
+a = "block.bottom"
+b = "foundation-2.top"
 )";
   const ProblemSpec spec = parse(text);
   EXPECT_EQ(spec.file, "case.toml");
@@ -461,6 +478,13 @@ TEST(ProblemReader, FrictionAgainstAnObstacle) {
   EXPECT_EQ(d.friction, "none");
 }
 
+TEST(ProblemReader, BodyHeldOnlyByAContactIsValid) {
+  // No Dirichlet condition, but a contact with an obstacle or another body that can hold it.
+  const std::string no_support = "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n";
+  EXPECT_NO_THROW(parse(replaced(kPlane, no_support, "")));
+  EXPECT_NO_THROW(parse(replaced(kTwoBodies, no_support, "") + "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n"));
+}
+
 TEST(ProblemReader, SelfContactIsAllowed) {
   const ProblemSpec spec = parse(kBase + "[[contact]]\na = \"block.skin\"\nb = \"block.skin\"\n");
   ASSERT_EQ(spec.contacts.size(), 1u);
@@ -671,6 +695,14 @@ INSTANTIATE_TEST_SUITE_P(
         // syntax
         BadCase{"MalformedToml", edit("dimension = 2", "dimension = = 2"), "", "line 3, column "},
         BadCase{"UnterminatedTableHeader", edit("[steps]", "[steps"), "", "line 4, column "},
+        // non-ASCII characters where toml++ 3.3 would reach undefined behaviour (found by fuzzing)
+        BadCase{"NonAsciiKey", edit("nu = 0.3", "\u03bd = 0.3"), "",
+                "line 11, column 1: the character '\u03bd' is not allowed outside strings and comments"},
+        BadCase{"NonAsciiAfterAKey", edit("nu = 0.3", "nu\u013e = 0.3"), "",
+                "line 11, column 3: the character '\u013e' is not allowed outside strings and comments"},
+        BadCase{"NonAsciiAfterLineEndingBackslash", edit("title = \"base\"", "title = \"\"\"a \\\n  \u013e\"\"\""), "",
+                "line 2, column 3: the character '\u013e' right after a backslash in a multi-line string is not "
+                "supported"},
         // unknown keys
         BadCase{"UnknownTopLevelKey", "solver = \"ipopt\"\n" + kBase, "solver",
                 "unknown key \"solver\"; allowed keys at the top level: title, problem, steps, output, body, contact, "
@@ -709,6 +741,21 @@ INSTANTIATE_TEST_SUITE_P(
                 "body[0].pressure[0].pressure",
                 "missing required key (expected a number)"},
         BadCase{"NoBody", "[problem]\ndimension = 2\n", "body", "at least one body"},
+        // bodies that nothing holds (no Dirichlet condition, no contact with another body or an obstacle)
+        BadCase{"BodyHeldByNothing", edit("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
+                "body \"block\" has no [[body.dirichlet]] and is in no [[contact]] with another body or an obstacle: "
+                "nothing holds it against rigid motion"},
+        BadCase{"BodyInSelfContactOnly",
+                edit("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", "") +
+                    "[[contact]]\na = \"block.top\"\nb = \"block.bottom\"\n",
+                "body[0]", "body \"block\" has no [[body.dirichlet]] and is in no [[contact]]"},
+        BadCase{"TwoBodiesHoldingOnlyEachOther",
+                replaced(kTwoBodies, "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
+                "body \"block\" has no [[body.dirichlet]] and its [[contact]] pairs link it only to bodies that "
+                "nothing holds either"},
+        BadCase{"SecondBodyHeldByNothing", kBase + "[[body]]\nname = \"lid\"\nmesh = \"block.msh\"\n"
+                                                   "material = { E = 2.0, nu = 0.25 }\n",
+                "body[1]", "body \"lid\" has no [[body.dirichlet]]"},
         // values
         BadCase{"YoungZero", edit("E = 1.0", "E = 0"), "body[0].material.E", "expected a number > 0, got 0"},
         BadCase{"YoungNegative", edit("E = 1.0", "E = -3.5"), "body[0].material.E", "expected a number > 0, got -3.5"},

@@ -1,0 +1,37 @@
+#pragma once
+/// \file mesh_topology.hpp
+/// Whole-body checks of a mesh's connectivity, run on every body read from a file (extract_body() in
+/// gmsh_io.hpp) after Mesh::check():
+///
+/// - **Coincident nodes**: two nodes at the same position that share no cell cut the body there (a
+///   crack: the cells on either side do not hold together), typically two surfaces meshed separately
+///   and not merged. Positions count as equal within `relative_tolerance` × the diagonal of the
+///   body's bounding box.
+/// - **Connected components**: cells are connected when they share a node; a body must be one piece
+///   (each piece of several needs its own [[body]], its own support or contact).
+///
+/// Both use the node labels of Mesh::node_label() (the mesh file's node tags) in messages.
+
+#include <utility>
+#include <vector>
+
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+/// Number of connected components of the cells (two cells are connected when they share a node). If
+/// `component` is given it gets, for each cell, the index of its component, components numbered in
+/// the order of their first cell. O(cells × nodes per cell) (union-find).
+Index cell_components(const Mesh& m, std::vector<Index>* component = nullptr);
+
+/// Pairs (a, b), a < b, of nodes at the same position (distance ≤ relative_tolerance × bounding-box
+/// diagonal) that belong to no common cell, sorted. A hash grid of that cell size: O(n) expected.
+std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double relative_tolerance = 1e-10);
+
+/// Throws InputError(file = "", key = "", message) when the body has coincident nodes sharing no cell
+/// (the message names up to three pairs by their node labels, with the position, and the number of
+/// pairs) or more than one connected component (the message gives the count and, for each component,
+/// its number of cells and one of its elements).
+void check_topology(const Mesh& m);
+
+}  // namespace symcontact

@@ -1,0 +1,96 @@
+// Tests of the whole-body mesh checks (src/symcontact/mesh/mesh_topology.hpp): coincident nodes that
+// share no cell (a crack) and bodies in several pieces, on structured meshes cut or duplicated by hand.
+// The same faults read from .msh files, through the command line, are in tests/unit/app/test_cli.cpp.
+
+#include "symcontact/mesh/mesh_topology.hpp"
+
+#include <gtest/gtest.h>
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/mesh/structured.hpp"
+
+namespace symcontact {
+namespace {
+
+/// Two meshes side by side as one (nodes and cells of `b` after those of `a`; no node shared).
+Mesh side_by_side(const Mesh& a, const Mesh& b) {
+  Mesh m;
+  m.dim = a.dim;
+  m.cell_type = a.cell_type;
+  m.x.resize(a.dim, a.num_nodes() + b.num_nodes());
+  m.x << a.x, b.x;
+  m.cells = a.cells;
+  for (Index v : b.cells) m.cells.push_back(v + a.num_nodes());
+  return m;
+}
+
+std::string message_of(const Mesh& m) {
+  try {
+    check_topology(m);
+  } catch (const InputError& e) {
+    return e.message();
+  }
+  return "";
+}
+
+TEST(MeshTopology, StructuredMeshesAreOnePieceWithoutTwins) {
+  for (int order : {1, 2}) {
+    const Mesh tri = rectangle_mesh(0, 0, 2, 1, 6, 3, order);
+    const Mesh tet = box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 2, 2, 2, order);
+    EXPECT_EQ(cell_components(tri), 1);
+    EXPECT_EQ(cell_components(tet), 1);
+    EXPECT_TRUE(coincident_nodes(tri).empty());
+    EXPECT_TRUE(coincident_nodes(tet).empty());
+    EXPECT_NO_THROW(check_topology(tri));
+    EXPECT_NO_THROW(check_topology(tet));
+  }
+}
+
+TEST(MeshTopology, TwoSeparateBlocksAreTwoComponents) {
+  const Mesh m = side_by_side(rectangle_mesh(0, 0, 1, 1, 2, 2), rectangle_mesh(2, 0, 3, 1, 3, 1));
+  std::vector<Index> component;
+  EXPECT_EQ(cell_components(m, &component), 2);
+  ASSERT_EQ(static_cast<Index>(component.size()), m.num_cells());
+  EXPECT_EQ(component.front(), 0);
+  EXPECT_EQ(component.back(), 1);
+  const std::string msg = message_of(m);
+  EXPECT_NE(msg.find("the body is disconnected: its elements form 2 separate pieces"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("8 elements from cell 1, 6 elements from cell 9"), std::string::npos) << msg;
+}
+
+TEST(MeshTopology, TouchingBlocksWithTheirOwnNodesAreACrack) {
+  // Two unit squares meeting along x = 1, each with its own nodes there: 3 pairs of twins (ny = 2),
+  // named by the file's node tags when the mesh has them.
+  Mesh m = side_by_side(rectangle_mesh(0, 0, 1, 1, 1, 2), rectangle_mesh(1, 0, 2, 1, 1, 2));
+  const auto twins = coincident_nodes(m);
+  ASSERT_EQ(twins.size(), 3u);
+  for (const auto& [a, b] : twins) EXPECT_EQ((m.x.col(a) - m.x.col(b)).norm(), 0.0);
+  m.node_tags.resize(m.num_nodes());
+  for (Index v = 0; v < m.num_nodes(); ++v) m.node_tags[v] = 100 + v;
+  const std::string msg = message_of(m);
+  EXPECT_NE(msg.find("3 pairs of nodes are at the same position without sharing any element"), std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("node " + std::to_string(100 + twins[0].first) + " and node " +
+                     std::to_string(100 + twins[0].second) + " at (1, "),
+            std::string::npos)
+      << msg;
+}
+
+TEST(MeshTopology, NearlyCoincidentNodesWithinTheTolerance) {
+  Mesh m = side_by_side(rectangle_mesh(0, 0, 1, 1, 1, 1), rectangle_mesh(1, 0, 2, 1, 1, 1));
+  m.x(0, 4) += 1e-13;  // a node of the second square, moved by far less than 1e-10 × the diagonal
+  EXPECT_EQ(coincident_nodes(m).size(), 2u);
+  m.x(0, 4) += 1e-6;  // now well apart
+  EXPECT_EQ(coincident_nodes(m).size(), 1u);
+}
+
+TEST(MeshTopology, LargeStructuredMeshHasNoTwins) {
+  // 40,401 nodes on a lattice whose columns share their x: the hash grid keeps this linear (a sweep
+  // along x would compare every pair of a column).
+  const Mesh m = rectangle_mesh(0, 0, 1, 1, 200, 200);
+  EXPECT_TRUE(coincident_nodes(m).empty());
+  EXPECT_EQ(cell_components(m), 1);
+}
+
+}  // namespace
+}  // namespace symcontact
