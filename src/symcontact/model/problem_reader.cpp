@@ -949,6 +949,7 @@ class Reader {
 /// character right after a backslash (and the white space and line breaks that follow it) is
 /// rejected too: an invalid escape, or a line-ending backslash followed by such a character (valid
 /// TOML, but rare; the message says how to write it). Found by fuzz/fuzz_problem_reader under UBSan.
+/// A quote inside a bare token does not open a string (toml++ does not read one there either).
 /// Throws InputError(file, "", "line L, column C: ...") like a syntax error.
 void check_toml_characters(const std::string& text, const std::string& file) {
   const std::size_t n = text.size();
@@ -972,9 +973,21 @@ void check_toml_characters(const std::string& text, const std::string& file) {
   auto non_ascii = [&](std::size_t k) { return static_cast<unsigned char>(text[k]) >= 0x80; };
   auto starts = [&](std::size_t k, const char* s3) { return text.compare(k, 3, s3) == 0; };
   std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
+  // A quote opens a string only where TOML lets one start: a key at the start of a line or after a '.',
+  // a value after '=', an array element after '[' or ',', an inline-table key after '{'. Inside a bare
+  // token (an invalid value: a digit followed by three single quotes, say) toml++ reads no string and
+  // goes on scanning characters, so the guard must too (found by fuzzing).
+  auto opens_string = [&](std::size_t k) {
+    while (k > 0 && (text[k - 1] == ' ' || text[k - 1] == '\t')) --k;
+    if (k == 0) return true;
+    const char p = text[k - 1];
+    return p == '\n' || p == '\r' || p == '=' || p == '[' || p == ',' || p == '{' || p == '.';
+  };
   while (i < n) {
     const char c = text[i];
-    if (c == '#') {  // a comment, to the end of the line
+    if ((c == '"' || c == '\'') && !opens_string(i)) {
+      ++i;
+    } else if (c == '#') {  // a comment, to the end of the line
       while (i < n && text[i] != '\n') ++i;
     } else if (c == '"' && starts(i, "\"\"\"")) {  // multi-line basic string
       i += 3;

@@ -61,7 +61,23 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     rep.times.merge(r.times);
     rep.last = std::move(r);
   };
-  solve();
+  if (warm) {
+    // A warm start the solve cannot take (IPOPT failing from a start the moved boundary made far
+    // infeasible, with the friction already on) falls back to the frictionless start.
+    const VectorXd u0 = u;
+    try {
+      solve();
+    } catch (const SolveError& e) {
+      log.detail(std::string("  warm-started Coulomb solve failed (") + e.what() + "); starting frictionless");
+      u = u0;
+      warm = false;
+      for (int p = 0; p < np; ++p)
+        if (contacts.pairs[p].friction == FrictionLaw::kCoulomb) rep.friction.nodal_tau[p].setZero();
+      solve();
+    }
+  } else {
+    solve();
+  }
   if (!any_coulomb) return rep;
   std::vector<Eigen::VectorXd> r_prev;  // r_{k−1}, per pair (empty before the first Tresca solve)
   double omega = 1.0;

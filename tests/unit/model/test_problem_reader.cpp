@@ -703,6 +703,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"NonAsciiAfterLineEndingBackslash", edit("title = \"base\"", "title = \"\"\"a \\\n  \u013e\"\"\""), "",
                 "line 2, column 3: the character '\u013e' right after a backslash in a multi-line string is not "
                 "supported"},
+        BadCase{"NonAsciiInsideAnInvalidValueWithQuotes", edit("nu = 0.3", "nu = 1'''x\"\ufee2"), "",
+                "line 11, column 12: the character '\ufee2' is not allowed outside strings and comments"},
         // unknown keys
         BadCase{"UnknownTopLevelKey", "solver = \"ipopt\"\n" + kBase, "solver",
                 "unknown key \"solver\"; allowed keys at the top level: title, problem, steps, output, body, contact, "
