@@ -111,9 +111,10 @@ TEST_P(StackedBlocks, UniformPressureAtBothInterfacesAndOrderIndependent) {
   double umax = 0.0;
   for (Eigen::Index k = 0; k < s->u.size(); ++k) umax = std::max(umax, std::abs(s->u[k]));
   std::printf("  %dD (%d, %d, %d) P%d mu = %.1f: pressure error %.2e (reordered %.2e), displacement error %.2e (%.2e), "
-              "equilibrium %.2e (%.2e) of the load %.6g; reordered vs not: displacement %.2e, pressure %.2e p; "
+              "tangential %.2e p, equilibrium %.2e (%.2e) of the load %.6g; reordered vs not: displacement %.2e, pressure %.2e p; "
               "%d geometry / %d IPOPT iterations; both solves %.1f s\n",
-              c.dim, c.n1, c.n2, c.n3, c.order, c.mu < 0 ? 0.0 : c.mu, e.pressure, er.pressure, e.displacement, er.displacement, e.equilibrium,
+              c.dim, c.n1, c.n2, c.n3, c.order, c.mu < 0 ? 0.0 : c.mu, e.pressure, er.pressure, e.displacement, er.displacement,
+              std::max(e.tangential, er.tangential), e.equilibrium,
               er.equilibrium, e.applied_load, du / umax, dp / 0.01, e.geometry_iterations, e.ipopt_iterations, secs);
   EXPECT_LT(e.pressure, 1e-6);
   EXPECT_LT(er.pressure, 1e-6);
