@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
-#include "support/solve_case.hpp"
+#include <sstream>
+#include <vector>
 
 namespace symcontact::testing {
 
@@ -14,156 +14,131 @@ namespace {
 
 constexpr double kP = 0.01, kNu = 0.3;
 
+/// The blocks' names, bottom to top, and their bottom and top face groups.
+std::vector<std::string> block_names(int n3) {
+  return n3 > 0 ? std::vector<std::string>{"lower", "middle", "upper"} : std::vector<std::string>{"lower", "upper"};
+}
+std::string bottom_group(const std::vector<std::string>& names, std::size_t i) {
+  return i == 0 ? "bottom" : names[i] + "_bottom";
+}
+std::string top_group(const std::vector<std::string>& names, std::size_t i) {
+  return i + 1 == names.size() ? "top" : names[i] + "_top";
+}
+
 }  // namespace
 
-std::string contact_patch_geo(int n1, int n2, int dim) {
-  char buf[2048];
+std::string contact_patch_geo(int n1, int n2, int dim, int n3) {
+  const std::vector<std::string> names = block_names(n3);
+  const std::vector<int> n = n3 > 0 ? std::vector<int>{n1, n2, n3} : std::vector<int>{n1, n2};
+  const auto nb = static_cast<int>(names.size());
+  std::ostringstream g;
+  g.precision(17);
   if (dim == 3) {
-    // OpenCASCADE boxes: faces 1..6 of box 1 are xmin, xmax, ymin, ymax, zmin, zmax; 7..12 for box 2. The
-    // boxes are not fused, so the two faces at z = 1 are meshed independently (non-matching).
-    std::snprintf(buf, sizeof buf, R"(
-SetFactory("OpenCASCADE");
-h1 = 1.0 / %d; h2 = 1.0 / %d; e = 1e-6;
-Box(1) = {0, 0, 0, 1, 1, 1};
-Box(2) = {0, 0, 1, 1, 1, 1};
-MeshSize{PointsOf{Volume{1};}} = h1;
-MeshSize{PointsOf{Volume{2};}} = h2;
-Physical Volume("lower") = {1}; Physical Volume("upper") = {2};
-Physical Surface("bottom") = {5}; Physical Surface("lower_top") = {6};
-Physical Surface("upper_bottom") = {11}; Physical Surface("top") = {12};
-Physical Point("origin") = Point In BoundingBox{-e, -e, -e, e, e, e};
-Physical Point("lower_x") = Point In BoundingBox{1 - e, -e, -e, 1 + e, e, e};
-Physical Point("upper_corner") = Point In BoundingBox{-e, -e, 2 - e, e, e, 2 + e};
-Physical Point("upper_x") = Point In BoundingBox{1 - e, -e, 2 - e, 1 + e, e, 2 + e};
-)",
-                  n1, n2);
-    return buf;
+    // OpenCASCADE boxes: faces 6k+1..6k+6 of box k+1 are xmin, xmax, ymin, ymax, zmin, zmax. The boxes are
+    // not fused, so the two faces at each interface are meshed independently (non-matching).
+    g << "\nSetFactory(\"OpenCASCADE\");\ne = 1e-6;\n";
+    for (int i = 0; i < nb; ++i) g << "Box(" << i + 1 << ") = {0, 0, " << i << ", 1, 1, 1};\n";
+    for (int i = 0; i < nb; ++i) g << "MeshSize{PointsOf{Volume{" << i + 1 << "};}} = 1.0 / " << n[i] << ";\n";
+    for (int i = 0; i < nb; ++i) g << "Physical Volume(\"" << names[i] << "\") = {" << i + 1 << "};\n";
+    for (int i = 0; i < nb; ++i) {
+      g << "Physical Surface(\"" << bottom_group(names, i) << "\") = {" << 6 * i + 5 << "};\n";
+      g << "Physical Surface(\"" << top_group(names, i) << "\") = {" << 6 * i + 6 << "};\n";
+    }
+    auto box_point = [&g](const std::string& name, int x, int z) {
+      g << "Physical Point(\"" << name << "\") = Point In BoundingBox{" << x << " - e, -e, " << z << " - e, " << x
+        << " + e, e, " << z << " + e};\n";
+    };
+    box_point("origin", 0, 0);
+    box_point("lower_x", 1, 0);
+    for (int i = 1; i < nb; ++i) {
+      box_point(names[i] + "_corner", 0, i + 1);
+      box_point(names[i] + "_x", 1, i + 1);
+    }
+    return g.str();
   }
-  std::snprintf(buf, sizeof buf, R"(
-n1 = %d; n2 = %d;
-Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};
-Point(5) = {0, 1, 0}; Point(6) = {1, 1, 0}; Point(7) = {1, 2, 0}; Point(8) = {0, 2, 0};
-Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
-Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};
-Transfinite Curve{1, 2, 3, 4} = n1 + 1;
-Transfinite Curve{5, 6, 7, 8} = n2 + 1;
-Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1}; Transfinite Surface{1};
-Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2}; Transfinite Surface{2};
-Physical Surface("lower") = {1}; Physical Surface("upper") = {2};
-Physical Curve("bottom") = {1}; Physical Curve("lower_top") = {3};
-Physical Curve("upper_bottom") = {5}; Physical Curve("top") = {7};
-Physical Point("origin") = {1}; Physical Point("upper_corner") = {8};
-)",
-                n1, n2);
-  return buf;
+  // Block i: points and lines 4i+1..4i+4 (bottom, right, top, left), structured triangles.
+  g << "\n";
+  for (int i = 0; i < nb; ++i)
+    g << "Point(" << 4 * i + 1 << ") = {0, " << i << ", 0}; Point(" << 4 * i + 2 << ") = {1, " << i << ", 0}; Point("
+      << 4 * i + 3 << ") = {1, " << i + 1 << ", 0}; Point(" << 4 * i + 4 << ") = {0, " << i + 1 << ", 0};\n";
+  for (int i = 0; i < nb; ++i)
+    for (int k = 1; k <= 4; ++k)
+      g << "Line(" << 4 * i + k << ") = {" << 4 * i + k << ", " << 4 * i + k % 4 + 1 << "};\n";
+  for (int i = 0; i < nb; ++i)
+    g << "Transfinite Curve{" << 4 * i + 1 << ", " << 4 * i + 2 << ", " << 4 * i + 3 << ", " << 4 * i + 4
+      << "} = " << n[i] + 1 << ";\n";
+  for (int i = 0; i < nb; ++i)
+    g << "Curve Loop(" << i + 1 << ") = {" << 4 * i + 1 << ", " << 4 * i + 2 << ", " << 4 * i + 3 << ", " << 4 * i + 4
+      << "}; Plane Surface(" << i + 1 << ") = {" << i + 1 << "}; Transfinite Surface{" << i + 1 << "};\n";
+  for (int i = 0; i < nb; ++i) g << "Physical Surface(\"" << names[i] << "\") = {" << i + 1 << "};\n";
+  for (int i = 0; i < nb; ++i) {
+    g << "Physical Curve(\"" << bottom_group(names, i) << "\") = {" << 4 * i + 1 << "};\n";
+    g << "Physical Curve(\"" << top_group(names, i) << "\") = {" << 4 * i + 3 << "};\n";
+  }
+  g << "Physical Point(\"origin\") = {1};\n";
+  for (int i = 1; i < nb; ++i) g << "Physical Point(\"" << names[i] << "_corner\") = {" << 4 * i + 4 << "};\n";
+  return g.str();
 }
-
-namespace {
-
-std::string contact_patch_toml_3d(const ContactPatchCase& c) {
-  const std::string lower = R"(
-[[body]]
-name = "lower"
-mesh = "blocks.geo"
-group = "lower"
-[body.material]
-E = 1.0
-nu = 0.3
-[[body.dirichlet]]
-boundary = "bottom"
-uz = 0.0
-[[body.dirichlet]]
-boundary = "origin"
-ux = 0.0
-uy = 0.0
-[[body.dirichlet]]
-boundary = "lower_x"
-uy = 0.0
-)";
-  const std::string upper = R"(
-[[body]]
-name = "upper"
-mesh = "blocks.geo"
-group = "upper"
-[body.material]
-E = 1.0
-nu = 0.3
-[[body.dirichlet]]
-boundary = "upper_corner"
-ux = 0.0
-uy = 0.0
-[[body.dirichlet]]
-boundary = "upper_x"
-uy = 0.0
-[[body.pressure]]
-boundary = "top"
-pressure = 0.01
-)";
-  return "[problem]\ndimension = 3\norder = " + std::to_string(c.order) + "\n" + (c.swap ? upper + lower : lower + upper);
-}
-
-}  // namespace
 
 std::string contact_patch_toml(const ContactPatchCase& c) {
-  const std::string lower = R"(
-[[body]]
-name = "lower"
-mesh = "blocks.geo"
-group = "lower"
-[body.material]
-E = 1.0
-nu = 0.3
-[[body.dirichlet]]
-boundary = "bottom"
-uy = 0.0
-[[body.dirichlet]]
-boundary = "origin"
-ux = 0.0
-)";
-  const std::string upper = R"(
-[[body]]
-name = "upper"
-mesh = "blocks.geo"
-group = "upper"
-[body.material]
-E = 1.0
-nu = 0.3
-[[body.dirichlet]]
-boundary = "upper_corner"
-ux = 0.0
-[[body.pressure]]
-boundary = "top"
-pressure = 0.01
-)";
-  std::string t = c.dim == 3 ? contact_patch_toml_3d(c)
-                             : "[problem]\ndimension = 2\norder = " + std::to_string(c.order) + "\n" +
-                                   (c.swap ? upper + lower : lower + upper);
-  t += "[[contact]]\nname = \"interface\"\n";
-  t += c.swap ? "a = \"upper.upper_bottom\"\nb = \"lower.lower_top\"\n" : "a = \"lower.lower_top\"\nb = \"upper.upper_bottom\"\n";
-  t += "mode = \"" + c.mode + "\"\n";
-  if (c.mode == "one-pass") t += "slave = \"b\"\n";
-  if (c.mu >= 0) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "friction = \"coulomb\"\nmu = %.17g\n", c.mu);
-    t += buf;
-    if (c.alpha > 0) {
-      std::snprintf(buf, sizeof buf, "alpha = %.17g\n", c.alpha);
-      t += buf;
+  const std::vector<std::string> names = block_names(c.n3);
+  const std::size_t nb = names.size();
+  auto body = [&](std::size_t i) {
+    std::string t = "\n[[body]]\nname = \"" + names[i] + "\"\nmesh = \"blocks.geo\"\ngroup = \"" + names[i] +
+                    "\"\n[body.material]\nE = 1.0\nnu = 0.3\n";
+    if (i == 0) {
+      t += c.dim == 3 ? "[[body.dirichlet]]\nboundary = \"bottom\"\nuz = 0.0\n"
+                        "[[body.dirichlet]]\nboundary = \"origin\"\nux = 0.0\nuy = 0.0\n"
+                        "[[body.dirichlet]]\nboundary = \"lower_x\"\nuy = 0.0\n"
+                      : "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n"
+                        "[[body.dirichlet]]\nboundary = \"origin\"\nux = 0.0\n";
+    } else {
+      t += "[[body.dirichlet]]\nboundary = \"" + names[i] + "_corner\"\nux = 0.0\n";
+      if (c.dim == 3) t += "uy = 0.0\n[[body.dirichlet]]\nboundary = \"" + names[i] + "_x\"\nuy = 0.0\n";
     }
-  }
+    if (i + 1 == nb) t += "[[body.pressure]]\nboundary = \"top\"\npressure = 0.01\n";
+    return t;
+  };
+  auto pair = [&](std::size_t j) {  // between block j and block j + 1
+    std::string a = names[j] + "." + top_group(names, j), b = names[j + 1] + "." + bottom_group(names, j + 1);
+    if (c.swap) std::swap(a, b);
+    std::string t = "[[contact]]\nname = \"" + (nb == 2 ? std::string("interface") : names[j] + "_" + names[j + 1]) +
+                    "\"\na = \"" + a + "\"\nb = \"" + b + "\"\nmode = \"" + c.mode + "\"\n";
+    if (c.mode == "one-pass") t += "slave = \"b\"\n";
+    if (c.mu >= 0) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "friction = \"coulomb\"\nmu = %.17g\n", c.mu);
+      t += buf;
+      if (c.alpha > 0) {
+        std::snprintf(buf, sizeof buf, "alpha = %.17g\n", c.alpha);
+        t += buf;
+      }
+    }
+    return t;
+  };
+  std::string t = "[problem]\ndimension = " + std::to_string(c.dim) + "\norder = " + std::to_string(c.order) + "\n";
+  for (std::size_t k = 0; k < nb; ++k) t += body(c.swap ? nb - 1 - k : k);
+  for (std::size_t k = 0; k + 1 < nb; ++k) t += pair(c.swap ? nb - 2 - k : k);
   return t;
 }
 
-ContactPatchErrors contact_patch_errors(const ContactPatchCase& c) {
+std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c) {
   const std::string dir = ::testing::TempDir() + (c.dim == 3 ? "contact_patch_3d/" : "contact_patch/");
-  write_text(dir, "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim));
-  auto s = solve_case(contact_patch_toml(c), dir);
+  write_text(dir, "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3));
+  return solve_case(contact_patch_toml(c), dir);
+}
+
+ContactPatchErrors contact_patch_errors(const ContactPatchCase& c) { return contact_patch_errors(c, *contact_patch_solve(c)); }
+
+ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedCase& s) {
   ContactPatchErrors e;
-  e.geometry_iterations = s->frictional.geometry_iterations;
-  e.ipopt_iterations = s->frictional.ipopt_iterations;
-  e.coulomb_iterations = s->frictional.coulomb_iterations;
+  e.geometry_iterations = s.frictional.geometry_iterations;
+  e.ipopt_iterations = s.frictional.ipopt_iterations;
+  e.coulomb_iterations = s.frictional.coulomb_iterations;
   double umax = 0;
-  const Model& m = *s->model;
+  const Model& m = *s.model;
+  const VectorXd load = m.external_load();
+  Eigen::Vector3d total_load = Eigen::Vector3d::Zero();
   for (int b = 0; b < m.dofs().num_bodies(); ++b) {
     const Mesh& mesh = m.bodies()[b]->mesh;
     for (Index v = 0; v < mesh.num_nodes(); ++v) {
@@ -174,22 +149,29 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c) {
         exact << kNu * kP * mesh.x(0, v), kNu * kP * mesh.x(1, v), -kP * mesh.x(2, v);
       }
       for (int i = 0; i < c.dim; ++i) {
-        e.displacement = std::max(e.displacement, std::abs(s->u[m.dofs().dof(b, v, i)] - exact[i]));
+        e.displacement = std::max(e.displacement, std::abs(s.u[m.dofs().dof(b, v, i)] - exact[i]));
         umax = std::max(umax, std::abs(exact[i]));
+        total_load[i] += load[m.dofs().dof(b, v, i)];
       }
     }
   }
   e.displacement /= umax;
-  for (const auto& side : s->contact.at(0).sides)
-    for (Index k = 0; k < side.pressure.size(); ++k) {
-      e.pressure = std::max(e.pressure, std::abs(side.pressure[k] - kP) / kP);
-      e.tangential = std::max(e.tangential, side.tangential.col(k).norm() / kP);
-    }
+  Eigen::Vector3d total_reaction = Eigen::Vector3d::Zero();
+  for (const Eigen::VectorXd& r : s.reactions.back()) total_reaction.head(c.dim) += r;
+  e.applied_load = total_load.norm();
+  e.equilibrium = (total_reaction + total_load).norm() / e.applied_load;
+  for (const ContactPairResult& pair : s.contact)
+    for (const auto& side : pair.sides)
+      for (Index k = 0; k < side.pressure.size(); ++k) {
+        e.pressure = std::max(e.pressure, std::abs(side.pressure[k] - kP) / kP);
+        e.tangential = std::max(e.tangential, side.tangential.col(k).norm() / kP);
+      }
   return e;
 }
 
 std::string contact_patch_name(const ContactPatchCase& c) {
-  std::string name = std::string(c.dim == 3 ? "3D_" : "") + "n" + std::to_string(c.n1) + "_" + std::to_string(c.n2) + "_P" + std::to_string(c.order) + "_" +
+  std::string name = std::string(c.dim == 3 ? "3D_" : "") + "n" + std::to_string(c.n1) + "_" + std::to_string(c.n2) +
+                     (c.n3 > 0 ? "_" + std::to_string(c.n3) : std::string()) + "_P" + std::to_string(c.order) + "_" +
                      (c.mode == "symmetric" ? std::string("symmetric") : std::string("onepass"));
   if (c.swap) name += "_swapped";
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));

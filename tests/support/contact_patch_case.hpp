@@ -13,8 +13,16 @@
 /// (Gmsh, so the interface meshes do not match); bottom u_z = 0; u_x = u_y = 0 at (0, 0, 0) and
 /// (0, 0, 2), u_y = 0 at (1, 0, 0) and (1, 0, 2) (rigid motions only, the Poisson expansion is free).
 /// Exact: σ_zz = −p, contact pressure p, u_z = −p z / E, u_x = ν p x / E, u_y = ν p y / E.
+///
+/// n3 > 0: three blocks stacked, "lower" [0,1]×[0,1], "middle" [0,1]×[1,2], "upper" [0,1]×[2,3] (3D: ×[0,1]
+/// in y, stacked in z) with n1, n2, n3 divisions, two contact pairs (lower/middle, middle/upper); the middle
+/// and the upper block are held like the upper block of the two-block case, at their own top corners. The
+/// exact solution is the same linear field, with the pressure p at both interfaces.
 
+#include <memory>
 #include <string>
+
+#include "support/solve_case.hpp"
 
 namespace symcontact::testing {
 
@@ -23,7 +31,8 @@ struct ContactPatchCase {
   int n1 = 4, n2 = 5;              ///< divisions per side of the lower and the upper block
   int order = 1;                   ///< Lagrange order
   std::string mode = "symmetric";  ///< "symmetric" or "one-pass" (slave: surface b, the upper block's bottom unless swapped)
-  bool swap = false;               ///< declare the upper body first
+  int n3 = 0;                      ///< > 0: a third block on top with n3 divisions per side
+  bool swap = false;               ///< declare the bodies and the pairs in reverse order, each pair's a and b swapped
   double mu = -1.0;                ///< < 0: frictionless; ≥ 0: Coulomb friction with this coefficient
   double alpha = 0.0;              ///< friction regularisation length; 0: automatic
 };
@@ -32,22 +41,34 @@ struct ContactPatchErrors {
   double displacement = 0.0;   ///< max nodal |u − u_exact| / max |u_exact|
   double pressure = 0.0;       ///< max over the contact nodes of both sides of |p − p_exact| / p_exact
   double tangential = 0.0;     ///< max |tangential traction| / p_exact over the contact nodes
+  double equilibrium = 0.0;    ///< |Σ support reactions + Σ applied loads| / |Σ applied loads| (vectors)
+  double applied_load = 0.0;   ///< |Σ applied loads| (= p × the top's area)
   int geometry_iterations = 0, ipopt_iterations = 0, coulomb_iterations = 0;
 };
 
 /// The Gmsh file of the two blocks (physical groups: surfaces "lower", "upper"; curves "bottom",
 /// "lower_top", "upper_bottom", "top"; points "origin", "upper_corner"). In 3D: volumes "lower", "upper";
 /// surfaces "bottom", "lower_top", "upper_bottom", "top"; points "origin", "lower_x" (1, 0, 0),
-/// "upper_corner" (0, 0, 2), "upper_x" (1, 0, 2).
-std::string contact_patch_geo(int n1, int n2, int dim = 2);
+/// "upper_corner" (0, 0, 2), "upper_x" (1, 0, 2). With n3 > 0, three blocks "lower", "middle", "upper":
+/// faces "bottom", "lower_top", "middle_bottom", "middle_top", "upper_bottom", "top"; points "origin"
+/// (and "lower_x"), "middle_corner" (0, 2) (and "middle_x" (1, 0, 2)), "upper_corner" (0, 3) (and
+/// "upper_x" (1, 0, 3)). The 3D corner groups are bounding boxes: they also hold the coincident corner
+/// of the block above, which a body's restriction of the group leaves out.
+std::string contact_patch_geo(int n1, int n2, int dim = 2, int n3 = 0);
 
 /// The problem file (mesh "blocks.geo" in the same folder).
 std::string contact_patch_toml(const ContactPatchCase& c);
 
-/// Writes both files into a temporary folder, solves, and measures the errors against the exact solution.
+/// Writes both files into a temporary folder and solves.
+std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c);
+
+/// The errors of a solution of `c` against the exact solution (pressures over every pair and side).
+ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedCase& s);
+
+/// Solves and measures: contact_patch_errors(c, *contact_patch_solve(c)).
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
-/// "n4_5_P1_symmetric" (+ "_swapped", "_mu0.3"; "3D_" first in 3D): a GoogleTest parameter name.
+/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3"; "3D_" first in 3D): a GoogleTest parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing

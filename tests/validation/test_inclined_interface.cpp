@@ -20,6 +20,7 @@
 // is off by 3.6 % for μ = 0.2, while the check against α_c still holds).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -38,6 +39,7 @@ namespace {
 
 constexpr double kTanAlpha = 0.1;
 const std::string kExampleDir = std::string(SYMCONTACT_EXAMPLES) + "/inclined_2d";
+const std::string kExampleDir3D = std::string(SYMCONTACT_EXAMPLES) + "/inclined_3d";
 
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
@@ -57,13 +59,14 @@ struct StepResult {
   int coulomb_iterations = 0;
 };
 
-/// Solves `file` of examples/inclined_2d on the mesh of size h, step by step, as `symcontact run` does.
-std::vector<StepResult> solve_inclined(const std::string& file, double h) {
+/// Solves `file` of `example_dir` (examples/inclined_2d or inclined_3d) on the mesh of size h, step by
+/// step, as `symcontact run` does. In 3D the reaction and the forces are their x and y components.
+std::vector<StepResult> solve_inclined(const std::string& file, double h, const std::string& example_dir = kExampleDir) {
   const std::string dir = ::testing::TempDir() + "inclined_interface/";
   char geo[512];
-  std::snprintf(geo, sizeof geo, "h = %.9g;\nInclude \"%s/inclined.geo\";\n", h, kExampleDir.c_str());
+  std::snprintf(geo, sizeof geo, "h = %.9g;\nInclude \"%s/inclined.geo\";\n", h, example_dir.c_str());
   write_text(dir, "inclined_h.geo", geo);
-  std::string toml = read_text(kExampleDir + "/" + file);
+  std::string toml = read_text(example_dir + "/" + file);
   const std::string from = "mesh = \"inclined.geo\"";
   std::size_t count = 0;
   for (std::size_t at = 0; (at = toml.find(from, at)) != std::string::npos; ++count)
@@ -95,9 +98,9 @@ std::vector<StepResult> solve_inclined(const std::string& file, double h) {
     const std::vector<Eigen::VectorXd> r = model->reactions(fixed, g);
     s.reaction.setZero();
     for (std::size_t k = 0; k < r.size(); ++k)
-      if (model->dirichlet_boundaries()[k].body == upper) s.reaction += r[k];
+      if (model->dirichlet_boundaries()[k].body == upper) s.reaction += r[k].head<2>();
     const ContactPairResult& pair = pairs.at(0);
-    s.contact_force = pair.total_force;
+    s.contact_force = pair.total_force.head<2>();
     s.interface_slope = -pair.normal_force[0] / pair.normal_force[1];
     for (const ContactSideResult& side : pair.sides)
       for (Index k = 0; k < side.status.size(); ++k) {
@@ -117,12 +120,9 @@ struct InclinedCase {
 
 class InclinedInterface : public ::testing::TestWithParam<InclinedCase> {};
 
-}  // namespace
-
-TEST_P(InclinedInterface, ReactionRatioInGrossSlipMatchesTheIncline) {
-  const InclinedCase c = GetParam();
+/// The checks of the header, step by step (printed).
+void check_reaction_ratio(const InclinedCase& c, const std::vector<StepResult>& steps) {
   const double exact = exact_ratio(kTanAlpha, c.mu);
-  const std::vector<StepResult> steps = solve_inclined(c.file, 0.1);
   ASSERT_EQ(steps.size(), 10u);
   std::printf("  %s, mu = %.1f: exact |Rx/Ry| = %.6f\n", c.file.c_str(), c.mu, exact);
   std::printf("  step     Rx            Ry           |Rx/Ry|    error     tan a_c   vs tan(a_c+phi)  slip/stick  Coulomb it\n");
@@ -142,6 +142,21 @@ TEST_P(InclinedInterface, ReactionRatioInGrossSlipMatchesTheIncline) {
     EXPECT_GT(s.slipping, 0) << "step " << k + 1;
     EXPECT_EQ(s.sticking, 0) << "step " << k + 1;
   }
+}
+
+}  // namespace
+
+TEST_P(InclinedInterface, ReactionRatioInGrossSlipMatchesTheIncline) {
+  const InclinedCase c = GetParam();
+  check_reaction_ratio(c, solve_inclined(c.file, 0.1));
+}
+
+// The same extruded to 3D (examples/inclined_3d: a slab of thickness 0.2, u_z = 0 on both z faces, so
+// the plane-strain answer holds), μ = 0.2, on unstructured tetrahedra of size 0.1 (0.075 above).
+TEST(InclinedInterface3D, ReactionRatioInGrossSlipMatchesTheIncline) {
+  const auto t0 = std::chrono::steady_clock::now();
+  check_reaction_ratio(InclinedCase{"inclined.toml", 0.2}, solve_inclined("inclined.toml", 0.1, kExampleDir3D));
+  std::printf("  3D: %.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 const auto kCaseName = [](const auto& p) { return "mu" + std::to_string(static_cast<int>(10 * p.param.mu + 0.5)); };
