@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <iterator>
 #include <stdexcept>
 
 #include "problem_run.hpp"
@@ -25,9 +24,7 @@ void run_problem_files(const ProblemBenchOptions& opt, const MachineInfo& machin
     steps << "case,step,wall_s,contact_solves,geometry_iterations,ipopt_iterations,newton_iterations\n";
   }
   for (const std::string& file : opt.files) {
-    std::ifstream in(file);
-    if (!in) throw std::runtime_error("cannot read '" + file + "'");
-    const std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string toml = read_file(file);
     const std::filesystem::path path(file);
     reset_peak_rss();
     const auto run = solve_problem(toml, file, path.parent_path().string());

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <ctime>
 #include <iomanip>
+#include <iterator>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -259,6 +260,19 @@ void ResultTable::add_row(const std::vector<Value>& row) {
     }
     csv_ << "\n" << std::flush;
   }
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read '" + path + "'");
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  if (!out) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 std::string make_work_dir() {

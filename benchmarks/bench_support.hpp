@@ -59,6 +59,11 @@ double min_time(int repeat, const std::function<void()>& f);
 /// in [min_size, max_size].
 std::vector<double> size_ladder(double min_size, double max_size);
 
+/// The whole text of a file; throws std::runtime_error naming it when it cannot be read.
+std::string read_file(const std::string& path);
+/// Writes `text` to a file; throws std::runtime_error naming it when it cannot be written.
+void write_file(const std::string& path, const std::string& text);
+
 /// A fresh directory under the system temporary directory (symcontact-bench-XXXXXX); throws
 /// std::runtime_error when it cannot be made.
 std::string make_work_dir();

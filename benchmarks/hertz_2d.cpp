@@ -18,19 +18,6 @@ namespace symcontact::bench {
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read '" + path + "'");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  out.close();
-  if (!out) throw std::runtime_error("cannot write '" + path + "'");
-}
-
 /// Replaces every occurrence of `from` in `s` by `to`; throws if there is none.
 void replace_all(std::string& s, const std::string& from, const std::string& to) {
   std::size_t count = 0;
