@@ -116,17 +116,7 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
                    run->min_constraint, run->report.ipopt_status, static_cast<double>(opt.repeat),
                    static_cast<double>(machine.openblas_threads)});
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_sweep).count();
-  std::cout << "\n# " << name << " sweep: " << std::fixed << std::setprecision(1) << wall << std::defaultfloat
-            << " s wall\n";
-  if (!rss_reset_ok)
-    std::cout << "# note: /proc/self/clear_refs refused the peak-RSS reset: peak RSS is monotone over the run\n";
-  else
-    std::cout << "# peak RSS: of meshing + setup + contact solve, per size (VmHWM reset before each size)\n";
-  if (opt.keep_work)
-    std::cout << "# wrapper .geo and .toml kept in " << work << "\n";
-  else
-    std::filesystem::remove_all(work);
+  finish_sweep(name, t_sweep, rss_reset_ok, "meshing + setup + contact solve", work, opt.keep_work);
 }
 
 }  // namespace symcontact::bench

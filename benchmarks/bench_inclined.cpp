@@ -55,17 +55,7 @@ void run_inclined_sweep(const InclinedBenchOptions& opt, const MachineInfo& mach
     row.push_back(100 * (run->ratio / exact - 1));
     table.add_row(row);
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_sweep).count();
-  std::cout << "\n# inclined sweep: " << std::fixed << std::setprecision(1) << wall << std::defaultfloat
-            << " s wall\n";
-  if (!rss_reset_ok)
-    std::cout << "# note: /proc/self/clear_refs refused the peak-RSS reset: peak RSS is monotone over the run\n";
-  else
-    std::cout << "# peak RSS: of meshing + setup + the contact solves, per size (VmHWM reset before each size)\n";
-  if (opt.keep_work)
-    std::cout << "# wrapper .geo and .toml kept in " << work << "\n";
-  else
-    std::filesystem::remove_all(work);
+  finish_sweep("inclined", t_sweep, rss_reset_ok, "meshing + setup + the contact solves", work, opt.keep_work);
 }
 
 }  // namespace symcontact::bench

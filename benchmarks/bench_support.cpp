@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <ctime>
 #include <iomanip>
+#include <iostream>
 #include <iterator>
 #include <limits>
 #include <set>
@@ -273,6 +274,21 @@ void write_file(const std::string& path, const std::string& text) {
   out << text;
   out.close();
   if (!out) throw std::runtime_error("cannot write '" + path + "'");
+}
+
+void finish_sweep(const std::string& name, std::chrono::steady_clock::time_point start, bool rss_reset_ok,
+                  const std::string& measured, const std::string& work_dir, bool keep_work) {
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "\n# " << name << " sweep: " << std::fixed << std::setprecision(1) << wall << std::defaultfloat
+            << " s wall\n";
+  if (!rss_reset_ok)
+    std::cout << "# note: /proc/self/clear_refs refused the peak-RSS reset: peak RSS is monotone over the run\n";
+  else
+    std::cout << "# peak RSS: of " << measured << ", per size (VmHWM reset before each size)\n";
+  if (keep_work)
+    std::cout << "# wrapper .geo and .toml kept in " << work_dir << "\n";
+  else
+    std::filesystem::remove_all(work_dir);
 }
 
 std::string make_work_dir() {

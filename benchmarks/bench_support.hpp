@@ -7,6 +7,7 @@
 /// Nothing here knows about elasticity or contact; the elasticity and contact benchmarks both
 /// use it so that their outputs look alike.
 
+#include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <functional>
@@ -63,6 +64,12 @@ std::vector<double> size_ladder(double min_size, double max_size);
 std::string read_file(const std::string& path);
 /// Writes `text` to a file; throws std::runtime_error naming it when it cannot be written.
 void write_file(const std::string& path, const std::string& text);
+
+/// The closing lines of a sweep over sizes: its wall time since `start`, what the peak RSS column
+/// measured (`measured`, e.g. "meshing + setup + the contact solves") or that its reset was refused, and
+/// the work directory, kept (its path printed) or removed.
+void finish_sweep(const std::string& name, std::chrono::steady_clock::time_point start, bool rss_reset_ok,
+                  const std::string& measured, const std::string& work_dir, bool keep_work);
 
 /// A fresh directory under the system temporary directory (symcontact-bench-XXXXXX); throws
 /// std::runtime_error when it cannot be made.
