@@ -31,6 +31,8 @@ std::vector<ResultTable::Column> columns() {
       {"assembly_s", "assembly [s]", Kind::kFixed, 3},
       {"optimizer_s", "optimizer [s]", Kind::kFixed, 3},
       {"polish_s", "polish [s]", Kind::kFixed, 3},
+      {"condensation_s", "condens. [s]", Kind::kFixed, 3},
+      {"condensed_dofs", "condensed", Kind::kInteger, 0},
       {"contact_s", "contact [s]", Kind::kFixed, 3},
       {"solve_contact_wall_s", "", Kind::kFixed, 3},
       {"total_s", "total [s]", Kind::kFixed, 3},
@@ -75,7 +77,7 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
             << ", plane strain, P1, half model; closed form a = " << std::setprecision(6) << ref.a
             << ", p0 = " << ref.p0
             << "; floor phases min of " << opt.repeat << " run(s), contact solve once\n";
-  std::cout << "# contact = search + assembly + optimizer + polish; total = mesh + setup + solve_contact wall;\n"
+  std::cout << "# contact = search + assembly + optimizer + polish + condensation (factorisation, Schur complement, expansions); total = mesh + setup + solve_contact wall;\n"
             << "# floor = analyze + factorize + solve of K_ff (u_y also pinned at the contact point);"
                " ratio = contact / floor;\n# CPU ratio = process CPU time of solve_contact() / of the floor"
                " (less sensitive to other load on the machine)\n\n";
@@ -87,7 +89,7 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
   bool rss_reset_ok = true;
   for (const double h : opt.h) {
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
-    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work);
+    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense);
     const double peak_contact = peak_rss_mib();
 
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
@@ -105,7 +107,8 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
                    static_cast<double>(run->report.num_free), static_cast<double>(run->report.num_constraints),
                    static_cast<double>(run->report.geometry_iterations),
                    static_cast<double>(run->report.ipopt_iterations), meshing, setup, t.get("search"),
-                   t.get("assembly"), t.get("optimizer"), t.get("polish"), contact, run->solve_wall,
+                   t.get("assembly"), t.get("optimizer"), t.get("polish"), t.get("condensation"),
+                   static_cast<double>(run->report.num_condensed), contact, run->solve_wall,
                    meshing + setup + run->solve_wall, peak_contact, static_cast<double>(floor_free),
                    static_cast<double>(pinned), floor.assembly, floor.analyze, floor.factorize, floor.solve,
                    floor.factor_and_solve(), contact / floor.factor_and_solve(),

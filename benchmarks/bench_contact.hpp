@@ -21,6 +21,7 @@ struct ContactBenchOptions {
   std::string csv;
   bool markdown = false;
   bool keep_work = false;      ///< keep the temporary directory with the wrapper .geo and .toml
+  bool condense = true;        ///< static condensation (--no-condense: IPOPT on the whole problem)
 };
 
 /// The default ladder of h: about 1e4 to 2e5 DOFs for the cylinder on the plane.

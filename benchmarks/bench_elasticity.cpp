@@ -32,7 +32,8 @@
 ///
 ///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
 ///
-/// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, and --repeat,
+/// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, --no-condense
+/// (hertz2d cases: IPOPT on the whole problem instead of the condensed one), and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
 #include <CLI/CLI.hpp>
@@ -101,6 +102,7 @@ struct Options {
   std::vector<double> h;           ///< contact: fine mesh sizes (default_hertz_sizes() when empty)
   std::string examples = SYMCONTACT_BENCH_EXAMPLES;
   bool keep_work = false;
+  bool no_condense = false;
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
   std::string dim = "all";
@@ -181,6 +183,8 @@ int main(int argc, char** argv) {
   app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
   app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
+  app.add_flag("--no-condense", opt.no_condense,
+               "hertz2d cases: no static condensation (IPOPT on the whole problem), to compare");
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
   app.add_option("--min-dofs", opt.min_dofs, "smallest size of the ladder 1e4, 3e4, 1e5, ... [DOFs]")
@@ -241,6 +245,7 @@ int main(int argc, char** argv) {
       c.csv = opt.csv;
       c.markdown = opt.markdown;
       c.keep_work = opt.keep_work;
+      c.condense = !opt.no_condense;
       run_hertz_sweep(c, machine);
       return symcontact::kExitOk;
     }

@@ -43,11 +43,11 @@ HertzReference hertz_reference() {
 
 double HertzRun::contact_seconds() const {
   return report.times.get("search") + report.times.get("assembly") + report.times.get("optimizer") +
-         report.times.get("polish");
+         report.times.get("polish") + report.times.get("condensation");
 }
 
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
-                                      const std::string& work_dir) {
+                                      const std::string& work_dir, bool condense) {
   auto run = std::make_unique<HertzRun>();
   run->which = which;
   run->h = h;
@@ -75,6 +75,7 @@ std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::stri
   ContactSolveOptions opt;
   opt.geometry_tolerance = run->spec.contact_solver.geometry_tolerance;
   opt.max_geometry_iterations = run->spec.contact_solver.max_geometry_iterations;
+  opt.condense = condense && run->spec.contact_solver.static_condensation;
   opt.ipopt.string_options = run->spec.contact_solver.ipopt_string;
   opt.ipopt.numeric_options = run->spec.contact_solver.ipopt_numeric;
   opt.ipopt.integer_options = run->spec.contact_solver.ipopt_integer;

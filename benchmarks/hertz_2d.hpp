@@ -64,8 +64,9 @@ struct HertzRun {
 /// Writes the wrapper .geo and a copy of the example's TOML (pointing at it) into `work_dir`, builds the
 /// model and solves it. `examples_dir` is the examples/ folder of the source tree. Throws what the
 /// library throws (InputError, SolveError).
+/// `condense` false switches the static condensation off (contact_solver.static_condensation).
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
-                                      const std::string& work_dir);
+                                      const std::string& work_dir, bool condense = true);
 
 /// The Cholesky floor of run.model: K_ff of the whole energy (all bodies), factorised and solved for the
 /// external load. The free DOFs are those of the contact problem except that u_y is additionally fixed

@@ -15,7 +15,7 @@ namespace symcontact::bench {
 
 double ProblemRun::contact_seconds() const {
   return times.get("search") + times.get("assembly") + times.get("optimizer") + times.get("polish") +
-         times.get("predictor");
+         times.get("predictor") + times.get("condensation");
 }
 
 Eigen::VectorXd ProblemRun::body_reaction(const std::string& name) const {

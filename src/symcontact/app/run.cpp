@@ -90,6 +90,8 @@ FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
   ContactSolveOptions& o = f.contact;
   o.geometry_tolerance = spec.contact_solver.geometry_tolerance;
   o.max_geometry_iterations = spec.contact_solver.max_geometry_iterations;
+  o.condense = spec.contact_solver.static_condensation;
+  o.workspace = std::make_shared<ContactWorkspace>();  // one factorisation for the whole run
   if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
   o.ipopt.string_options = spec.contact_solver.ipopt_string;
   o.ipopt.numeric_options = spec.contact_solver.ipopt_numeric;
@@ -211,6 +213,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
   const int nsteps = model->num_steps();
   FrictionState previous_friction;  ///< the thresholds the last step converged to (Coulomb warm start)
+  const FrictionalOptions solver_options = contact_options(spec, log);  // its workspace serves every step
   for (int step = 0; step < nsteps; ++step) {
     PhaseTimes st;
     model->set_step(step);
@@ -220,7 +223,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     FrictionalReport frep;
     try {
       if (has_contact)
-        frep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, contact_options(spec, log), log,
+        frep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, solver_options, log,
                                         step > 0 ? &previous_friction : nullptr);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);

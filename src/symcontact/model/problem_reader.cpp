@@ -887,7 +887,8 @@ class Reader {
     if (!node) return;
     const toml::table& t = as_table(*node, "contact_solver");
     check_keys(t, "contact_solver",
-               {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations"});
+               {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations",
+                "static_condensation"});
     ContactSolverSpec& s = spec.contact_solver;
     if (const toml::node* n = t.get("geometry_tolerance")) {
       const std::string key = "contact_solver.geometry_tolerance";
@@ -905,6 +906,8 @@ class Reader {
     if (const toml::node* n = t.get("max_coulomb_iterations")) {
       s.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
     }
+    if (const toml::node* n = t.get("static_condensation"))
+      s.static_condensation = as_bool(*n, "contact_solver.static_condensation");
   }
 
   /// [ipopt]: any option, passed to IPOPT as it is, sorted by the TOML type of its value. IPOPT itself

@@ -111,6 +111,9 @@ struct ContactSolverSpec {
   int max_geometry_iterations = 50;
   double coulomb_tolerance = 1e-6;    ///< ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ below which the Coulomb fixed point stops
   int max_coulomb_iterations = 50;
+  /// Condense linear-elastic bodies onto their contact DOFs (one Cholesky factorisation per run); the
+  /// solution is the same, only the cost changes. Finite-strain bodies are never condensed.
+  bool static_condensation = true;
   /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
   std::map<std::string, std::string> ipopt_string;
   std::map<std::string, double> ipopt_numeric;

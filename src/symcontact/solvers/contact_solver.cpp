@@ -8,7 +8,9 @@
 #include "symcontact/contact/surface_tractions.hpp"
 #include "symcontact/solvers/active_set_polish.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
+#include "symcontact/solvers/condensed_problem.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
+#include "symcontact/solvers/static_condensation.hpp"
 
 namespace symcontact {
 
@@ -46,14 +48,84 @@ class CompositeEnergy : public EnergyTerm {
 };
 }  // namespace
 
+ContactWorkspace::ContactWorkspace() = default;
+ContactWorkspace::~ContactWorkspace() = default;
+
 namespace {
+
+/// The condensed form of the current geometry iterate's problem, or null when condensing does not apply
+/// or pay (see ContactSolveOptions::condense). Reuses the workspace's factorisation when its condensed set
+/// holds every DOF the constraints and friction terms touch; otherwise refactorises with the union.
+std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const ReducedProblem& problem,
+                                                   const std::vector<std::shared_ptr<const FrictionTerm>>& friction,
+                                                   const VectorXd& u, const VectorXd& x, const EnergyTerm& energy,
+                                                   ContactWorkspace& ws, const ContactSolveOptions& options,
+                                                   const Logger& log, ContactSolveReport& rep) {
+  const Index n = problem.num_free();
+  const auto& free_index = problem.free_index();
+  // B: the free DOFs of the constraint rows and of the friction terms.
+  std::vector<char> in_b(n, 0);
+  const SparseMatrix& A = problem.constraint_matrix();
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+      if (it.value() != 0.0) in_b[j] = 1;
+  std::vector<std::shared_ptr<const EnergyTerm>> extras;
+  for (const auto& t : friction) {
+    if (!t) continue;
+    extras.push_back(t);
+    for (Index d : support_of(*t, u))
+      if (free_index[d] >= 0) in_b[free_index[d]] = 1;
+  }
+  const bool same_model = ws.condensation && !ws.condensation->empty() && ws.energy == &energy &&
+                          ws.free_index == free_index;
+  bool covered = same_model;
+  if (same_model) {
+    const auto& pos = ws.condensation->boundary_position();
+    for (Index k = 0; k < n && covered; ++k)
+      if (in_b[k] && pos[k] < 0) covered = false;
+  }
+  if (!covered) {
+    if (same_model)  // grow: keep what was condensed before, so that a zone moving back and forth settles
+      for (Index k : ws.condensation->boundary()) in_b[k] = 1;
+    std::vector<Index> boundary;
+    for (Index k = 0; k < n; ++k)
+      if (in_b[k]) boundary.push_back(k);
+    if (boundary.empty() || static_cast<Index>(boundary.size()) > options.max_condensed_dofs ||
+        2 * static_cast<Index>(boundary.size()) > n)
+      return nullptr;
+    if (!ws.condensation) ws.condensation = std::make_unique<StaticCondensation>();
+    try {
+      SparseMatrix K;
+      bulk.hessian_lower(VectorXd::Zero(n), K);
+      ws.condensation->compute(K, std::move(boundary));
+    } catch (const SolveError& e) {
+      log.detail(std::string("  static condensation not used: ") + e.what());
+      ws.energy = nullptr;
+      ws.condensation.reset();
+      return nullptr;
+    }
+    ws.energy = &energy;
+    ws.free_index = free_index;
+    ++ws.factorisations;
+    ++rep.condensation_factorisations;
+    log.debug("  static condensation onto " + std::to_string(ws.condensation->boundary().size()) + " of " +
+              std::to_string(n) + " free DOFs");
+  }
+  return std::make_unique<CondensedProblem>(bulk, *ws.condensation, std::move(extras), A,
+                                            problem.constraint_offset(), x);
+}
+
 ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                       const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                       const Logger& log, const FrictionState* friction) {
   ContactSolveReport rep;
   CompositeEnergy total(energy);
   ReducedProblem problem(total, fixed, dofs.num_dofs());
+  ReducedProblem bulk(energy, fixed, dofs.num_dofs());  // the bodies' energy alone (static condensation)
   rep.num_free = problem.num_free();
+  const bool condense = options.condense && energy.hessian_is_constant();
+  const std::shared_ptr<ContactWorkspace> workspace =
+      options.workspace ? options.workspace : std::make_shared<ContactWorkspace>();
   {
     // New Dirichlet values: a finite-strain body follows them by its linearised response first, so that
     // the start point inverts no cell next to a moved boundary (a quadratic energy just takes them).
@@ -125,6 +197,16 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         }
     }
     rep.num_constraints = lin.A.rows();
+    std::unique_ptr<CondensedProblem> condensed;
+    if (condense) {
+      ScopedPhase t(rep.times, "condensation");
+      condensed = condense_problem(bulk, problem, total.extra, problem.expand(x), x, energy, *workspace, options,
+                                   log, rep);
+    }
+    rep.num_condensed = condensed ? condensed->num_variables() : 0;
+    ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed) : problem;
+    auto to_target = [&](const VectorXd& xf) { return condensed ? condensed->restrict(xf) : xf; };
+    auto from_target = [&](const VectorXd& xt) { return condensed ? condensed->expand(xt) : xt; };
     // Warm start when the rows are the same (same families, same nodes).
     IpoptOptions opt = options.ipopt;
     VectorXd mu0;
@@ -136,7 +218,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     IpoptResult res;
     {
       ScopedPhase t(rep.times, "optimizer");
-      res = solve_with_ipopt(problem, x, opt, same_rows ? &mu0 : nullptr);
+      res = solve_with_ipopt(target, to_target(x), opt, same_rows ? &mu0 : nullptr);
       if (!res.success && friction) {
         // Stiff regularised friction (small α) can defeat IPOPT's line search from a start that is
         // already close; one cold retry from the start of the load step before giving up.
@@ -144,8 +226,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         IpoptOptions cold = options.ipopt;
         VectorXd u_retry = friction->u_start;  // the start of the step, moved as at the first solve
         predict_dirichlet_increment(energy, fixed, u_retry);
-        VectorXd x_retry = problem.restrict(u_retry);
-        const IpoptResult retry = solve_with_ipopt(problem, x_retry, cold);
+        const IpoptResult retry = solve_with_ipopt(target, to_target(problem.restrict(u_retry)), cold);
         rep.ipopt_iterations += res.iterations;
         res = retry;
       }
@@ -155,33 +236,34 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     rep.ipopt_status = res.status_text;
     rep.geometry_iterations = it;
     if (!res.success) {
-      u = problem.expand(res.x.size() == x.size() ? res.x : x);
+      u = problem.expand(res.x.size() == target.num_variables() ? from_target(res.x) : x);
       throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
     }
-    auto relative_change = [&]() {
-      return (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
-    };
-    double change = relative_change();
     if (options.polish) {
       ScopedPhase t(rep.times, "polish");
       // Closing the active set fails for good when the two families of a curved symmetric pair cannot
       // all be closed at once; after one failure this solve only balances forces (cheaper).
       PolishResult pr;
       if (closing_polish_works) {
-        pr = polish_active_set(problem, res.x, res.multipliers);
+        pr = polish_active_set(target, res.x, res.multipliers);
         if (!pr.applied) {
           closing_polish_works = false;
           log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
         }
       }
       if (!pr.applied) {
-        pr = polish_active_set(problem, res.x, res.multipliers, true);
+        pr = polish_active_set(target, res.x, res.multipliers, true);
         if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
       }
       log.debug("  polish: " + std::to_string(pr.iterations) + " iterations on " + std::to_string(pr.active) +
                 " active constraints");
-      change = relative_change();
     }
+    if (condensed) {
+      ScopedPhase t(rep.times, "condensation");
+      res.x = condensed->expand(res.x);
+    }
+    const double change =
+        (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
     rep.change_history.push_back(change);
     x = res.x;
     mu_prev = res.multipliers;

@@ -25,6 +25,21 @@
 
 namespace symcontact {
 
+class StaticCondensation;
+
+/// What solve_contact keeps between calls: the static condensation of a quadratic bulk energy (its
+/// Cholesky factor and Schur complement, see condensed_problem.hpp), reused while the energy object,
+/// the set of free DOFs and the condensed DOFs still fit. One per run (all load steps and Coulomb
+/// iterations of one model); it is rebuilt, never misused, when given another energy or Dirichlet set.
+struct ContactWorkspace {
+  ContactWorkspace();
+  ~ContactWorkspace();
+  const EnergyTerm* energy = nullptr;   ///< the energy the condensation belongs to
+  std::vector<Index> free_index;        ///< its DOF → free numbering
+  std::unique_ptr<StaticCondensation> condensation;
+  int factorisations = 0;               ///< condensations computed (for reports and tests)
+};
+
 struct ContactSolveOptions {
   double geometry_tolerance = 1e-6;
   int max_geometry_iterations = 50;
@@ -34,6 +49,15 @@ struct ContactSolveOptions {
   IpoptOptions ipopt;
   /// Remove that offset after each IPOPT solve (active_set_polish.hpp); quadratic energies only.
   bool polish = true;
+  /// Static condensation onto the contact DOFs when the bodies' energy is quadratic (linear elasticity):
+  /// one Cholesky factorisation of the stiffness serves every IPOPT iteration, geometry iteration and
+  /// load step, and IPOPT works on the condensed set only. Same solution (to the optimiser's tolerance);
+  /// off only to compare.
+  bool condense = true;
+  /// Largest condensed set (DOFs) for which condensing pays: S is dense.
+  Index max_condensed_dofs = 4000;
+  /// Reused between calls when set (create one per run); a fresh one per call when null.
+  std::shared_ptr<ContactWorkspace> workspace;
 };
 
 /// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).
@@ -51,6 +75,8 @@ struct ContactSolveReport {
   std::string ipopt_status;                 ///< of the last solve
   Index num_free = 0;
   Index num_constraints = 0;                ///< of the last linearisation
+  Index num_condensed = 0;                  ///< DOFs IPOPT worked on when condensed (0: not condensed)
+  int condensation_factorisations = 0;      ///< factorisations for the condensation in this call
   PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
   ContactLinearization linearization;       ///< at the last geometry iterate
   VectorXd multipliers;                     ///< μ of the last solve (one per row)

@@ -30,6 +30,7 @@ class ReducedProblem : public ConstrainedProblem {
   VectorXd expand(const VectorXd& x) const;    ///< u = P x + u_D
   VectorXd restrict(const VectorXd& u) const;  ///< x = Pᵀ u
   Index num_free() const { return num_free_; }
+  const std::vector<Index>& free_index() const { return free_index_; }  ///< DOF → free index or −1
 
  private:
   const EnergyTerm& energy_;

@@ -1,0 +1,125 @@
+#include "symcontact/solvers/condensed_problem.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace symcontact {
+
+namespace {
+/// Records the DOFs of every block added.
+class SupportSink : public MatrixSink {
+ public:
+  void add(const Index* dofs, int n, const double*) override { dofs_.insert(dofs_.end(), dofs, dofs + n); }
+  std::vector<Index> take() {
+    std::sort(dofs_.begin(), dofs_.end());
+    dofs_.erase(std::unique(dofs_.begin(), dofs_.end()), dofs_.end());
+    return std::move(dofs_);
+  }
+
+ private:
+  std::vector<Index> dofs_;
+};
+}  // namespace
+
+std::vector<Index> support_of(const EnergyTerm& term, const VectorXd& u) {
+  SupportSink sink;
+  term.add_hessian(u, sink);
+  return sink.take();
+}
+
+CondensedProblem::CondensedProblem(ReducedProblem& bulk, const StaticCondensation& condensation,
+                                   std::vector<std::shared_ptr<const EnergyTerm>> extras, const SparseMatrix& A,
+                                   const VectorXd& b, const VectorXd& x_reference)
+    : bulk_(bulk), sc_(condensation), extras_(std::move(extras)), x_ref_(x_reference), b_(b) {
+  const Index n = bulk_.num_free();
+  if (sc_.size() != n || x_reference.size() != n || A.cols() != n)
+    throw std::invalid_argument("CondensedProblem: sizes of the condensation, reference and constraints differ");
+  const VectorXd zero = VectorXd::Zero(n);
+  bulk_.gradient(zero, r0_);
+  const double e0 = bulk_.objective(zero);
+  // w = K_II⁻¹ r₀_I;  ĝ = r₀_B − (K w)_B;  f₀ = E₀ − ½ r₀ · w  (w_B = 0)
+  const VectorXd w = sc_.solve_interior(r0_);
+  const VectorXd kw = sc_.matrix().selfadjointView<Eigen::Lower>() * w;
+  const auto& B = sc_.boundary();
+  g_hat_.resize(static_cast<Index>(B.size()));
+  for (std::size_t k = 0; k < B.size(); ++k) g_hat_[k] = r0_[B[k]] - kw[B[k]];
+  f0_ = e0 - 0.5 * r0_.dot(w);
+  // A_B: the constraints' columns in B order.
+  const auto& pos = sc_.boundary_position();
+  std::vector<Triplet> t;
+  t.reserve(A.nonZeros());
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it) {
+      if (pos[j] < 0) {
+        if (it.value() == 0.0) continue;
+        throw std::invalid_argument("CondensedProblem: a constraint touches a DOF outside the condensed set");
+      }
+      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(pos[j]), it.value());
+    }
+  A_.resize(A.rows(), static_cast<Index>(B.size()));
+  A_.setFromTriplets(t.begin(), t.end());
+  const auto& free_index = bulk_.free_index();
+  dof_to_b_.assign(free_index.size(), -1);
+  for (std::size_t d = 0; d < free_index.size(); ++d)
+    if (free_index[d] >= 0) dof_to_b_[d] = pos[free_index[d]];
+}
+
+VectorXd CondensedProblem::restrict(const VectorXd& x) const {
+  const auto& B = sc_.boundary();
+  VectorXd y(static_cast<Index>(B.size()));
+  for (std::size_t k = 0; k < B.size(); ++k) y[k] = x[B[k]];
+  return y;
+}
+
+VectorXd CondensedProblem::expand(const VectorXd& y) const {
+  const auto& B = sc_.boundary();
+  VectorXd xb = VectorXd::Zero(bulk_.num_free());
+  for (std::size_t k = 0; k < B.size(); ++k) xb[B[k]] = y[k];
+  // x_I = −K_II⁻¹ (r₀_I + (K x_B)_I): the B entries of the right-hand side are ignored by solve_interior.
+  const VectorXd rhs = r0_ + sc_.matrix().selfadjointView<Eigen::Lower>() * xb;
+  VectorXd x = -sc_.solve_interior(rhs);
+  for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
+  return x;
+}
+
+VectorXd CondensedProblem::full_dofs(const VectorXd& y) const {
+  VectorXd x = x_ref_;
+  const auto& B = sc_.boundary();
+  for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
+  return bulk_.expand(x);
+}
+
+double CondensedProblem::objective(const VectorXd& y) {
+  const SparseMatrix& S = sc_.schur_lower();
+  double v = f0_ + g_hat_.dot(y) + 0.5 * y.dot(S.selfadjointView<Eigen::Lower>() * y);
+  if (!extras_.empty()) {
+    const VectorXd u = full_dofs(y);
+    for (const auto& t : extras_) v += t->value(u);
+  }
+  return v;
+}
+
+void CondensedProblem::gradient(const VectorXd& y, VectorXd& g) {
+  const SparseMatrix& S = sc_.schur_lower();
+  g = g_hat_ + S.selfadjointView<Eigen::Lower>() * y;
+  if (extras_.empty()) return;
+  const VectorXd u = full_dofs(y);
+  VectorXd gu = VectorXd::Zero(u.size());
+  for (const auto& t : extras_) t->add_gradient(u, gu);
+  for (std::size_t d = 0; d < dof_to_b_.size(); ++d)
+    if (dof_to_b_[d] >= 0) g[dof_to_b_[d]] += gu[d];
+}
+
+void CondensedProblem::hessian_lower(const VectorXd& y, SparseMatrix& H) {
+  const SparseMatrix& S = sc_.schur_lower();
+  if (extras_.empty()) {
+    H = S;
+    return;
+  }
+  const VectorXd u = full_dofs(y);
+  ReducedTripletSink sink(dof_to_b_);
+  for (const auto& t : extras_) t->add_hessian(u, sink);
+  H = S + sink.to_lower_matrix(static_cast<Index>(sc_.boundary().size()));
+}
+
+}  // namespace symcontact

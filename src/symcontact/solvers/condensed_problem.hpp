@@ -1,0 +1,74 @@
+#pragma once
+/// \file condensed_problem.hpp
+/// A contact problem with a quadratic bulk energy, condensed onto the DOFs its constraints and surface
+/// terms touch (static condensation; see static_condensation.hpp for the factorisation).
+///
+/// On the free DOFs x (ReducedProblem), let the bodies' energy be quadratic,
+///     E(x) = E₀ + r₀ᵀx + ½ xᵀK x,
+/// and let the constraints A x + b ≥ 0 and the extra (surface) terms Φ(x) — friction — depend on x_B
+/// only, B a small set of free DOFs. For given y = x_B the interior minimiser is
+///     x_I(y) = −K_II⁻¹ (r₀_I + K_IB y),
+/// and the problem becomes, exactly (no approximation),
+///     min_y  F(y) = f₀ + ĝᵀy + ½ yᵀS y + Φ(y)   subject to   A_B y + b ≥ 0,
+///     S = K_BB − K_BI K_II⁻¹ K_IB,   w = K_II⁻¹ r₀_I,   ĝ = r₀_B − K_BI w,   f₀ = E₀ − ½ r₀_Iᵀw.
+/// Its KKT points are those of the full problem with x_I = x_I(y), multipliers unchanged: the interior
+/// block of the full stationarity condition is what defines x_I(y).
+/// One IPOPT iteration then factorises a |B|-sized KKT system instead of an n-sized one; the interior
+/// costs one Cholesky factorisation for all iterations (and all load steps, K being constant) plus one
+/// triangular solve pair per expand().
+///
+/// Contract: the extra terms must not depend on interior DOFs (the constructor does not check it;
+/// support_of() below gives the DOF support to build B with). They are evaluated at a full vector whose
+/// interior holds `x_reference`'s values.
+
+#include <memory>
+#include <vector>
+
+#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/optim/constrained_problem.hpp"
+#include "symcontact/solvers/reduced_problem.hpp"
+#include "symcontact/solvers/static_condensation.hpp"
+
+namespace symcontact {
+
+class CondensedProblem : public ConstrainedProblem {
+ public:
+  /// `bulk` is the ReducedProblem of the quadratic energy alone (for r₀, E₀ and the DOF maps);
+  /// `condensation` holds K_ff and its factor with B = condensation.boundary() (free numbering);
+  /// `extras` are the surface terms (may be empty); A, b the constraints on the free DOFs (columns
+  /// outside B must be empty). All references must outlive the object.
+  CondensedProblem(ReducedProblem& bulk, const StaticCondensation& condensation,
+                   std::vector<std::shared_ptr<const EnergyTerm>> extras, const SparseMatrix& A, const VectorXd& b,
+                   const VectorXd& x_reference);
+
+  Index num_variables() const override { return static_cast<Index>(sc_.boundary().size()); }
+  double objective(const VectorXd& y) override;
+  void gradient(const VectorXd& y, VectorXd& g) override;
+  void hessian_lower(const VectorXd& y, SparseMatrix& H) override;
+  bool hessian_is_constant() const override { return extras_.empty(); }
+  const SparseMatrix& constraint_matrix() const override { return A_; }
+  const VectorXd& constraint_offset() const override { return b_; }
+
+  VectorXd restrict(const VectorXd& x) const;  ///< y = x_B
+  VectorXd expand(const VectorXd& y) const;    ///< x with x_B = y and x_I = x_I(y) (one interior solve)
+
+ private:
+  VectorXd full_dofs(const VectorXd& y) const;  ///< u for the extras: x_reference with x_B = y, expanded
+
+  ReducedProblem& bulk_;
+  const StaticCondensation& sc_;
+  std::vector<std::shared_ptr<const EnergyTerm>> extras_;
+  VectorXd g_hat_;          ///< ĝ
+  double f0_ = 0.0;         ///< f₀
+  VectorXd r0_;             ///< r₀ (free numbering)
+  VectorXd x_ref_;          ///< interior values for the extras' evaluation
+  SparseMatrix A_;          ///< A_B
+  VectorXd b_;
+  std::vector<Index> dof_to_b_;  ///< global DOF → position in B or −1 (for the extras' Hessians)
+};
+
+/// The global DOFs an energy term depends on: those of its Hessian blocks at u (an element-block
+/// assembler adds a block for every DOF it reads, even where the values vanish).
+std::vector<Index> support_of(const EnergyTerm& term, const VectorXd& u);
+
+}  // namespace symcontact

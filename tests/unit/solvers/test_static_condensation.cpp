@@ -1,0 +1,273 @@
+// Static condensation (solvers/static_condensation.hpp, solvers/condensed_problem.hpp): the Schur
+// complement and the interior solves against dense linear algebra, on a regular and on a singular
+// (floating) matrix; the condensed problem's value, gradient and Hessian against the full problem and
+// finite differences.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <random>
+
+#include "support/finite_difference.hpp"
+#include "symcontact/core/error.hpp"
+#include "symcontact/solvers/condensed_problem.hpp"
+#include "symcontact/solvers/static_condensation.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+/// The 5-point Laplacian of an m × m grid (Neumann: singular, constants in its kernel) plus shift·I.
+SparseMatrix grid_laplacian(int m, double shift) {
+  std::vector<Triplet> t;
+  auto id = [m](int i, int j) { return i * m + j; };
+  for (int i = 0; i < m; ++i)
+    for (int j = 0; j < m; ++j) {
+      t.emplace_back(id(i, j), id(i, j), shift);
+      const int nb[2][2] = {{i + 1, j}, {i, j + 1}};
+      for (const auto& q : nb) {
+        if (q[0] >= m || q[1] >= m) continue;
+        const int a = id(i, j), b = id(q[0], q[1]);
+        t.emplace_back(a, a, 1.0);
+        t.emplace_back(b, b, 1.0);
+        t.emplace_back(std::max(a, b), std::min(a, b), -1.0);
+      }
+    }
+  SparseMatrix k(m * m, m * m);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  return k;  // lower triangle only
+}
+
+std::vector<Index> some_indices(Index n, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::vector<Index> all(n);
+  for (Index k = 0; k < n; ++k) all[k] = k;
+  std::shuffle(all.begin(), all.end(), rng);
+  all.resize(count);
+  return all;
+}
+
+/// Dense S = K_BB − K_BI K_II⁻¹ K_IB for comparison.
+MatrixXd dense_schur(const SparseMatrix& lower, const std::vector<Index>& b_sorted) {
+  const MatrixXd k = MatrixXd(lower).selfadjointView<Eigen::Lower>();
+  const Index n = k.rows();
+  std::vector<char> in_b(n, 0);
+  for (Index i : b_sorted) in_b[i] = 1;
+  std::vector<Index> in;
+  for (Index i = 0; i < n; ++i)
+    if (!in_b[i]) in.push_back(i);
+  auto sub = [&](const std::vector<Index>& r, const std::vector<Index>& c) {
+    MatrixXd s(r.size(), c.size());
+    for (std::size_t i = 0; i < r.size(); ++i)
+      for (std::size_t j = 0; j < c.size(); ++j) s(i, j) = k(r[i], c[j]);
+    return s;
+  };
+  const MatrixXd kii = sub(in, in), kib = sub(in, b_sorted);
+  return sub(b_sorted, b_sorted) - kib.transpose() * kii.llt().solve(kib);
+}
+
+}  // namespace
+
+TEST(StaticCondensation, SchurComplementAndInteriorSolveMatchDenseAlgebra) {
+  for (const double shift : {0.05, 0.0}) {  // 0: the Neumann Laplacian is singular, K_II is not
+    SCOPED_TRACE("shift " + std::to_string(shift));
+    const SparseMatrix k = grid_laplacian(15, shift);
+    std::vector<Index> b = some_indices(k.rows(), 23, 7);
+    StaticCondensation sc;
+    sc.compute(k, b);
+    std::sort(b.begin(), b.end());
+    ASSERT_EQ(sc.boundary(), b);
+    const MatrixXd s_ref = dense_schur(k, b);
+    const MatrixXd s = MatrixXd(sc.schur_lower()).selfadjointView<Eigen::Lower>();
+    EXPECT_LT((s - s_ref).cwiseAbs().maxCoeff(), 1e-12 * s_ref.cwiseAbs().maxCoeff());
+    if (shift == 0.0) EXPECT_LT((s * VectorXd::Ones(s.rows())).norm(), 1e-12 * s.norm());  // constants: S 1 = 0
+
+    // z_I = K_II⁻¹ r_I, z_B = 0
+    VectorXd r = VectorXd::LinSpaced(k.rows(), -1.0, 2.0).array().sin();
+    const VectorXd z = sc.solve_interior(r);
+    const MatrixXd kd = MatrixXd(k).selfadjointView<Eigen::Lower>();
+    VectorXd residual = kd * z - r;
+    for (Index i : b) {
+      EXPECT_EQ(z[i], 0.0);
+      residual[i] = 0.0;  // the boundary rows of K z are not part of the interior system
+    }
+    EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12 * r.lpNorm<Eigen::Infinity>());
+  }
+}
+
+TEST(StaticCondensation, FailsClearlyWhenTheInteriorIsSingular) {
+  // Neumann Laplacian with B = one index only... is still definite on I (connected grid, one node held);
+  // two disconnected grids with B inside one of them leave the other floating.
+  const SparseMatrix one = grid_laplacian(4, 0.0);
+  std::vector<Triplet> t;
+  for (int j = 0; j < one.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(one, j); it; ++it) {
+      t.emplace_back(it.row(), j, it.value());
+      t.emplace_back(it.row() + 16, j + 16, it.value());
+    }
+  SparseMatrix two(32, 32);
+  two.setFromTriplets(t.begin(), t.end());
+  StaticCondensation sc;
+  EXPECT_THROW(sc.compute(two, {3, 5}), SolveError);
+  EXPECT_NO_THROW(sc.compute(two, {3, 20}));
+}
+
+namespace {
+
+/// E(u) = ½ uᵀK u − fᵀu over all DOFs (a stand-in for linear elasticity).
+class QuadraticEnergy : public EnergyTerm {
+ public:
+  QuadraticEnergy(SparseMatrix lower, VectorXd f) : k_(std::move(lower)), f_(std::move(f)) {}
+  std::string name() const override { return "quadratic"; }
+  double value(const VectorXd& u) const override {
+    return 0.5 * u.dot(k_.selfadjointView<Eigen::Lower>() * u) - f_.dot(u);
+  }
+  void add_gradient(const VectorXd& u, VectorXd& g) const override {
+    g += k_.selfadjointView<Eigen::Lower>() * u - f_;
+  }
+  void add_hessian(const VectorXd&, MatrixSink& sink) const override {
+    const SparseMatrix full = k_.selfadjointView<Eigen::Lower>();
+    for (int j = 0; j < full.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(full, j); it; ++it) {
+        const Index d[2] = {it.row(), j};
+        if (d[0] == d[1]) {
+          const double v = it.value();
+          sink.add(d, 1, &v);
+        } else {
+          // a 2 × 2 block holding only this off-diagonal entry (once per ordered pair: halves)
+          const double blk[4] = {0.0, 0.5 * it.value(), 0.5 * it.value(), 0.0};
+          sink.add(d, 2, blk);
+        }
+      }
+  }
+  bool hessian_is_constant() const override { return true; }
+
+ private:
+  SparseMatrix k_;
+  VectorXd f_;
+};
+
+/// Φ(u) = Σ_d w_d sqrt(u_d² + α²): a smooth, non-quadratic surface-like term on a few DOFs.
+class SurfaceTerm : public EnergyTerm {
+ public:
+  explicit SurfaceTerm(std::vector<Index> dofs) : dofs_(std::move(dofs)) {}
+  std::string name() const override { return "surface"; }
+  double value(const VectorXd& u) const override {
+    double v = 0;
+    for (Index d : dofs_) v += 0.3 * std::sqrt(u[d] * u[d] + 0.01);
+    return v;
+  }
+  void add_gradient(const VectorXd& u, VectorXd& g) const override {
+    for (Index d : dofs_) g[d] += 0.3 * u[d] / std::sqrt(u[d] * u[d] + 0.01);
+  }
+  void add_hessian(const VectorXd& u, MatrixSink& sink) const override {
+    for (Index d : dofs_) {
+      const double h = 0.3 * 0.01 / std::pow(u[d] * u[d] + 0.01, 1.5);
+      sink.add(&d, 1, &h);
+    }
+  }
+
+ private:
+  std::vector<Index> dofs_;
+};
+
+/// The condensed problem seen as an EnergyTerm of y, for the shared finite-difference check.
+class CondensedAsEnergy : public EnergyTerm {
+ public:
+  explicit CondensedAsEnergy(CondensedProblem& p) : p_(p) {}
+  std::string name() const override { return "condensed"; }
+  double value(const VectorXd& y) const override { return p_.objective(y); }
+  void add_gradient(const VectorXd& y, VectorXd& g) const override {
+    VectorXd gy;
+    p_.gradient(y, gy);
+    g += gy;
+  }
+  void add_hessian(const VectorXd& y, MatrixSink& sink) const override {
+    SparseMatrix h;
+    p_.hessian_lower(y, h);
+    const MatrixXd d = MatrixXd(h).selfadjointView<Eigen::Lower>();
+    std::vector<Index> all(d.rows());
+    for (Index k = 0; k < d.rows(); ++k) all[k] = k;
+    sink.add(all.data(), static_cast<int>(all.size()), d.data());
+  }
+
+ private:
+  CondensedProblem& p_;
+};
+
+}  // namespace
+
+TEST(CondensedProblem, MatchesTheFullProblemAndFiniteDifferences) {
+  const SparseMatrix k = grid_laplacian(12, 0.0);  // held by the Dirichlet DOFs below
+  const Index n = k.rows();
+  const VectorXd f = VectorXd::LinSpaced(n, 0.5, -0.2);
+  QuadraticEnergy bulk_energy(k, f);
+  FixedDofs fixed;
+  fixed.fix(0, 0.1);
+  fixed.fix(5, -0.2);
+  ReducedProblem bulk(bulk_energy, fixed, n);
+  const Index nf = bulk.num_free();
+  // B: some free DOFs; a surface term on part of them; constraints on B.
+  std::vector<Index> b_free = some_indices(nf, 17, 3);
+  std::sort(b_free.begin(), b_free.end());
+  StaticCondensation sc;
+  SparseMatrix kff;
+  bulk.hessian_lower(VectorXd::Zero(nf), kff);
+  sc.compute(kff, b_free);
+  // free index → DOF, for the surface term (which lives on global DOFs)
+  std::vector<Index> free_dof(nf);
+  for (Index d = 0; d < n; ++d)
+    if (bulk.free_index()[d] >= 0) free_dof[bulk.free_index()[d]] = d;
+  auto surface = std::make_shared<SurfaceTerm>(std::vector<Index>{free_dof[b_free[1]], free_dof[b_free[4]],
+                                                                    free_dof[b_free[9]]});
+  std::vector<Triplet> t = {{0, static_cast<int>(b_free[2]), 1.0}, {1, static_cast<int>(b_free[7]), -2.0}};
+  SparseMatrix a(2, nf);
+  a.setFromTriplets(t.begin(), t.end());
+  const VectorXd bvec = VectorXd::Constant(2, 0.3);
+  const VectorXd x_ref = VectorXd::Constant(nf, 0.7);
+  CondensedProblem cp(bulk, sc, {surface}, a, bvec, x_ref);
+  ASSERT_EQ(cp.num_variables(), static_cast<Index>(b_free.size()));
+
+  VectorXd y = VectorXd::LinSpaced(cp.num_variables(), -0.4, 0.9);
+  const VectorXd x = cp.expand(y);
+  EXPECT_EQ(cp.restrict(x), y);
+  // F(y) = E(x(y)) + Φ, and x_I(y) makes the full gradient vanish on the interior.
+  VectorXd g_full;
+  bulk.gradient(x, g_full);
+  const double full = bulk.objective(x) + surface->value(bulk.expand(x));
+  EXPECT_NEAR(cp.objective(y), full, 1e-12 * std::abs(full));
+  std::vector<char> in_b(nf, 0);
+  for (Index i : b_free) in_b[i] = 1;
+  for (Index i = 0; i < nf; ++i)
+    if (!in_b[i]) EXPECT_NEAR(g_full[i], 0.0, 1e-12 * g_full.lpNorm<Eigen::Infinity>());
+  VectorXd gy;
+  cp.gradient(y, gy);
+  VectorXd gs = VectorXd::Zero(n);
+  surface->add_gradient(bulk.expand(x), gs);
+  for (std::size_t k2 = 0; k2 < b_free.size(); ++k2)
+    EXPECT_NEAR(gy[k2], g_full[b_free[k2]] + gs[free_dof[b_free[k2]]], 1e-11 * gy.lpNorm<Eigen::Infinity>());
+  // constraints: A_B y + b = A x + b
+  EXPECT_LT((cp.constraint_matrix() * y + cp.constraint_offset() - (a * x + bvec)).norm(), 1e-14);
+  EXPECT_FALSE(cp.hessian_is_constant());
+
+  CondensedAsEnergy as_energy(cp);
+  const symcontact::testing::FdResult fd = symcontact::testing::check_derivatives(as_energy, y);
+  EXPECT_LT(fd.gradient_error, 1e-7);
+  EXPECT_LT(fd.hessian_error, 1e-7);
+}
+
+TEST(CondensedProblem, ConstraintOutsideTheCondensedSetIsRejected) {
+  const SparseMatrix k = grid_laplacian(5, 0.1);
+  QuadraticEnergy e(k, VectorXd::Ones(k.rows()));
+  FixedDofs none;
+  ReducedProblem bulk(e, none, k.rows());
+  StaticCondensation sc;
+  sc.compute(k, {1, 2, 3});
+  std::vector<Triplet> t = {{0, 7, 1.0}};
+  SparseMatrix a(1, k.rows());
+  a.setFromTriplets(t.begin(), t.end());
+  EXPECT_THROW(CondensedProblem(bulk, sc, {}, a, VectorXd::Zero(1), VectorXd::Zero(k.rows())),
+               std::invalid_argument);
+}
