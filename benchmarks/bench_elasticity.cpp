@@ -32,6 +32,12 @@
 ///
 ///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
 ///
+/// `hertz2d-freefem` solves the peers' Hertz quarter model (../shared/peers, hertz_quarter.geo) on the same
+/// .msh with symcontact and with FreeFEM + ff-Ipopt, side by side, at the sizes --h (default 0.0025
+/// 0.00125), against the same floor (freefem_peer.hpp); without FreeFEM the FreeFEM columns are skipped:
+///
+///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz2d-freefem --csv ff.csv
+///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
@@ -51,6 +57,7 @@
 #include "bench_problem.hpp"
 #include "bench_support.hpp"
 #include "elastic_block.hpp"
+#include "freefem_peer.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/mesh/cell_type.hpp"
 
@@ -111,6 +118,9 @@ struct Options {
   int repeat = 1;
   std::string csv;
   bool markdown = false;
+  std::string freefem = "FreeFem++";  ///< --case hertz2d-freefem
+  double freefem_tol = 1e-12;
+  bool skip_freefem = false;
 };
 
 /// Runs the size ladder for one dimension; returns the wall time of the sweep.
@@ -170,8 +180,8 @@ int main(int argc, char** argv) {
   CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
                "Hertz 2D contact solves against that Cholesky floor",
                "symcontact-bench"};
-  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, inclined or problem")
-      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "inclined", "problem"}));
+  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, hertz2d-freefem, inclined or problem")
+      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "hertz2d-freefem", "inclined", "problem"}));
   app.add_option("--h", opt.h,
                  "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
                  "inclined: element sizes (default 0.05 0.025 0.0125)")
@@ -180,6 +190,10 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
   app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
+  app.add_option("--freefem", opt.freefem, "hertz2d-freefem: the FreeFEM executable (default FreeFem++ on PATH)");
+  app.add_option("--freefem-tol", opt.freefem_tol, "hertz2d-freefem: IPOPT tol of the FreeFEM runs (default 1e-12)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--skip-freefem", opt.skip_freefem, "hertz2d-freefem: symcontact and the floor only");
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
@@ -219,6 +233,19 @@ int main(int argc, char** argv) {
       c.markdown = opt.markdown;
       if (c.files.empty()) throw std::runtime_error("--case problem needs --problem FILE...");
       run_problem_files(c, machine);
+      return symcontact::kExitOk;
+    }
+    if (opt.bench_case == "hertz2d-freefem") {
+      FreefemPeerOptions c;
+      c.h = opt.h.empty() ? default_freefem_sizes() : opt.h;
+      c.repeat = opt.repeat;
+      c.freefem = opt.freefem;
+      c.freefem_tol = opt.freefem_tol;
+      c.skip_freefem = opt.skip_freefem;
+      c.csv = opt.csv;
+      c.markdown = opt.markdown;
+      c.keep_work = opt.keep_work;
+      run_freefem_sweep(c, machine);
       return symcontact::kExitOk;
     }
     if (opt.bench_case == "inclined") {
