@@ -33,8 +33,8 @@
 ///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
 ///
 /// `hertz2d-freefem` solves the peers' Hertz quarter model (../shared/peers, hertz_quarter.geo) on the same
-/// .msh with symcontact and with FreeFEM + ff-Ipopt, side by side, at the sizes --h (default 0.0025
-/// 0.00125), against the same floor (freefem_peer.hpp); without FreeFEM the FreeFEM columns are skipped:
+/// .msh with symcontact and with FreeFEM + ff-Ipopt, side by side, at the sizes --h (default 0.005
+/// 0.0025 0.00125), against the same floor (freefem_peer.hpp); without FreeFEM the FreeFEM columns are skipped:
 ///
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz2d-freefem --csv ff.csv
 ///
@@ -184,7 +184,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "hertz2d-freefem", "inclined", "problem"}));
   app.add_option("--h", opt.h,
                  "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
-                 "inclined: element sizes (default 0.05 0.025 0.0125)")
+                 "inclined: element sizes (default 0.05 0.025 0.0125); hertz2d-freefem: sizes of the peers' "
+                 "mesh (default 0.005 0.0025 0.00125)")
       ->check(CLI::PositiveNumber);
   app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/ and inclined_2d/")
       ->check(CLI::ExistingDirectory);

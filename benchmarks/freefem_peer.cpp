@@ -367,10 +367,15 @@ struct FreefemRun {
   }
 };
 
+/// The last `lines` lines of `text` (all of it when shorter).
 std::string tail(const std::string& text, int lines) {
   std::size_t at = text.size();
-  for (int k = 0; k <= lines && at != std::string::npos && at > 0; ++k) at = text.rfind('\n', at - 1);
-  return at == std::string::npos ? text : text.substr(at + 1);
+  for (int k = 0; k <= lines; ++k) {
+    if (at == 0) return text;
+    at = text.rfind('\n', at - 1);
+    if (at == std::string::npos) return text;
+  }
+  return text.substr(at + 1);
 }
 
 FreefemRun run_freefem(const std::string& exe, const std::string& work, const std::string& msh_name,
@@ -548,7 +553,7 @@ ProfileMetrics analyse_profile(std::vector<ProfileRow> rows, const PeerHertzRefe
   return m;
 }
 
-std::vector<double> default_freefem_sizes() { return {0.0025, 0.00125}; }
+std::vector<double> default_freefem_sizes() { return {0.005, 0.0025, 0.00125}; }
 
 void run_freefem_sweep(const FreefemPeerOptions& opt, const MachineInfo& machine) {
   const PeerHertzReference ref = peer_hertz_reference();
@@ -602,7 +607,12 @@ void run_freefem_sweep(const FreefemPeerOptions& opt, const MachineInfo& machine
     ProfileMetrics mf;
     mf.a_last = mf.a_next = mf.a_fit = mf.p0_fit = mf.p_max = mf.sum_force_x2 = kNaN;
     if (missing.empty()) {
-      ff = run_freefem(exe, work, msh_name, stem, opt.freefem_tol);
+      try {
+        ff = run_freefem(exe, work, msh_name, stem, opt.freefem_tol);
+      } catch (const std::exception& e) {  // fork/wait/log reading: report, do not stop the sweep
+        ff = FreefemRun();
+        ff.failure = e.what();
+      }
       if (ff.ok) {
         mf = analyse_profile(ff.profile, ref);
         const double ff_dofs = ff.get("ndof");

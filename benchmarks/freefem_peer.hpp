@@ -73,7 +73,8 @@ struct FreefemPeerOptions {
   bool keep_work = false;       ///< keep the .msh, .toml, .edp, logs and profiles
 };
 
-/// The peers' sizes: h = 0.0025, 0.00125 (28k, 112k DOFs; 0.000625 gives 446k).
+/// h = 0.005, 0.0025, 0.00125: 7.3k, 28k, 112k DOFs (the peers' sizes; 0.000625 gives 446k DOFs and
+/// takes minutes: give it with --h).
 std::vector<double> default_freefem_sizes();
 
 /// Runs the sweep, printing the table as rows finish. Throws what the symcontact solve throws; a

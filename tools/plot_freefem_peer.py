@@ -3,6 +3,10 @@
 and the CHOLMOD floor of the same stiffness), from the CSV of `symcontact-bench --case hertz2d-freefem`.
 
     tools/plot_freefem_peer.py hertz2d_freefem.csv docs/img/hertz2d_freefem.png [--title T] [--wall] [--dpi N]
+                               [--markdown]
+
+--markdown also prints the two tables of docs/performance.md ("Side by side with FreeFEM + IPOPT": times
+and ratios, then accuracy) from the same CSV.
 
 Plotted per size (CPU seconds by default, as the table's ratios use them; `--wall` plots wall-clock times):
   symcontact      solve_contact() (geometry fixed point, IPOPT, polish)        sym_solve_cpu_s  / sym_solve_wall_s
@@ -35,6 +39,41 @@ def number(row, key):
     return v
 
 
+def fmt(v, spec):
+    return "-" if not math.isfinite(v) else spec % v
+
+
+def markdown_tables(rows):
+    """The docs tables: times and ratios (CPU, with wall beside), then accuracy of both tools."""
+    n = lambda r, k: number(r, k)
+    out = ["| h | DOFs | constraints sym / FF | geom. it. / IPOPT it. sym | IPOPT it. FF | floor CPU [s] "
+           "| symcontact CPU [s] (wall) | FreeFEM IPOPT CPU [s] | FreeFEM process CPU [s] (wall) "
+           "| **sym / FF** | sym / floor | FF / floor |",
+           "|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"]
+    for r in rows:
+        out.append("| %s | %s | %s / %s | %s / %s | %s | %s | %s (%s) | %s | %s (%s) | **%s** | %s | %s |" % (
+            "%g" % n(r, "h"), "{:,}".format(int(n(r, "dofs"))),
+            fmt(n(r, "sym_constraints"), "%d"), fmt(n(r, "ff_candidates"), "%d"),
+            fmt(n(r, "sym_geometry_iterations"), "%d"), fmt(n(r, "sym_ipopt_iterations"), "%d"),
+            fmt(n(r, "ff_ipopt_iterations"), "%d"), fmt(n(r, "floor_cpu_s"), "%.3f"),
+            fmt(n(r, "sym_solve_cpu_s"), "%.2f"), fmt(n(r, "sym_solve_wall_s"), "%.2f"),
+            fmt(n(r, "ff_ipopt_cpu_s"), "%.2f"), fmt(n(r, "ff_process_cpu_s"), "%.2f"),
+            fmt(n(r, "ff_wall_s"), "%.2f"), fmt(n(r, "sym_over_ff"), "%.2f"),
+            fmt(n(r, "sym_over_floor"), "%.1f"), fmt(n(r, "ff_over_floor"), "%.1f")))
+    out.append("")
+    out.append("| h | DOFs | sym a_last [a_next] | sym err(a_fit) | sym err(p_max) | sym 2Σf/P−1 "
+               "| FF a_last [a_next] | FF err(a_fit) | FF err(p_max) | FF 2Σf/P−1 |")
+    out.append("|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
+    for r in rows:
+        acc = []
+        for t in ("sym", "ff"):
+            acc += ["%s [%s]" % (fmt(n(r, t + "_a_last"), "%.5f"), fmt(n(r, t + "_a_next"), "%.5f")),
+                    fmt(n(r, t + "_a_fit_error_pct"), "%+.2f %%"),
+                    fmt(n(r, t + "_p_max_error_pct"), "%+.2f %%"), fmt(n(r, t + "_force_error"), "%.0e")]
+        out.append("| %g | %s | %s |" % (n(r, "h"), "{:,}".format(int(n(r, "dofs"))), " | ".join(acc)))
+    return "\n".join(out)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("csv")
@@ -42,6 +81,7 @@ def main():
     ap.add_argument("--title", default="Hertz 2D quarter model (peers' mesh), one BLAS thread")
     ap.add_argument("--wall", action="store_true", help="plot wall-clock times instead of CPU times")
     ap.add_argument("--dpi", type=int, default=120)
+    ap.add_argument("--markdown", action="store_true", help="also print the docs tables (Markdown)")
     args = ap.parse_args()
 
     import matplotlib
@@ -82,6 +122,8 @@ def main():
     fig.tight_layout()
     fig.savefig(args.png, dpi=args.dpi)
     print("wrote " + args.png)
+    if args.markdown:
+        print(markdown_tables(rows))
 
 
 if __name__ == "__main__":
