@@ -406,7 +406,8 @@ FreefemRun run_freefem(const std::string& exe, const std::string& work, const st
   }
   if (ff.process.exit_code != 0 || ff.result.empty()) {
     ff.failure = "FreeFem++ exited with " + std::to_string(ff.process.exit_code) +
-                 (ff.result.empty() ? " and no RESULT line" : "") + "; end of " + log + ":\n" + tail(text, 12);
+                 (ff.result.empty() ? " and no RESULT line" : "") + "; end of its log (" + log +
+                 ", kept with --keep-work):\n" + (text.empty() ? std::string("(empty)\n") : tail(text, 12));
     return ff;
   }
   std::ifstream in(work + "/" + prefix + "_profile.txt");
