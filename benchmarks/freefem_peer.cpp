@@ -23,6 +23,7 @@
 
 #include "elastic_block.hpp"
 #include "hertz_2d.hpp"
+#include "symcontact/app/run.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/model/problem_reader.hpp"
@@ -228,7 +229,8 @@ struct SymcontactQuarter {
   std::vector<ProfileRow> profile;  ///< arc nodes with x ≤ 0.4
 };
 
-/// Builds the model from the problem file on `msh`, solves it as solve_hertz() does, and extracts the
+/// Builds the model from the problem file on `msh`, solves it as `symcontact run` does (one step, the
+/// solver options of contact_options()), times solve_contact() as solve_hertz() does, and extracts the
 /// profile: reference x, normal force p_k·A_k, lumped area A_k = ∫ φ_k ds, gap.
 SymcontactQuarter solve_symcontact(const std::string& work, const std::string& msh_name, double h,
                                    const PeerHertzReference& ref) {
@@ -245,12 +247,9 @@ SymcontactQuarter solve_symcontact(const std::string& work, const std::string& m
   model.set_step(0);
   run.fixed = model.fixed_dofs(0);
 
-  ContactSolveOptions opt;
-  opt.geometry_tolerance = run.spec.contact_solver.geometry_tolerance;
-  opt.max_geometry_iterations = run.spec.contact_solver.max_geometry_iterations;
-  opt.ipopt.string_options = run.spec.contact_solver.ipopt_string;
-  opt.ipopt.numeric_options = run.spec.contact_solver.ipopt_numeric;
-  opt.ipopt.integer_options = run.spec.contact_solver.ipopt_integer;
+  // The solver settings exactly as `symcontact run` derives them from the problem file (so that new
+  // solver options reach this benchmark without touching it).
+  const ContactSolveOptions opt = contact_options(run.spec, log).contact;
   run.u = VectorXd::Zero(model.dofs().num_dofs());
   const double cpu0 = process_cpu_seconds();
   const double t0 = wall_seconds();
@@ -441,6 +440,7 @@ std::vector<ResultTable::Column> columns() {
       {"sym_optimizer_s", "", Kind::kFixed, 3},
       {"sym_polish_s", "", Kind::kFixed, 3},
       {"sym_contact_s", "", Kind::kFixed, 3},
+      {"sym_phases", "", Kind::kText, 0},  // every phase of the solve report, "name=s;..."
       {"sym_solve_wall_s", "sym [s]", Kind::kFixed, 3},
       {"sym_solve_cpu_s", "sym CPU [s]", Kind::kFixed, 3},
       {"sym_total_wall_s", "", Kind::kFixed, 3},
@@ -627,6 +627,10 @@ void run_freefem_sweep(const FreefemPeerOptions& opt, const MachineInfo& machine
 
     Index nodes = run.model->bodies().at(0)->mesh.num_nodes();
     const PhaseTimes& t = run.report.times;
+    std::ostringstream phase_list;
+    for (const auto& [phase, seconds] : t.entries())
+      phase_list << (phase_list.tellp() > 0 ? ";" : "") << phase << "=" << seconds;
+    const std::string phases = phase_list.str();
     const double read_setup = run.build_times.get("meshing") + run.build_times.get("setup");
     const double ff_ipopt = ff.ok ? ff.get("t_ipopt_cpu") : kNaN;
     const double ff_wall = ff.ok ? ff.process.wall : kNaN;
@@ -635,7 +639,7 @@ void run_freefem_sweep(const FreefemPeerOptions& opt, const MachineInfo& machine
                    static_cast<double>(run.report.num_constraints),
                    static_cast<double>(run.report.geometry_iterations),
                    static_cast<double>(run.report.ipopt_iterations), read_setup, t.get("optimizer"),
-                   t.get("polish"), run.contact_seconds(), run.solve_wall, run.solve_cpu,
+                   t.get("polish"), run.contact_seconds(), phases, run.solve_wall, run.solve_cpu,
                    read_setup + run.solve_wall, peak_sym, run.report.ipopt_status, floor.factor_and_solve(),
                    floor.cpu_factor_and_solve, floor.analyze, floor.factorize, floor.solve,
                    floor.relative_residual, ff.ok ? ff.get("ndof") : kNaN, ff.ok ? ff.get("ncand") : kNaN,
