@@ -27,16 +27,16 @@
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
 ///
-/// `problem` solves any problem files --problem FILE... as `symcontact run` does, one row each, with
-/// the per-step figures in --steps-csv FILE (bench_problem.hpp); e.g. the 110-step ironing:
-///
-///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
-///
 /// `hertz2d-freefem` solves the peers' Hertz quarter model (../shared/peers, hertz_quarter.geo) on the same
 /// .msh with symcontact and with FreeFEM + ff-Ipopt, side by side, at the sizes --h (default 0.005
 /// 0.0025 0.00125), against the same floor (freefem_peer.hpp); without FreeFEM the FreeFEM columns are skipped:
 ///
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz2d-freefem --csv ff.csv
+///
+/// `problem` solves any problem files --problem FILE... as `symcontact run` does, one row each, with
+/// the per-step figures in --steps-csv FILE (bench_problem.hpp); e.g. the 110-step ironing:
+///
+///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
 ///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
@@ -191,10 +191,6 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
   app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
-  app.add_option("--freefem", opt.freefem, "hertz2d-freefem: the FreeFEM executable (default FreeFem++ on PATH)");
-  app.add_option("--freefem-tol", opt.freefem_tol, "hertz2d-freefem: IPOPT tol of the FreeFEM runs (default 1e-12)")
-      ->check(CLI::PositiveNumber);
-  app.add_flag("--skip-freefem", opt.skip_freefem, "hertz2d-freefem: symcontact and the floor only");
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
@@ -209,6 +205,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   app.add_option("--csv", opt.csv, "also write the results (full precision, more columns) to this CSV file");
   app.add_flag("--markdown", opt.markdown, "print Markdown tables (for docs/performance.md)");
+  app.add_option("--freefem", opt.freefem, "hertz2d-freefem: the FreeFEM executable (default FreeFem++ on PATH)");
+  app.add_option("--freefem-tol", opt.freefem_tol, "hertz2d-freefem: IPOPT tol of the FreeFEM runs (default 1e-12)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--skip-freefem", opt.skip_freefem, "hertz2d-freefem: symcontact and the floor only");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
