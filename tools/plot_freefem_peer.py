@@ -61,8 +61,8 @@ def markdown_tables(rows):
             fmt(n(r, "ff_wall_s"), "%.2f"), fmt(n(r, "sym_over_ff"), "%.2f"),
             fmt(n(r, "sym_over_floor"), "%.1f"), fmt(n(r, "ff_over_floor"), "%.1f")))
     out.append("")
-    out.append("| h | DOFs | sym a_last [a_next] | sym err(a_fit) | sym err(p_max) | sym 2Σf/P−1 "
-               "| FF a_last [a_next] | FF err(a_fit) | FF err(p_max) | FF 2Σf/P−1 |")
+    out.append("| h | DOFs | sym a_last [a_next] | sym err(a_fit) | sym err(p_max) | sym \\|2Σf/P−1\\| "
+               "| FF a_last [a_next] | FF err(a_fit) | FF err(p_max) | FF \\|2Σf/P−1\\| |")
     out.append("|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
     for r in rows:
         acc = []
