@@ -13,9 +13,9 @@
 ///  1. the peers' geometry (hertz_quarter.geo, kept verbatim in freefem_peer.cpp) is meshed through the
 ///     Gmsh API at size h and written as an ASCII MSH 2.2 file into the work directory;
 ///  2. symcontact reads that .msh through a problem file written next to it (body "body", Dirichlet
-///     u_x = 0 on "sym", pressure q on "top", contact "body.contact" against the plane y = 0; the
-///     library's default solver settings) and solves it (`solve_contact`: mortar constraints on the whole
-///     arc, both ends of the geometry fixed point, IPOPT, polish);
+///     u_x = 0 on "sym", pressure q on "top", contact "body.contact" against the plane y = 0; solver
+///     options from contact_options(), as `symcontact run` makes them) and solves it (`solve_contact`:
+///     mortar constraints on the whole arc, geometry fixed point, IPOPT, polish);
 ///  3. the Cholesky floor of the same stiffness (measure_hertz_floor(), as in the Hertz sweep);
 ///  4. `FreeFem++ -nw` runs a script written by the bench (the peers' hertz_ipopt.edp with gmshload of
 ///     the same .msh instead of calling gmsh: nodal constraints u_y + y ≥ 0 on arc nodes with x ≤ 0.4,
