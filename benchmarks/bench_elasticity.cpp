@@ -27,6 +27,12 @@
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
 ///
+/// `hertz2d-freefem` solves the peers' Hertz quarter model (../shared/peers, hertz_quarter.geo) on the same
+/// .msh with symcontact and with FreeFEM + ff-Ipopt, side by side, at the sizes --h (default 0.005
+/// 0.0025 0.00125), against the same floor (freefem_peer.hpp); without FreeFEM the FreeFEM columns are skipped:
+///
+///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz2d-freefem --csv ff.csv
+///
 /// `problem` solves any problem files --problem FILE... as `symcontact run` does, one row each, with
 /// the per-step figures in --steps-csv FILE (bench_problem.hpp); e.g. the 110-step ironing:
 ///
@@ -52,6 +58,7 @@
 #include "bench_problem.hpp"
 #include "bench_support.hpp"
 #include "elastic_block.hpp"
+#include "freefem_peer.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/mesh/cell_type.hpp"
 
@@ -113,6 +120,9 @@ struct Options {
   int repeat = 1;
   std::string csv;
   bool markdown = false;
+  std::string freefem = "FreeFem++";  ///< --case hertz2d-freefem
+  double freefem_tol = 1e-12;
+  bool skip_freefem = false;
 };
 
 /// Runs the size ladder for one dimension; returns the wall time of the sweep.
@@ -172,11 +182,12 @@ int main(int argc, char** argv) {
   CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
                "Hertz 2D contact solves against that Cholesky floor",
                "symcontact-bench"};
-  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, inclined or problem")
-      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "inclined", "problem"}));
+  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, hertz2d-freefem, inclined or problem")
+      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "hertz2d-freefem", "inclined", "problem"}));
   app.add_option("--h", opt.h,
                  "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
-                 "inclined: element sizes (default 0.05 0.025 0.0125)")
+                 "inclined: element sizes (default 0.05 0.025 0.0125); hertz2d-freefem: sizes of the peers' "
+                 "mesh (default 0.005 0.0025 0.00125)")
       ->check(CLI::PositiveNumber);
   app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/ and inclined_2d/")
       ->check(CLI::ExistingDirectory);
@@ -198,6 +209,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   app.add_option("--csv", opt.csv, "also write the results (full precision, more columns) to this CSV file");
   app.add_flag("--markdown", opt.markdown, "print Markdown tables (for docs/performance.md)");
+  app.add_option("--freefem", opt.freefem, "hertz2d-freefem: the FreeFEM executable (default FreeFem++ on PATH)");
+  app.add_option("--freefem-tol", opt.freefem_tol, "hertz2d-freefem: IPOPT tol of the FreeFEM runs (default 1e-12)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--skip-freefem", opt.skip_freefem, "hertz2d-freefem: symcontact and the floor only");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -223,6 +238,19 @@ int main(int argc, char** argv) {
       c.markdown = opt.markdown;
       if (c.files.empty()) throw std::runtime_error("--case problem needs --problem FILE...");
       run_problem_files(c, machine);
+      return symcontact::kExitOk;
+    }
+    if (opt.bench_case == "hertz2d-freefem") {
+      FreefemPeerOptions c;
+      c.h = opt.h.empty() ? default_freefem_sizes() : opt.h;
+      c.repeat = opt.repeat;
+      c.freefem = opt.freefem;
+      c.freefem_tol = opt.freefem_tol;
+      c.skip_freefem = opt.skip_freefem;
+      c.csv = opt.csv;
+      c.markdown = opt.markdown;
+      c.keep_work = opt.keep_work;
+      run_freefem_sweep(c, machine);
       return symcontact::kExitOk;
     }
     if (opt.bench_case == "inclined") {
