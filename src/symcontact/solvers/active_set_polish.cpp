@@ -60,6 +60,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     }
     if (!factorised) return false;
     const VectorXd x_start = xs;
+    bool stalled = false;
     if (direct && AS.rows() > 0 && AS.rows() <= kDirectLimit) {
       // Range-space solve of the KKT system on S, exact in one step (Nocedal & Wright §16.2):
       //   M Δ − A_Sᵀ λ = −ĝ,  A_S Δ = −c_S,  ĝ = g + ρ A_Sᵀ c_S  (the ρ term vanishes on A_S Δ = −c_S)
@@ -104,10 +105,14 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
         best = viol;
         since_progress = 0;
       } else if (++since_progress >= 40) {
+        stalled = true;
         break;
       }
     }
     }
+    // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
+    // steps on f cannot change that, and the caller's rounds decide what to drop.
+    if (stalled) break;
     // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the
     // augmented systems lose a few digits).
     if ((xs - x_start).lpNorm<Eigen::Infinity>() <= 1e-10 * xscale0) break;
