@@ -27,23 +27,33 @@ std::vector<Index> support_of(const EnergyTerm& term, const VectorXd& u) {
   return sink.take();
 }
 
+CondensedLoad condense_load(ReducedProblem& bulk, const StaticCondensation& sc) {
+  const Index n = bulk.num_free();
+  if (sc.size() != n) throw std::invalid_argument("condense_load: sizes of the problem and the condensation differ");
+  CondensedLoad l;
+  const VectorXd zero = VectorXd::Zero(n);
+  bulk.gradient(zero, l.r0);
+  const double e0 = bulk.objective(zero);
+  // w = K_II⁻¹ r₀_I;  ĝ = r₀_B − (K w)_B;  f₀ = E₀ − ½ r₀ · w  (w_B = 0)
+  const VectorXd w = sc.solve_interior(l.r0);
+  const VectorXd kw = sc.matrix().selfadjointView<Eigen::Lower>() * w;
+  const auto& B = sc.boundary();
+  l.g_hat.resize(static_cast<Index>(B.size()));
+  for (std::size_t k = 0; k < B.size(); ++k) l.g_hat[k] = l.r0[B[k]] - kw[B[k]];
+  l.f0 = e0 - 0.5 * l.r0.dot(w);
+  return l;
+}
+
 CondensedProblem::CondensedProblem(ReducedProblem& bulk, const StaticCondensation& condensation,
+                                   std::shared_ptr<const CondensedLoad> load,
                                    std::vector<std::shared_ptr<const EnergyTerm>> extras, const SparseMatrix& A,
                                    const VectorXd& b, const VectorXd& x_reference)
-    : bulk_(bulk), sc_(condensation), extras_(std::move(extras)), x_ref_(x_reference), b_(b) {
+    : bulk_(bulk), sc_(condensation), extras_(std::move(extras)), load_(std::move(load)), x_ref_(x_reference), b_(b) {
   const Index n = bulk_.num_free();
-  if (sc_.size() != n || x_reference.size() != n || A.cols() != n)
-    throw std::invalid_argument("CondensedProblem: sizes of the condensation, reference and constraints differ");
-  const VectorXd zero = VectorXd::Zero(n);
-  bulk_.gradient(zero, r0_);
-  const double e0 = bulk_.objective(zero);
-  // w = K_II⁻¹ r₀_I;  ĝ = r₀_B − (K w)_B;  f₀ = E₀ − ½ r₀ · w  (w_B = 0)
-  const VectorXd w = sc_.solve_interior(r0_);
-  const VectorXd kw = sc_.matrix().selfadjointView<Eigen::Lower>() * w;
+  if (sc_.size() != n || x_reference.size() != n || A.cols() != n || !load_ ||
+      load_->g_hat.size() != static_cast<Index>(sc_.boundary().size()))
+    throw std::invalid_argument("CondensedProblem: sizes of the condensation, load, reference and constraints differ");
   const auto& B = sc_.boundary();
-  g_hat_.resize(static_cast<Index>(B.size()));
-  for (std::size_t k = 0; k < B.size(); ++k) g_hat_[k] = r0_[B[k]] - kw[B[k]];
-  f0_ = e0 - 0.5 * r0_.dot(w);
   // A_B: the constraints' columns in B order.
   const auto& pos = sc_.boundary_position();
   std::vector<Triplet> t;
@@ -76,7 +86,7 @@ VectorXd CondensedProblem::expand(const VectorXd& y) const {
   VectorXd xb = VectorXd::Zero(bulk_.num_free());
   for (std::size_t k = 0; k < B.size(); ++k) xb[B[k]] = y[k];
   // x_I = −K_II⁻¹ (r₀_I + (K x_B)_I): the B entries of the right-hand side are ignored by solve_interior.
-  const VectorXd rhs = r0_ + sc_.matrix().selfadjointView<Eigen::Lower>() * xb;
+  const VectorXd rhs = load_->r0 + sc_.matrix().selfadjointView<Eigen::Lower>() * xb;
   VectorXd x = -sc_.solve_interior(rhs);
   for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
   return x;
@@ -91,7 +101,7 @@ VectorXd CondensedProblem::full_dofs(const VectorXd& y) const {
 
 double CondensedProblem::objective(const VectorXd& y) {
   const SparseMatrix& S = sc_.schur_lower();
-  double v = f0_ + g_hat_.dot(y) + 0.5 * y.dot(S.selfadjointView<Eigen::Lower>() * y);
+  double v = load_->f0 + load_->g_hat.dot(y) + 0.5 * y.dot(S.selfadjointView<Eigen::Lower>() * y);
   if (!extras_.empty()) {
     const VectorXd u = full_dofs(y);
     for (const auto& t : extras_) v += t->value(u);
@@ -101,7 +111,7 @@ double CondensedProblem::objective(const VectorXd& y) {
 
 void CondensedProblem::gradient(const VectorXd& y, VectorXd& g) {
   const SparseMatrix& S = sc_.schur_lower();
-  g = g_hat_ + S.selfadjointView<Eigen::Lower>() * y;
+  g = load_->g_hat + S.selfadjointView<Eigen::Lower>() * y;
   if (extras_.empty()) return;
   const VectorXd u = full_dofs(y);
   VectorXd gu = VectorXd::Zero(u.size());

@@ -31,15 +31,26 @@
 
 namespace symcontact {
 
+/// The load part of the condensed energy: r₀, ĝ and f₀ (above). They depend on the Dirichlet values and the
+/// loads, not on the constraints: computed once per contact solve (one interior solve), shared by the
+/// condensed problems of its geometry iterations.
+struct CondensedLoad {
+  VectorXd r0;     ///< ∇E(0) on the free DOFs
+  VectorXd g_hat;  ///< ĝ (B order)
+  double f0 = 0.0;
+};
+CondensedLoad condense_load(ReducedProblem& bulk, const StaticCondensation& condensation);
+
 class CondensedProblem : public ConstrainedProblem {
  public:
   /// `bulk` is the ReducedProblem of the quadratic energy alone (for r₀, E₀ and the DOF maps);
   /// `condensation` holds K_ff and its factor with B = condensation.boundary() (free numbering);
   /// `extras` are the surface terms (may be empty); A, b the constraints on the free DOFs (columns
   /// outside B must be empty). All references must outlive the object.
+  /// `load` must come from condense_load(bulk, condensation).
   CondensedProblem(ReducedProblem& bulk, const StaticCondensation& condensation,
-                   std::vector<std::shared_ptr<const EnergyTerm>> extras, const SparseMatrix& A, const VectorXd& b,
-                   const VectorXd& x_reference);
+                   std::shared_ptr<const CondensedLoad> load, std::vector<std::shared_ptr<const EnergyTerm>> extras,
+                   const SparseMatrix& A, const VectorXd& b, const VectorXd& x_reference);
 
   Index num_variables() const override { return static_cast<Index>(sc_.boundary().size()); }
   double objective(const VectorXd& y) override;
@@ -58,9 +69,7 @@ class CondensedProblem : public ConstrainedProblem {
   ReducedProblem& bulk_;
   const StaticCondensation& sc_;
   std::vector<std::shared_ptr<const EnergyTerm>> extras_;
-  VectorXd g_hat_;          ///< ĝ
-  double f0_ = 0.0;         ///< f₀
-  VectorXd r0_;             ///< r₀ (free numbering)
+  std::shared_ptr<const CondensedLoad> load_;
   VectorXd x_ref_;          ///< interior values for the extras' evaluation
   SparseMatrix A_;          ///< A_B
   VectorXd b_;

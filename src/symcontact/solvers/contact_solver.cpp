@@ -2,6 +2,7 @@
 
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
+#include <cmath>
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
@@ -53,14 +54,62 @@ ContactWorkspace::~ContactWorkspace() = default;
 
 namespace {
 
+/// Widens the condensed set along each contact surface, so that a contact zone that grows over the geometry
+/// iterations and load steps stays inside it (each refactorisation costs about one Cholesky floor): the
+/// surface nodes holding condensed DOFs are grown by k rings of facet neighbours, k = max(2, ⌈n^{1/(d−1)}/4⌉)
+/// for n such nodes (in 2D the zone's node count grows by about half, in 3D its radius by a quarter), and
+/// the grown nodes' free DOFs of the components already condensed on that surface are added.
+void add_condensation_margin(const ContactSet& contacts, const DofMap& dofs, const std::vector<Index>& free_index,
+                             std::vector<char>& in_b) {
+  for (const ContactSurface& s : contacts.surfaces) {
+    if (s.is_rigid()) continue;
+    const Index nn = s.num_nodes();
+    std::vector<char> grown(nn, 0);
+    std::vector<char> component(s.dim, 0);
+    Index seeds = 0;
+    for (Index k = 0; k < nn; ++k)
+      for (int i = 0; i < s.dim; ++i) {
+        const Index f = free_index[dofs.dof(s.body, s.nodes[k], i)];
+        if (f >= 0 && in_b[f]) {
+          if (!grown[k]) ++seeds;
+          grown[k] = 1;
+          component[i] = 1;
+        }
+      }
+    if (seeds == 0) continue;
+    const int rings = std::max(2, static_cast<int>(std::ceil(
+                                      0.25 * std::pow(static_cast<double>(seeds), 1.0 / std::max(1, s.dim - 1)))));
+    const int npf = s.nodes_per_facet();
+    for (int r = 0; r < rings; ++r) {
+      std::vector<char> next = grown;
+      for (Index f = 0; f < s.num_facets(); ++f) {
+        bool touches = false;
+        for (int a = 0; a < npf && !touches; ++a) touches = grown[s.facet(f)[a]];
+        if (touches)
+          for (int a = 0; a < npf; ++a) next[s.facet(f)[a]] = 1;
+      }
+      grown.swap(next);
+    }
+    for (Index k = 0; k < nn; ++k) {
+      if (!grown[k]) continue;
+      for (int i = 0; i < s.dim; ++i) {
+        const Index f = free_index[dofs.dof(s.body, s.nodes[k], i)];
+        if (component[i] && f >= 0) in_b[f] = 1;
+      }
+    }
+  }
+}
+
 /// The condensed form of the current geometry iterate's problem, or null when condensing does not apply
 /// or pay (see ContactSolveOptions::condense). Reuses the workspace's factorisation when its condensed set
 /// holds every DOF the constraints and friction terms touch; otherwise refactorises with the union.
 std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const ReducedProblem& problem,
+                                                   const ContactSet& contacts, const DofMap& dofs,
                                                    const std::vector<std::shared_ptr<const FrictionTerm>>& friction,
                                                    const VectorXd& u, const VectorXd& x, const EnergyTerm& energy,
                                                    ContactWorkspace& ws, const ContactSolveOptions& options,
-                                                   const Logger& log, ContactSolveReport& rep) {
+                                                   const Logger& log, ContactSolveReport& rep,
+                                                   std::shared_ptr<const CondensedLoad>& load) {
   const Index n = problem.num_free();
   const auto& free_index = problem.free_index();
   // B: the free DOFs of the constraint rows and of the friction terms.
@@ -87,6 +136,7 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
   if (!covered) {
     if (same_model)  // grow: keep what was condensed before, so that a zone moving back and forth settles
       for (Index k : ws.condensation->boundary()) in_b[k] = 1;
+    add_condensation_margin(contacts, dofs, free_index, in_b);
     std::vector<Index> boundary;
     for (Index k = 0; k < n; ++k)
       if (in_b[k]) boundary.push_back(k);
@@ -108,10 +158,12 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
     ws.free_index = free_index;
     ++ws.factorisations;
     ++rep.condensation_factorisations;
+    load.reset();
     log.debug("  static condensation onto " + std::to_string(ws.condensation->boundary().size()) + " of " +
               std::to_string(n) + " free DOFs");
   }
-  return std::make_unique<CondensedProblem>(bulk, *ws.condensation, std::move(extras), A,
+  if (!load) load = std::make_shared<const CondensedLoad>(condense_load(bulk, *ws.condensation));
+  return std::make_unique<CondensedProblem>(bulk, *ws.condensation, load, std::move(extras), A,
                                             problem.constraint_offset(), x);
 }
 
@@ -126,6 +178,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   const bool condense = options.condense && energy.hessian_is_constant();
   const std::shared_ptr<ContactWorkspace> workspace =
       options.workspace ? options.workspace : std::make_shared<ContactWorkspace>();
+  std::shared_ptr<const CondensedLoad> condensed_load;  ///< of this solve's Dirichlet values and loads
   {
     // New Dirichlet values: a finite-strain body follows them by its linearised response first, so that
     // the start point inverts no cell next to a moved boundary (a quadratic energy just takes them).
@@ -200,8 +253,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     std::unique_ptr<CondensedProblem> condensed;
     if (condense) {
       ScopedPhase t(rep.times, "condensation");
-      condensed = condense_problem(bulk, problem, total.extra, problem.expand(x), x, energy, *workspace, options,
-                                   log, rep);
+      condensed = condense_problem(bulk, problem, contacts, dofs, total.extra, problem.expand(x), x, energy, *workspace, options,
+                                   log, rep, condensed_load);
     }
     rep.num_condensed = condensed ? condensed->num_variables() : 0;
     ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed) : problem;

@@ -227,7 +227,7 @@ TEST(CondensedProblem, MatchesTheFullProblemAndFiniteDifferences) {
   a.setFromTriplets(t.begin(), t.end());
   const VectorXd bvec = VectorXd::Constant(2, 0.3);
   const VectorXd x_ref = VectorXd::Constant(nf, 0.7);
-  CondensedProblem cp(bulk, sc, {surface}, a, bvec, x_ref);
+  CondensedProblem cp(bulk, sc, std::make_shared<const CondensedLoad>(condense_load(bulk, sc)), {surface}, a, bvec, x_ref);
   ASSERT_EQ(cp.num_variables(), static_cast<Index>(b_free.size()));
 
   VectorXd y = VectorXd::LinSpaced(cp.num_variables(), -0.4, 0.9);
@@ -268,6 +268,7 @@ TEST(CondensedProblem, ConstraintOutsideTheCondensedSetIsRejected) {
   std::vector<Triplet> t = {{0, 7, 1.0}};
   SparseMatrix a(1, k.rows());
   a.setFromTriplets(t.begin(), t.end());
-  EXPECT_THROW(CondensedProblem(bulk, sc, {}, a, VectorXd::Zero(1), VectorXd::Zero(k.rows())),
+  EXPECT_THROW(CondensedProblem(bulk, sc, std::make_shared<const CondensedLoad>(condense_load(bulk, sc)), {}, a,
+                                VectorXd::Zero(1), VectorXd::Zero(k.rows())),
                std::invalid_argument);
 }
