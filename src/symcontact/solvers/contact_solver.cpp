@@ -263,7 +263,16 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     // Warm start when the rows are the same (same families, same nodes).
     IpoptOptions opt = options.ipopt;
     VectorXd mu0;
-    const bool same_rows = it > 1 && lin.row_family == rows_prev_family && lin.row_node == rows_prev_node;
+    // The first geometry iteration starts from the previous solve of the run (the previous Coulomb iteration
+    // or load step) when its rows are the same: IPOPT then needs a few iterations instead of a cold start's 15.
+    const bool from_previous_solve = it == 1 && workspace->multipliers.size() == lin.A.rows();
+    if (from_previous_solve) {
+      mu_prev = workspace->multipliers;
+      rows_prev_family = workspace->row_family;
+      rows_prev_node = workspace->row_node;
+    }
+    const bool same_rows = (it > 1 || from_previous_solve) && lin.row_family == rows_prev_family &&
+                           lin.row_node == rows_prev_node;
     if (same_rows) {
       opt.warm_start = true;
       mu0 = mu_prev;
@@ -272,6 +281,11 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     {
       ScopedPhase t(rep.times, "optimizer");
       res = solve_with_ipopt(target, to_target(x), opt, same_rows ? &mu0 : nullptr);
+      if (!res.success && it == 1 && same_rows) {
+        log.detail("  IPOPT failed from the previous solve's multipliers (" + res.status_text + "); cold start");
+        rep.ipopt_iterations += res.iterations;
+        res = solve_with_ipopt(target, to_target(x), options.ipopt);
+      }
       if (!res.success && friction) {
         // Stiff regularised friction (small α) can defeat IPOPT's line search from a start that is
         // already close; one cold retry from the start of the load step before giving up.
@@ -330,6 +344,9 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     }
     if (change < options.geometry_tolerance) {
       rep.multipliers = res.multipliers;
+      workspace->multipliers = res.multipliers;
+      workspace->row_family = lin.row_family;
+      workspace->row_node = lin.row_node;
       break;
     }
     if (it >= options.max_geometry_iterations) {

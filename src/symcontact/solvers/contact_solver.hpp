@@ -38,6 +38,11 @@ struct ContactWorkspace {
   std::vector<Index> free_index;        ///< its DOF → free numbering
   std::unique_ptr<StaticCondensation> condensation;
   int factorisations = 0;               ///< condensations computed (for reports and tests)
+  /// The last converged solve's multipliers and the identity of its rows (family, node): the warm start of
+  /// the next solve's first IPOPT call when its rows are the same.
+  VectorXd multipliers;
+  std::vector<int> row_family;
+  std::vector<Index> row_node;
 };
 
 struct ContactSolveOptions {
