@@ -111,6 +111,9 @@ struct ContactSolverSpec {
   int max_geometry_iterations = 50;
   double coulomb_tolerance = 1e-6;    ///< ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ below which the Coulomb fixed point stops
   int max_coulomb_iterations = 50;
+  /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
+  /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
+  int max_step_cuts = 0;
   /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
   std::map<std::string, std::string> ipopt_string;
   std::map<std::string, double> ipopt_numeric;
