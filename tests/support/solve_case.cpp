@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "symcontact/app/run.hpp"
+#include "symcontact/model/load_step.hpp"
 #include "symcontact/model/problem_reader.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
@@ -26,8 +27,11 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
     if (c->model->contacts().empty()) {
       solve_equilibrium(c->model->energy(), fixed, c->u);
     } else {
-      c->frictional = solve_frictional_contact(c->model->energy(), fixed, c->model->contacts(), dofs, c->u, opt, log,
-                                               step > 0 ? &c->frictional.friction : nullptr);
+      FrictionState friction = step > 0 ? c->frictional.friction : FrictionState();
+      const LoadStepReport lrep =
+          solve_load_step(*c->model, step, c->u, friction, opt, c->spec.contact_solver.max_step_cuts, log);
+      c->frictional = lrep.last;
+      c->step_cuts.push_back(lrep.cuts);
       c->report = c->frictional.last;
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
       c->history.push_back(c->contact);

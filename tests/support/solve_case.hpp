@@ -24,6 +24,8 @@ struct SolvedCase {
   VectorXd constraint_values;                 ///< A u + b at the last linearisation
   /// Reactions of every step: reactions[step][k] for model->dirichlet_boundaries()[k].
   std::vector<std::vector<Eigen::VectorXd>> reactions;
+  /// Automatic step cuts of every step (contact problems; [contact_solver] max_step_cuts).
+  std::vector<int> step_cuts;
 };
 
 /// `base_dir` resolves relative mesh paths. Throws what the library throws.

@@ -11,6 +11,7 @@
 #include "symcontact/io/json_writer.hpp"
 #include "symcontact/io/pvd_writer.hpp"
 #include "symcontact/io/vtu_writer.hpp"
+#include "symcontact/model/load_step.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/post/contact_results.hpp"
 #include "symcontact/post/stress_recovery.hpp"
@@ -220,11 +221,11 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     const FixedDofs fixed = model->fixed_dofs(step);
     const bool has_contact = !model->contacts().empty();
     EquilibriumReport rep;
-    FrictionalReport frep;
+    LoadStepReport lrep;
     try {
       if (has_contact)
-        frep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, solver_options, log,
-                                        step > 0 ? &previous_friction : nullptr);
+        lrep = solve_load_step(*model, step, u, previous_friction, solver_options,
+                               spec.contact_solver.max_step_cuts, log);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
     } catch (const SolveError& e) {
@@ -246,13 +247,15 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     Json js = Json::object();
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
+    const FrictionalReport& frep = lrep.last;
     const ContactSolveReport& crep = frep.last;
-    if (has_contact) previous_friction = frep.friction;
     if (has_contact) {
-      st.merge(frep.times);
-      js["geometry_iterations"] = frep.geometry_iterations;
-      js["ipopt_iterations"] = frep.ipopt_iterations;
-      js["coulomb_iterations"] = frep.coulomb_iterations;
+      st.merge(lrep.times);
+      js["geometry_iterations"] = lrep.geometry_iterations;
+      js["ipopt_iterations"] = lrep.ipopt_iterations;
+      js["coulomb_iterations"] = lrep.coulomb_iterations;
+      js["step_cuts"] = lrep.cuts;
+      js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
       js["coulomb_change_history"] = frep.coulomb_change;
       js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
       js["last_solve_ipopt_iterations_per_geometry_iteration"] =
@@ -339,8 +342,9 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     write_summary();
     std::ostringstream s;
     if (has_contact)
-      s << "geometry iterations " << frep.geometry_iterations << ", IPOPT iterations " << frep.ipopt_iterations
-        << (frep.coulomb_iterations ? ", Coulomb iterations " + std::to_string(frep.coulomb_iterations) : std::string());
+      s << "geometry iterations " << lrep.geometry_iterations << ", IPOPT iterations " << lrep.ipopt_iterations
+        << (lrep.coulomb_iterations ? ", Coulomb iterations " + std::to_string(lrep.coulomb_iterations) : std::string())
+        << (lrep.cuts ? ", " + std::to_string(lrep.substeps.size()) + " sub-steps" : std::string());
     else
       s << "iterations " << rep.iterations << ", residual " << rep.residual;
     log.progress("load step", step + 1, nsteps, s.str());

@@ -11,7 +11,15 @@
 namespace symcontact {
 
 double step_factor(const std::vector<double>& own, const std::vector<double>& global, int step) {
+  if (step < 0) return 0.0;
   return own.empty() ? global.at(step) : own.at(step);
+}
+
+double step_factor(const std::vector<double>& own, const std::vector<double>& global, int step, double fraction) {
+  const double end = step_factor(own, global, step);
+  if (fraction >= 1.0) return end;
+  const double start = step_factor(own, global, step - 1);
+  return start + fraction * (end - start);
 }
 
 namespace {
@@ -251,16 +259,16 @@ void Model::build_contacts(const Logger& log, double mesh_size) {
   contacts_.finalize();
 }
 
-void Model::set_step(int step) {
-  for (auto& l : loads_) l.term->set_scale(step_factor(l.factors, spec_.load_factors, step));
+void Model::set_step(int step, double fraction) {
+  for (auto& l : loads_) l.term->set_scale(step_factor(l.factors, spec_.load_factors, step, fraction));
 }
 
-FixedDofs Model::fixed_dofs(int step) const {
+FixedDofs Model::fixed_dofs(int step, double fraction) const {
   FixedDofs fixed;
   std::size_t k = 0;
   for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
     for (const auto& ds : bodies_[b]->spec->dirichlet) {
-      const double s = step_factor(ds.factors, spec_.load_factors, step);
+      const double s = step_factor(ds.factors, spec_.load_factors, step, fraction);
       for (Index node : boundaries_[k].nodes)
         for (int i = 0; i < dim(); ++i)
           if (ds.value[i]) fixed.fix(dofs_.dof(b, node, i), *ds.value[i] * s, static_cast<int>(k));

@@ -59,10 +59,12 @@ class Model {
   /// Index of the body named `name`, or −1.
   int body_index(const std::string& name) const;
 
-  /// Sets every load term to its factor at load step `step` (0-based).
-  void set_step(int step);
-  /// Dirichlet values at load step `step`.
-  FixedDofs fixed_dofs(int step) const;
+  /// Sets every load term to its factor at load step `step` (0-based). With `fraction` < 1, at that
+  /// fraction of the way from step − 1 (the unloaded start for step 0) to step: every factor is
+  /// interpolated linearly between the two steps' factors (sub-steps of an automatic step cut).
+  void set_step(int step, double fraction = 1.0);
+  /// Dirichlet values at load step `step` (at `fraction` of it, as set_step).
+  FixedDofs fixed_dofs(int step, double fraction = 1.0) const;
   /// Reaction force of every Dirichlet boundary (dirichlet_boundaries() order): the sum of ∇E(u)
   /// (= K u − f, the force the support exerts on the body) over the DOFs that boundary holds. A DOF
   /// held by several conditions counts for the last one only, so the reactions add up to the total.
@@ -87,7 +89,10 @@ class Model {
   void build_contacts(const Logger& log, double mesh_size);
 };
 
-/// The factor of load step `step`: own[step] when `own` is given, else global[step].
+/// The factor of load step `step`: own[step] when `own` is given, else global[step]; step −1 is the
+/// unloaded start (0).
 double step_factor(const std::vector<double>& own, const std::vector<double>& global, int step);
+/// The factor at `fraction` of the way from step − 1 to step (linear between the two).
+double step_factor(const std::vector<double>& own, const std::vector<double>& global, int step, double fraction);
 
 }  // namespace symcontact

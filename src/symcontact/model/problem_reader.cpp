@@ -888,7 +888,7 @@ class Reader {
     const toml::table& t = as_table(*node, "contact_solver");
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations",
-                "static_condensation"});
+                "static_condensation", "max_step_cuts"});
     ContactSolverSpec& s = spec.contact_solver;
     if (const toml::node* n = t.get("geometry_tolerance")) {
       const std::string key = "contact_solver.geometry_tolerance";
@@ -908,6 +908,13 @@ class Reader {
     }
     if (const toml::node* n = t.get("static_condensation"))
       s.static_condensation = as_bool(*n, "contact_solver.static_condensation");
+    if (const toml::node* n = t.get("max_step_cuts")) {
+      const std::string key = "contact_solver.max_step_cuts";
+      const std::int64_t c = as_integer(*n, key);
+      // 2^-20 of a step is already far below any useful increment.
+      if (c < 0 || c > 20) fail(key, "expected an integer in [0, 20], got " + std::to_string(c));
+      s.max_step_cuts = static_cast<int>(c);
+    }
   }
 
   /// [ipopt]: any option, passed to IPOPT as it is, sorted by the TOML type of its value. IPOPT itself

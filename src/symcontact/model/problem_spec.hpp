@@ -114,6 +114,9 @@ struct ContactSolverSpec {
   /// Condense linear-elastic bodies onto their contact DOFs (one Cholesky factorisation per run); the
   /// solution is the same, only the cost changes. Finite-strain bodies are never condensed.
   bool static_condensation = true;
+  /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
+  /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
+  int max_step_cuts = 0;
   /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
   std::map<std::string, std::string> ipopt_string;
   std::map<std::string, double> ipopt_numeric;

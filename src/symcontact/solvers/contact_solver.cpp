@@ -3,6 +3,7 @@
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
@@ -165,6 +166,32 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
   if (!load) load = std::make_shared<const CondensedLoad>(condense_load(bulk, *ws.condensation));
   return std::make_unique<CondensedProblem>(bulk, *ws.condensation, load, std::move(extras), A,
                                             problem.constraint_offset(), x);
+}
+
+/// Debug log of one geometry iteration: where the displacement changed most, and which constraint rows
+/// (family, slave surface node) came and went since the previous linearisation — what a fixed point that
+/// wanders or cycles is doing.
+void log_geometry_change(const VectorXd& du, const DofMap& dofs, const ContactLinearization& lin,
+                         const std::vector<int>& prev_family, const std::vector<Index>& prev_node, const Logger& log) {
+  std::ostringstream s;
+  Index d = 0;
+  const double m = du.size() ? du.cwiseAbs().maxCoeff(&d) : 0.0;
+  int body = 0;
+  while (body + 1 < dofs.num_bodies() && d >= dofs.offset(body + 1)) ++body;
+  s << "    largest change " << m << " at body " << body << " node " << (d - dofs.offset(body)) / dofs.dim()
+    << " component " << (d - dofs.offset(body)) % dofs.dim();
+  if (!prev_family.empty()) {
+    std::set<std::pair<int, Index>> before, now;
+    for (std::size_t r = 0; r < prev_family.size(); ++r) before.insert({prev_family[r], prev_node[r]});
+    for (std::size_t r = 0; r < lin.row_family.size(); ++r) now.insert({lin.row_family[r], lin.row_node[r]});
+    s << "; rows added:";
+    for (const auto& fr : now)
+      if (!before.count(fr)) s << " " << fr.first << ":" << fr.second;
+    s << "; removed:";
+    for (const auto& fr : before)
+      if (!now.count(fr)) s << " " << fr.first << ":" << fr.second;
+  }
+  log.debug(s.str());
 }
 
 ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
@@ -332,6 +359,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     const double change =
         (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
     rep.change_history.push_back(change);
+    if (log.level() >= Verbosity::kDebug) log_geometry_change(problem.expand(res.x) - problem.expand(x), dofs, lin,
+                                                               rows_prev_family, rows_prev_node, log);
     x = res.x;
     mu_prev = res.multipliers;
     rows_prev_family = lin.row_family;

@@ -355,6 +355,7 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
   EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
@@ -455,7 +456,8 @@ TEST(ProblemReader, TrescaFriction) {
 
 TEST(ProblemReader, CoulombFriction) {
   const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = 2e-6\n") +
-                                 "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n");
+                                 "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n"
+                                 "max_step_cuts = 3\n");
   const ContactSpec& c = spec.contacts.at(0);
   EXPECT_EQ(c.friction, "coulomb");
   EXPECT_EQ(c.mu, 0.3);
@@ -463,6 +465,7 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(c.tau, 0.0);
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-8);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 12);
+  EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
   EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);  // the others keep their defaults
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
 }
@@ -1029,7 +1032,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
-                "coulomb_tolerance, max_coulomb_iterations"},
+                "coulomb_tolerance, max_coulomb_iterations, max_step_cuts"},
+        BadCase{"MaxStepCutsNegative", kTwoBodies + "[contact_solver]\nmax_step_cuts = -1\n",
+                "contact_solver.max_step_cuts", "expected an integer in [0, 20], got -1"},
+        BadCase{"MaxStepCutsTooMany", kTwoBodies + "[contact_solver]\nmax_step_cuts = 21\n",
+                "contact_solver.max_step_cuts", "expected an integer in [0, 20], got 21"},
+        BadCase{"MaxStepCutsFloat", kTwoBodies + "[contact_solver]\nmax_step_cuts = 2.0\n",
+                "contact_solver.max_step_cuts", "expected an integer, got a floating-point number (2.0)"},
         BadCase{"GeometryToleranceZero", kTwoBodies + "[contact_solver]\ngeometry_tolerance = 0.0\n",
                 "contact_solver.geometry_tolerance", "expected a number > 0, got 0"},
         BadCase{"MaxGeometryIterationsZero", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 0\n",
