@@ -1,15 +1,17 @@
 #pragma once
 /// \file bench_contact.hpp
-/// The contact part of symcontact-bench (--case hertz2d | hertz2d-cylinders): the Hertz 2D cases of
-/// hertz_2d.hpp at a list of fine mesh sizes h, one row per size: DOFs, free DOFs, contact constraints,
-/// geometry and IPOPT iterations, time per phase, peak RSS, accuracy against the closed form, and the
-/// ratio of the contact solve to one Cholesky factor-and-solve of the same stiffness.
+/// The contact part of symcontact-bench (--case hertz2d | hertz2d-cylinders | hertz3d | hertz3d-spheres): the
+/// Hertz cases of hertz.hpp at a list of fine mesh sizes h, one row per size: DOFs, free DOFs, contact
+/// constraints, condensed DOFs, geometry and IPOPT iterations, time per phase, contact search time per
+/// geometry iteration against the size of the contact surfaces, peak RSS, accuracy against the closed form,
+/// and the ratio of the contact solve to one Cholesky factor-and-solve of the same stiffness. The sweep ends
+/// with the fitted exponent of the search time in the number of surface facets (O(n log n) expected).
 
 #include <string>
 #include <vector>
 
 #include "bench_support.hpp"
-#include "hertz_2d.hpp"
+#include "hertz.hpp"
 
 namespace symcontact::bench {
 
@@ -24,8 +26,11 @@ struct ContactBenchOptions {
   bool condense = true;        ///< static condensation (--no-condense: IPOPT on the whole problem)
 };
 
-/// The default ladder of h: about 1e4 to 2e5 DOFs for the cylinder on the plane.
-std::vector<double> default_hertz_sizes();
+/// The default ladder of h of each case:
+///  - hertz2d: 0.003 … 0.00027, about 1e4, 3.5e4, 1e5, 2e5, 4.5e5, 1e6 DOFs;
+///  - hertz2d-cylinders: the same without the last, about 2e4 … 9e5 DOFs (two bodies);
+///  - hertz3d: 0.04 … 0.007, about 1e4 … ; hertz3d-spheres: 0.04, 0.02, 0.014 (two bodies).
+std::vector<double> default_hertz_sizes(HertzCase which);
 
 /// Runs the sweep, printing the table as rows finish. Throws what solve_hertz() throws.
 void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine);
