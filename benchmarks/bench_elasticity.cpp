@@ -191,7 +191,6 @@ double sweep(int dim, const Options& opt, const MachineInfo& machine, bool appen
   return wall;
 }
 
-
 /// The contact cases --case suite runs, in this order.
 const std::vector<std::string> kSuiteCases = {"hertz2d", "hertz2d-cylinders", "inclined", "hertz3d", "hertz2d-freefem"};
 
@@ -199,27 +198,27 @@ const std::vector<std::string> kSuiteCases = {"hertz2d", "hertz2d-cylinders", "i
 /// ladder when empty), its table printed as rows finish and written to `csv` when not empty.
 void run_contact_case(const std::string& name, const Options& opt, const std::vector<double>& h,
                       const std::string& csv, const MachineInfo& machine) {
-  if (name == "hertz2d-freefem") {
-    FreefemPeerOptions c;
-    c.h = h.empty() ? default_freefem_sizes() : h;
+  // The options every contact sweep has.
+  auto common = [&](auto& c, const std::vector<double>& default_h) {
+    c.h = h.empty() ? default_h : h;
     c.repeat = opt.repeat;
-    c.freefem = opt.freefem;
-    c.freefem_tol = opt.freefem_tol;
-    c.skip_freefem = opt.skip_freefem;
     c.csv = csv;
     c.markdown = opt.markdown;
     c.keep_work = opt.keep_work;
+  };
+  if (name == "hertz2d-freefem") {
+    FreefemPeerOptions c;
+    common(c, default_freefem_sizes());
+    c.freefem = opt.freefem;
+    c.freefem_tol = opt.freefem_tol;
+    c.skip_freefem = opt.skip_freefem;
     run_freefem_sweep(c, machine);
     return;
   }
   if (name == "inclined") {
     InclinedBenchOptions c;
-    c.h = h.empty() ? default_inclined_sizes() : h;
-    c.repeat = opt.repeat;
+    common(c, default_inclined_sizes());
     c.examples_dir = opt.examples;
-    c.csv = csv;
-    c.markdown = opt.markdown;
-    c.keep_work = opt.keep_work;
     run_inclined_sweep(c, machine);
     return;
   }
@@ -234,12 +233,8 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     c.which = HertzCase::kTwoSpheres;
   else
     throw std::logic_error("run_contact_case: unknown case " + name);
-  c.h = h.empty() ? default_hertz_sizes(c.which) : h;
-  c.repeat = opt.repeat;
+  common(c, default_hertz_sizes(c.which));
   c.examples_dir = opt.examples;
-  c.csv = csv;
-  c.markdown = opt.markdown;
-  c.keep_work = opt.keep_work;
   c.condense = !opt.no_condense;
   run_hertz_sweep(c, machine);
 }
