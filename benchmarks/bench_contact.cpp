@@ -79,7 +79,7 @@ std::vector<double> default_hertz_sizes(HertzCase which) {
   switch (which) {
     case HertzCase::kCylinderOnPlane: return {0.003, 0.0015, 0.00085, 0.0006, 0.0004, 0.00027};
     case HertzCase::kTwoCylinders: return {0.003, 0.0015, 0.00085, 0.0006, 0.0004};
-    case HertzCase::kSphereOnPlane: return {0.04, 0.02, 0.01, 0.007};
+    case HertzCase::kSphereOnPlane: return {0.04, 0.02, 0.01, 0.007, 0.005};
     case HertzCase::kTwoSpheres: return {0.04, 0.02, 0.014};
   }
   throw std::logic_error("default_hertz_sizes: unknown Hertz case");

@@ -19,9 +19,10 @@
 /// sphere on a rigid plane, P1 Tet4) and `hertz3d-spheres` (two elastic quarter spheres), which solve the
 /// Hertz examples (examples/hertz_2d, examples/hertz_3d) at the fine mesh sizes --h (defaults: hertz2d
 /// 0.003 0.0015 0.00085 0.0006 0.0004 0.00027, about 1e4 to 1e6 DOFs; hertz2d-cylinders the same without
-/// the last; hertz3d 0.04 0.02 0.01 0.007; hertz3d-spheres 0.04 0.02 0.014) and compare the contact solve
-/// with one Cholesky factor-and-solve of the same stiffness; they also time the contact search against
-/// the size of the contact surfaces and print its fitted exponent (bench_contact.hpp):
+/// the last; hertz3d 0.04 0.02 0.01 0.007 0.005, about 1e3 to 1.5e5 DOFs; hertz3d-spheres 0.04 0.02
+/// 0.014) and compare the contact solve with one Cholesky factor-and-solve of the same stiffness; they
+/// also time the contact search against the size of the contact surfaces and print its fitted exponent
+/// (bench_contact.hpp):
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case hertz2d --h 0.004 0.002 --csv hertz.csv
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz3d --h 0.04 0.02 0.01 --csv h3d.csv
@@ -289,11 +290,12 @@ int main(int argc, char** argv) {
                              "hertz3d-spheres", "inclined", "problem", "suite"}));
   app.add_option("--h", opt.h,
                  "Hertz cases: fine mesh sizes near the contact point (default hertz2d 0.003 0.0015 0.00085 0.0006 "
-                 "0.0004 0.00027, hertz2d-cylinders the same without the last, hertz3d 0.04 0.02 0.01 0.007, "
+                 "0.0004 0.00027, hertz2d-cylinders the same without the last, hertz3d 0.04 0.02 0.01 0.007 0.005, "
                  "hertz3d-spheres 0.04 0.02 0.014); inclined: element sizes (default 0.05 0.025 0.0125); "
                  "hertz2d-freefem: sizes of the peers' mesh (default 0.005 0.0025 0.00125)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/, hertz_3d/ and inclined_2d/")
+  app.add_option("--examples", opt.examples,
+                 "contact: the examples/ folder holding hertz_2d/, hertz_3d/ and inclined_2d/")
       ->check(CLI::ExistingDirectory);
   app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
   app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
