@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace symcontact::bench {
@@ -41,6 +42,7 @@ std::vector<ResultTable::Column> columns() {
       {"peak_rss_contact_mib", "peak RSS [MiB]", Kind::kInteger, 0},
       {"surface_nodes", "surf. nodes", Kind::kInteger, 0},
       {"surface_facets", "", Kind::kInteger, 0},
+      {"search_distance", "", Kind::kScientific, 3},
       {"search_per_iteration_s", "search/it [s]", Kind::kFixed, 4},
       {"contact_search_s", "geom. search [s]", Kind::kFixed, 4},
       {"floor_free_dofs", "", Kind::kInteger, 0},
@@ -92,7 +94,9 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
   std::cout << "\n## " << name << ": " << hertz_case_description(opt.which) << "; closed form at P = "
             << nominal.load << ": a = " << std::setprecision(6) << nominal.a << ", p0 = " << nominal.p0
             << " (errors against the closed form at the applied load P_h, CSV column load)"
-            << "; floor phases min of " << opt.repeat << " run(s), contact solve once\n";
+            << "; floor phases min of " << opt.repeat << " run(s), contact solve once; search distance "
+            << (opt.search_distance > 0 ? std::to_string(opt.search_distance) : std::string("of the example"))
+            << " (CSV column search_distance)\n";
   std::cout << "# contact = search + assembly + optimizer + polish + condensation (factorisation, Schur complement,"
                " expansions); total = mesh + setup + solve_contact wall;\n"
             << "# condensed = DOFs IPOPT worked on (0: the full problem); search/it = search phase per geometry"
@@ -110,7 +114,7 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
   std::vector<double> facets, search_per_it, search_geometry;
   for (const double h : opt.h) {
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
-    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense);
+    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense, opt.search_distance);
     const double peak_contact = peak_rss_mib();
     const double search_alone = time_contact_search(*run, std::max(opt.repeat, 5));
 
@@ -138,7 +142,7 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
                    t.get("assembly"), t.get("optimizer"), t.get("polish"), t.get("condensation"),
                    static_cast<double>(run->report.num_condensed), contact, run->solve_wall,
                    meshing + setup + run->solve_wall, peak_contact, static_cast<double>(run->surface_nodes),
-                   static_cast<double>(run->surface_facets), search_it, search_alone, static_cast<double>(floor_free),
+                   static_cast<double>(run->surface_facets), run->search_distance, search_it, search_alone, static_cast<double>(floor_free),
                    static_cast<double>(pinned), floor.assembly, floor.analyze, floor.factorize, floor.solve,
                    floor.factor_and_solve(), contact / floor.factor_and_solve(),
                    run->solve_wall / floor.factor_and_solve(), run->solve_cpu, floor.cpu_factor_and_solve,

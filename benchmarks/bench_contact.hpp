@@ -24,6 +24,7 @@ struct ContactBenchOptions {
   bool markdown = false;
   bool keep_work = false;      ///< keep the temporary directory with the wrapper .geo and .toml
   bool condense = true;        ///< static condensation (--no-condense: IPOPT on the whole problem)
+  double search_distance = 0;  ///< > 0: the contact pair's search_distance (default: the example's, automatic)
 };
 
 /// The default ladder of h of each case:

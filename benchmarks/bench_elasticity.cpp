@@ -54,7 +54,8 @@
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case suite --csv results/suite-
 ///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, --no-condense
-/// (Hertz cases: IPOPT on the whole problem instead of the condensed one), and --repeat,
+/// (Hertz cases: IPOPT on the whole problem instead of the condensed one), --search-distance D (Hertz
+/// cases: the pair's search distance instead of the automatic one), and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
 #include <CLI/CLI.hpp>
@@ -127,6 +128,7 @@ struct Options {
   std::string examples = SYMCONTACT_BENCH_EXAMPLES;
   bool keep_work = false;
   bool no_condense = false;
+  double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
   std::string dim = "all";
@@ -237,6 +239,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
   common(c, default_hertz_sizes(c.which));
   c.examples_dir = opt.examples;
   c.condense = !opt.no_condense;
+  c.search_distance = opt.search_distance;
   run_hertz_sweep(c, machine);
 }
 
@@ -302,6 +305,9 @@ int main(int argc, char** argv) {
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_flag("--no-condense", opt.no_condense,
                "Hertz cases: no static condensation (IPOPT on the whole problem), to compare");
+  app.add_option("--search-distance", opt.search_distance,
+                 "Hertz cases: the contact pair's search_distance (default: the example's, i.e. automatic)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
   app.add_option("--min-dofs", opt.min_dofs, "smallest size of the ladder 1e4, 3e4, 1e5, ... [DOFs]")

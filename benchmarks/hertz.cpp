@@ -92,7 +92,7 @@ double HertzRun::contact_seconds() const {
 }
 
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
-                                      const std::string& work_dir, bool condense) {
+                                      const std::string& work_dir, bool condense, double search_distance) {
   auto run = std::make_unique<HertzRun>();
   run->which = which;
   run->h = h;
@@ -108,6 +108,11 @@ std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::stri
              std::string(h_line) + "Include \"" + std::filesystem::absolute(example + ".geo").string() + "\";\n");
   std::string toml = read_file(example + ".toml");
   replace_all(toml, stem + ".geo", geo_name);
+  if (search_distance > 0) {
+    char line[80];
+    std::snprintf(line, sizeof line, "[[contact]]\nsearch_distance = %.9g\n", search_distance);
+    replace_all(toml, "[[contact]]\n", line);
+  }
 
   run->spec = parse_problem(toml, stem + ".toml", work_dir);
   if (run->spec.dim != hertz_dimension(which))
@@ -154,6 +159,7 @@ void solve_hertz_model(HertzRun& run, bool condense) {
   const ContactLinearization& lin = run.report.linearization;
   run.min_constraint = (lin.A * run.u + lin.b).minCoeff();
   const ContactPair& pair = model.contacts().pairs.at(0);
+  run.search_distance = pair.search_distance;
   run.surface_nodes = run.surface_facets = 0;
   for (const int s : {pair.surface_a, pair.surface_b})
     if (s >= 0) {

@@ -76,6 +76,7 @@ struct HertzRun {
   double min_constraint = 0.0; ///< min (A u + b) at the last linearisation (≥ 0 up to round-off)
   Index surface_nodes = 0;     ///< nodes of the contact surfaces of the first pair (the search's size)
   Index surface_facets = 0;    ///< facets of the same
+  double search_distance = 0.0;  ///< of the first pair, as resolved by the model (automatic unless given)
 
   /// search + assembly + optimizer + polish + condensation of report.times (the contact solve proper).
   double contact_seconds() const;
@@ -86,9 +87,10 @@ struct HertzRun {
 /// Writes the wrapper .geo and a copy of the example's TOML (pointing at it) into `work_dir`, builds the
 /// model and solves it (solve_hertz_model). `examples_dir` is the examples/ folder of the source tree.
 /// Throws what the library throws (InputError, SolveError).
-/// `condense` false switches the static condensation off (contact_solver.static_condensation).
+/// `condense` false switches the static condensation off (contact_solver.static_condensation);
+/// `search_distance` > 0 sets the contact pair's search_distance (default: the example's, automatic).
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
-                                      const std::string& work_dir, bool condense = true);
+                                      const std::string& work_dir, bool condense = true, double search_distance = 0.0);
 
 /// Builds run.model from run.spec (a single load step, one contact pair whose side a is the loaded body),
 /// solves it with the solver settings `symcontact run` derives from the file (contact_options()),
