@@ -28,7 +28,7 @@ struct ContactBenchOptions {
 };
 
 /// The default ladder of h of each case:
-///  - hertz2d: 0.003 … 0.00027, about 1e4, 3.5e4, 1e5, 2e5, 4.5e5, 1e6 DOFs;
+///  - hertz2d: 0.003, 0.0015, 0.00085, 0.0006, 0.0004, 0.00027: 9.8e3, 3.5e4, 1.0e5, 2.0e5, 4.5e5, 9.7e5 DOFs;
 ///  - hertz2d-cylinders: the same without the last, about 2e4 … 9e5 DOFs (two bodies);
 ///  - hertz3d: 0.04, 0.02, 0.01, 0.007, 0.005: 1.3e3, 4.4e3, 2.3e4, 5.9e4, 1.5e5 DOFs (the contact surface
 ///    then has 2,709 nodes, two thirds of the 4,000 condensed DOFs above which the solver falls back to the
