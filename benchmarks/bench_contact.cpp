@@ -36,7 +36,7 @@ std::vector<ResultTable::Column> columns() {
       {"polish_s", "polish [s]", Kind::kFixed, 3},
       {"condensation_s", "condens. [s]", Kind::kFixed, 3},
       {"condensed_dofs", "condensed", Kind::kInteger, 0},
-      {"condensation_factorisations", "", Kind::kInteger, 0},
+      {"condensation_factorisations", "cond. fact.", Kind::kInteger, 0},
       {"contact_s", "contact [s]", Kind::kFixed, 3},
       {"solve_contact_wall_s", "", Kind::kFixed, 3},
       {"total_s", "total [s]", Kind::kFixed, 3},
