@@ -2,12 +2,15 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace symcontact::bench {
 
@@ -53,6 +56,13 @@ std::vector<ResultTable::Column> columns() {
       {"nnz_l", "", Kind::kInteger, 0},
       {"floor_relative_residual", "", Kind::kScientific, 1},
       {"peak_rss_floor_mib", "", Kind::kInteger, 0},
+      {"surface_nodes", "surf. nodes", Kind::kInteger, 0},
+      {"surface_facets", "", Kind::kInteger, 0},
+      {"search_distance", "", Kind::kScientific, 3},
+      {"search_per_iteration_s", "search/it [s]", Kind::kFixed, 4},
+      {"contact_search_s", "geom. search [s]", Kind::kFixed, 4},
+      {"load", "", Kind::kScientific, 9},
+      {"load_error_pct", "", Kind::kFixed, 3},
       {"p0", "", Kind::kScientific, 6},
       {"p0_error_pct", "p0 err [%]", Kind::kFixed, 3},
       {"a", "", Kind::kScientific, 6},
@@ -68,30 +78,46 @@ std::vector<ResultTable::Column> columns() {
 
 }  // namespace
 
-std::vector<double> default_hertz_sizes() { return {0.003, 0.0015, 0.00085, 0.0006}; }
+std::vector<double> default_hertz_sizes(HertzCase which) {
+  switch (which) {
+    case HertzCase::kCylinderOnPlane: return {0.003, 0.0015, 0.00085, 0.0006, 0.0004, 0.00027};
+    case HertzCase::kTwoCylinders: return {0.003, 0.0015, 0.00085, 0.0006, 0.0004};
+    case HertzCase::kSphereOnPlane: return {0.04, 0.02, 0.01, 0.007, 0.005};
+    case HertzCase::kTwoSpheres: return {0.04, 0.02, 0.014};
+  }
+  throw std::logic_error("default_hertz_sizes: unknown Hertz case");
+}
 
 void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine) {
-  const HertzReference ref = hertz_reference();
+  const HertzReference nominal = hertz_reference(opt.which);
   const std::string name = hertz_case_name(opt.which);
-  std::cout << "\n## " << name << ": "
-            << (opt.which == HertzCase::kCylinderOnPlane ? "cylinder on a rigid plane" : "two elastic cylinders")
-            << ", plane strain, P1, half model; closed form a = " << std::setprecision(6) << ref.a
-            << ", p0 = " << ref.p0
-            << "; floor phases min of " << opt.repeat << " run(s), contact solve once\n";
-  std::cout << "# contact = search + assembly + optimizer + polish + condensation (factorisation, Schur complement, expansions); total = mesh + setup + solve_contact wall;\n"
-            << "# floor = analyze + factorize + solve of K_ff (u_y also pinned at the contact point);"
-               " ratio = contact / floor;\n# CPU ratio = process CPU time of solve_contact() / of the floor"
-               " (less sensitive to other load on the machine)\n\n";
+  const char* vertical = hertz_dimension(opt.which) == 2 ? "u_y" : "u_z";
+  std::cout << "\n## " << name << ": " << hertz_case_description(opt.which) << "; closed form at P = "
+            << nominal.load << ": a = " << std::setprecision(6) << nominal.a << ", p0 = " << nominal.p0
+            << " (errors against the closed form at the applied load P_h, CSV column load)"
+            << "; floor phases min of " << opt.repeat << " run(s), contact solve once; search distance "
+            << (opt.search_distance > 0 ? std::to_string(opt.search_distance) : std::string("of the example"))
+            << " (CSV column search_distance)\n";
+  std::cout << "# contact = search + assembly + optimizer + polish + condensation (factorisation, Schur complement,"
+               " expansions); total = mesh + setup + solve_contact wall;\n"
+            << "# condensed = DOFs IPOPT worked on (0: the full problem); search/it = search phase per geometry"
+               " iteration;\n# geom. search = the search alone (time_contact_search(): projections, segmentation, BVH),"
+               " at the solution; surf. nodes = nodes of the contact surfaces;\n"
+            << "# floor = analyze + factorize + solve of K_ff (" << vertical
+            << " also pinned at the contact point); ratio = contact / floor;\n# CPU ratio = process CPU time of"
+               " solve_contact() / of the floor (less sensitive to other load on the machine)\n\n";
   ResultTable table(columns(), std::cout, opt.markdown);
   if (!opt.csv.empty()) table.write_csv(opt.csv);
 
   const std::string work = make_work_dir();
   const auto t_sweep = std::chrono::steady_clock::now();
   bool rss_reset_ok = true;
+  std::vector<double> facets, search_per_it, search_geometry;
   for (const double h : opt.h) {
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
-    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense);
+    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense, opt.search_distance);
     const double peak_contact = peak_rss_mib();
+    const double search_alone = time_contact_search(*run, std::max(opt.repeat, 5));
 
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
     Index floor_free = 0;
@@ -104,6 +130,12 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
     const PhaseTimes& t = run->report.times;
     const double meshing = run->build_times.get("meshing"), setup = run->build_times.get("setup");
     const double contact = run->contact_seconds();
+    const HertzReference ref = run->reference();
+    const double symmetry = hertz_symmetry_factor(opt.which);
+    const double search_it = t.get("search") / std::max(run->report.geometry_iterations, 1);
+    facets.push_back(static_cast<double>(run->surface_facets));
+    search_per_it.push_back(search_it);
+    search_geometry.push_back(search_alone);
     table.add_row({name, h, static_cast<double>(nodes), static_cast<double>(run->model->dofs().num_dofs()),
                    static_cast<double>(run->report.num_free), static_cast<double>(run->report.num_constraints),
                    static_cast<double>(run->report.geometry_iterations),
@@ -116,12 +148,26 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
                    floor.factor_and_solve(), contact / floor.factor_and_solve(),
                    run->solve_wall / floor.factor_and_solve(), run->solve_cpu, floor.cpu_factor_and_solve,
                    run->solve_cpu / floor.cpu_factor_and_solve, floor.nnz_factor, floor.relative_residual,
-                   peak_floor, run->p0, 100 * (run->p0 / ref.p0 - 1), run->a, 100 * (run->a / ref.a - 1),
-                   std::abs(2 * run->force - HertzReference::kLoad) / HertzReference::kLoad,
+                   peak_floor, static_cast<double>(run->surface_nodes), static_cast<double>(run->surface_facets),
+                   run->search_distance, search_it, search_alone, run->load, 100 * (run->load / nominal.load - 1),
+                   run->p0, 100 * (run->p0 / ref.p0 - 1), run->a, 100 * (run->a / ref.a - 1),
+                   std::abs(symmetry * run->force - run->load) / run->load,
                    run->min_constraint, run->report.ipopt_status, static_cast<double>(opt.repeat),
                    static_cast<double>(machine.openblas_threads)});
   }
   finish_sweep(name, t_sweep, rss_reset_ok, "meshing + setup + contact solve", work, opt.keep_work);
+  if (facets.size() >= 2) {
+    std::vector<double> n_log_n;
+    for (const double n : facets) n_log_n.push_back(n * std::log(n));
+    std::cout << std::fixed << std::setprecision(2)
+              << "# search ∝ (contact surface facets)^α, least squares over " << facets.size()
+              << " sizes: geom. search (projections, segmentation, BVH; min of " << std::max(opt.repeat, 5)
+              << " runs at the solution) α = " << loglog_slope(facets, search_geometry)
+              << "; search phase per geometry iteration (also assembles A over all DOFs) α = "
+              << loglog_slope(facets, search_per_it) << "; n log n over the same sizes: α = "
+              << loglog_slope(facets, n_log_n) << "\n"
+              << std::defaultfloat;
+  }
 }
 
 }  // namespace symcontact::bench

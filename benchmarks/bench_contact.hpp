@@ -1,15 +1,17 @@
 #pragma once
 /// \file bench_contact.hpp
-/// The contact part of symcontact-bench (--case hertz2d | hertz2d-cylinders): the Hertz 2D cases of
-/// hertz_2d.hpp at a list of fine mesh sizes h, one row per size: DOFs, free DOFs, contact constraints,
-/// geometry and IPOPT iterations, time per phase, peak RSS, accuracy against the closed form, and the
-/// ratio of the contact solve to one Cholesky factor-and-solve of the same stiffness.
+/// The contact part of symcontact-bench (--case hertz2d | hertz2d-cylinders | hertz3d | hertz3d-spheres): the
+/// Hertz cases of hertz.hpp at a list of fine mesh sizes h, one row per size: DOFs, free DOFs, contact
+/// constraints, condensed DOFs, geometry and IPOPT iterations, time per phase, contact search time per
+/// geometry iteration against the size of the contact surfaces, peak RSS, accuracy against the closed form,
+/// and the ratio of the contact solve to one Cholesky factor-and-solve of the same stiffness. The sweep ends
+/// with the fitted exponent of the search time in the number of surface facets (O(n log n) expected).
 
 #include <string>
 #include <vector>
 
 #include "bench_support.hpp"
-#include "hertz_2d.hpp"
+#include "hertz.hpp"
 
 namespace symcontact::bench {
 
@@ -22,10 +24,17 @@ struct ContactBenchOptions {
   bool markdown = false;
   bool keep_work = false;      ///< keep the temporary directory with the wrapper .geo and .toml
   bool condense = true;        ///< static condensation (--no-condense: IPOPT on the whole problem)
+  double search_distance = 0;  ///< > 0: the contact pair's search_distance (default: the example's, automatic)
 };
 
-/// The default ladder of h: about 1e4 to 2e5 DOFs for the cylinder on the plane.
-std::vector<double> default_hertz_sizes();
+/// The default ladder of h of each case:
+///  - hertz2d: 0.003, 0.0015, 0.00085, 0.0006, 0.0004, 0.00027: 9.8e3, 3.5e4, 1.0e5, 2.0e5, 4.5e5, 9.7e5 DOFs;
+///  - hertz2d-cylinders: the same without the last, about 2e4 … 9e5 DOFs (two bodies);
+///  - hertz3d: 0.04, 0.02, 0.01, 0.007, 0.005: 1.3e3, 4.4e3, 2.3e4, 5.9e4, 1.5e5 DOFs (the contact surface
+///    then has 2,709 nodes, two thirds of the 4,000 condensed DOFs above which the solver falls back to the
+///    full problem; h = 0.004 would pass it);
+///  - hertz3d-spheres: 0.04, 0.02, 0.014 (two bodies).
+std::vector<double> default_hertz_sizes(HertzCase which);
 
 /// Runs the sweep, printing the table as rows finish. Throws what solve_hertz() throws.
 void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine);

@@ -15,11 +15,17 @@
 /// 3.1e5 in 3D), --dofs N... (explicit sizes instead of the ladder), --repeat R (1; each time is the minimum over R runs), --csv FILE, --markdown.
 ///
 /// --case selects the benchmark: `elasticity` (the default, above), or the contact benchmarks
-/// `hertz2d` (cylinder on a rigid plane) and `hertz2d-cylinders` (two elastic cylinders), which solve
-/// the Hertz 2D examples at the fine mesh sizes --h (default 0.003 0.0015 0.00085 0.0006) and compare the
-/// contact solve with one Cholesky factor-and-solve of the same stiffness (bench_contact.hpp):
+/// `hertz2d` (cylinder on a rigid plane), `hertz2d-cylinders` (two elastic cylinders), `hertz3d` (quarter
+/// sphere on a rigid plane, P1 Tet4) and `hertz3d-spheres` (two elastic quarter spheres), which solve the
+/// Hertz examples (examples/hertz_2d, examples/hertz_3d) at the fine mesh sizes --h (defaults: hertz2d
+/// 0.003 0.0015 0.00085 0.0006 0.0004 0.00027, about 1e4 to 1e6 DOFs; hertz2d-cylinders the same without
+/// the last; hertz3d 0.04 0.02 0.01 0.007 0.005, about 1e3 to 1.5e5 DOFs; hertz3d-spheres 0.04 0.02
+/// 0.014) and compare the contact solve with one Cholesky factor-and-solve of the same stiffness; they
+/// also time the contact search against the size of the contact surfaces and print its fitted exponent
+/// (bench_contact.hpp):
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case hertz2d --h 0.004 0.002 --csv hertz.csv
+///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz3d --h 0.04 0.02 0.01 --csv h3d.csv
 ///
 /// `inclined` solves the inclined interface with Coulomb friction mu = 0.2 (examples/inclined_2d,
 /// VALIDATION.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
@@ -38,8 +44,18 @@
 ///
 ///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
 ///
+/// `suite` runs, in ONE run, every contact case at its default sizes, one after the other: hertz2d,
+/// hertz2d-cylinders, inclined, hertz3d and hertz2d-freefem (which skips FreeFEM with a message when it is
+/// absent), printing each table as it goes; --csv PREFIX writes one file PREFIX<case>.csv per case
+/// (e.g. results/suite-hertz3d.csv for --csv results/suite-). A case that fails is reported and the suite
+/// goes on (the exit code says so); --h is refused. At the default sizes it goes to about 1e6 DOFs in 2D,
+/// so the largest sizes dominate its run time:
+///
+///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case suite --csv results/suite-
+///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, --no-condense
-/// (hertz2d cases: IPOPT on the whole problem instead of the condensed one), and --repeat,
+/// (Hertz cases: IPOPT on the whole problem instead of the condensed one), --search-distance D (Hertz
+/// cases: the pair's search distance instead of the automatic one), and --repeat,
 /// --csv, --markdown as above (--repeat applies to the floor only; the contact solve runs once).
 
 #include <CLI/CLI.hpp>
@@ -48,8 +64,10 @@
 #include <cmath>
 #include <ctime>
 #include <exception>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -106,10 +124,11 @@ std::vector<ResultTable::Column> columns() {
 
 struct Options {
   std::string bench_case = "elasticity";
-  std::vector<double> h;           ///< contact: fine mesh sizes (default_hertz_sizes() when empty)
+  std::vector<double> h;           ///< contact: fine mesh sizes (the case's default ladder when empty)
   std::string examples = SYMCONTACT_BENCH_EXAMPLES;
   bool keep_work = false;
   bool no_condense = false;
+  double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
   std::string dim = "all";
@@ -175,27 +194,120 @@ double sweep(int dim, const Options& opt, const MachineInfo& machine, bool appen
   return wall;
 }
 
+/// The contact cases --case suite runs, in this order.
+const std::vector<std::string> kSuiteCases = {"hertz2d", "hertz2d-cylinders", "inclined", "hertz3d", "hertz2d-freefem"};
+
+/// One contact benchmark (every --case but elasticity, problem and suite) at the sizes `h` (its default
+/// ladder when empty), its table printed as rows finish and written to `csv` when not empty.
+void run_contact_case(const std::string& name, const Options& opt, const std::vector<double>& h,
+                      const std::string& csv, const MachineInfo& machine) {
+  // The options every contact sweep has.
+  auto common = [&](auto& c, const std::vector<double>& default_h) {
+    c.h = h.empty() ? default_h : h;
+    c.repeat = opt.repeat;
+    c.csv = csv;
+    c.markdown = opt.markdown;
+    c.keep_work = opt.keep_work;
+  };
+  if (name == "hertz2d-freefem") {
+    FreefemPeerOptions c;
+    common(c, default_freefem_sizes());
+    c.freefem = opt.freefem;
+    c.freefem_tol = opt.freefem_tol;
+    c.skip_freefem = opt.skip_freefem;
+    run_freefem_sweep(c, machine);
+    return;
+  }
+  if (name == "inclined") {
+    InclinedBenchOptions c;
+    common(c, default_inclined_sizes());
+    c.examples_dir = opt.examples;
+    run_inclined_sweep(c, machine);
+    return;
+  }
+  ContactBenchOptions c;
+  if (name == "hertz2d")
+    c.which = HertzCase::kCylinderOnPlane;
+  else if (name == "hertz2d-cylinders")
+    c.which = HertzCase::kTwoCylinders;
+  else if (name == "hertz3d")
+    c.which = HertzCase::kSphereOnPlane;
+  else if (name == "hertz3d-spheres")
+    c.which = HertzCase::kTwoSpheres;
+  else
+    throw std::logic_error("run_contact_case: unknown case " + name);
+  common(c, default_hertz_sizes(c.which));
+  c.examples_dir = opt.examples;
+  c.condense = !opt.no_condense;
+  c.search_distance = opt.search_distance;
+  run_hertz_sweep(c, machine);
+}
+
+/// --case suite: every case of kSuiteCases at its default ladder, one after the other; with --csv PREFIX,
+/// one file PREFIX<case>.csv each. A case that fails is reported and the suite goes on; the exit code is
+/// that of the first failure (kExitOk when none).
+int run_suite(const Options& opt, const MachineInfo& machine) {
+  if (!opt.h.empty()) throw std::runtime_error("--case suite runs every case at its default sizes: --h is not allowed");
+  if (!opt.csv.empty()) {  // --csv results/suite-: make results/
+    const std::filesystem::path parent = std::filesystem::path(opt.csv).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  int status = symcontact::kExitOk;
+  std::vector<std::string> failed;
+  for (const std::string& name : kSuiteCases) {
+    std::cout << "\n# suite: " << name << "\n" << std::flush;
+    const std::string csv = opt.csv.empty() ? std::string() : opt.csv + name + ".csv";
+    try {
+      run_contact_case(name, opt, {}, csv, machine);
+    } catch (const symcontact::SolveError& e) {
+      std::cout << "# suite: " << name << " FAILED (solve): " << e.what() << "\n";
+      if (status == symcontact::kExitOk) status = symcontact::kExitSolveError;
+      failed.push_back(name);
+    } catch (const std::exception& e) {
+      std::cout << "# suite: " << name << " FAILED: " << e.what() << "\n";
+      if (status == symcontact::kExitOk) status = symcontact::kExitInternalError;
+      failed.push_back(name);
+    }
+    std::cout << std::flush;
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << "\n# suite: " << kSuiteCases.size() - failed.size() << " of " << kSuiteCases.size()
+            << " cases done in " << std::fixed << std::setprecision(1) << wall << std::defaultfloat << " s wall";
+  for (const auto& f : failed) std::cout << (f == failed.front() ? "; failed: " : ", ") << f;
+  std::cout << "\n";
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   Options opt;
   CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
-               "Hertz 2D contact solves against that Cholesky floor",
+               "contact solves (Hertz 2D and 3D, inclined interface with friction) against that Cholesky floor",
                "symcontact-bench"};
-  app.add_option("--case", opt.bench_case, "elasticity (default), hertz2d, hertz2d-cylinders, hertz2d-freefem, inclined or problem")
-      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "hertz2d-freefem", "inclined", "problem"}));
+  app.add_option("--case", opt.bench_case,
+                 "elasticity (default), hertz2d, hertz2d-cylinders, hertz2d-freefem, hertz3d, hertz3d-spheres, "
+                 "inclined, problem, or suite (every contact case at its default sizes)")
+      ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "hertz2d-freefem", "hertz3d",
+                             "hertz3d-spheres", "inclined", "problem", "suite"}));
   app.add_option("--h", opt.h,
-                 "contact: fine mesh sizes near the contact point (default 0.003 0.0015 0.00085 0.0006); "
-                 "inclined: element sizes (default 0.05 0.025 0.0125); hertz2d-freefem: sizes of the peers' "
-                 "mesh (default 0.005 0.0025 0.00125)")
+                 "Hertz cases: fine mesh sizes near the contact point (default hertz2d 0.003 0.0015 0.00085 0.0006 "
+                 "0.0004 0.00027, hertz2d-cylinders the same without the last, hertz3d 0.04 0.02 0.01 0.007 0.005, "
+                 "hertz3d-spheres 0.04 0.02 0.014); inclined: element sizes (default 0.05 0.025 0.0125); "
+                 "hertz2d-freefem: sizes of the peers' mesh (default 0.005 0.0025 0.00125)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--examples", opt.examples, "contact: the examples/ folder holding hertz_2d/ and inclined_2d/")
+  app.add_option("--examples", opt.examples,
+                 "contact: the examples/ folder holding hertz_2d/, hertz_3d/ and inclined_2d/")
       ->check(CLI::ExistingDirectory);
   app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
   app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_flag("--no-condense", opt.no_condense,
-               "hertz2d cases: no static condensation (IPOPT on the whole problem), to compare");
+               "Hertz cases: no static condensation (IPOPT on the whole problem), to compare");
+  app.add_option("--search-distance", opt.search_distance,
+                 "Hertz cases: the contact pair's search_distance (default: the example's, i.e. automatic)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--dim", opt.dim, "2, 3 or all")->check(CLI::IsMember({"2", "3", "all"}));
   app.add_option("--order", opt.order, "polynomial order of the elements")->check(CLI::IsMember({1, 2}));
   app.add_option("--min-dofs", opt.min_dofs, "smallest size of the ladder 1e4, 3e4, 1e5, ... [DOFs]")
@@ -207,7 +319,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--repeat", opt.repeat, "runs per size; every time reported is the minimum")
       ->check(CLI::Range(1, 1000));
-  app.add_option("--csv", opt.csv, "also write the results (full precision, more columns) to this CSV file");
+  app.add_option("--csv", opt.csv,
+                 "also write the results (full precision, more columns) to this CSV file; suite: the prefix of "
+                 "one file per case, PREFIX<case>.csv");
   app.add_flag("--markdown", opt.markdown, "print Markdown tables (for docs/performance.md)");
   app.add_option("--freefem", opt.freefem, "hertz2d-freefem: the FreeFEM executable (default FreeFem++ on PATH)");
   app.add_option("--freefem-tol", opt.freefem_tol, "hertz2d-freefem: IPOPT tol of the FreeFEM runs (default 1e-12)")
@@ -240,41 +354,9 @@ int main(int argc, char** argv) {
       run_problem_files(c, machine);
       return symcontact::kExitOk;
     }
-    if (opt.bench_case == "hertz2d-freefem") {
-      FreefemPeerOptions c;
-      c.h = opt.h.empty() ? default_freefem_sizes() : opt.h;
-      c.repeat = opt.repeat;
-      c.freefem = opt.freefem;
-      c.freefem_tol = opt.freefem_tol;
-      c.skip_freefem = opt.skip_freefem;
-      c.csv = opt.csv;
-      c.markdown = opt.markdown;
-      c.keep_work = opt.keep_work;
-      run_freefem_sweep(c, machine);
-      return symcontact::kExitOk;
-    }
-    if (opt.bench_case == "inclined") {
-      InclinedBenchOptions c;
-      c.h = opt.h.empty() ? default_inclined_sizes() : opt.h;
-      c.repeat = opt.repeat;
-      c.examples_dir = opt.examples;
-      c.csv = opt.csv;
-      c.markdown = opt.markdown;
-      c.keep_work = opt.keep_work;
-      run_inclined_sweep(c, machine);
-      return symcontact::kExitOk;
-    }
+    if (opt.bench_case == "suite") return run_suite(opt, machine);
     if (opt.bench_case != "elasticity") {
-      ContactBenchOptions c;
-      c.which = opt.bench_case == "hertz2d" ? HertzCase::kCylinderOnPlane : HertzCase::kTwoCylinders;
-      c.h = opt.h.empty() ? default_hertz_sizes() : opt.h;
-      c.repeat = opt.repeat;
-      c.examples_dir = opt.examples;
-      c.csv = opt.csv;
-      c.markdown = opt.markdown;
-      c.keep_work = opt.keep_work;
-      c.condense = !opt.no_condense;
-      run_hertz_sweep(c, machine);
+      run_contact_case(opt.bench_case, opt, opt.h, opt.csv, machine);
       return symcontact::kExitOk;
     }
     bool append = false;

@@ -276,6 +276,22 @@ void write_file(const std::string& path, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write '" + path + "'");
 }
 
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t k = 0; k < std::min(x.size(), y.size()); ++k) {
+    if (!(x[k] > 0 && y[k] > 0)) continue;
+    const double lx = std::log(x[k]), ly = std::log(y[k]);
+    n += 1;
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+  }
+  const double den = n * sxx - sx * sx;
+  if (n < 2 || !(den > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return (n * sxy - sx * sy) / den;
+}
+
 void finish_sweep(const std::string& name, std::chrono::steady_clock::time_point start, bool rss_reset_ok,
                   const std::string& measured, const std::string& work_dir, bool keep_work) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -60,6 +60,10 @@ double min_time(int repeat, const std::function<void()>& f);
 /// in [min_size, max_size].
 std::vector<double> size_ladder(double min_size, double max_size);
 
+/// Least-squares slope of log y against log x over the pairs with x > 0 and y > 0: the exponent α of
+/// y ∝ x^α. NaN with fewer than two such pairs or when every x is the same.
+double loglog_slope(const std::vector<double>& x, const std::vector<double>& y);
+
 /// The whole text of a file; throws std::runtime_error naming it when it cannot be read.
 std::string read_file(const std::string& path);
 /// Writes `text` to a file; throws std::runtime_error naming it when it cannot be written.

@@ -22,7 +22,7 @@
 #include <stdexcept>
 
 #include "elastic_block.hpp"
-#include "hertz_2d.hpp"
+#include "hertz.hpp"
 #include "symcontact/app/run.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
@@ -229,8 +229,8 @@ struct SymcontactQuarter {
   std::vector<ProfileRow> profile;  ///< arc nodes with x ≤ 0.4
 };
 
-/// Builds the model from the problem file on `msh`, solves it as `symcontact run` does (one step, the
-/// solver options of contact_options()), times solve_contact() as solve_hertz() does, and extracts the
+/// Builds the model from the problem file on `msh`, solves it as solve_hertz() does (solve_hertz_model():
+/// one step, the solver options of contact_options(), p0 and the force), and extracts the
 /// profile: reference x, normal force p_k·A_k, lumped area A_k = ∫ φ_k ds, gap.
 SymcontactQuarter solve_symcontact(const std::string& work, const std::string& msh_name, double h,
                                    const PeerHertzReference& ref) {
@@ -240,28 +240,13 @@ SymcontactQuarter solve_symcontact(const std::string& work, const std::string& m
   run.which = HertzCase::kCylinderOnPlane;
   run.h = h;
   run.spec = parse_problem(quarter_problem_toml(msh_name, ref), "hertz_quarter.toml", work);
-  std::ostringstream quiet;
-  const Logger log(quiet, Verbosity::kQuiet);
-  run.model = Model::build(run.spec, log, run.build_times);
-  Model& model = *run.model;
-  model.set_step(0);
-  run.fixed = model.fixed_dofs(0);
-
-  // The solver settings exactly as `symcontact run` derives them from the problem file (so that new
-  // solver options reach this benchmark without touching it).
-  const ContactSolveOptions opt = contact_options(run.spec, log).contact;
-  run.u = VectorXd::Zero(model.dofs().num_dofs());
-  const double cpu0 = process_cpu_seconds();
-  const double t0 = wall_seconds();
-  run.report = solve_contact(model.energy(), run.fixed, model.contacts(), model.dofs(), run.u, opt, log);
-  run.solve_wall = wall_seconds() - t0;
-  run.solve_cpu = process_cpu_seconds() - cpu0;
+  solve_hertz_model(run);
+  const Model& model = *run.model;
 
   const std::vector<ContactPairResult> pairs = contact_results(model.contacts(), model.dofs(), run.u, run.report);
   const ContactSideResult& side = pairs.at(0).sides.at(0);
   const ContactSurface& surface = model.contacts().surfaces.at(side.surface);
   for (Index k = 0; k < side.pressure.size(); ++k) {
-    run.p0 = std::max(run.p0, side.pressure[k]);
     if (surface.X(0, k) > kCandidateX + 1e-12) continue;
     ProfileRow r;
     r.x = surface.X(0, k);
@@ -270,9 +255,6 @@ SymcontactQuarter solve_symcontact(const std::string& work, const std::string& m
     r.residual = std::isfinite(side.gap[k]) ? side.gap[k] : std::numeric_limits<double>::infinity();
     out.profile.push_back(r);
   }
-  run.force = std::abs(pairs[0].total_force[1]);
-  const ContactLinearization& lin = run.report.linearization;
-  run.min_constraint = (lin.A * run.u + lin.b).minCoeff();
   return out;
 }
 
