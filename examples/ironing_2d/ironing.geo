@@ -42,6 +42,9 @@ Plane Surface(2) = {2};
 Physical Surface("slab") = {1};
 Physical Curve("slab_bottom") = {1};
 Physical Curve("slab_top") = {3};
+// The top and both sides: with friction the die drags the slab's top-left corner under itself and its
+// trailing side comes down on the slab's left side (ironing_mu0.3.toml).
+Physical Curve("slab_contact") = {2, 3, 4};
 Physical Surface("die") = {2};
 Physical Curve("die_outer") = {10, 11};
 Physical Curve("die_ends") = {12, 15};
