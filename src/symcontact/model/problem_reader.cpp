@@ -987,11 +987,24 @@ void check_toml_characters(const std::string& text, const std::string& file) {
   // a value after '=', an array element after '[' or ',', an inline-table key after '{'. Inside a bare
   // token (an invalid value: a digit followed by three single quotes, say) toml++ reads no string and
   // goes on scanning characters, so the guard must too (found by fuzzing).
+  // A '.' separates the parts of a dotted key only before the line's '=': after it, it belongs to a value
+  // (a float such as "0.'…", found by fuzzing), and a quote there opens nothing. (A quoted part after a
+  // '.' of a dotted key inside an inline table is then scanned as bare text: non-ASCII characters in it
+  // are refused, a rare valid file, with a message, rather than read with undefined behaviour.)
+  auto before_equals = [&](std::size_t k) {
+    while (k > 0 && text[k - 1] != '\n') {
+      if (text[k - 1] == '=') return false;
+      --k;
+    }
+    return true;
+  };
   auto opens_string = [&](std::size_t k) {
+    const std::size_t quote = k;
     while (k > 0 && (text[k - 1] == ' ' || text[k - 1] == '\t')) --k;
     if (k == 0) return true;
     const char p = text[k - 1];
-    return p == '\n' || p == '\r' || p == '=' || p == '[' || p == ',' || p == '{' || p == '.';
+    if (p == '.') return before_equals(quote);
+    return p == '\n' || p == '\r' || p == '=' || p == '[' || p == ',' || p == '{';
   };
   while (i < n) {
     const char c = text[i];

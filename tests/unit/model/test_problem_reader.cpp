@@ -708,6 +708,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "supported"},
         BadCase{"NonAsciiInsideAnInvalidValueWithQuotes", edit("nu = 0.3", "nu = 1'''x\"\ufee2"), "",
                 "line 11, column 12: the character '\ufee2' is not allowed outside strings and comments"},
+        BadCase{"NonAsciiAfterAFloatAndAQuote", edit("nu = 0.3", "nu = [0.'!!\ufe7f."), "",
+                "line 11, column 12: the character '\ufe7f' is not allowed outside strings and comments"},
         // unknown keys
         BadCase{"UnknownTopLevelKey", "solver = \"ipopt\"\n" + kBase, "solver",
                 "unknown key \"solver\"; allowed keys at the top level: title, problem, steps, output, body, contact, "
