@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <sstream>
 
 #include "symcontact/app/run.hpp"
@@ -42,6 +43,12 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
     c->reactions.push_back(c->model->reactions(fixed, g));
   }
   return c;
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text) {

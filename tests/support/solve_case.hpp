@@ -31,6 +31,9 @@ struct SolvedCase {
 /// `base_dir` resolves relative mesh paths. Throws what the library throws.
 std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::string& base_dir);
 
+/// The whole file at `path`; throws std::runtime_error when it cannot be read.
+std::string read_text(const std::string& path);
+
 /// Writes `text` to `dir/name` (creating dir) and returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
 

@@ -30,11 +30,6 @@ struct Hertz3DMeasure {
   double h = 0, p0 = 0, a = 0, force = 0, load = 0, seconds = 0;
 };
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 /// The example at element size h near the contact and order `order`; `obstacle`, when given, replaces the
 /// example's [contact.obstacle] table.
 Hertz3DMeasure solve_sphere(double h, int order, const std::string& dir, const std::string& obstacle = "") {

@@ -41,12 +41,6 @@ constexpr double kTanAlpha = 0.1;
 const std::string kExampleDir = std::string(SYMCONTACT_EXAMPLES) + "/inclined_2d";
 const std::string kExampleDir3D = std::string(SYMCONTACT_EXAMPLES) + "/inclined_3d";
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << "cannot read " << path;
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 /// (tan α + μ) / (1 − μ tan α) for an interface of slope `tan_alpha`.
 double exact_ratio(double tan_alpha, double mu) { return (tan_alpha + mu) / (1 - mu * tan_alpha); }
 

@@ -18,11 +18,6 @@ using namespace symcontact::testing;
 
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 /// The example's TOML with its .geo replaced by a wrapper that sets the mesh size, the condensation switched
 /// on or off and, when geometry_tolerance > 0, tight solver tolerances (the two paths follow different
 /// IPOPT iterates; what they agree to is what the tolerances of the fixed points and of the optimiser leave:
