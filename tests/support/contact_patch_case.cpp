@@ -123,7 +123,7 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
 }
 
 std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c) {
-  const std::string dir = ::testing::TempDir() + (c.dim == 3 ? "contact_patch_3d/" : "contact_patch/");
+  const std::string dir = test_temp_dir(c.dim == 3 ? "contact_patch_3d" : "contact_patch");
   write_text(dir, "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3));
   return solve_case(contact_patch_toml(c), dir);
 }

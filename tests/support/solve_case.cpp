@@ -1,5 +1,7 @@
 #include "support/solve_case.hpp"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -49,6 +51,15 @@ std::string read_text(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string test_temp_dir(const std::string& prefix) {
+  std::string id = "no_test";
+  if (const ::testing::TestInfo* t = ::testing::UnitTest::GetInstance()->current_test_info())
+    id = std::string(t->test_suite_name()) + "." + t->name();
+  for (char& c : id)
+    if (c == '/') c = '_';
+  return ::testing::TempDir() + prefix + "." + id + "/";
 }
 
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text) {

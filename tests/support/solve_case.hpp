@@ -34,6 +34,11 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
 /// The whole file at `path`; throws std::runtime_error when it cannot be read.
 std::string read_text(const std::string& path);
 
+/// A folder of its own for the running test: ::testing::TempDir() + prefix + "." + suite + "." + name + "/"
+/// ('/' of parameterised names replaced). Cases of one parameterised test run as separate processes
+/// under `ctest -j`: files written under a shared name race (one case meshes the other's .geo).
+std::string test_temp_dir(const std::string& prefix);
+
 /// Writes `text` to `dir/name` (creating dir) and returns the path.
 std::string write_text(const std::string& dir, const std::string& name, const std::string& text);
 

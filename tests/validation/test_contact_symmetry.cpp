@@ -70,7 +70,7 @@ std::string read(const std::string& path) {
 
 TEST(ContactSymmetry, SwappingBodiesChangesNothingCurvedHertz) {
   const std::string dir = std::string(SYMCONTACT_EXAMPLES) + "/hertz_2d";
-  const std::string wrap = ::testing::TempDir() + "symmetry_hertz/";
+  const std::string wrap = test_temp_dir("symmetry_hertz");
   write_text(wrap, "cyl.geo", "h = 0.008;\nInclude \"" + dir + "/two_cylinders.geo\";\n");
   std::string toml = read(dir + "/two_cylinders.toml");
   for (std::size_t at; (at = toml.find("two_cylinders.geo")) != std::string::npos;) toml.replace(at, 17, "cyl.geo");

@@ -52,7 +52,7 @@ Index nearest_node(const Eigen::MatrixXd& x, const Eigen::Vector2d& p, double& d
 
 TEST(CrushedRing2D, BoreTouchesItselfWithoutPenetrationKeepingMirrorSymmetryAndEquilibrium) {
   const std::string examples = std::string(SYMCONTACT_EXAMPLES) + "/crushed_ring_2d";
-  const std::string dir = ::testing::TempDir() + "crushed_ring_2d/";
+  const std::string dir = test_temp_dir("crushed_ring_2d");
   const int nl = 20, ns = 6, nr = 2;
   const double t = 0.2;  // wall thickness
   write_text(dir, "ring.geo",

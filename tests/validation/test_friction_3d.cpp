@@ -19,7 +19,7 @@ using namespace symcontact::testing;
 TEST(Friction3D, GrossSlipAlongAnOffAxisDirectionFollowsCoulomb) {
   const double mu = 0.3, p = 0.01, U = 0.03, angle = M_PI / 6;
   const Eigen::Vector3d d(std::cos(angle), std::sin(angle), 0.0);
-  const std::string dir = ::testing::TempDir() + "friction3d/";
+  const std::string dir = test_temp_dir("friction3d");
   write_text(dir, "block.geo",
              "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 2, 2, 1};\nMeshSize{PointsOf{Volume{1};}} = 0.34;\n"
              "Physical Volume(\"block\") = {1};\nPhysical Surface(\"bottom\") = {5};\nPhysical Surface(\"top\") = {6};\n");

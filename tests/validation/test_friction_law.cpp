@@ -88,7 +88,7 @@ std::string block_toml(const BlockCase& b) {
 }
 
 std::string case_dir(const std::string& name, int n) {
-  const std::string dir = ::testing::TempDir() + "v4_" + name + "/";
+  const std::string dir = test_temp_dir("v4_" + name);
   write_text(dir, "block.geo", "n = " + std::to_string(n) + ";\nInclude \"" + kBlockGeo + "\";\n");
   return dir;
 }
@@ -211,7 +211,7 @@ TEST(V4FrictionLaw, TractionOverPressureFollowsTheRegularisedLawAtEveryNodeAndSt
 }
 
 TEST(V4FrictionLaw, TractionOpposesSlipAndLawPointsAreWritten) {
-  const std::string dir = ::testing::TempDir() + "v4_law/";
+  const std::string dir = test_temp_dir("v4_law");
   const std::string csv = dir + "friction_law.csv";
   const LawCheck r = check_law(8, 2e-4, law_steps(), 1e-6, csv);
   std::printf("  wrote %s (plot: python3 tools/plot_friction_law.py %s docs/img/friction_law.png)\n", csv.c_str(),

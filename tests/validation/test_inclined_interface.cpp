@@ -56,7 +56,7 @@ struct StepResult {
 /// Solves `file` of `example_dir` (examples/inclined_2d or inclined_3d) on the mesh of size h, step by
 /// step, as `symcontact run` does. In 3D the reaction and the forces are their x and y components.
 std::vector<StepResult> solve_inclined(const std::string& file, double h, const std::string& example_dir = kExampleDir) {
-  const std::string dir = ::testing::TempDir() + "inclined_interface/";
+  const std::string dir = test_temp_dir("inclined_interface");
   char geo[512];
   std::snprintf(geo, sizeof geo, "h = %.9g;\nInclude \"%s/inclined.geo\";\n", h, example_dir.c_str());
   write_text(dir, "inclined_h.geo", geo);

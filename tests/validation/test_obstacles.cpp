@@ -68,7 +68,7 @@ double closing_pressure() {
 }
 
 std::unique_ptr<SolvedCase> ring_in_hole(int nc, int nr, double p_in) {
-  const std::string dir = ::testing::TempDir() + "obstacle_hole/";
+  const std::string dir = test_temp_dir("obstacle_hole");
   write_text(dir, "ring.geo",
              "nc = " + std::to_string(nc) + "; nr = " + std::to_string(nr) + ";\nInclude \"" + kRings + "\";\n");
   const std::string toml = R"(
@@ -218,7 +218,7 @@ std::string floor_geo(double x_from, double x_to, double lc) {
 const std::string kMeshObstacle = "[contact.obstacle]\ntype = \"mesh\"\nmesh = \"floor.geo\"\nboundary = \"floor\"\n";
 
 TEST(Obstacles, MeshedFloorGivesTheAnalyticPlaneAnswer) {
-  const std::string dir = ::testing::TempDir() + "obstacle_mesh/";
+  const std::string dir = test_temp_dir("obstacle_mesh");
   const HertzResult plane = hertz_measure(
       *hertz_half_model(dir, "[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0]\nnormal = [0.0, 1.0]\n"));
   std::printf("  analytic plane:       p0 = %.10f, force = (%.3e, %.12f)\n", plane.p0, plane.force[0], plane.force[1]);
@@ -235,7 +235,7 @@ TEST(Obstacles, MeshedFloorGivesTheAnalyticPlaneAnswer) {
 }
 
 TEST(Obstacles, MeshedFloorFacingAwayFromTheBodyIsNoContact) {
-  const std::string dir = ::testing::TempDir() + "obstacle_mesh_orientation/";
+  const std::string dir = test_temp_dir("obstacle_mesh_orientation");
   // The cut pushed down by 0.002: the cylinder is held by the symmetry line and the cut, the floor
   // only pushes back if it is seen.
   const auto pushed = [&](const std::string& obstacle) {
@@ -381,7 +381,7 @@ normal = [)" + num(3 * std::sin(th)) + ", " + num(3 * std::cos(th)) + "]\n";
 }
 
 TEST(Obstacles, TiltedPlaneWithNonUnitNormalMatchesTheUnturnedCase) {
-  const std::string dir = ::testing::TempDir() + "obstacle_tilted/";
+  const std::string dir = test_temp_dir("obstacle_tilted");
   const HertzResult half = hertz_measure(*hertz_half_model(
       dir, "[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0]\nnormal = [0.0, 1.0]\n"));
   const HertzResult flat = hertz_measure(*hertz_full_model(dir, 0.0));

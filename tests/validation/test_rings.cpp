@@ -18,7 +18,7 @@ const std::string kExample = std::string(SYMCONTACT_EXAMPLES) + "/rings_2d/";
 const double kPc = 0.02056264;
 
 double ring_pressure(int nc, int nr, const std::string& extra_toml = "") {
-  const std::string dir = ::testing::TempDir() + "rings/";
+  const std::string dir = test_temp_dir("rings");
   write_text(dir, "rings.geo",
              "nc = " + std::to_string(nc) + "; nr = " + std::to_string(nr) + ";\nInclude \"" + kExample + "rings.geo\";\n");
   std::ifstream in(kExample + "rings.toml");

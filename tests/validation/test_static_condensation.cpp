@@ -60,7 +60,7 @@ class CondensationChangesNothing : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CondensationChangesNothing, SameDisplacementsAndContactForces) {
   const Case& p = GetParam();
-  const std::string dir = ::testing::TempDir() + "condensation_" + p.example + "/";
+  const std::string dir = test_temp_dir(std::string("condensation_") + p.example);
   auto on = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true), dir);
   auto off = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, false), dir);
   EXPECT_GT(on->report.num_condensed, 0) << "the condensed path was not taken";

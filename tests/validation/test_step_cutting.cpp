@@ -62,7 +62,7 @@ max_step_cuts = )" + std::to_string(max_cuts) + "\n";
 }  // namespace
 
 TEST(StepCutting, AFailedStepSolvedInHalvesEqualsTwoLoadSteps) {
-  const std::string dir = ::testing::TempDir() + "step_cutting/";
+  const std::string dir = test_temp_dir("step_cutting");
   write_text(dir, "block.geo", kGeo);
   // Without cutting, the one step fails (the premise of the test).
   EXPECT_THROW(solve_case(problem(1, 0), dir), SolveError);
