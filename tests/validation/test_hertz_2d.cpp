@@ -2,6 +2,7 @@
 // a = sqrt(4 P R_eff / (π E*)), p0 = 2P/(π a); half models with P/2 on the cut.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -19,28 +20,62 @@ const double Estar = E / (1 - nu * nu);
 const double a_ref = std::sqrt(4 * P * 1.0 / (M_PI * Estar));  // R_eff = 1 (plane) — and the two-cylinder case
 const double p0_ref = 2 * P / (M_PI * a_ref);
 
+// VALIDATION.md's pressure profile: p at x/a = 0, .25, .5, .75, .9.
+const double kProfileAt[] = {0.0, 0.25, 0.5, 0.75, 0.9};
+const double kProfile[] = {0.059143, 0.057265, 0.051219, 0.039120, 0.025780};
+
 struct HertzMeasure {
-  double p0, a, force, h, min_constraint;
+  double p0, a, force, h, min_constraint, a_current;
+  double profile_error;  ///< max over kProfileAt of |p_h − p| / p0, p_h interpolated between nodes
 };
 
-/// p0: the largest nodal pressure. a: the largest |x| of a node with pressure > 1e-3 p0 — nodal, so it
+/// Positions are the nodes' reference positions X: the closed form is small-strain theory, which does
+/// not tell X from x = X + u; our contact acts in the current configuration, where at this load (p0/E ≈
+/// 0.06) the surface in contact has moved sideways by u_x ≈ −2.8 % of X (measured; a half-plane under the
+/// Hertz pressure has du_x/dx = −(1 − 2ν)(1 + ν) p0 / E = −3.1 % at the centre: Johnson, Contact
+/// Mechanics, 1985, ch. 2, the surface displacements of a half-plane under normal pressure). Measured at x the
+/// edge sits 2.1 % inside a on fine meshes; at X it converges to a (+0.07 % at h = 0.00085). The
+/// pressure is per reference length (lumped reference areas, surface_tractions.hpp), the same frame.
+/// p0: the largest nodal pressure. a: the largest |X| of a node with pressure > 1e-3 p0 — nodal, so it
 /// is known to one element, and its error bound falls with h.
 HertzMeasure measure(const SolvedCase& c, double h, int side_index = 0) {
-  HertzMeasure m{0, 0, 0, h, 0};
+  HertzMeasure m{0, 0, 0, h, 0, 0, 0};
   const auto& side = c.contact[0].sides[side_index];
   for (Index k = 0; k < side.pressure.size(); ++k) m.p0 = std::max(m.p0, side.pressure[k]);
   for (Index k = 0; k < side.pressure.size(); ++k)
-    if (side.pressure[k] > 1e-3 * m.p0) m.a = std::max(m.a, std::abs(side.x(0, k)));
+    if (side.pressure[k] > 1e-3 * m.p0) {
+      m.a = std::max(m.a, std::abs(side.X(0, k)));
+      m.a_current = std::max(m.a_current, std::abs(side.x(0, k)));
+    }
   m.force = std::abs(c.contact[0].total_force[1]);  // the load direction
   m.min_constraint = c.constraint_values.minCoeff();
+  // The profile: nodes with X ≥ 0 (the half model's side) sorted by X, linear between neighbours.
+  std::vector<std::pair<double, double>> xp;
+  for (Index k = 0; k < side.pressure.size(); ++k)
+    if (side.X(0, k) >= -1e-12) xp.emplace_back(side.X(0, k), side.pressure[k]);
+  std::sort(xp.begin(), xp.end());
+  for (int i = 0; i < 5; ++i) {
+    const double x = kProfileAt[i] * a_ref;
+    const auto hi = std::lower_bound(xp.begin(), xp.end(), std::make_pair(x, -1.0));
+    if (hi == xp.begin() || hi == xp.end()) {
+      m.profile_error = std::max(m.profile_error, hi == xp.begin() && hi->first <= x + 1e-12
+                                                      ? std::abs(hi->second - kProfile[i]) / p0_ref
+                                                      : 1.0);
+      continue;
+    }
+    const auto lo = hi - 1;
+    const double t = (x - lo->first) / (hi->first - lo->first);
+    const double p = (1 - t) * lo->second + t * hi->second;
+    m.profile_error = std::max(m.profile_error, std::abs(p - kProfile[i]) / p0_ref);
+  }
   return m;
 }
 
 void print(const HertzMeasure& m) {
-  std::printf("  h = %.4f: p0 = %.6f (err %+.3f%%), a = %.6f (err %+.3f%%, %.2f elements), 2x force = %.12f, "
-              "min constraint %.2e\n",
+  std::printf("  h = %.4f: p0 = %.6f (err %+.3f%%), a = %.6f (err %+.3f%%, %.2f elements; at the current "
+              "positions %+.3f%%), profile %.3f%% of p0, 2x force = %.12f, min constraint %.2e\n",
               m.h, m.p0, 100 * (m.p0 / p0_ref - 1), m.a, 100 * (m.a / a_ref - 1), std::abs(m.a - a_ref) / m.h,
-              2 * m.force, m.min_constraint);
+              100 * (m.a_current / a_ref - 1), 100 * m.profile_error, 2 * m.force, m.min_constraint);
 }
 
 std::string wrapper_geo(const std::string& geo, double h) {
@@ -52,7 +87,7 @@ std::string wrapper_geo(const std::string& geo, double h) {
 }  // namespace
 
 TEST(Hertz2D, CylinderOnRigidPlaneConvergesToClosedForm) {
-  const std::string dir = ::testing::TempDir() + "hertz2d_plane/";
+  const std::string dir = test_temp_dir("hertz2d_plane");
   std::vector<HertzMeasure> ms;
   for (double h : {0.008, 0.004, 0.002}) {
     write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h));
@@ -68,14 +103,17 @@ TEST(Hertz2D, CylinderOnRigidPlaneConvergesToClosedForm) {
     EXPECT_NEAR(m.p0, p0_ref, 0.03 * p0_ref);
     EXPECT_NEAR(m.a, a_ref, std::max(0.02 * a_ref, m.h));
     EXPECT_NEAR(2 * m.force, P, 1e-8 * P);
+    EXPECT_LT(m.profile_error, 0.03);  // VALIDATION.md's profile, to p0's tolerance (measured 1.0–0.45 %)
   }
   // Errors fall under refinement (p0 to the half-space model error of the finite disk, ~0.2 %).
   EXPECT_LT(std::abs(ms[1].p0 - p0_ref), std::abs(ms[0].p0 - p0_ref));
   EXPECT_LE(std::abs(ms[2].p0 - p0_ref), std::abs(ms[1].p0 - p0_ref));
+  EXPECT_LT(ms[1].profile_error, ms[0].profile_error);
+  EXPECT_LT(ms[2].profile_error, ms[1].profile_error);
 }
 
 TEST(Hertz2D, TwoElasticCylindersMatchTheSameClosedForm) {
-  const std::string dir = ::testing::TempDir() + "hertz2d_cylinders/";
+  const std::string dir = test_temp_dir("hertz2d_cylinders");
   std::vector<HertzMeasure> ms;
   for (double h : {0.008, 0.004}) {
     write_text(dir, "cyl.geo", wrapper_geo("two_cylinders.geo", h));
@@ -94,7 +132,9 @@ TEST(Hertz2D, TwoElasticCylindersMatchTheSameClosedForm) {
     EXPECT_NEAR(m.p0, p0_ref, 0.03 * p0_ref);
     EXPECT_NEAR(m.a, a_ref, std::max(0.02 * a_ref, m.h));
     EXPECT_NEAR(2 * m.force, P, 1e-8 * P);
+    EXPECT_LT(m.profile_error, 0.03);  // measured 1.3 % (h = 0.008), 0.47 % (0.004)
   }
+  EXPECT_LT(ms[1].profile_error, ms[0].profile_error);
   EXPECT_LT(std::abs(ms[1].p0 - p0_ref), std::abs(ms[0].p0 - p0_ref));
 }
 
@@ -103,7 +143,7 @@ TEST(Hertz2D, TwoElasticCylindersMatchTheSameClosedForm) {
 // polish on a non-quadratic energy — must reproduce the linear-elastic one on the same mesh to 1 % (p0,
 // a, and the pressure at every node, relative to p0) and carry the load exactly.
 TEST(Hertz2D, NeoHookeanCylinderAtSmallLoadMatchesLinearElasticity) {
-  const std::string dir = ::testing::TempDir() + "hertz2d_neo_hookean/";
+  const std::string dir = test_temp_dir("hertz2d_neo_hookean");
   const double h = 0.002, scale = 0.1;
   write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h));
   std::ifstream in(kExamples + "/cylinder_on_plane.toml");
@@ -135,7 +175,7 @@ TEST(Hertz2D, NeoHookeanCylinderAtSmallLoadMatchesLinearElasticity) {
   ASSERT_EQ(sl.pressure.size(), sn.pressure.size());
   double inner = 0.0, edge = 0.0;
   for (Index k = 0; k < sl.pressure.size(); ++k) {
-    double& worst = std::abs(sl.x(0, k)) <= 0.9 * ml.a ? inner : edge;
+    double& worst = std::abs(sl.X(0, k)) <= 0.9 * ml.a ? inner : edge;
     worst = std::max(worst, std::abs(sn.pressure[k] - sl.pressure[k]));
   }
   std::printf("  max nodal pressure difference / p0: %.3e inside 0.9 a, %.3e outside\n", inner / ml.p0, edge / ml.p0);

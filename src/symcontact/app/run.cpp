@@ -52,6 +52,7 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
     const char* xyz[] = {"x", "y", "z"};
     os << "side,surface,node";
     for (int i = 0; i < D; ++i) os << ',' << xyz[i];
+    for (int i = 0; i < D; ++i) os << ',' << xyz[i] << "_ref";
     os << ",gap,pressure";
     for (int i = 0; i < D; ++i) os << ",t" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",f" << xyz[i];
@@ -66,6 +67,7 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
       for (Index k = 0; k < s.num_nodes(); ++k) {
         os << (side == 0 ? "a" : "b") << ',' << s.name << ',' << s.nodes[k] + 1;
         for (int i = 0; i < D; ++i) os << ',' << sr.x(i, k);
+        for (int i = 0; i < D; ++i) os << ',' << sr.X(i, k);
         os << ',';
         if (std::isfinite(sr.gap[k])) os << sr.gap[k];
         os << ',' << sr.pressure[k];

@@ -92,6 +92,7 @@ std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMa
       const SurfaceTractions t = surface_tractions(s, dofs, u, contact_force, &normals);
       sr.surface = si;
       sr.x = t.x;
+      sr.X = s.X;
       sr.force = t.force;
       sr.pressure = t.pressure;
       sr.tangential = t.tangential;

@@ -28,7 +28,9 @@ namespace symcontact {
 
 struct ContactSideResult {
   int surface = -1;
-  Eigen::MatrixXd x;           ///< dim × n current positions
+  Eigen::MatrixXd x;           ///< dim × n current positions x = X + u
+  Eigen::MatrixXd X;           ///< dim × n reference positions: where a small-strain closed form (Hertz)
+                               ///< is stated; x − X is O(p/E) of the body's size (3 % of a in V1)
   Eigen::MatrixXd force;       ///< dim × n
   Eigen::VectorXd pressure;    ///< n
   Eigen::MatrixXd tangential;  ///< dim × n tangential traction

@@ -119,7 +119,7 @@ TEST_F(CliContact, HertzExampleWritesContactResults) {
   const auto column = [&](const char* name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
   };
-  EXPECT_EQ(line.rfind("side,surface,node,x,y,gap,pressure,", 0), 0u) << line;
+  EXPECT_EQ(line.rfind("side,surface,node,x,y,x_ref,y_ref,gap,pressure,", 0), 0u) << line;
   EXPECT_LT(column("pressure"), column("fx")) << line;
   EXPECT_EQ(column("fy"), column("fx") + 1) << line;
   ASSERT_EQ(column("status"), columns.size() - 1) << line;
@@ -227,7 +227,7 @@ TEST_F(CliContact, Hertz3DExampleWritesContactResults) {
   EXPECT_GT(area, 0.02);
   EXPECT_LT(area, 0.04);
   const std::string csv = read_text(out / "contact_floor_0001.csv");
-  EXPECT_EQ(csv.rfind("side,surface,node,x,y,z,gap,pressure,", 0), 0u) << csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(csv.rfind("side,surface,node,x,y,z,x_ref,y_ref,z_ref,gap,pressure,", 0), 0u) << csv.substr(0, csv.find('\n'));
   const std::string vtu = read_text(out / "sphere_0001.vtu");
   EXPECT_NE(vtu.find("Name=\"contact_pressure\""), std::string::npos);
 }
