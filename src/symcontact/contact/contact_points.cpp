@@ -249,7 +249,16 @@ std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::M
   G << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
   const Eigen::Matrix2d Ginv = G.inverse();
   const Polygon2 reference = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1)};
-  master.tree.for_each_overlap(facet_box(slave.facet_type, xf, search), [&](int mf) {
+  // The query: the box of the prism swept by the slave facet along ±search n0, i.e. the facet's box
+  // padded by search |n0_i| along axis i — not by search in every direction. A master facet that can
+  // give a cell within n0-distance `search` lies in that prism; padding the box by `search` laterally
+  // too returned (search / h)² facets per query on a fine master, O(n²) in all (docs/performance.md,
+  // "The search with a master surface").
+  BoundingVolumeHierarchy::Box query = facet_box(slave.facet_type, xf, 0.0);
+  const Eigen::Vector3d reach = search * n0.cwiseAbs();
+  query.min() -= reach;
+  query.max() += reach;
+  master.tree.for_each_overlap(query, [&](int mf) {
     const Index* mn = ms.facet(mf);
     const Eigen::Vector3d y0 = master.x.col(mn[0]), y1 = master.x.col(mn[1]), y2 = master.x.col(mn[2]);
     if ((y1 - y0).cross(y2 - y0).dot(n0) >= 0) return;  // not facing the slave facet

@@ -77,7 +77,8 @@ struct MortarCell {
 };
 
 /// The 3D segmentation of slave facet f (xs: current slave node positions): every master facet whose box
-/// overlaps the slave facet's box padded by `search` and whose vertex triangle faces the slave's.
+/// overlaps the box of the prism swept by the slave facet along ±search n0 (n0 the unit normal of its
+/// vertex triangle), whose vertex triangle faces the slave's and whose projection along n0 overlaps it.
 std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::MatrixXd& xs, Index f,
                                      const MasterGeometry& master, double search);
 
