@@ -21,6 +21,52 @@ constexpr Index kDirectLimit = 3000;
 /// A constraint is violated when its scaled value is below −kViolationTolerance × max |x|.
 constexpr double kViolationTolerance = 1e-10;
 
+/// M = L Lᵀ for the polish. A sparse M goes to CHOLMOD. A dense one — the condensed problem, whose Schur
+/// complement fills its |B| × |B| Hessian (ConstrainedProblem::hessian_is_dense()) — goes to Eigen's blocked
+/// dense Cholesky, which also gives the range-space solve below its triangular factor for a multi-column
+/// (BLAS-3) solve; CHOLMOD's supernodal factor of a full matrix is the same algorithm, but its solves come
+/// one column at a time.
+class SpdFactor {
+ public:
+  explicit SpdFactor(bool dense) : dense_(dense) {}
+  /// Factorises M = H + ρ AtA from their lower triangles (`dense_h`: H as a dense matrix, the dense path;
+  /// `h`: H sparse, the sparse one); false when M is not (numerically) positive definite.
+  bool compute(const SparseMatrix& h, const MatrixXd& dense_h, const SparseMatrix* AtA, double rho) {
+    if (!dense_) {
+      try {
+        sparse_.compute(AtA ? SparseMatrix(h + rho * *AtA) : h);
+        return true;
+      } catch (const SolveError&) {
+        return false;
+      }
+    }
+    MatrixXd m = dense_h;
+    if (AtA)
+      for (int j = 0; j < AtA->outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(*AtA, j); it; ++it) m(it.row(), j) += rho * it.value();
+    dense_factor_.compute(m);
+    return dense_factor_.info() == Eigen::Success;
+  }
+  VectorXd solve(const VectorXd& b) const { return dense_ ? VectorXd(dense_factor_.solve(b)) : sparse_.solve(b); }
+  bool dense() const { return dense_; }
+  /// Only when dense().
+  const Eigen::LLT<MatrixXd, Eigen::Lower>& dense_factor() const { return dense_factor_; }
+
+ private:
+  bool dense_;
+  CholeskySolver sparse_;
+  Eigen::LLT<MatrixXd, Eigen::Lower> dense_factor_;
+};
+
+/// The lower triangle of a compressed lower-triangular matrix as a dense matrix (zero above).
+MatrixXd dense_lower(const SparseMatrix& lower) {
+  MatrixXd m = MatrixXd::Zero(lower.rows(), lower.cols());
+  for (int j = 0; j < lower.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(lower, j); it; ++it)
+      if (it.row() >= j) m(it.row(), j) += it.value();
+  return m;
+}
+
 /// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
 /// solved directly (range space, `direct`) or by the method of multipliers, with M = H + ρ A_Sᵀ A_S
 /// (H alone when S is empty).
@@ -35,6 +81,9 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     VectorXd g;
     problem.gradient(xs, g);
     const double hdiag = H.diagonal().cwiseAbs().mean();
+    // The condensed problem's H is full: kept dense for the factorisations and the products below.
+    const bool dense = problem.hessian_is_dense();
+    const MatrixXd Hd = dense ? dense_lower(H) : MatrixXd();
     if (!(hdiag > 0)) return false;
     SparseMatrix AtA;
     double adiag = 0.0;
@@ -48,18 +97,16 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
     // If the balanced ρ does not make M definite, the large one is used (and the method of multipliers).
     double rho = 0.0;
-    CholeskySolver chol;
+    SpdFactor chol(dense);
     bool factorised = false;
     for (const double factor : {direct ? 1.0 : 1e6, 1e6}) {
       rho = AS.rows() > 0 ? factor * hdiag / adiag : 0.0;
-      try {
-        chol.compute(AS.rows() > 0 ? SparseMatrix(H + rho * AtA) : H);
+      if (chol.compute(H, Hd, AS.rows() > 0 ? &AtA : nullptr, rho)) {
         factorised = true;
         if (factor != 1.0) direct = false;
         break;
-      } catch (const SolveError&) {
-        if (AS.rows() == 0) break;
       }
+      if (AS.rows() == 0) break;
     }
     if (!factorised) return false;
     const VectorXd x_start = xs;
@@ -71,6 +118,28 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       //   (complete orthogonal decomposition) because dependent rows make it singular.
       const VectorXd cS = AS * xs + bS;
       const VectorXd ghat = g + rho * (AS.transpose() * cS);
+      if (chol.dense()) {
+        // With M = L Lᵀ dense and W = L⁻¹ A_Sᵀ (one multi-column triangular solve, BLAS-3 in Eigen's own
+        // kernels, whose summation order depends on the sizes only):
+        //   A_S M⁻¹ A_Sᵀ = Wᵀ W,   A_S M⁻¹ ĝ = Wᵀ v with v = L⁻¹ ĝ,   Δ = M⁻¹(A_Sᵀ λ − ĝ) = L⁻ᵀ (W λ − v).
+        // The same algebra as the sparse branch below, with one triangular solve of |S| columns instead of
+        // |S| + 2 pairs of single-column solves (measured on the two elastic cylinders: see
+        // docs/performance.md).
+        MatrixXd W = MatrixXd(AS.transpose());
+        chol.dense_factor().matrixL().solveInPlace(W);
+        MatrixXd S = MatrixXd::Zero(AS.rows(), AS.rows());
+        S.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose());
+        S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+        const VectorXd v = chol.dense_factor().matrixL().solve(ghat);
+        const VectorXd rhs = W.transpose() * v - cS;
+        Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
+        cod.setThreshold(1e-12);  // before compute(): see the sparse branch
+        cod.compute(S);
+        const VectorXd lambda = cod.solve(rhs);
+        xs += chol.dense_factor().matrixU().solve(VectorXd(W * lambda - v));
+        nu = lambda;
+        ++iterations;
+      } else {
       // Column by column: a multi-column solve goes through BLAS-3 kernels whose rounding depends on
       // buffer alignment, and the same input must give the same digits.
       const MatrixXd At = MatrixXd(AS.transpose());
@@ -89,6 +158,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       xs += dx;
       nu = lambda;
       ++iterations;
+      }
     } else {
     double best = std::numeric_limits<double>::infinity();
     int since_progress = 0;
@@ -96,7 +166,10 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       const VectorXd cS = AS * xs + bS;
       const VectorXd dx = chol.solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
       xs += dx;
-      g += H.selfadjointView<Eigen::Lower>() * dx;
+      if (dense)
+        g.noalias() += Hd.selfadjointView<Eigen::Lower>() * dx;
+      else
+        g += H.selfadjointView<Eigen::Lower>() * dx;
       ++iterations;
       if (AS.rows() == 0) break;
       const VectorXd cS1 = AS * xs + bS;
