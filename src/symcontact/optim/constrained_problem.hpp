@@ -26,6 +26,9 @@ class ConstrainedProblem {
   virtual void hessian_lower(const VectorXd& x, SparseMatrix& H) = 0;
   /// True when ∇²f does not depend on x.
   virtual bool hessian_is_constant() const { return false; }
+  /// True when ∇²f is (nearly) full, so that dense factorisations beat sparse ones on it (the condensed
+  /// problem's Schur complement). A hint for the active-set polish; results agree to round-off either way.
+  virtual bool hessian_is_dense() const { return false; }
   /// A (m × n, compressed) and b (m) of the constraints c(x) = A x + b ≥ 0.
   virtual const SparseMatrix& constraint_matrix() const = 0;
   virtual const VectorXd& constraint_offset() const = 0;

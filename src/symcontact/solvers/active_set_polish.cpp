@@ -3,12 +3,28 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <new>
 #include <limits>
 #include <vector>
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/solvers/cholesky.hpp"
+
+// BLAS and LAPACK (Fortran interfaces; column-major, every argument by address).
+extern "C" {
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dtrsv_(const char* uplo, const char* trans, const char* diag, const int* n, const double* a, const int* lda,
+            double* x, const int* incx);
+void dsymv_(const char* uplo, const int* n, const double* alpha, const double* a, const int* lda, const double* x,
+            const int* incx, const double* beta, double* y, const int* incy);
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+}
 
 namespace symcontact {
 
@@ -20,6 +36,110 @@ constexpr Index kDirectLimit = 3000;
 
 /// A constraint is violated when its scaled value is below −kViolationTolerance × max |x|.
 constexpr double kViolationTolerance = 1e-10;
+
+/// A dense column-major matrix in 64-byte aligned storage, for the BLAS/LAPACK calls below. OpenBLAS's
+/// kernels round differently with the alignment of their operands (measured with OpenBLAS 0.3.21: dpotrf,
+/// dtrsm and dsyrk on the same data placed 16, 24 or 32 bytes past a 64-byte boundary give other last
+/// digits), so every operand handed to them lives in one of these: the same input gives the same digits.
+class AlignedMatrix {
+ public:
+  AlignedMatrix(Index rows, Index cols)
+      : rows_(rows), cols_(cols),
+        data_(static_cast<double*>(std::aligned_alloc(64, ((std::max<Index>(rows * cols, 1) * 8 + 63) / 64) * 64))) {
+    if (!data_) throw std::bad_alloc();
+  }
+  AlignedMatrix(const AlignedMatrix&) = delete;
+  AlignedMatrix& operator=(const AlignedMatrix&) = delete;
+  ~AlignedMatrix() { std::free(data_); }
+  Eigen::Map<MatrixXd> map() { return Eigen::Map<MatrixXd>(data_, rows_, cols_); }
+  Eigen::Map<const MatrixXd> map() const { return Eigen::Map<const MatrixXd>(data_, rows_, cols_); }
+  double* data() { return data_; }
+  const double* data() const { return data_; }
+
+ private:
+  Index rows_, cols_;
+  double* data_;
+};
+
+/// Triangular solves with the lower factor L of a dense SPD matrix (LAPACK dpotrf storage, column-major, leading
+/// dimension n): B ← L⁻¹ B (`transpose` false) or B ← L⁻ᵀ B, for the n × k matrix B.
+void lower_solve(const AlignedMatrix& L, int n, bool transpose, AlignedMatrix& B, int k) {
+  const double one = 1.0;
+  dtrsm_("L", "L", transpose ? "T" : "N", "N", &n, &k, &one, L.data(), &n, B.data(), &n);
+}
+
+/// M = L Lᵀ for the polish. A sparse M goes to CHOLMOD. A dense one — the condensed problem, whose Schur
+/// complement fills its |B| × |B| Hessian (ConstrainedProblem::hessian_is_dense()) — goes to LAPACK's dpotrf
+/// (OpenBLAS here), which also leaves the triangular factor for the multi-column (BLAS-3) range-space solve
+/// below; CHOLMOD's supernodal factor of a full matrix is the same algorithm, but its solves come one column
+/// at a time.
+class SpdFactor {
+ public:
+  explicit SpdFactor(bool dense) : dense_(dense) {}
+  /// Factorises M = H + ρ AtA from their lower triangles (`dense_h`: H as a dense matrix, the dense path;
+  /// `h`: H sparse, the sparse one); false when M is not (numerically) positive definite.
+  bool compute(const SparseMatrix& h, const AlignedMatrix* dense_h, const SparseMatrix* AtA, double rho) {
+    if (!dense_) {
+      try {
+        sparse_.compute(AtA ? SparseMatrix(h + rho * *AtA) : h);
+        return true;
+      } catch (const SolveError&) {
+        return false;
+      }
+    }
+    n_ = static_cast<int>(h.rows());
+    factor_ = std::make_unique<AlignedMatrix>(n_, n_);
+    auto m = factor_->map();
+    m = dense_h->map();
+    if (AtA)
+      for (int j = 0; j < AtA->outerSize(); ++j)
+        for (SparseMatrix::InnerIterator it(*AtA, j); it; ++it) m(it.row(), j) += rho * it.value();
+    int info = 0;
+    dpotrf_("L", &n_, factor_->data(), &n_, &info);
+    return info == 0;
+  }
+  VectorXd solve(const VectorXd& b) const {
+    if (!dense_) return sparse_.solve(b);
+    AlignedMatrix x(n_, 1);
+    x.map() = b;
+    const int inc = 1;
+    dtrsv_("L", "N", "N", &n_, factor_->data(), &n_, x.data(), &inc);
+    dtrsv_("L", "T", "N", &n_, factor_->data(), &n_, x.data(), &inc);
+    return x.map();
+  }
+  bool dense() const { return dense_; }
+  int size() const { return n_; }
+  /// L of M = L Lᵀ in its lower triangle (only when dense()).
+  const AlignedMatrix& dense_factor() const { return *factor_; }
+
+ private:
+  bool dense_;
+  int n_ = 0;
+  CholeskySolver sparse_;
+  std::unique_ptr<AlignedMatrix> factor_;
+};
+
+/// The lower triangle of a compressed lower-triangular matrix as a dense matrix (zero above).
+std::unique_ptr<AlignedMatrix> dense_lower(const SparseMatrix& lower) {
+  auto d = std::make_unique<AlignedMatrix>(lower.rows(), lower.cols());
+  auto m = d->map();
+  m.setZero();
+  for (int j = 0; j < lower.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(lower, j); it; ++it)
+      if (it.row() >= j) m(it.row(), j) += it.value();
+  return d;
+}
+
+/// y ← y + H x for H symmetric, given by its lower triangle (dsymv).
+void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y) {
+  const int n = static_cast<int>(x.size()), inc = 1;
+  AlignedMatrix xa(n, 1), ya(n, 1);
+  xa.map() = x;
+  ya.map() = y;
+  const double one = 1.0;
+  dsymv_("L", &n, &one, H.data(), &n, xa.data(), &inc, &one, ya.data(), &inc);
+  y = ya.map();
+}
 
 /// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
 /// solved directly (range space, `direct`) or by the method of multipliers, with M = H + ρ A_Sᵀ A_S
@@ -35,6 +155,9 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     VectorXd g;
     problem.gradient(xs, g);
     const double hdiag = H.diagonal().cwiseAbs().mean();
+    // The condensed problem's H is full: kept dense for the factorisations and the products below.
+    const bool dense = problem.hessian_is_dense();
+    const std::unique_ptr<AlignedMatrix> Hd = dense ? dense_lower(H) : nullptr;
     if (!(hdiag > 0)) return false;
     SparseMatrix AtA;
     double adiag = 0.0;
@@ -48,18 +171,16 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
     // If the balanced ρ does not make M definite, the large one is used (and the method of multipliers).
     double rho = 0.0;
-    CholeskySolver chol;
+    SpdFactor chol(dense);
     bool factorised = false;
     for (const double factor : {direct ? 1.0 : 1e6, 1e6}) {
       rho = AS.rows() > 0 ? factor * hdiag / adiag : 0.0;
-      try {
-        chol.compute(AS.rows() > 0 ? SparseMatrix(H + rho * AtA) : H);
+      if (chol.compute(H, Hd.get(), AS.rows() > 0 ? &AtA : nullptr, rho)) {
         factorised = true;
         if (factor != 1.0) direct = false;
         break;
-      } catch (const SolveError&) {
-        if (AS.rows() == 0) break;
       }
+      if (AS.rows() == 0) break;
     }
     if (!factorised) return false;
     const VectorXd x_start = xs;
@@ -71,6 +192,38 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       //   (complete orthogonal decomposition) because dependent rows make it singular.
       const VectorXd cS = AS * xs + bS;
       const VectorXd ghat = g + rho * (AS.transpose() * cS);
+      if (chol.dense()) {
+        // With M = L Lᵀ dense and W = L⁻¹ A_Sᵀ (one multi-column triangular solve, BLAS-3; operands
+        // 64-byte aligned, see AlignedMatrix):
+        //   A_S M⁻¹ A_Sᵀ = Wᵀ W,   A_S M⁻¹ ĝ = Wᵀ v with v = L⁻¹ ĝ,   Δ = M⁻¹(A_Sᵀ λ − ĝ) = L⁻ᵀ (W λ − v).
+        // The same algebra as the sparse branch below, with one triangular solve of |S| columns instead of
+        // |S| + 2 pairs of single-column solves (measured on the two elastic cylinders: see
+        // docs/performance.md).
+        const int n = chol.size(), m = static_cast<int>(AS.rows());
+        const AlignedMatrix& L = chol.dense_factor();
+        AlignedMatrix W(n, m);
+        W.map() = MatrixXd(AS.transpose());
+        lower_solve(L, n, false, W, m);
+        AlignedMatrix WtW(m, m);
+        const double one = 1.0, zero = 0.0;
+        dsyrk_("L", "T", &m, &n, &one, W.data(), &n, &zero, WtW.data(), &m);
+        MatrixXd S = WtW.map();
+        S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+        AlignedMatrix v(n, 1);
+        v.map() = ghat;
+        lower_solve(L, n, false, v, 1);
+        const VectorXd rhs = W.map().transpose() * v.map() - cS;
+        Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
+        cod.setThreshold(1e-12);  // before compute(): see the sparse branch
+        cod.compute(S);
+        const VectorXd lambda = cod.solve(rhs);
+        AlignedMatrix dx(n, 1);
+        dx.map() = W.map() * lambda - v.map();
+        lower_solve(L, n, true, dx, 1);
+        xs += dx.map();
+        nu = lambda;
+        ++iterations;
+      } else {
       // Column by column: a multi-column solve goes through BLAS-3 kernels whose rounding depends on
       // buffer alignment, and the same input must give the same digits.
       const MatrixXd At = MatrixXd(AS.transpose());
@@ -89,6 +242,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       xs += dx;
       nu = lambda;
       ++iterations;
+      }
     } else {
     double best = std::numeric_limits<double>::infinity();
     int since_progress = 0;
@@ -96,7 +250,10 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       const VectorXd cS = AS * xs + bS;
       const VectorXd dx = chol.solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
       xs += dx;
-      g += H.selfadjointView<Eigen::Lower>() * dx;
+      if (dense)
+        symmetric_multiply_add(*Hd, dx, g);
+      else
+        g += H.selfadjointView<Eigen::Lower>() * dx;
       ++iterations;
       if (AS.rows() == 0) break;
       const VectorXd cS1 = AS * xs + bS;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "symcontact/core/error.hpp"
+
 namespace symcontact {
 
 namespace {
@@ -70,8 +72,22 @@ CondensedProblem::CondensedProblem(ReducedProblem& bulk, const StaticCondensatio
   A_.setFromTriplets(t.begin(), t.end());
   const auto& free_index = bulk_.free_index();
   dof_to_b_.assign(free_index.size(), -1);
+  b_dof_.resize(B.size());
   for (std::size_t d = 0; d < free_index.size(); ++d)
-    if (free_index[d] >= 0) dof_to_b_[d] = pos[free_index[d]];
+    if (free_index[d] >= 0 && pos[free_index[d]] >= 0) {
+      dof_to_b_[d] = pos[free_index[d]];
+      b_dof_[pos[free_index[d]]] = static_cast<Index>(d);
+    }
+  if (!extras_.empty()) {
+    u_ = bulk_.expand(x_ref_);
+    gu_ = VectorXd::Zero(u_.size());
+    for (const auto& term : extras_) {
+      const std::vector<Index> s = support_of(*term, u_);
+      support_.insert(support_.end(), s.begin(), s.end());
+    }
+    std::sort(support_.begin(), support_.end());
+    support_.erase(std::unique(support_.begin(), support_.end()), support_.end());
+  }
 }
 
 VectorXd CondensedProblem::restrict(const VectorXd& x) const {
@@ -92,18 +108,16 @@ VectorXd CondensedProblem::expand(const VectorXd& y) const {
   return x;
 }
 
-VectorXd CondensedProblem::full_dofs(const VectorXd& y) const {
-  VectorXd x = x_ref_;
-  const auto& B = sc_.boundary();
-  for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
-  return bulk_.expand(x);
+const VectorXd& CondensedProblem::full_dofs(const VectorXd& y) {
+  for (std::size_t k = 0; k < b_dof_.size(); ++k) u_[b_dof_[k]] = y[k];
+  return u_;
 }
 
 double CondensedProblem::objective(const VectorXd& y) {
   const SparseMatrix& S = sc_.schur_lower();
   double v = load_->f0 + load_->g_hat.dot(y) + 0.5 * y.dot(S.selfadjointView<Eigen::Lower>() * y);
   if (!extras_.empty()) {
-    const VectorXd u = full_dofs(y);
+    const VectorXd& u = full_dofs(y);
     for (const auto& t : extras_) v += t->value(u);
   }
   return v;
@@ -113,11 +127,13 @@ void CondensedProblem::gradient(const VectorXd& y, VectorXd& g) {
   const SparseMatrix& S = sc_.schur_lower();
   g = load_->g_hat + S.selfadjointView<Eigen::Lower>() * y;
   if (extras_.empty()) return;
-  const VectorXd u = full_dofs(y);
-  VectorXd gu = VectorXd::Zero(u.size());
-  for (const auto& t : extras_) t->add_gradient(u, gu);
-  for (std::size_t d = 0; d < dof_to_b_.size(); ++d)
-    if (dof_to_b_[d] >= 0) g[dof_to_b_[d]] += gu[d];
+  const VectorXd& u = full_dofs(y);
+  for (const auto& t : extras_) t->add_gradient(u, gu_);
+  for (const Index d : support_) {
+    if (dof_to_b_[d] >= 0) g[dof_to_b_[d]] += gu_[d];
+    gu_[d] = 0.0;
+  }
+  SYMCONTACT_ASSERT(gu_.isZero(0.0));  // the extras touched nothing outside their support
 }
 
 void CondensedProblem::hessian_lower(const VectorXd& y, SparseMatrix& H) {
@@ -126,7 +142,7 @@ void CondensedProblem::hessian_lower(const VectorXd& y, SparseMatrix& H) {
     H = S;
     return;
   }
-  const VectorXd u = full_dofs(y);
+  const VectorXd& u = full_dofs(y);
   ReducedTripletSink sink(dof_to_b_);
   for (const auto& t : extras_) t->add_hessian(u, sink);
   H = S + sink.to_lower_matrix(static_cast<Index>(sc_.boundary().size()));

@@ -19,7 +19,11 @@
 ///
 /// Contract: the extra terms must not depend on interior DOFs (the constructor does not check it;
 /// support_of() below gives the DOF support to build B with). They are evaluated at a full vector whose
-/// interior holds `x_reference`'s values.
+/// interior holds `x_reference`'s values. That vector is built once, in the constructor; a callback only
+/// writes its |B| entries, and gathers the extras' gradient from their support (the DOFs of their Hessian
+/// blocks at x_reference, as support_of() returns them), so that a callback costs O(|B| + support), not
+/// O(n): the extras must not touch other DOFs at other points (true of the friction term, whose points and
+/// facets are frozen by the geometry step).
 
 #include <memory>
 #include <vector>
@@ -57,6 +61,7 @@ class CondensedProblem : public ConstrainedProblem {
   void gradient(const VectorXd& y, VectorXd& g) override;
   void hessian_lower(const VectorXd& y, SparseMatrix& H) override;
   bool hessian_is_constant() const override { return extras_.empty(); }
+  bool hessian_is_dense() const override { return true; }  ///< S = K_BB − K_BI K_II⁻¹ K_IB is full
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
@@ -64,7 +69,7 @@ class CondensedProblem : public ConstrainedProblem {
   VectorXd expand(const VectorXd& y) const;    ///< x with x_B = y and x_I = x_I(y) (one interior solve)
 
  private:
-  VectorXd full_dofs(const VectorXd& y) const;  ///< u for the extras: x_reference with x_B = y, expanded
+  const VectorXd& full_dofs(const VectorXd& y);  ///< u for the extras: x_reference with x_B = y, expanded
 
   ReducedProblem& bulk_;
   const StaticCondensation& sc_;
@@ -74,6 +79,10 @@ class CondensedProblem : public ConstrainedProblem {
   SparseMatrix A_;          ///< A_B
   VectorXd b_;
   std::vector<Index> dof_to_b_;  ///< global DOF → position in B or −1 (for the extras' Hessians)
+  std::vector<Index> b_dof_;     ///< position in B → global DOF
+  std::vector<Index> support_;   ///< global DOFs the extras touch (sorted, unique)
+  VectorXd u_;                   ///< full DOFs: expanded x_reference, B entries of the last callback
+  VectorXd gu_;                  ///< full-size gradient buffer of the extras, zero outside a gradient() call
 };
 
 /// The global DOFs an energy term depends on: those of its Hessian blocks at u (an element-block

@@ -338,9 +338,17 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       ScopedPhase t(rep.times, "polish");
       // Closing the active set fails for good when the two families of a curved symmetric pair cannot
       // all be closed at once; after one failure this solve only balances forces (cheaper).
+      // With a non-quadratic energy (friction), a rejection in the previous solve of the run is taken as
+      // this solve's too (ContactWorkspace::closing_polish_rejected).
+      const bool nonquadratic = !target.hessian_is_constant();
+      if (closing_polish_works && nonquadratic && workspace->closing_polish_rejected) {
+        closing_polish_works = false;
+        log.detail("  active-set polish (closing) rejected in the previous solve; balancing forces only");
+      }
       PolishResult pr;
       if (closing_polish_works) {
         pr = polish_active_set(target, res.x, res.multipliers);
+        if (nonquadratic) workspace->closing_polish_rejected = !pr.applied;
         if (!pr.applied) {
           closing_polish_works = false;
           log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");

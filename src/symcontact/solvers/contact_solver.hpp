@@ -43,6 +43,11 @@ struct ContactWorkspace {
   VectorXd multipliers;
   std::vector<int> row_family;
   std::vector<Index> row_node;
+  /// The closing polish was rejected in the previous solve with a non-quadratic energy (friction): the
+  /// next such solve balances forces only and skips that attempt. On the inclined interface with Coulomb
+  /// friction it was rejected in every solve (the point it reaches violates a constraint outside its set,
+  /// and for a non-quadratic energy the set does not grow), at more than half the contact time.
+  bool closing_polish_rejected = false;
 };
 
 struct ContactSolveOptions {
