@@ -82,7 +82,7 @@ def main(argv=None):
     if ax_ratio is None:
         ax.set_xlabel("load step")
     else:
-        ax_ratio.axhline(args.ratio, color="k", ls="--", lw=1, label=f"mu = {args.ratio:g}")
+        ax_ratio.axhline(args.ratio, color="k", ls="--", lw=1, label=f"friction coefficient {args.ratio:g}")
         ax_ratio.set_xlabel("load step")
         ax_ratio.set_ylabel("|R_x / R_y|")
         ax_ratio.grid(True, alpha=0.3)

@@ -6,7 +6,8 @@
 //   rc: radius of a fillet rounding the slab's top-left corner (0: sharp). The die overhangs that corner
 //       and friction drags it under the die (ironing_mu0.3.toml); the fillet keeps the surface normal
 //       continuous where the surface folds.
-//   hc: element size at that corner (around the fillet's centre, growing to hs within 1.5); 0: hs.
+//   hc: element size at that corner (within 0.2 + rc of the fillet's centre, growing linearly to hs at
+//       1.5 + rc); 0: hs everywhere on the slab's top.
 If (!Exists(hs))
   hs = 0.15;
 EndIf
@@ -47,7 +48,8 @@ Else
 EndIf
 Plane Surface(1) = {1};
 If (hc > 0)
-  // Size hc within 0.2 of the corner (of the fillet's centre when rounded), growing linearly to hs at 1.5.
+  // Size hc within 0.2 + rc of the corner (of the fillet's centre when rounded), growing linearly to hs at
+  // 1.5 + rc; the point sizes beyond (StopAtDistMax).
   Field[1] = Distance;
   Field[1].PointsList = {(rc > 0 ? 6 : 4)};
   Field[2] = Threshold;
