@@ -4,12 +4,16 @@ summary.json files, one pair of curves per file, and prints the mean ratio |R_x 
 steps (for ironing: the steady-sliding ratio of the frictional case, to set beside mu).
 
     tools/plot_reactions.py OUT.png SUMMARY.json [SUMMARY.json ...] [--labels L ...] --body die
-                            [--boundary die_ends] [--steady FIRST LAST] [--title T]
+                            [--boundary die_ends] [--steady FIRST LAST] [--ratio MU] [--title T]
 
 R is the sum of the "force" of every entry of steps[k].reactions whose "body" is `--body` (and, with
 `--boundary`, whose "boundary" is that group), as in tools/plot_reaction_ratio.py. The force is the one
 the supports exert on the body; the plot shows its opposite, the force the body exerts on its supports
 (for a die pressed into a slab: positive R_y pushes up).
+
+With `--ratio MU`, a second panel below shows |R_x / R_y| of every file against the load step, with the
+friction coefficient MU as a dashed line (for frictional ironing: the ratio in steady sliding is MU plus
+the ploughing of the groove).
 
 Needs only python3 and matplotlib (Debian: python3-matplotlib).
 """
@@ -37,6 +41,8 @@ def main(argv=None):
     ap.add_argument("--boundary", default=None, help="only the reactions of this boundary group")
     ap.add_argument("--steady", nargs=2, type=int, default=None, metavar=("FIRST", "LAST"),
                     help="steps over which the mean |R_x / R_y| is printed")
+    ap.add_argument("--ratio", type=float, default=None, metavar="MU",
+                    help="add a panel with |R_x / R_y| and a dashed line at MU")
     ap.add_argument("--title", default=None, help="picture title")
     args = ap.parse_args(argv)
     if args.labels is not None and len(args.labels) != len(args.files):
@@ -49,23 +55,38 @@ def main(argv=None):
         print(f"plot_reactions: {e}", file=sys.stderr)
         return 2
 
-    fig, ax = plt.subplots(figsize=(7.5, 4.6), dpi=130)
+    if args.ratio is None:
+        fig, ax = plt.subplots(figsize=(7.5, 4.6), dpi=130)
+        ax_ratio = None
+    else:
+        fig, (ax, ax_ratio) = plt.subplots(2, 1, figsize=(7.5, 7.0), dpi=130, sharex=True,
+                                           gridspec_kw={"height_ratios": [3, 2]})
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for i, (label, points) in enumerate(zip(labels, series)):
         colour = colours[i % len(colours)]
         steps = [p[0] for p in points]
         ax.plot(steps, [-p[2] for p in points], "-", color=colour, label=f"{label}: vertical")
         ax.plot(steps, [-p[1] for p in points], "--", color=colour, label=f"{label}: horizontal")
+        if ax_ratio is not None:
+            sel = [p for p in points if p[2] != 0.0]
+            ax_ratio.plot([p[0] for p in sel], [abs(p[1] / p[2]) for p in sel], "-", color=colour, label=label)
         if args.steady:
             first, last = args.steady
             sel = [p for p in points if first <= p[0] <= last and p[2] != 0.0]
             if sel:
                 ratio = sum(abs(p[1] / p[2]) for p in sel) / len(sel)
                 print(f"plot_reactions: {label}: mean |Rx/Ry| over steps {first}-{last} = {ratio:.4f}")
-    ax.set_xlabel("load step")
     ax.set_ylabel("force on the supports")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
+    if ax_ratio is None:
+        ax.set_xlabel("load step")
+    else:
+        ax_ratio.axhline(args.ratio, color="k", ls="--", lw=1, label=f"friction coefficient {args.ratio:g}")
+        ax_ratio.set_xlabel("load step")
+        ax_ratio.set_ylabel("|R_x / R_y|")
+        ax_ratio.grid(True, alpha=0.3)
+        ax_ratio.legend(loc="best", fontsize=8)
     ax.set_title(args.title or f"Reactions of body {args.body!r}", fontsize=11)
     fig.tight_layout()
     try:
