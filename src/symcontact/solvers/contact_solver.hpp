@@ -53,6 +53,13 @@ struct ContactWorkspace {
 struct ContactSolveOptions {
   double geometry_tolerance = 1e-6;
   int max_geometry_iterations = 50;
+  /// Memory of the Anderson acceleration of the geometry fixed point (anderson_acceleration.hpp); 0: the
+  /// plain iteration. Quadratic energies (linear elasticity) only. It is applied only between iterations
+  /// with the same constraint rows, each closed exactly by the active-set polish on the same active set
+  /// (there the map U_n → U_{n+1} = G(U_n) is smooth); any other iteration restarts it. The fixed point is
+  /// the same: the solve still stops when ‖G(U_n) − U_n‖∞ / ‖G(U_n)‖∞ is below `geometry_tolerance`, and
+  /// returns G(U_n).
+  int geometry_acceleration = 5;
   /// IPOPT settings. An interior point leaves every active constraint open by about μ_barrier/μ_i; with
   /// the nearly dependent families of the symmetric formulation some μ_i are small and the interface
   /// stays open by ~1e5·tol (relative, measured on the V3 patch test) — hence the polish below.
