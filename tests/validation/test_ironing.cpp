@@ -25,9 +25,27 @@
 using namespace symcontact;
 using namespace symcontact::testing;
 
+namespace {
+
+/// Support reactions of every step summed per body: the die's and the slab's (all other conditions).
+std::pair<std::vector<Eigen::Vector2d>, std::vector<Eigen::Vector2d>> die_and_slab_reactions(const SolvedCase& c) {
+  const auto& boundaries = c.model->dirichlet_boundaries();
+  const int die = c.model->body_index("die");
+  std::vector<Eigen::Vector2d> r_die, r_slab;
+  for (const auto& step : c.reactions) {
+    Eigen::Vector2d d = Eigen::Vector2d::Zero(), s = Eigen::Vector2d::Zero();
+    for (std::size_t k = 0; k < step.size(); ++k) (boundaries[k].body == die ? d : s) += step[k].head<2>();
+    r_die.push_back(d);
+    r_slab.push_back(s);
+  }
+  return {r_die, r_slab};
+}
+
+}  // namespace
+
 TEST(Ironing2D, FrictionlessRunsThroughEveryStepWithoutPenetrationOrOscillation) {
   const std::string examples = std::string(SYMCONTACT_EXAMPLES) + "/ironing_2d";
-  const std::string dir = ::testing::TempDir() + "ironing2d/";
+  const std::string dir = test_temp_dir("ironing2d");
   const double hs = 0.25, hd = 0.12;
   char head[96];
   std::snprintf(head, sizeof head, "hs = %g;\nhd = %g;\n", hs, hd);
@@ -38,15 +56,7 @@ TEST(Ironing2D, FrictionlessRunsThroughEveryStepWithoutPenetrationOrOscillation)
   ASSERT_EQ(c->reactions.size(), 110u);
 
   // Reactions per body (each body's conditions summed).
-  const auto& boundaries = c->model->dirichlet_boundaries();
-  const int die = c->model->body_index("die");
-  std::vector<Eigen::Vector2d> r_die, r_slab;
-  for (const auto& step : c->reactions) {
-    Eigen::Vector2d d = Eigen::Vector2d::Zero(), s = Eigen::Vector2d::Zero();
-    for (std::size_t k = 0; k < step.size(); ++k) (boundaries[k].body == die ? d : s) += step[k].head<2>();
-    r_die.push_back(d);
-    r_slab.push_back(s);
-  }
+  const auto [r_die, r_slab] = die_and_slab_reactions(*c);
   double worst_balance = 0.0, worst_wiggle = 0.0, worst_gap = 0.0;
   for (std::size_t k = 0; k < r_die.size(); ++k) {
     worst_balance = std::max(worst_balance, (r_die[k] + r_slab[k]).norm() / r_die[k].norm());
@@ -99,7 +109,7 @@ TEST(Ironing2D, FrictionlessRunsThroughEveryStepWithoutPenetrationOrOscillation)
 //    slip increment below 7α): the die slides over the slab (measured: 20 or more in contact, none sticking).
 TEST(Ironing2D, FrictionalRunsThroughEveryStepWithoutPenetrationOrOscillation) {
   const std::string examples = std::string(SYMCONTACT_EXAMPLES) + "/ironing_2d";
-  const std::string dir = ::testing::TempDir() + "ironing2d_mu03/";
+  const std::string dir = test_temp_dir("ironing2d_mu03");
   const double hs = 0.25, hd = 0.12, rc = 0.2, hc = 0.1, mu = 0.3;
   const std::size_t first = 60 - 1;  // first step of steady sliding, 0-based
   char head[128];
@@ -108,15 +118,7 @@ TEST(Ironing2D, FrictionalRunsThroughEveryStepWithoutPenetrationOrOscillation) {
   auto c = solve_case(read_text(examples + "/ironing_mu0.3.toml"), dir);
   ASSERT_EQ(c->reactions.size(), 110u);
 
-  const auto& boundaries = c->model->dirichlet_boundaries();
-  const int die = c->model->body_index("die");
-  std::vector<Eigen::Vector2d> r_die, r_slab;
-  for (const auto& step : c->reactions) {
-    Eigen::Vector2d d = Eigen::Vector2d::Zero(), s = Eigen::Vector2d::Zero();
-    for (std::size_t k = 0; k < step.size(); ++k) (boundaries[k].body == die ? d : s) += step[k].head<2>();
-    r_die.push_back(d);
-    r_slab.push_back(s);
-  }
+  const auto [r_die, r_slab] = die_and_slab_reactions(*c);
   double worst_balance = 0.0, worst_wiggle = 0.0, worst_gap = 0.0, worst_steady_gap = 0.0, lo = 1e300, hi = 0.0,
          mean = 0.0;
   int sticking = 0;
