@@ -18,6 +18,7 @@
 #include <toml++/toml.h>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/model/toml_parse.hpp"
 
 namespace symcontact {
 
@@ -948,124 +949,10 @@ class Reader {
   std::string base_dir_;
 };
 
-// ---- a guard in front of toml++ --------------------------------------------------------------
-
-/// Rejects the non-ASCII characters that toml++ 3.3 (Debian 12) cannot look at safely. Its
-/// is_non_ascii_horizontal_whitespace() reaches __builtin_unreachable() for U+00A1 to U+0499 (Latin-1,
-/// Latin Extended, Greek, Cyrillic: "ν = 0.3" is enough), which is undefined behaviour; it is called
-/// on characters outside strings and comments, and in multi-line basic strings after a backslash.
-/// Outside strings and comments TOML allows ASCII only (bare keys are A-Z a-z 0-9 _ -), so rejecting
-/// every non-ASCII character there changes no valid file; in a multi-line basic string, a non-ASCII
-/// character right after a backslash (and the white space and line breaks that follow it) is
-/// rejected too: an invalid escape, or a line-ending backslash followed by such a character (valid
-/// TOML, but rare; the message says how to write it). Found by fuzz/fuzz_problem_reader under UBSan.
-/// A quote inside a bare token does not open a string (toml++ does not read one there either).
-/// Throws InputError(file, "", "line L, column C: ...") like a syntax error.
-void check_toml_characters(const std::string& text, const std::string& file) {
-  const std::size_t n = text.size();
-  auto is_continuation = [&](std::size_t k) { return (static_cast<unsigned char>(text[k]) & 0xC0) == 0x80; };
-  auto fail_at = [&](std::size_t at, const std::string& what) {
-    std::size_t line = 1, column = 1;
-    for (std::size_t k = 0; k < at; ++k) {
-      if (text[k] == '\n') {
-        ++line;
-        column = 1;
-      } else if (!is_continuation(k)) {
-        ++column;
-      }
-    }
-    std::size_t end = at + 1;
-    while (end < n && end < at + 4 && is_continuation(end)) ++end;
-    throw InputError(file, "",
-                     "line " + std::to_string(line) + ", column " + std::to_string(column) + ": the character '" +
-                         text.substr(at, end - at) + "' " + what);
-  };
-  auto non_ascii = [&](std::size_t k) { return static_cast<unsigned char>(text[k]) >= 0x80; };
-  auto starts = [&](std::size_t k, const char* s3) { return text.compare(k, 3, s3) == 0; };
-  std::size_t i = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
-  // A quote opens a string only where TOML lets one start: a key at the start of a line or after a '.',
-  // a value after '=', an array element after '[' or ',', an inline-table key after '{'. Inside a bare
-  // token (an invalid value: a digit followed by three single quotes, say) toml++ reads no string and
-  // goes on scanning characters, so the guard must too (found by fuzzing).
-  // A '.' separates the parts of a dotted key only before the line's '=': after it, it belongs to a value
-  // (a float such as "0.'…", found by fuzzing), and a quote there opens nothing. (A quoted part after a
-  // '.' of a dotted key inside an inline table is then scanned as bare text: non-ASCII characters in it
-  // are refused, a rare valid file, with a message, rather than read with undefined behaviour.)
-  auto before_equals = [&](std::size_t k) {
-    while (k > 0 && text[k - 1] != '\n') {
-      if (text[k - 1] == '=') return false;
-      --k;
-    }
-    return true;
-  };
-  auto opens_string = [&](std::size_t k) {
-    const std::size_t quote = k;
-    while (k > 0 && (text[k - 1] == ' ' || text[k - 1] == '\t')) --k;
-    if (k == 0) return true;
-    const char p = text[k - 1];
-    if (p == '.') return before_equals(quote);
-    return p == '\n' || p == '\r' || p == '=' || p == '[' || p == ',' || p == '{';
-  };
-  while (i < n) {
-    const char c = text[i];
-    if ((c == '"' || c == '\'') && !opens_string(i)) {
-      ++i;
-    } else if (c == '#') {  // a comment, to the end of the line
-      while (i < n && text[i] != '\n') ++i;
-    } else if (c == '"' && starts(i, "\"\"\"")) {  // multi-line basic string
-      i += 3;
-      while (i < n && !starts(i, "\"\"\"")) {
-        if (text[i] != '\\') {
-          ++i;
-          continue;
-        }
-        std::size_t j = i + 1;
-        if (j < n && !non_ascii(j) && text[j] != ' ' && text[j] != '\t' && text[j] != '\r' && text[j] != '\n') {
-          i = j + 1;  // an escape: \" \\ \n \uXXXX ...
-          continue;
-        }
-        while (j < n && (text[j] == ' ' || text[j] == '\t' || text[j] == '\r' || text[j] == '\n')) ++j;
-        if (j < n && non_ascii(j)) {
-          fail_at(j, "right after a backslash in a multi-line string is not supported (write it with an escape, "
-                     "\\uXXXX, or start the line with an ASCII character)");
-        }
-        i = j;
-      }
-      for (int q = 0; q < 5 && i < n && text[i] == '"'; ++q) ++i;  // the closing quotes, and up to 2 of the content
-    } else if (c == '\'' && starts(i, "'''")) {  // multi-line literal string
-      i += 3;
-      while (i < n && !starts(i, "'''")) ++i;
-      for (int q = 0; q < 5 && i < n && text[i] == '\''; ++q) ++i;
-    } else if (c == '"') {  // basic string, to the closing quote (or the end of the line: an error for toml++)
-      ++i;
-      while (i < n && text[i] != '"' && text[i] != '\n') i += text[i] == '\\' && i + 1 < n && text[i + 1] != '\n' ? 2 : 1;
-      if (i < n && text[i] == '"') ++i;
-    } else if (c == '\'') {  // literal string
-      ++i;
-      while (i < n && text[i] != '\'' && text[i] != '\n') ++i;
-      if (i < n && text[i] == '\'') ++i;
-    } else if (non_ascii(i)) {
-      fail_at(i, "is not allowed outside strings and comments (keys are written with A-Z a-z 0-9 _ -, or quoted)");
-    } else {
-      ++i;
-    }
-  }
-}
-
 }  // namespace
 
 ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir) {
-  check_toml_characters(toml_text, file_name);
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, file_name);
-  } catch (const toml::parse_error& e) {
-    const toml::source_position where = e.source().begin;
-    throw InputError(file_name, "",
-                     "line " + std::to_string(where.line) + ", column " + std::to_string(where.column) + ": " +
-                         std::string(e.description()));
-  }
-  return Reader(file_name, base_dir).read(root);
+  return Reader(file_name, base_dir).read(parse_toml(toml_text, file_name));
 }
 
 ProblemSpec read_problem_file(const std::string& path) {

@@ -4,7 +4,8 @@
 /// ProblemSpec (problem_spec.hpp). The reader checks everything that can be checked without loading
 /// a mesh:
 ///
-/// - syntax (toml++ parse errors, reported with line and column);
+/// - syntax (toml++ parse errors, reported with line and column) and encoding (UTF-8), through the
+///   guarded parser of toml_parse.hpp (toml++ 3.3 alone has undefined behaviour on some non-ASCII text);
 /// - unknown keys in every table (the message lists the keys allowed there);
 /// - types (an integer is accepted where a number is expected, never the other way round);
 /// - values: every number finite (TOML allows nan and inf), ranges (E > 0, −1 < ν < 0.5, …),
