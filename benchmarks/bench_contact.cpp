@@ -18,6 +18,9 @@ namespace {
 
 using Kind = ResultTable::Kind;
 
+/// Ends a size after check_hertz_fits() under --check-only.
+struct CheckedOnly {};
+
 std::vector<ResultTable::Column> columns() {
   return {
       {"case", "", Kind::kText, 0},
@@ -78,11 +81,15 @@ std::vector<ResultTable::Column> columns() {
 
 }  // namespace
 
-std::vector<double> default_hertz_sizes(HertzCase which) {
+std::vector<double> default_hertz_sizes(HertzCase which, bool large) {
+  if (large && which != HertzCase::kSphereOnPlane)
+    throw std::runtime_error("--large is the large 3D sweep: --case hertz3d only");
   switch (which) {
     case HertzCase::kCylinderOnPlane: return {0.003, 0.0015, 0.00085, 0.0006, 0.0004, 0.00027};
     case HertzCase::kTwoCylinders: return {0.003, 0.0015, 0.00085, 0.0006, 0.0004};
-    case HertzCase::kSphereOnPlane: return {0.04, 0.02, 0.01, 0.007, 0.005};
+    case HertzCase::kSphereOnPlane:
+      if (large) return {0.0045, 0.0035, 0.0028, 0.0025};
+      return {0.04, 0.02, 0.01, 0.007, 0.005};
     case HertzCase::kTwoSpheres: return {0.04, 0.02, 0.014};
   }
   throw std::logic_error("default_hertz_sizes: unknown Hertz case");
@@ -115,7 +122,24 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
   std::vector<double> facets, search_per_it, search_geometry;
   for (const double h : opt.h) {
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
-    const auto run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense, opt.search_distance);
+    std::unique_ptr<HertzRun> run;
+    try {
+      run = solve_hertz(opt.which, h, opt.examples_dir, work, opt.condense, opt.search_distance, [&](const HertzRun& r) {
+        std::cout << "# h = " << std::defaultfloat << std::setprecision(6) << h << ": " << r.model->dofs().num_dofs()
+                  << " DOFs; " << std::flush;
+        const double nnz = check_hertz_fits(r);
+        std::cout << "nnz(L) predicted " << static_cast<long long>(nnz) << " (" << std::fixed << std::setprecision(1)
+                  << 8 * nnz / (1 << 30) << " GiB), " << available_memory_bytes() / (1 << 30)
+                  << " GiB available" << (opt.check_only ? ": fits (not solved, --check-only)\n" : ": solving\n")
+                  << std::defaultfloat << std::flush;
+        if (opt.check_only) throw CheckedOnly();
+      });
+    } catch (const CheckedOnly&) {
+      continue;
+    } catch (const FactorTooLarge& e) {
+      std::cout << "# stopped at h = " << std::defaultfloat << std::setprecision(6) << h << ": " << e.what() << "\n";
+      break;
+    }
     const double peak_contact = peak_rss_mib();
     const double search_alone = time_contact_search(*run, std::max(opt.repeat, 5));
 

@@ -53,6 +53,16 @@
 ///
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case suite --csv results/suite-
 ///
+/// `--case hertz3d --large` is the large 3D sweep instead of the default ladder: h = 0.0045 0.0035 0.0028
+/// 0.0025, 2.0e5, 4.1e5, 7.8e5 and 1.1e6 DOFs (hours on 2 cores; 1.1e6 needs more than 24 GiB, 7.8e5 about
+/// 20 GiB, 4.1e5 9 GiB). Before each size is
+/// solved, CHOLMOD's analysis predicts its factor, and the sweep stops at the first size that would not fit
+/// in the memory available (check_hertz_fits(), hertz.hpp); --check-only does only that (meshing and
+/// CHOLMOD's analysis, minutes), for every size, and solves none:
+///
+///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz3d --large --csv h3d-large.csv
+///   symcontact-bench --case hertz3d --large --check-only
+///
 /// Contact options: --h H... , --examples DIR (the source tree's examples/), --keep-work, --no-condense
 /// (Hertz cases: IPOPT on the whole problem instead of the condensed one), --search-distance D (Hertz
 /// cases: the pair's search distance instead of the automatic one), and --repeat,
@@ -87,9 +97,9 @@ using namespace symcontact::bench;
 using Kind = ResultTable::Kind;
 
 constexpr double kDefaultMaxDofs2d = 1.1e6;
-/// 3D P1 up to 3e5 DOFs takes about a minute and 4 GiB with one BLAS thread (docs/performance.md). At
-/// 1e6 DOFs CHOLMOD's int interface overflows in the supernodal analysis ("problem too large"), so the
-/// ladder stops one step below by default; --dofs 6e5 is the largest size measured so far.
+/// 3D P1 up to 3e5 DOFs takes about a minute and 4 GiB with one BLAS thread (docs/performance.md); 6e5
+/// takes minutes and 10 GiB, 1e6 (CHOLMOD's 64-bit interface, cholmod_long.hpp) about 16 GiB of factor,
+/// so the ladder stops at 3e5 by default (--dofs for more; a size whose factor does not fit is refused).
 constexpr double kDefaultMaxDofs3d = 3.1e5;
 
 std::vector<ResultTable::Column> columns() {
@@ -128,6 +138,8 @@ struct Options {
   std::string examples = SYMCONTACT_BENCH_EXAMPLES;
   bool keep_work = false;
   bool no_condense = false;
+  bool large = false;            ///< hertz3d: the large sweep (2e5, 4e5, 1e6 DOFs)
+  bool check_only = false;       ///< Hertz cases: mesh and check the memory of each size, solve none
   double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
@@ -236,10 +248,11 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     c.which = HertzCase::kTwoSpheres;
   else
     throw std::logic_error("run_contact_case: unknown case " + name);
-  common(c, default_hertz_sizes(c.which));
+  common(c, default_hertz_sizes(c.which, opt.large));
   c.examples_dir = opt.examples;
   c.condense = !opt.no_condense;
   c.search_distance = opt.search_distance;
+  c.check_only = opt.check_only;
   run_hertz_sweep(c, machine);
 }
 
@@ -248,6 +261,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
 /// that of the first failure (kExitOk when none).
 int run_suite(const Options& opt, const MachineInfo& machine) {
   if (!opt.h.empty()) throw std::runtime_error("--case suite runs every case at its default sizes: --h is not allowed");
+  if (opt.large) throw std::runtime_error("--case suite runs every case at its default sizes: --large is not allowed");
   if (!opt.csv.empty()) {  // --csv results/suite-: make results/
     const std::filesystem::path parent = std::filesystem::path(opt.csv).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
@@ -303,6 +317,13 @@ int main(int argc, char** argv) {
   app.add_option("--problem", opt.problems, "problem: the problem files to solve, one row each");
   app.add_option("--steps-csv", opt.steps_csv, "problem: write every step's time and iterations to this CSV file");
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
+  app.add_flag("--large", opt.large,
+               "hertz3d: the large sweep h = 0.0045 0.0035 0.0028 0.0025 (2.0e5, 4.1e5, 7.8e5, 1.1e6 DOFs) instead of "
+               "the default ladder: hours; a size that does not fit in memory stops the sweep (1.1e6 needs more "
+               "than 24 GiB)");
+  app.add_flag("--check-only", opt.check_only,
+               "Hertz cases: mesh each size and print its DOFs, predicted factor and whether it fits in memory; "
+               "solve none");
   app.add_flag("--no-condense", opt.no_condense,
                "Hertz cases: no static condensation (IPOPT on the whole problem), to compare");
   app.add_option("--search-distance", opt.search_distance,

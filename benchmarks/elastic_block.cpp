@@ -25,20 +25,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// Throws FactorTooLarge when the factor L predicted by the analysis cannot be computed here: more
-/// entries than CHOLMOD's int interface (used through Eigen's CholmodDecomposition) can index, or
-/// more bytes (8 per entry) than the memory the kernel reports available.
-void check_factor_fits(double nnz_factor) {
-  if (nnz_factor >= static_cast<double>(std::numeric_limits<int>::max()))
-    throw FactorTooLarge("nnz(L) = " + std::to_string(static_cast<long long>(nnz_factor)) +
-                         " exceeds the 32-bit index range of CHOLMOD's int interface");
-  const double available = available_memory_bytes();
-  if (available > 0 && 8.0 * nnz_factor > available)
-    throw FactorTooLarge("the factor needs " + std::to_string(8.0 * nnz_factor / (1 << 30)) +
-                         " GiB for nnz(L) = " + std::to_string(static_cast<long long>(nnz_factor)) + " but only " +
-                         std::to_string(available / (1 << 30)) + " GiB are available");
-}
-
 }  // namespace
 
 double available_memory_bytes() {
@@ -49,6 +35,35 @@ double available_memory_bytes() {
   while (in >> key >> kib >> unit)
     if (key == "MemAvailable:") return kib * 1024.0;
   return -1.0;
+}
+
+void check_factor_fits(double nnz_factor, double other_bytes) {
+  const double available = available_memory_bytes();
+  const double need = 8.0 * nnz_factor + other_bytes;
+  if (available > 0 && need > available)
+    throw FactorTooLarge("the factor needs " + std::to_string(8.0 * nnz_factor / (1 << 30)) + " GiB for nnz(L) = " +
+                         std::to_string(static_cast<long long>(nnz_factor)) +
+                         (other_bytes > 0 ? " (plus " + std::to_string(other_bytes / (1 << 30)) + " GiB)" : "") +
+                         " but only " + std::to_string(available / (1 << 30)) + " GiB are available");
+}
+
+namespace {
+
+/// K_ff: the energy's Hessian at 0 (constant) assembled over the free DOFs, lower triangle.
+SparseMatrix assemble_free_stiffness(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free,
+                                     Index* num_triplets = nullptr) {
+  ReducedTripletSink sink(free_index);
+  energy.add_hessian(VectorXd::Zero(static_cast<Index>(free_index.size())), sink);  // K does not depend on u
+  if (num_triplets) *num_triplets = static_cast<Index>(sink.triplets().size());
+  return sink.to_lower_matrix(num_free);
+}
+
+}  // namespace
+
+double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free) {
+  CholeskySolver chol;
+  chol.analyze(assemble_free_stiffness(energy, free_index, num_free));
+  return chol.factor_nonzeros();
 }
 
 Index block_dofs(int dim, int order, int divisions) {
@@ -112,12 +127,7 @@ CholeskyFloor measure_cholesky_floor(const EnergyTerm& energy, const std::vector
   for (int rep = 0; rep < std::max(1, repeat); ++rep) {
     SparseMatrix K;
     auto t0 = std::chrono::steady_clock::now();
-    {
-      ReducedTripletSink sink(free_index);
-      energy.add_hessian(VectorXd::Zero(num_dofs), sink);  // K does not depend on u
-      r.num_triplets = static_cast<Index>(sink.triplets().size());
-      K = sink.to_lower_matrix(n);
-    }
+    K = assemble_free_stiffness(energy, free_index, n, &r.num_triplets);
     r.assembly = std::min(r.assembly, seconds_since(t0));
 
     CholeskySolver chol;

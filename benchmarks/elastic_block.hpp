@@ -68,8 +68,9 @@ struct CholeskyFloor {
   double factor_and_solve() const { return analyze + factorize + solve; }
 };
 
-/// Thrown by measure_cholesky_floor() right after the analysis when the predicted factor does not fit
-/// (nnz(L) ≥ 2³¹, or 8·nnz(L) bytes > MemAvailable), instead of failing or swapping in factorize().
+/// Thrown by measure_cholesky_floor() right after the analysis, and by check_factor_fits(), when the
+/// predicted factor does not fit in memory, instead of failing or swapping in factorize(). (CHOLMOD's
+/// 64-bit interface, cholmod_long.hpp, has no 2³¹ limit on the factor's entries: memory is the limit.)
 class FactorTooLarge : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -77,6 +78,15 @@ class FactorTooLarge : public std::runtime_error {
 
 /// MemAvailable of /proc/meminfo in bytes, or −1.
 double available_memory_bytes();
+
+/// Throws FactorTooLarge when a factor of `nnz_factor` entries (8 bytes each) plus `other_bytes` needs
+/// more than MemAvailable.
+void check_factor_fits(double nnz_factor, double other_bytes = 0.0);
+
+/// nnz(L) of K_ff (the energy's Hessian at 0 on the DOFs with free_index[d] ≥ 0) as CHOLMOD's analysis
+/// predicts it: assembly and analysis only, no numeric factorisation (seconds where the factorisation
+/// takes minutes), so that a size can be refused before it is run.
+double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free);
 
 CholeskyFloor measure_cholesky_floor(const ElasticBlock& block, int repeat);
 

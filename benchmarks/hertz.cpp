@@ -92,7 +92,8 @@ double HertzRun::contact_seconds() const {
 }
 
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
-                                      const std::string& work_dir, bool condense, double search_distance) {
+                                      const std::string& work_dir, bool condense, double search_distance,
+                                      const BeforeSolve& before_solve) {
   auto run = std::make_unique<HertzRun>();
   run->which = which;
   run->h = h;
@@ -117,11 +118,11 @@ std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::stri
   run->spec = parse_problem(toml, stem + ".toml", work_dir);
   if (run->spec.dim != hertz_dimension(which))
     throw std::runtime_error(stem + ".toml: expected dimension " + std::to_string(hertz_dimension(which)));
-  solve_hertz_model(*run, condense);
+  solve_hertz_model(*run, condense, before_solve);
   return run;
 }
 
-void solve_hertz_model(HertzRun& run, bool condense) {
+void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_solve) {
   std::ostringstream quiet;
   const Logger log(quiet, Verbosity::kQuiet);
   run.model = Model::build(run.spec, log, run.build_times);
@@ -129,6 +130,7 @@ void solve_hertz_model(HertzRun& run, bool condense) {
   if (model.num_steps() != 1) throw std::runtime_error(run.spec.file + ": expected a single load step");
   model.set_step(0);
   run.fixed = model.fixed_dofs(0);
+  if (before_solve) before_solve(run);
 
   // The solver settings exactly as `symcontact run` derives them from the problem file.
   ContactSolveOptions opt = contact_options(run.spec, log).contact;
@@ -194,7 +196,11 @@ double time_contact_search(const HertzRun& run, int repeat) {
   return best;
 }
 
-CholeskyFloor measure_hertz_floor(const HertzRun& run, int repeat, Index& num_free, int& pinned) {
+namespace {
+
+/// The floor's free numbering (measure_hertz_floor): the problem's, with the vertical component also
+/// fixed at the node(s) at the origin. Returns the number of free DOFs.
+Index hertz_floor_numbering(const HertzRun& run, std::vector<Index>& free_index, int& pinned) {
   const Model& model = *run.model;
   FixedDofs fixed = run.fixed;
   pinned = 0;
@@ -207,9 +213,28 @@ CholeskyFloor measure_hertz_floor(const HertzRun& run, int repeat, Index& num_fr
       }
   }
   if (pinned == 0) throw std::runtime_error("measure_hertz_floor: no mesh node at the contact point (the origin)");
+  return fixed.free_numbering(model.dofs().num_dofs(), free_index);
+}
 
+}  // namespace
+
+double check_hertz_fits(const HertzRun& run) {
   std::vector<Index> free_index;
-  num_free = fixed.free_numbering(model.dofs().num_dofs(), free_index);
+  int pinned = 0;
+  const Index num_free = hertz_floor_numbering(run, free_index, pinned);
+  const double nnz = predict_factor_nonzeros(run.model->energy(), free_index, num_free);
+  const ContactPair& pair = run.model->contacts().pairs.at(0);
+  double m = 0.0;
+  for (const int s : {pair.surface_a, pair.surface_b})
+    if (s >= 0) m += static_cast<double>(run.model->contacts().surfaces[s].num_nodes());
+  check_factor_fits(nnz, kDenseBytesPerEntry * m * m);
+  return nnz;
+}
+
+CholeskyFloor measure_hertz_floor(const HertzRun& run, int repeat, Index& num_free, int& pinned) {
+  const Model& model = *run.model;
+  std::vector<Index> free_index;
+  num_free = hertz_floor_numbering(run, free_index, pinned);
   const VectorXd f = model.external_load();
   VectorXd load_free(num_free);
   for (Index d = 0; d < f.size(); ++d)

@@ -24,6 +24,7 @@
 /// distance 0.6 of the contact point and size h within 0.2 of it, so DOFs grow as h⁻²; the 3D .geo keeps
 /// H = 0.25 beyond distance 0.8 and h within 0.25, so DOFs grow as about h⁻³.
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,19 +85,40 @@ struct HertzRun {
   HertzReference reference() const { return hertz_reference(which, load); }
 };
 
+/// Called with the built model right before the contact solve (e.g. check_hertz_fits); may throw to skip it.
+using BeforeSolve = std::function<void(const HertzRun&)>;
+
 /// Writes the wrapper .geo and a copy of the example's TOML (pointing at it) into `work_dir`, builds the
 /// model and solves it (solve_hertz_model). `examples_dir` is the examples/ folder of the source tree.
-/// Throws what the library throws (InputError, SolveError).
+/// Throws what the library throws (InputError, SolveError) and what `before_solve` throws.
 /// `condense` false switches the static condensation off (contact_solver.static_condensation);
 /// `search_distance` > 0 sets the contact pair's search_distance (default: the example's, automatic).
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
-                                      const std::string& work_dir, bool condense = true, double search_distance = 0.0);
+                                      const std::string& work_dir, bool condense = true, double search_distance = 0.0,
+                                      const BeforeSolve& before_solve = nullptr);
 
 /// Builds run.model from run.spec (a single load step, one contact pair whose side a is the loaded body),
-/// solves it with the solver settings `symcontact run` derives from the file (contact_options()),
-/// condensation off when `condense` is false, timing solve_contact() as a whole, and fills the accuracy
-/// fields of `run`. Used by solve_hertz() and by the FreeFEM side by side (freefem_peer.cpp).
-void solve_hertz_model(HertzRun& run, bool condense = true);
+/// calls `before_solve` (when set), solves it with the solver settings `symcontact run` derives from the
+/// file (contact_options()), condensation off when `condense` is false, timing solve_contact() as a whole,
+/// and fills the accuracy fields of `run`. Used by solve_hertz() and by the FreeFEM side by side
+/// (freefem_peer.cpp).
+void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& before_solve = nullptr);
+
+/// Throws FactorTooLarge (elastic_block.hpp) when the contact solve of `run` would not fit in the memory
+/// available now, before it starts: CHOLMOD's analysis of the floor's K_ff predicts nnz(L) (assembly and
+/// analysis only, about 2 s at 2e5 DOFs). The solve needs 8·nnz(L) bytes for the factor of the static
+/// condensation (the same matrix with B ordered last, whose nnz(L) is within a few per cent of the floor's)
+/// plus kDenseBytesPerEntry · m² for the dense condensed problem, m taken as the number of contact-surface
+/// nodes (the condensed set on a rigid plane: one u_z per node; a lower bound with two elastic bodies).
+/// The mesh, the model and K come on top (about 2.2 GiB at 4e5 DOFs): the check is a lower bound of the
+/// need, meant to refuse a size that cannot fit before it runs for an hour and is killed.
+/// Returns the predicted nnz(L).
+double check_hertz_fits(const HertzRun& run);
+/// Bytes per entry of the m × m condensed matrix that a condensed contact solve holds at its peak
+/// besides the factor: S, IPOPT's copy of it and its KKT factorisation, the polish's dense factor
+/// (73 and 84 measured: the 3D Hertz solve's peak RSS beyond the factor and beyond the floor's own
+/// mesh, model and K, at m = 3,282 and 5,224; docs/performance.md).
+inline constexpr double kDenseBytesPerEntry = 80.0;
 
 /// The contact search proper at the solution run.u, timed on its own: for every contact family, the
 /// current positions of its surfaces, prepare_master() (smoothed normals, bounding volume hierarchy) and

@@ -3,11 +3,13 @@
 #include <Eigen/CholmodSupport>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/cholmod_long.hpp"
 
 namespace symcontact {
 
 struct CholeskySolver::Impl {
-  Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower> llt;
+  using Decomposition = Eigen::CholmodDecomposition<CholmodSparseMatrix, Eigen::Lower>;  // cholmod_l_*
+  Decomposition llt;
   Index n = -1;
 };
 
@@ -20,18 +22,18 @@ CholeskySolver::CholeskySolver() : impl_(std::make_unique<Impl>()) {
 CholeskySolver::~CholeskySolver() = default;
 
 void CholeskySolver::analyze(const SparseMatrix& lower) {
-  impl_->llt.analyzePattern(lower);
+  impl_->llt.analyzePattern(to_cholmod_long(lower));
   if (impl_->llt.info() != Eigen::Success || impl_->llt.cholmod().status < CHOLMOD_OK) {
     impl_->n = -1;
     throw SolveError(
         "CHOLMOD could not analyse the stiffness matrix (status " + std::to_string(impl_->llt.cholmod().status) +
-        "): the problem is probably too large for the 32-bit CHOLMOD interface or for the memory available");
+        "): the factor probably does not fit in the memory available");
   }
   impl_->n = lower.rows();
 }
 
 void CholeskySolver::factorize(const SparseMatrix& lower) {
-  impl_->llt.factorize(lower);
+  impl_->llt.factorize(to_cholmod_long(lower));
   if (impl_->llt.info() != Eigen::Success)
     throw SolveError(
         "the stiffness matrix is not positive definite (CHOLMOD could not factorise it): a body is "
@@ -48,7 +50,7 @@ VectorXd CholeskySolver::solve(const VectorXd& b) const { return impl_->llt.solv
 MatrixXd CholeskySolver::solve(const MatrixXd& B) const { return impl_->llt.solve(B); }
 
 double CholeskySolver::factor_nonzeros() const {
-  auto& c = const_cast<Eigen::CholmodDecomposition<SparseMatrix, Eigen::Lower>&>(impl_->llt).cholmod();
+  auto& c = const_cast<Impl::Decomposition&>(impl_->llt).cholmod();
   return c.lnz;
 }
 

@@ -71,8 +71,16 @@ struct ContactSolveOptions {
   /// load step, and IPOPT works on the condensed set only. Same solution (to the optimiser's tolerance);
   /// off only to compare.
   bool condense = true;
-  /// Largest condensed set (DOFs) for which condensing pays: S is dense.
-  Index max_condensed_dofs = 4000;
+  /// Largest condensed set |B| (DOFs) for which the solver condenses; above it the whole problem goes to
+  /// IPOPT (which in 3D costs 10–30 times more already at 2e4 DOFs: docs/performance.md). S is dense, so the
+  /// condensed problem costs memory and time that grow with |B|², resp. |B|³, besides the factor of K:
+  /// S itself (static_condensation.hpp), IPOPT's copy of its lower triangle and its KKT factorisation
+  /// (MUMPS, dense in effect), and the polish's dense Cholesky factor: 73–84 bytes per entry of the
+  /// |B| × |B| matrix were measured (peak RSS of the 3D Hertz solve beyond the factor and the model, at
+  /// |B| = 3,282 and 5,224; docs/performance.md), i.e. about 11 GiB at 12,000, and O(|B|³) time per IPOPT
+  /// iteration (23 s wall at 5,224 on a loaded machine that gave the run a third of a core). The 3D Hertz sphere on its plane has |B| = 5,224 at 4e5 DOFs
+  /// (the limit was 4,000 until that size was run) and about 9,500 at 1e6.
+  Index max_condensed_dofs = 12000;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
 };

@@ -1,31 +1,30 @@
 #include "symcontact/solvers/static_condensation.hpp"
 
-#include <cholmod.h>
-
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <string>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/cholmod_long.hpp"
 
 namespace symcontact {
 
 namespace {
 
-/// A CHOLMOD view (no copy) of the lower triangle of a compressed Eigen matrix.
-cholmod_sparse view_lower(const SparseMatrix& A) {
+/// A CHOLMOD view (no copy) of the lower triangle of a compressed matrix with long indices.
+cholmod_sparse view_lower(const CholmodSparseMatrix& A) {
   cholmod_sparse s{};
   s.nrow = static_cast<size_t>(A.rows());
   s.ncol = static_cast<size_t>(A.cols());
   s.nzmax = static_cast<size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
+  s.p = const_cast<CholmodIndex*>(A.outerIndexPtr());
+  s.i = const_cast<CholmodIndex*>(A.innerIndexPtr());
   s.nz = nullptr;
   s.x = const_cast<double*>(A.valuePtr());
   s.z = nullptr;
   s.stype = -1;  // symmetric, lower triangle stored
-  s.itype = CHOLMOD_INT;
+  s.itype = CHOLMOD_LONG;  // cholmod_l_* throughout (cholmod_long.hpp)
   s.xtype = CHOLMOD_REAL;
   s.dtype = CHOLMOD_DOUBLE;
   s.sorted = 1;
@@ -54,29 +53,29 @@ struct StaticCondensation::Impl {
   Index n = 0;
   std::vector<Index> boundary;
   std::vector<Index> position;  ///< index → position in B or −1
-  std::vector<int> perm;        ///< the ordering handed to CHOLMOD (interior first, B last)
+  std::vector<CholmodIndex> perm;  ///< the ordering handed to CHOLMOD (interior first, B last)
   SparseMatrix schur;
   SparseMatrix k;  ///< K (lower)
 
   Impl() {
-    cholmod_start(&common);
+    cholmod_l_start(&common);
     common.print = 0;  // failures are reported through status and exceptions
   }
   ~Impl() {
     release();
-    cholmod_finish(&common);
+    cholmod_l_finish(&common);
   }
   void release() {
-    if (factor) cholmod_free_factor(&factor, &common);
+    if (factor) cholmod_l_free_factor(&factor, &common);
     factor = nullptr;
   }
   /// x ← solution of `sys` (CHOLMOD_L or CHOLMOD_Lt, no permutation) with right-hand side x.
   void triangular_solve(int sys, VectorXd& x) {
     cholmod_dense b = view_vector(x);
-    cholmod_dense* y = cholmod_solve(sys, factor, &b, &common);
+    cholmod_dense* y = cholmod_l_solve(sys, factor, &b, &common);
     if (!y) throw SolveError("CHOLMOD triangular solve failed (status " + std::to_string(common.status) + ")");
     std::copy_n(static_cast<const double*>(y->x), x.size(), x.data());
-    cholmod_free_dense(&y, &common);
+    cholmod_l_free_dense(&y, &common);
   }
 };
 
@@ -115,7 +114,7 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
       interior_index[k] = static_cast<Index>(interior.size());
       interior.push_back(k);
     }
-  std::vector<int> ordering_ii;
+  std::vector<CholmodIndex> ordering_ii;
   {
     std::vector<Triplet> t;
     t.reserve(lower.nonZeros());
@@ -125,34 +124,33 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
         if (interior_index[it.row()] >= 0)
           t.emplace_back(static_cast<int>(interior_index[it.row()]), static_cast<int>(interior_index[j]), it.value());
     }
-    SparseMatrix kii(ni, ni);
+    CholmodSparseMatrix kii(ni, ni);
     kii.setFromTriplets(t.begin(), t.end());
     kii.makeCompressed();
     cholmod_sparse a = view_lower(kii);
     m.common.nmethods = 0;  // CHOLMOD's default strategy
     m.common.postorder = 1;
-    cholmod_factor* symbolic = cholmod_analyze(&a, &m.common);
+    cholmod_factor* symbolic = cholmod_l_analyze(&a, &m.common);
     if (!symbolic || m.common.status < CHOLMOD_OK) {
-      if (symbolic) cholmod_free_factor(&symbolic, &m.common);
+      if (symbolic) cholmod_l_free_factor(&symbolic, &m.common);
       throw SolveError("CHOLMOD could not order the interior of the stiffness matrix (status " +
                        std::to_string(m.common.status) + ")");
     }
-    const int* p = static_cast<const int*>(symbolic->Perm);
+    const auto* p = static_cast<const CholmodIndex*>(symbolic->Perm);
     ordering_ii.assign(p, p + ni);
-    cholmod_free_factor(&symbolic, &m.common);
+    cholmod_l_free_factor(&symbolic, &m.common);
   }
   m.perm.resize(n);
-  for (Index k = 0; k < ni; ++k) m.perm[k] = static_cast<int>(interior[ordering_ii[k]]);
-  for (Index k = 0; k < nb; ++k) m.perm[ni + k] = static_cast<int>(boundary[k]);
+  for (Index k = 0; k < ni; ++k) m.perm[k] = interior[ordering_ii[k]];
+  for (Index k = 0; k < nb; ++k) m.perm[ni + k] = boundary[k];
 
   // 2. K̃ = K + diag(0, D), D = diag(K_BB), factorised in that ordering (no postordering, so that B stays last).
-  SparseMatrix kt = lower;
-  kt.makeCompressed();
+  CholmodSparseMatrix kt = to_cholmod_long(lower);
   VectorXd d = VectorXd::Zero(nb);
   for (Index k = 0; k < nb; ++k) {
-    const int j = static_cast<int>(boundary[k]);
+    const Index j = boundary[k];
     bool found = false;
-    for (SparseMatrix::InnerIterator it(kt, j); it; ++it)
+    for (CholmodSparseMatrix::InnerIterator it(kt, j); it; ++it)
       if (it.row() == j) {
         d[k] = std::abs(it.value()) > 0 ? std::abs(it.value()) : 1.0;
         it.valueRef() += d[k];
@@ -166,22 +164,22 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
   m.common.method[0].ordering = CHOLMOD_GIVEN;
   m.common.postorder = 0;
   m.common.supernodal = CHOLMOD_SUPERNODAL;
-  m.factor = cholmod_analyze_p(&a, m.perm.data(), nullptr, 0, &m.common);
+  m.factor = cholmod_l_analyze_p(&a, m.perm.data(), nullptr, 0, &m.common);
   m.common.nmethods = 0;
   m.common.postorder = 1;
   m.common.supernodal = CHOLMOD_AUTO;
   if (!m.factor || m.common.status < CHOLMOD_OK) {
     m.release();
     throw SolveError("CHOLMOD could not analyse the stiffness matrix for static condensation (status " +
-                     std::to_string(m.common.status) + "): too large for its 32-bit interface or for the memory");
+                     std::to_string(m.common.status) + "): the factor probably does not fit in the memory");
   }
-  const int* fperm = static_cast<const int*>(m.factor->Perm);
+  const auto* fperm = static_cast<const CholmodIndex*>(m.factor->Perm);
   for (Index k = 0; k < n; ++k)
     if (fperm[k] != m.perm[k]) {
       m.release();
       throw SolveError("static condensation: CHOLMOD did not keep the given ordering");
     }
-  cholmod_factorize(&a, m.factor, &m.common);
+  cholmod_l_factorize(&a, m.factor, &m.common);
   if (m.common.status == CHOLMOD_NOT_POSDEF || m.common.status < CHOLMOD_OK) {
     const int status = m.common.status;
     m.release();
@@ -202,20 +200,20 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
     for (SparseMatrix::InnerIterator it(lower, j); it; ++it)
       if (it.row() == j) kdiag[j] = std::abs(it.value());
   MatrixXd lbb = MatrixXd::Zero(nb, nb);
-  const int* super = static_cast<const int*>(m.factor->super);
-  const int* pi = static_cast<const int*>(m.factor->pi);
-  const int* px = static_cast<const int*>(m.factor->px);
-  const int* s = static_cast<const int*>(m.factor->s);
+  const auto* super = static_cast<const CholmodIndex*>(m.factor->super);
+  const auto* pi = static_cast<const CholmodIndex*>(m.factor->pi);
+  const auto* px = static_cast<const CholmodIndex*>(m.factor->px);
+  const auto* s = static_cast<const CholmodIndex*>(m.factor->s);
   const double* lx = static_cast<const double*>(m.factor->x);
   for (size_t k = 0; k < m.factor->nsuper; ++k) {
-    const int k1 = super[k], k2 = super[k + 1];
-    const int nsrow = pi[k + 1] - pi[k];
-    const int* rows = s + pi[k];
+    const Index k1 = super[k], k2 = super[k + 1];
+    const Index nsrow = pi[k + 1] - pi[k];
+    const CholmodIndex* rows = s + pi[k];
     const double* x = lx + px[k];
-    for (int jj = 0; jj < k2 - k1; ++jj) {
+    for (Index jj = 0; jj < k2 - k1; ++jj) {
       const Index col = k1 + jj;
       if (col < ni) {
-        const double pivot = x[jj + static_cast<Index>(jj) * nsrow];
+        const double pivot = x[jj + jj * nsrow];
         if (!(pivot * pivot > kSingularPivot * kdiag[m.perm[col]])) {
           m.release();
           throw SolveError("static condensation: the interior stiffness is singular (relative pivot " +
@@ -224,21 +222,27 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
         }
         continue;
       }
-      for (int ii = jj; ii < nsrow; ++ii) {  // the diagonal block's upper part is not part of L
+      for (Index ii = jj; ii < nsrow; ++ii) {  // the diagonal block's upper part is not part of L
         const Index row = rows[ii];
-        if (row >= ni) lbb(row - ni, col - ni) = x[ii + static_cast<Index>(jj) * nsrow];
+        if (row >= ni) lbb(row - ni, col - ni) = x[ii + jj * nsrow];
       }
     }
   }
   MatrixXd sd = MatrixXd::Zero(nb, nb);
   sd.selfadjointView<Eigen::Lower>().rankUpdate(lbb);
   sd.diagonal() -= d;
-  std::vector<Triplet> t;
+  lbb.resize(0, 0);
+  // The lower triangle of S written column by column into exactly reserved storage (no triplet list):
+  // the peak of this step is two dense |B|² arrays, then one plus S's lower triangle (12 bytes an entry).
+  Eigen::VectorXi column_nonzeros = Eigen::VectorXi::Zero(nb);
   for (Index j = 0; j < nb; ++j)
     for (Index i = j; i < nb; ++i)
-      if (sd(i, j) != 0.0 || i == j) t.emplace_back(static_cast<int>(i), static_cast<int>(j), sd(i, j));
+      if (sd(i, j) != 0.0 || i == j) ++column_nonzeros[j];
   m.schur.resize(nb, nb);
-  m.schur.setFromTriplets(t.begin(), t.end());
+  m.schur.reserve(column_nonzeros);
+  for (Index j = 0; j < nb; ++j)
+    for (Index i = j; i < nb; ++i)
+      if (sd(i, j) != 0.0 || i == j) m.schur.insert(i, j) = sd(i, j);
   m.schur.makeCompressed();
   m.k = lower;
 }

@@ -27,7 +27,12 @@
 /// Contract: `lower` is the lower triangle (compressed, column-major) of K with every diagonal entry
 /// stored; B is a set of distinct indices in [0, n). compute() throws SolveError when K_II is not
 /// positive definite (a body with neither Dirichlet conditions nor enough points in B) or when CHOLMOD
-/// fails (too large for its 32-bit interface, out of memory).
+/// fails (out of memory). CHOLMOD is called through its 64-bit interface (cholmod_long.hpp), so the factor
+/// has no 2³¹-entry limit.
+///
+/// Memory: the factor of K̃ (8 bytes per entry of L, about the Cholesky floor's) plus, for S, two dense
+/// |B| × |B| arrays while it is formed and its lower triangle afterwards (12 bytes per entry, about
+/// 6 |B|² bytes): 1.5 GiB at |B| = 10,000 during compute(), 0.56 GiB kept.
 
 #include <memory>
 #include <vector>
