@@ -18,6 +18,14 @@ CholeskySolver::CholeskySolver() : impl_(std::make_unique<Impl>()) {
   // reported here through info()/status instead, and callers that probe definiteness (the Newton shift,
   // the polish) expect failures.
   impl_->llt.cholmod().print = 0;
+  // LLᵀ also where CHOLMOD picks a simplicial factor (small or very sparse matrices): its default there
+  // is LDLᵀ, which factorises an indefinite matrix without complaint (negative entries in D), so
+  // factorize() would not throw as its contract says, and callers probing definiteness (the Newton shift,
+  // the polish) would take an indefinite matrix for a definite one. With final_ll the simplicial
+  // factorisation is done as LLᵀ (CHOLMOD User Guide, cholmod_common: final_asis, final_ll) and stops at
+  // the first non-positive pivot, as the supernodal one always does.
+  impl_->llt.cholmod().final_asis = 0;
+  impl_->llt.cholmod().final_ll = 1;
 }
 CholeskySolver::~CholeskySolver() = default;
 

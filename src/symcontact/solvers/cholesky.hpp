@@ -1,10 +1,11 @@
 #pragma once
 /// \file cholesky.hpp
 /// Sparse Cholesky factorisation A = L Lᵀ of a symmetric positive definite matrix by CHOLMOD
-/// (supernodal or simplicial, CHOLMOD's choice), through Eigen's CholmodSupport and CHOLMOD's 64-bit
-/// interface at every size (cholmod_long.hpp: no 2³¹ limit on the factor's entries). Only the lower
-/// triangle of A is read (copied once per call to 64-bit indices). The symbolic analysis can be reused across factorisations of matrices with
-/// the same pattern. This is also the "physical floor" that contact solves are measured against.
+/// (supernodal or simplicial, CHOLMOD's choice; LLᵀ in both, so an indefinite matrix always fails),
+/// through Eigen's CholmodSupport and CHOLMOD's 64-bit interface at every size (cholmod_long.hpp: no 2³¹
+/// limit on the factor's entries). Only the lower triangle of A is read (copied once per call to 64-bit
+/// indices). The symbolic analysis can be reused across factorisations of matrices with the same
+/// pattern. This is also the "physical floor" that contact solves are measured against.
 
 #include <memory>
 
