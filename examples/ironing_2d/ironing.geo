@@ -2,12 +2,12 @@
 // stiff half-ring die, radii 2.8–3.0, centre (−2.7, 3.03), pressed down 1.4 and slid 4 along the slab.
 // The slab is [−4.5, 4.5] × [−3, 0] (centred on x = 0, top at y = 0), so that the die's lowest point
 // starts 0.03 above the top, at x = −2.7, and ends over x = 1.3. Element sizes: hs on the slab (finer near its top), hd on the die.
-// Optional (set before including this file; both off by default, which gives the sharp corner):
-//   rc: radius of a fillet rounding the slab's top-left corner (0: sharp). The die overhangs that corner
-//       and friction drags it under the die (ironing_mu0.3.toml); the fillet keeps the surface normal
-//       continuous where the surface folds.
-//   hc: element size at that corner (within 0.2 + rc of the fillet's centre, growing linearly to hs at
-//       1.5 + rc); 0: hs everywhere on the slab's top.
+// Optional (set before including this file; both off by default, which gives the sharp corner the
+// benchmark specifies, used by ironing.toml and ironing_mu0.3.toml):
+//   rc: radius of a fillet rounding the slab's top-left corner (0: sharp), a variant of the geometry. The
+//       die overhangs that corner and friction drags it under the die (ironing_mu0.3.toml).
+//   hc: element size at that corner (within 0.2 + rc of the corner, or of the fillet's centre, growing
+//       linearly to hs at 1.5 + rc); 0: hs everywhere on the slab's top.
 If (!Exists(hs))
   hs = 0.15;
 EndIf

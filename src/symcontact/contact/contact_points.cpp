@@ -85,6 +85,17 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
   g.surface = &master;
   g.x = x;
   g.normals = nodal_normals(master, x);
+  if (master.dim == 2) {
+    g.corner_normals = Eigen::MatrixXd::Zero(4, master.num_nodes());
+    const std::vector<double> ref = reference_nodes(master.facet_type);
+    for (Index f = 0; f < master.num_facets(); ++f)
+      for (int a = 0; a < 2; ++a) {
+        const Index k = master.facet(f)[a];
+        if (!master.corner[k]) continue;
+        const Eigen::VectorXd n = facet_normal(master.facet_type, facet_nodes(master, x, f), &ref[a]);
+        if (n.norm() > 0) g.corner_normals.block<2, 1>(a == 1 ? 0 : 2, k) = n.normalized();
+      }
+  }
   std::vector<BoundingVolumeHierarchy::Box> boxes(master.num_facets());
   for (Index f = 0; f < master.num_facets(); ++f) boxes[f] = facet_box(master.facet_type, facet_nodes(master, x, f), 0.0);
   g.tree.build(boxes);
@@ -106,6 +117,14 @@ void for_each_sub_point(std::vector<double> cuts, int ng, F&& f) {
     if (b - a < 1e-13) continue;
     for (int q = 0; q < ng; ++q) f(a + (b - a) * gx[q], (b - a) * gw[q]);
   }
+}
+
+/// The unit vector of the cone {a n1 + b n2 : a, b ≥ 0} (n1, n2 unit, not opposite) nearest in angle to v:
+/// v normalised if it lies in the cone, else whichever of n1, n2 is nearer to it.
+Eigen::Vector2d nearest_in_cone(const Eigen::Vector2d& n1, const Eigen::Vector2d& n2, const Eigen::Vector2d& v) {
+  const double s = cross2(n1, n2) >= 0 ? 1.0 : -1.0;  // orientation from n1 to n2 through the cone
+  if (v.norm() > 0 && s * cross2(n1, v) >= 0 && s * cross2(v, n2) >= 0 && v.dot(n1 + n2) > 0) return v.normalized();
+  return v.dot(n1) >= v.dot(n2) ? n1 : n2;
 }
 
 /// A projection clamped onto an end of the surface: in 2D a vertex of valence 1, in 3D a border edge or a
@@ -142,7 +161,21 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   double M[10];
   shape_functions(ms.facet_type, pr.eta, M, nullptr);
   Eigen::Vector3d nbar = Eigen::Vector3d::Zero();
-  for (int b = 0; b < mpf; ++b) nbar.head(ms.dim) += M[b] * master.normals.col(ms.facet(mf)[b]);
+  const bool at_corner = ms.dim == 2 && pr.clamped_vertex >= 0 && ms.corner[ms.facet(mf)[pr.clamped_vertex]];
+  if (at_corner) {
+    const Index k = ms.facet(mf)[pr.clamped_vertex];
+    nbar.head<2>() = nearest_in_cone(master.corner_normals.block<2, 1>(0, k), master.corner_normals.block<2, 1>(2, k),
+                                     -slave_normal.head<2>());
+  } else {
+    for (int b = 0; b < mpf; ++b) {
+      const Index k = ms.facet(mf)[b];
+      // At a corner node, this facet's own normal there (rows 0–1 when the facet ends at it: local node 1).
+      if (ms.dim == 2 && b < 2 && ms.corner[k])
+        nbar.head<2>() += M[b] * master.corner_normals.block<2, 1>(b == 1 ? 0 : 2, k);
+      else
+        nbar.head(ms.dim) += M[b] * master.normals.col(k);
+    }
+  }
   if (nbar.norm() == 0) return false;
   nbar.normalize();
   if (slave_normal.dot(nbar) >= 0) return false;  // not facing each other
@@ -177,7 +210,10 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
     master.tree.for_each_overlap(facet_box(slave.facet_type, xf, search), [&](int mf) {
       for (int a = 0; a < 2; ++a) {
         const Index v = ms.facet(mf)[a];
-        breakpoints_2d(slave.facet_type, xf, master.x.col(v).head<2>(), master.normals.col(v).head<2>(), cuts);
+        // At a corner, the edge of the fan on this facet's side (the facet's own normal there).
+        const Eigen::Vector2d n = ms.corner[v] ? Eigen::Vector2d(master.corner_normals.block<2, 1>(a == 1 ? 0 : 2, v))
+                                               : Eigen::Vector2d(master.normals.col(v).head<2>());
+        breakpoints_2d(slave.facet_type, xf, master.x.col(v).head<2>(), n, cuts);
       }
     });
     for_each_sub_point(cuts, ng, [&](double xi, double w) {

@@ -56,6 +56,10 @@ struct MasterGeometry {
   const ContactSurface* surface = nullptr;
   Eigen::MatrixXd x;        ///< current node positions
   Eigen::MatrixXd normals;  ///< smoothed nodal normals
+  /// 2D: 4 × num_nodes; at a corner node (ContactSurface::corner) the current outward unit normals of its
+  /// two facets at the node: rows 0–1 of the facet that ends there, rows 2–3 of the one that starts there
+  /// (zero elsewhere; empty in 3D).
+  Eigen::MatrixXd corner_normals;
   BoundingVolumeHierarchy tree;
 };
 
@@ -64,6 +68,18 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// Projects point p (dim entries) with outward slave normal `slave_normal` on the master; fills the master
 /// part of `cp` (facet, η, x, x̄, n̄, gap) and returns true when the point is a contact candidate
 /// (the rules above).
+/// The normal n̄ is the smoothed nodal normal interpolated on the master facet, except at a corner of a 2D
+/// master (ContactSurface::corner), which is treated as a vertex of the polygon: on either facet the
+/// interpolation uses that facet's own normal at the corner node (one-sided normals), and a point whose
+/// closest point is the corner node itself (the fan between the two facet normals) takes the direction of
+/// the corner's normal cone {a n₁ + b n₂, a, b ≥ 0} nearest to −n_s, the opposite (slave) surface's
+/// normal: −n_s itself when the slave surface rests on the corner (a supporting line of the corner has
+/// its normal in the cone), the nearer facet normal otherwise, which makes n̄ continuous at the edges of
+/// the fan up to O(θ φ²) in the gap. Averaging the two facet normals there instead gives the bisector,
+/// 45° off both facets at a right angle: the contact force at the corner then has a tangential part of
+/// the order of the normal force for any slave surface that is not 45° inclined.
+/// (The vertex treatment of node-to-segment contact at polygon corners, Wriggers, Computational Contact
+/// Mechanics, 2nd ed., 2006, §4.1.2; the normal cone: Moreau's convex analysis.)
 /// With `allow_past_end`, a point past an end of the master surface projects onto that end (used for
 /// nodal friction: a slave node that hangs over the master's end can still carry pressure).
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,

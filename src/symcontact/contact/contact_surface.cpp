@@ -1,6 +1,7 @@
 #include "symcontact/contact/contact_surface.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <stdexcept>
 #include <map>
 #include <unordered_map>
@@ -78,6 +79,21 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   s.valence.assign(s.num_nodes(), 0);
   for (Index f = 0; f < s.num_facets(); ++f)
     for (int a = 0; a < nv; ++a) ++s.valence[s.facet(f)[a]];
+  if (s.dim == 2) {
+    // Corners: the outward unit normals of the two facets at a vertex of valence 2 (Line2/Line3 facets run
+    // from local node 0 to local node 1) differ by more than kCornerAngleDegrees.
+    const std::vector<double> ref = reference_nodes(s.facet_type);
+    Eigen::MatrixXd n = Eigen::MatrixXd::Zero(4, s.num_nodes());  // normal as facet end (0:2), as start (2:4)
+    Eigen::MatrixXd xf(2, npf);
+    for (Index f = 0; f < s.num_facets(); ++f) {
+      for (int a = 0; a < npf; ++a) xf.col(a) = s.X.col(s.facet(f)[a]);
+      for (int a = 0; a < 2; ++a) n.block<2, 1>(a == 1 ? 0 : 2, s.facet(f)[a]) = facet_normal(s.facet_type, xf, &ref[a]).normalized();
+    }
+    const double c = std::cos(kCornerAngleDegrees * M_PI / 180.0);
+    s.corner.assign(s.num_nodes(), 0);
+    for (Index k = 0; k < s.num_nodes(); ++k)
+      s.corner[k] = s.valence[k] == 2 && n.block<2, 1>(0, k).dot(n.block<2, 1>(2, k)) < c;
+  }
   if (s.dim == 3) {
     // Border edges: edges held by a single facet.
     std::map<std::pair<Index, Index>, int> count;

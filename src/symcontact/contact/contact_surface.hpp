@@ -27,6 +27,14 @@ struct ContactSurface {
   /// Number of facets that share each surface node as a vertex (0 for edge-midpoint nodes). In 2D a
   /// vertex of valence 1 is an end of the surface: projections past it find no contact.
   std::vector<int> valence;
+  /// 2D only (empty in 3D): 1 for the vertex nodes where the surface has a corner: two facets meet there
+  /// whose outward unit normals at the node, in the reference configuration, differ by more than
+  /// kCornerAngleDegrees (the 90° corner of a block; not a faceted curve, whose facets turn by a few
+  /// degrees per node). At a corner the averaged nodal normal (nodal_normals()) is wrong for both facets
+  /// (45° off for a right angle), so the master side of the contact search treats the node as a vertex
+  /// instead: each facet keeps its own normal up to the corner, and a point whose closest point is the
+  /// corner itself takes the normal of the normal cone nearest to the opposite surface's (contact_points.hpp).
+  std::vector<char> corner;
   /// 3D only (empty in 2D): num_facets × 3 flags, 1 when edge e of facet f (closest_point.hpp numbering)
   /// belongs to no other facet of the surface. Such edges form the border of the surface, the 3D
   /// analogue of the 2D ends: a projection clamped onto a border edge, or onto a vertex of one, is past
@@ -44,6 +52,10 @@ struct ContactSurface {
   const Index* facet(Index f) const { return facets.data() + f * nodes_per_facet(); }
   bool is_rigid() const { return body < 0; }
 };
+
+/// Facet-normal angle above which a 2D surface node is a corner (ContactSurface::corner). 45°: a right
+/// angle (90°) is a corner; a circle meshed with at least 8 facets (≤ 45° per node) is not.
+constexpr double kCornerAngleDegrees = 45.0;
 
 /// The surface of facet group `group` of `mesh`, owned by `body` (−1: rigid). Throws
 /// std::out_of_range if the group does not exist (the caller turns it into an InputError with its key).

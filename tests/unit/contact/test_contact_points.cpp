@@ -89,3 +89,84 @@ TEST_P(MortarCells3D, PastTheBorderOfTheMasterIsNoContact) {
 
 INSTANTIATE_TEST_SUITE_P(ContactPoints, MortarCells3D, ::testing::Values(1, 2),
                          [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
+
+// A 2D master with a right-angled corner (the top and left sides of the square [0, 1]², group
+// "top_left"): the corner node is a vertex of the polygon (ContactSurface::corner). The averaged nodal
+// normal there would be the bisector (−1, 1)/√2; with the vertex treatment each side keeps its own normal
+// and a slave surface resting on the corner sees the gap along its own normal.
+class CornerMaster2D : public ::testing::TestWithParam<int> {
+ protected:
+  void SetUp() override {
+    block = rectangle_mesh(0.0, 0.0, 1.0, 1.0, 4, 4, GetParam());
+    auto& g = block.facet_groups["top_left"].facets;
+    for (const char* side : {"left", "top"}) {
+      const auto& f = block.facet_groups[side].facets;
+      g.insert(g.end(), f.begin(), f.end());
+    }
+    block.locate_facets();
+    master = make_contact_surface(block, "top_left", 0, "block.top_left");
+  }
+  Mesh block;
+  ContactSurface master;
+};
+
+TEST_P(CornerMaster2D, OnlyTheRightAngleIsACorner) {
+  int corners = 0;
+  for (Index k = 0; k < master.num_nodes(); ++k) {
+    const bool at = (master.X.col(k) - Eigen::Vector2d(0, 1)).norm() < 1e-14;
+    EXPECT_EQ(master.corner[k] != 0, at) << "node at " << master.X.col(k).transpose();
+    corners += master.corner[k];
+  }
+  EXPECT_EQ(corners, 1);
+  // The ends of an open surface (valence 1) and the nodes along a straight side are not corners.
+  const ContactSurface top = make_contact_surface(block, "top", 0, "block.top");
+  for (char c : top.corner) EXPECT_EQ(c, 0);
+}
+
+TEST_P(CornerMaster2D, EachSideKeepsItsNormalAndTheCornerTakesTheSlaveNormal) {
+  const MasterGeometry mg = prepare_master(master, master.X);
+  ContactPoint cp;
+  const Eigen::Vector3d down(0, -1, 0);
+  // On the top facet next to the corner: n̄ = (0, 1) exactly (interpolating the bisector would tilt it).
+  ASSERT_TRUE(project_to_master(mg, Eigen::Vector2d(0.1, 1.05), down, 0.2, cp));
+  EXPECT_NEAR((cp.normal - Eigen::Vector3d(0, 1, 0)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(cp.gap, 0.05, 1e-14);
+  // On the left side next to the corner: n̄ = (−1, 0).
+  ASSERT_TRUE(project_to_master(mg, Eigen::Vector2d(-0.04, 0.9), Eigen::Vector3d(1, 0, 0), 0.2, cp));
+  EXPECT_NEAR((cp.normal - Eigen::Vector3d(-1, 0, 0)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(cp.gap, 0.04, 1e-14);
+  // Above and left of the corner (its closest point is the corner): a horizontal slave surface resting
+  // on the corner measures the gap vertically, 0.04 (the bisector would give 0.07/√2 = 0.0495).
+  ASSERT_TRUE(project_to_master(mg, Eigen::Vector2d(-0.03, 1.04), down, 0.2, cp));
+  EXPECT_NEAR((cp.xbar - Eigen::Vector3d(0, 1, 0)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR((cp.normal - Eigen::Vector3d(0, 1, 0)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(cp.gap, 0.04, 1e-14);
+  // A slave surface inclined by 30° (normal (sin 30°, −cos 30°)): −n_s is inside the cone, n̄ = −n_s.
+  const Eigen::Vector3d tilted(0.5, -std::sqrt(0.75), 0);
+  ASSERT_TRUE(project_to_master(mg, Eigen::Vector2d(-0.03, 1.04), tilted, 0.2, cp));
+  EXPECT_NEAR((cp.normal + tilted).norm(), 0.0, 1e-14);
+  // A slave normal outside the cone (pointing right and slightly up): the nearer side's normal, (−1, 0).
+  ASSERT_TRUE(project_to_master(mg, Eigen::Vector2d(-0.03, 1.04), Eigen::Vector3d(1, 0.2, 0), 0.2, cp));
+  EXPECT_NEAR((cp.normal - Eigen::Vector3d(-1, 0, 0)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(cp.gap, 0.03, 1e-14);
+}
+
+TEST_P(CornerMaster2D, FlatSlaveOverTheCornerSeesAUniformGap) {
+  // A flat slave face at y = 1.02, x ∈ [−0.3, 0.3], facing down: half of it overhangs the corner. Every
+  // point's gap is 0.02 along (0, 1), and every point contributes (weights add up to the length 0.6).
+  const Mesh upper = rectangle_mesh(-0.3, 1.02, 0.3, 1.5, 3, 1, GetParam());
+  const ContactSurface slave = make_contact_surface(upper, "bottom", 1, "upper.bottom");
+  const MasterGeometry mg = prepare_master(master, master.X);
+  ContactSearchOptions opt;
+  opt.search_distance = 0.5;  // beyond the overhang: no point is left out for its distance
+  double w = 0.0;
+  for (const ContactPoint& p : contact_points(slave, slave.X, mg, opt)) {
+    w += p.weight;
+    EXPECT_NEAR(p.gap, 0.02, 1e-14) << "at x = " << p.x.x();
+    EXPECT_NEAR((p.normal - Eigen::Vector3d(0, 1, 0)).norm(), 0.0, 1e-14) << "at x = " << p.x.x();
+  }
+  EXPECT_NEAR(w, 0.6, 1e-13);
+}
+
+INSTANTIATE_TEST_SUITE_P(ContactPoints, CornerMaster2D, ::testing::Values(1, 2),
+                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
