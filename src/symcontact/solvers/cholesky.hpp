@@ -1,7 +1,7 @@
 #pragma once
 /// \file cholesky.hpp
 /// Sparse Cholesky factorisation A = L Lᵀ of a symmetric positive definite matrix by CHOLMOD
-/// (supernodal or simplicial, CHOLMOD's choice; LLᵀ in both, so an indefinite matrix always fails),
+/// (supernodal LLᵀ or simplicial LDLᵀ, CHOLMOD's choice by size and sparsity),
 /// through Eigen's CholmodSupport and CHOLMOD's 64-bit interface at every size (cholmod_long.hpp: no 2³¹
 /// limit on the factor's entries). Only the lower triangle of A is read (copied once per call to 64-bit
 /// indices). The symbolic analysis can be reused across factorisations of matrices with the same
@@ -23,7 +23,13 @@ class CholeskySolver {
   /// Fill-reducing ordering and symbolic factorisation (pattern of `lower` only).
   void analyze(const SparseMatrix& lower);
   /// Numeric factorisation. Throws SolveError when A is not positive definite (for an elastic
-  /// stiffness: a body free to move rigidly, i.e. too few Dirichlet conditions).
+  /// stiffness: a body free to move rigidly, i.e. too few Dirichlet conditions) — with a supernodal
+  /// factor. With a simplicial one (CHOLMOD's choice for small or very sparse matrices: measured, a
+  /// 3D grid Laplacian of 6³ unknowns) the factor is LDLᵀ, and a nonsingular indefinite A is factorised
+  /// and solved exactly instead; only a zero pivot throws. Forcing LLᵀ there made the frictional
+  /// ironing test fail (a sub-step's geometry fixed point no longer converged), so the finite-strain
+  /// path depends on it somewhere (the polish's M = H + ρ AᵀA or the Newton shift; not isolated).
+  /// Callers that need definiteness on small problems must not infer it from success.
   void factorize(const SparseMatrix& lower);
   /// analyze() when needed (first call or new size), then factorize().
   void compute(const SparseMatrix& lower);
