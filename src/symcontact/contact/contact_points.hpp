@@ -99,10 +99,26 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
                                                const MasterGeometry* master, const Obstacle* obstacle,
                                                double search_distance);
 
-/// The interface normal at every node of `slave`, outward for the slave (dim × n): −n̄ at the node's
-/// projection (nodal_contact_points), or the node's own smoothed normal where it projects onto nothing.
+/// The interface normal of a node, outward for its side, along which its pressure is recovered
+/// (surface_tractions.hpp), from its own smoothed normal n_s and the opposite side's smoothed normal n̄ at
+/// its projection:
+///  - one-sided pairs (obstacle, one-pass): −n̄, the only direction the constraints push in;
+///  - two-sided pairs (symmetric, self-contact; `two_sided`): the bisector ν = (n_s − n̄)/|n_s − n̄|. A
+///    node's force there is the sum of its own rows' (along n̄ at its points' projections) and of the
+///    opposite side's rows' (along its own surface's normals near it), so it points between the two.
+///    The talk's pressure is σ_n = (σ¹n¹)·n¹ = (σ²n²)·n² with n¹ = −n² (eq. 12), a single normal; the
+///    discrete n_s and −n̄ differ where the facets are tilted (the edge of a curved contact zone), and
+///    the bisector treats the sides alike: on a mirror-symmetric interface it is the symmetry plane's
+///    normal, along which the nodal force points, while −n̄ or n_s alone are tilted by the local slope t
+///    and report cos t of the force (V7, docs/validation.md: 2.0e-5 → 1.0e-5 of p_max in 3D). Where n_s
+///    and −n̄ agree (a closed, conforming contact) the choices coincide.
+/// Returns a unit vector of the size of `own`.
+Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::VectorXd& nbar, bool two_sided);
+
+/// The interface normal at every node of `slave` (dim × n): interface_normal() at the node's projection
+/// (nodal_contact_points), or the node's own smoothed normal where it projects onto nothing.
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
-                                  const Obstacle* obstacle, double search_distance);
+                                  const Obstacle* obstacle, double search_distance, bool two_sided = false);
 
 /// Bounding box of a facet from its node positions (for Line3/Tri6 also the Bézier control points of the
 /// edges, which bound the curved facet), padded by `pad`.
