@@ -99,10 +99,9 @@ TEST(InterfaceNormal, TwoSidedIsTheBisectorOfBothSidesNormalsOneSidedTheOpposite
   const double t = 0.022;
   for (int dim : {2, 3}) {
     Eigen::VectorXd own = Eigen::VectorXd::Zero(dim), nbar = Eigen::VectorXd::Zero(dim);
-    own[0] = std::sin(t) * 0.6;
+    own[0] = std::sin(t) * (dim == 3 ? 0.6 : 1.0);  // a unit vector tilted by t from −e_y
     own[1] = -std::cos(t);
     if (dim == 3) own[2] = std::sin(t) * 0.8;
-    own.normalize();
     nbar = own;
     nbar[1] = -own[1];  // the mirror image's outward normal
     const Eigen::VectorXd one = interface_normal(own, nbar, false), two = interface_normal(own, nbar, true);
