@@ -370,11 +370,10 @@ Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::Vector
 }
 
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
-                                  const Obstacle* obstacle, double search_distance, bool two_sided) {
-  const Eigen::MatrixXd own = nodal_normals(slave, xs);
-  Eigen::MatrixXd n = own;
+                                  const Obstacle* obstacle, double search_distance) {
+  Eigen::MatrixXd n = nodal_normals(slave, xs);
   for (const ContactPoint& p : nodal_contact_points(slave, xs, master, obstacle, search_distance))
-    n.col(p.slave_node) = interface_normal(own.col(p.slave_node), p.normal.head(slave.dim), two_sided);
+    n.col(p.slave_node) = -p.normal.head(slave.dim);
   return n;
 }
 

@@ -112,13 +112,18 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
 ///    normal, along which the nodal force points, while −n̄ or n_s alone are tilted by the local slope t
 ///    and report cos t of the force (V7, docs/validation.md: 2.0e-5 → 1.0e-5 of p_max in 3D). Where n_s
 ///    and −n̄ agree (a closed, conforming contact) the choices coincide.
+/// Used by the reported contact results (post/contact_results.hpp). The Coulomb threshold's pressure
+/// keeps −n̄ (interface_normals() below), the normal of the friction term, so that the friction law holds
+/// in the friction term's own decomposition. Known limit: at a corner of the surface the node's own
+/// smoothed normal averages the two facets', and so does the bisector there.
 /// Returns a unit vector of the size of `own`.
 Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::VectorXd& nbar, bool two_sided);
 
-/// The interface normal at every node of `slave` (dim × n): interface_normal() at the node's projection
-/// (nodal_contact_points), or the node's own smoothed normal where it projects onto nothing.
+/// The one-sided interface normal at every node of `slave`, outward for the slave (dim × n): −n̄ at the
+/// node's projection (nodal_contact_points), or the node's own smoothed normal where it projects onto
+/// nothing. The normal of the friction term and of the Coulomb threshold's pressure.
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
-                                  const Obstacle* obstacle, double search_distance, bool two_sided = false);
+                                  const Obstacle* obstacle, double search_distance);
 
 /// Bounding box of a facet from its node positions (for Line3/Tri6 also the Bézier control points of the
 /// edges, which bound the curved facet), padded by `pad`.

@@ -12,8 +12,7 @@ namespace {
 /// Nodal pressures (clamped at 0) on the friction-slave surface of pair p.
 Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap& dofs, const VectorXd& u,
                                        const VectorXd& force) {
-  // Along the interface normal, as the contact results decompose (interface_normal(), contact_points.hpp:
-  // −n̄ as the friction term, or the bisector of both sides' normals on a symmetric pair).
+  // Along the interface normal, as the friction term and the contact results decompose.
   const ContactFamily& fam = cs.families()[cs.friction_family(p)];
   const ContactSurface& s = cs.surfaces[fam.slave];
   const Eigen::MatrixXd xs = current_positions(s, dofs, u);
@@ -21,7 +20,7 @@ Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap
   if (fam.master >= 0) {
     const ContactSurface& ms = cs.surfaces[fam.master];
     const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, u));
-    normals = interface_normals(s, xs, &mg, nullptr, cs.pairs[p].search_distance, cs.pairs[p].two_sided());
+    normals = interface_normals(s, xs, &mg, nullptr, cs.pairs[p].search_distance);
   } else {
     normals = interface_normals(s, xs, nullptr, &cs.obstacles[cs.pairs[p].obstacle], cs.pairs[p].search_distance);
   }
