@@ -399,6 +399,12 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
   return points;
 }
 
+Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::VectorXd& nbar, bool two_sided) {
+  if (!two_sided) return -nbar;
+  const Eigen::VectorXd nu = own - nbar;  // n_s·n̄ < 0 (project_to_master): |ν| > √2
+  return nu / nu.norm();
+}
+
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
                                   const Obstacle* obstacle, double search_distance) {
   Eigen::MatrixXd n = nodal_normals(slave, xs);

@@ -115,8 +115,29 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
                                                const MasterGeometry* master, const Obstacle* obstacle,
                                                double search_distance);
 
-/// The interface normal at every node of `slave`, outward for the slave (dim × n): −n̄ at the node's
-/// projection (nodal_contact_points), or the node's own smoothed normal where it projects onto nothing.
+/// The interface normal of a node, outward for its side, along which its pressure is recovered
+/// (surface_tractions.hpp), from its own smoothed normal n_s and the opposite side's smoothed normal n̄ at
+/// its projection:
+///  - one-sided pairs (obstacle, one-pass): −n̄, the only direction the constraints push in;
+///  - two-sided pairs (symmetric, self-contact; `two_sided`): the bisector ν = (n_s − n̄)/|n_s − n̄|. A
+///    node's force there is the sum of its own rows' (along n̄ at its points' projections) and of the
+///    opposite side's rows' (along its own surface's normals near it), so it points between the two.
+///    The talk's pressure is σ_n = (σ¹n¹)·n¹ = (σ²n²)·n² with n¹ = −n² (eq. 12), a single normal; the
+///    discrete n_s and −n̄ differ where the facets are tilted (the edge of a curved contact zone), and
+///    the bisector treats the sides alike: on a mirror-symmetric interface it is the symmetry plane's
+///    normal, along which the nodal force points, while −n̄ or n_s alone are tilted by the local slope t
+///    and report cos t of the force (V7, docs/validation.md: 2.0e-5 → 1.0e-5 of p_max in 3D). Where n_s
+///    and −n̄ agree (a closed, conforming contact) the choices coincide.
+/// Used by the reported contact results (post/contact_results.hpp). The Coulomb threshold's pressure
+/// keeps −n̄ (interface_normals() below), the normal of the friction term, so that the friction law holds
+/// in the friction term's own decomposition. Known limit: at a corner of the surface the node's own
+/// smoothed normal averages the two facets', and so does the bisector there.
+/// Returns a unit vector of the size of `own`.
+Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::VectorXd& nbar, bool two_sided);
+
+/// The one-sided interface normal at every node of `slave`, outward for the slave (dim × n): −n̄ at the
+/// node's projection (nodal_contact_points), or the node's own smoothed normal where it projects onto
+/// nothing. The normal of the friction term and of the Coulomb threshold's pressure.
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
                                   const Obstacle* obstacle, double search_distance);
 

@@ -37,6 +37,9 @@ struct ContactPair {
   double mu = 0.0;              ///< Coulomb coefficient
   double tau = 0.0;             ///< Tresca threshold
   double alpha = 0.0;           ///< regularisation length (resolved, > 0 with friction)
+  /// Constraints push on each node from both sides (symmetric or self-contact): the reported pressure is
+  /// along the bisector of the two sides' normals (contact_points.hpp, interface_normal()).
+  bool two_sided() const { return obstacle < 0 && (mode == ContactMode::kSymmetric || surface_a == surface_b); }
 };
 
 struct ContactFamily {

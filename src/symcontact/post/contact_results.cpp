@@ -13,8 +13,8 @@ namespace {
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// Signed distance of every node of side `side` to the opposite side of its pair, and the interface normal
-/// there (minus the opposite surface's normal at the projection, i.e. outward for this side); nodes
-/// that project onto nothing get a NaN gap and keep their own normal.
+/// there (interface_normal(), contact_points.hpp: outward for this side); nodes that project onto nothing
+/// get a NaN gap and keep their own normal.
 Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int side, const DofMap& dofs,
                            const VectorXd& u, const Eigen::MatrixXd& xs, Eigen::MatrixXd& normals) {
   const ContactSurface& s = cs.surfaces[side == 0 ? pair.surface_a : pair.surface_b];
@@ -38,7 +38,7 @@ Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int si
     ContactPoint cp;
     if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp)) {
       gap[k] = cp.gap;
-      normals.col(k) = -cp.normal.head(s.dim);
+      normals.col(k) = interface_normal(own.col(k), cp.normal.head(s.dim), pair.two_sided());
     }
   }
   return gap;

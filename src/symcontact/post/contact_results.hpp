@@ -3,9 +3,10 @@
 /// Contact quantities at the surface nodes of every pair, recovered from the contact forces of the
 /// final solve (both constraint families together, plus friction; surface_tractions.hpp):
 ///  - nodal force f_k, pressure p_k = −f_k·n_k / A_k, tangential traction t_k (force per area), with n_k
-///    the interface normal at the node: minus the opposite surface's smoothed normal at the node's
-///    projection (the normal of the constraints and of friction), or the node's own where it projects
-///    onto nothing,
+///    the interface normal at the node (contact_points.hpp, interface_normal()): minus the opposite
+///    surface's smoothed normal n̄ at the node's projection (the normal of the constraints and of
+///    friction) for an obstacle or a one-pass pair; for a symmetric or self-contact pair the bisector of
+///    the node's own normal and −n̄; the node's own where it projects onto nothing,
 ///  - gap: the signed distance θ of the node to the opposite surface (closest point, smoothed normal),
 ///    NaN when the node projects onto nothing,
 ///  - slip (friction side only, NaN elsewhere): the tangential slip increment of the load step at the

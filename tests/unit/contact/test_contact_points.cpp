@@ -170,3 +170,28 @@ TEST_P(CornerMaster2D, FlatSlaveOverTheCornerSeesAUniformGap) {
 
 INSTANTIATE_TEST_SUITE_P(ContactPoints, CornerMaster2D, ::testing::Values(1, 2),
                          [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
+
+// The interface normal of a node whose own normal is tilted by t from −e_y, facing its mirror image (the
+// opposite side's normal n̄ the reflection of the own one through y = 0), as at the edge of the contact
+// zone in V7: one-sided, −n̄ (tilted by t the other way); two-sided, the bisector, which is the symmetry
+// plane's normal −e_y exactly, so that a nodal force along e_y (the mirror-symmetric nodal force) gives
+// its full magnitude as the pressure, where −n̄ gives cos t of it.
+TEST(InterfaceNormal, TwoSidedIsTheBisectorOfBothSidesNormalsOneSidedTheOpposite) {
+  const double t = 0.022;
+  for (int dim : {2, 3}) {
+    Eigen::VectorXd own = Eigen::VectorXd::Zero(dim), nbar = Eigen::VectorXd::Zero(dim);
+    own[0] = std::sin(t) * (dim == 3 ? 0.6 : 1.0);  // a unit vector tilted by t from −e_y
+    own[1] = -std::cos(t);
+    if (dim == 3) own[2] = std::sin(t) * 0.8;
+    nbar = own;
+    nbar[1] = -own[1];  // the mirror image's outward normal
+    const Eigen::VectorXd one = interface_normal(own, nbar, false), two = interface_normal(own, nbar, true);
+    EXPECT_NEAR((one + nbar).norm(), 0.0, 1e-15);
+    EXPECT_NEAR(std::abs(two[1] + 1.0), 0.0, 1e-15) << "dim " << dim;
+    EXPECT_NEAR(two.norm(), 1.0, 1e-15);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(dim);
+    f[1] = 1.0;
+    EXPECT_NEAR(-f.dot(two), 1.0, 1e-15);
+    EXPECT_NEAR(-f.dot(one), std::cos(t), 1e-15);
+  }
+}
