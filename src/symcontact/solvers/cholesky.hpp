@@ -27,9 +27,10 @@ class CholeskySolver {
   /// factor. With a simplicial one (CHOLMOD's choice for small or very sparse matrices: measured, a
   /// 3D grid Laplacian of 6³ unknowns) the factor is LDLᵀ, and a nonsingular indefinite A is factorised
   /// and solved exactly instead; only a zero pivot throws. Forcing LLᵀ there made the frictional
-  /// ironing test fail (a sub-step's geometry fixed point no longer converged), so the finite-strain
-  /// path depends on it somewhere (the polish's M = H + ρ AᵀA or the Newton shift; not isolated).
-  /// Callers that need definiteness on small problems must not infer it from success.
+  /// ironing test fail (a sub-step's geometry fixed point no longer converged): its Dirichlet predictor
+  /// (equilibrium_solver.cpp, factorize_descent()) then takes a shifted step instead of the exact
+  /// tangent one (see the .cpp). Callers that need definiteness on small problems must not infer it
+  /// from success.
   void factorize(const SparseMatrix& lower);
   /// analyze() when needed (first call or new size), then factorize().
   void compute(const SparseMatrix& lower);
