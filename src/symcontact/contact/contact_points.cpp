@@ -85,17 +85,7 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
   g.surface = &master;
   g.x = x;
   g.normals = nodal_normals(master, x);
-  if (master.dim == 2) {
-    g.corner_normals = Eigen::MatrixXd::Zero(4, master.num_nodes());
-    const std::vector<double> ref = reference_nodes(master.facet_type);
-    for (Index f = 0; f < master.num_facets(); ++f)
-      for (int a = 0; a < 2; ++a) {
-        const Index k = master.facet(f)[a];
-        if (!master.corner[k]) continue;
-        const Eigen::VectorXd n = facet_normal(master.facet_type, facet_nodes(master, x, f), &ref[a]);
-        if (n.norm() > 0) g.corner_normals.block<2, 1>(a == 1 ? 0 : 2, k) = n.normalized();
-      }
-  }
+  if (master.dim == 2) g.corner_normals = facet_end_normals(master, x);  // read at corner nodes only
   std::vector<BoundingVolumeHierarchy::Box> boxes(master.num_facets());
   for (Index f = 0; f < master.num_facets(); ++f) boxes[f] = facet_box(master.facet_type, facet_nodes(master, x, f), 0.0);
   g.tree.build(boxes);

@@ -58,7 +58,7 @@ struct MasterGeometry {
   Eigen::MatrixXd normals;  ///< smoothed nodal normals
   /// 2D: 4 × num_nodes; at a corner node (ContactSurface::corner) the current outward unit normals of its
   /// two facets at the node: rows 0–1 of the facet that ends there, rows 2–3 of the one that starts there
-  /// (zero elsewhere; empty in 3D).
+  /// (facet_end_normals(), filled at every node, read at corners only; empty in 3D).
   Eigen::MatrixXd corner_normals;
   BoundingVolumeHierarchy tree;
 };

@@ -82,13 +82,7 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   if (s.dim == 2) {
     // Corners: the outward unit normals of the two facets at a vertex of valence 2 (Line2/Line3 facets run
     // from local node 0 to local node 1) differ by more than kCornerAngleDegrees.
-    const std::vector<double> ref = reference_nodes(s.facet_type);
-    Eigen::MatrixXd n = Eigen::MatrixXd::Zero(4, s.num_nodes());  // normal as facet end (0:2), as start (2:4)
-    Eigen::MatrixXd xf(2, npf);
-    for (Index f = 0; f < s.num_facets(); ++f) {
-      for (int a = 0; a < npf; ++a) xf.col(a) = s.X.col(s.facet(f)[a]);
-      for (int a = 0; a < 2; ++a) n.block<2, 1>(a == 1 ? 0 : 2, s.facet(f)[a]) = facet_normal(s.facet_type, xf, &ref[a]).normalized();
-    }
+    const Eigen::MatrixXd n = facet_end_normals(s, s.X);
     const double c = std::cos(kCornerAngleDegrees * M_PI / 180.0);
     s.corner.assign(s.num_nodes(), 0);
     for (Index k = 0; k < s.num_nodes(); ++k)
@@ -150,6 +144,21 @@ Eigen::MatrixXd nodal_normals(const ContactSurface& s, const Eigen::MatrixXd& x)
   for (Index k = 0; k < s.num_nodes(); ++k) {
     const double len = n.col(k).norm();
     if (len > 0) n.col(k) /= len;
+  }
+  return n;
+}
+
+Eigen::MatrixXd facet_end_normals(const ContactSurface& s, const Eigen::MatrixXd& x) {
+  const std::vector<double> ref = reference_nodes(s.facet_type);
+  const int npf = s.nodes_per_facet();
+  Eigen::MatrixXd n = Eigen::MatrixXd::Zero(4, s.num_nodes());
+  Eigen::MatrixXd xf(2, npf);
+  for (Index f = 0; f < s.num_facets(); ++f) {
+    for (int a = 0; a < npf; ++a) xf.col(a) = x.col(s.facet(f)[a]).head<2>();
+    for (int a = 0; a < 2; ++a) {
+      const Eigen::VectorXd nf = facet_normal(s.facet_type, xf, &ref[a]);
+      if (nf.norm() > 0) n.block<2, 1>(a == 1 ? 0 : 2, s.facet(f)[a]) = nf.normalized();
+    }
   }
   return n;
 }

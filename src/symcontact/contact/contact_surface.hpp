@@ -95,4 +95,10 @@ Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd
 /// surface Jacobian dS/dξ. In 2D, for a facet traversed with the body on its left, n = (t_y, −t_x).
 Eigen::VectorXd facet_normal(CellType type, const Eigen::MatrixXd& xf, const double* xi);
 
+/// 2D: the outward unit normals of the two facets at each vertex node for node positions `x` (dim × n),
+/// 4 × num_nodes: rows 0–1 of the facet that ends at the node (its local node 1), rows 2–3 of the one that
+/// starts there (local node 0); zero where there is no such facet. Used for corners (ContactSurface::corner)
+/// in the reference configuration and by the contact search in the current one.
+Eigen::MatrixXd facet_end_normals(const ContactSurface& s, const Eigen::MatrixXd& x);
+
 }  // namespace symcontact
