@@ -28,6 +28,14 @@ Eigen::Vector3d pad3(const Eigen::VectorXd& v) {
   return r;
 }
 
+/// The slave's smoothed normal at a point of facet f with shape function values N: the nodal normals
+/// (dim × n) interpolated and normalised.
+Eigen::Vector3d smoothed_at(const ContactSurface& s, const Eigen::MatrixXd& nodal, Index f, const double* N) {
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (int a = 0; a < s.nodes_per_facet(); ++a) n.head(s.dim) += N[a] * nodal.col(s.facet(f)[a]);
+  return n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : n;
+}
+
 double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// Points of the slave facet (Line2/Line3, current nodes xf) where the line through v along n crosses it.
@@ -131,10 +139,155 @@ int default_gauss(const ContactSurface& s, const ContactSearchOptions& o) {
 
 }  // namespace
 
-bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
-                       double search, ContactPoint& cp, bool allow_past_end) {
+namespace {
+
+/// The smoothed master normal (unit, or zero) at η of facet mf, away from corners: the nodal normals
+/// interpolated, with a 2D corner node contributing this facet's own normal there.
+Eigen::Vector3d smoothed_normal(const MasterGeometry& master, Index mf, const double* eta) {
   const ContactSurface& ms = *master.surface;
-  const int mpf = ms.nodes_per_facet();
+  double M[10];
+  shape_functions(ms.facet_type, eta, M, nullptr);
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for (int b = 0; b < ms.nodes_per_facet(); ++b) {
+    const Index k = ms.facet(mf)[b];
+    // At a corner node, this facet's own normal there (rows 0–1 when the facet ends at it: local node 1).
+    if (ms.dim == 2 && b < 2 && ms.corner[k])
+      n.head<2>() += M[b] * master.corner_normals.block<2, 1>(b == 1 ? 0 : 2, k);
+    else
+      n.head(ms.dim) += M[b] * master.normals.col(k);
+  }
+  return n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : n;
+}
+
+/// Where the line p − θ m meets the (extended) facet geometry xf (dim × npf): Newton on x(η) + θ m = p
+/// for (η, θ), from the η and θ given; one step on a flat facet. False if it does not converge.
+bool ray_meets_facet(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, const Eigen::Vector3d& m,
+                     double* eta, double& theta) {
+  const int D = static_cast<int>(xf.rows()), d = D - 1, npf = static_cast<int>(xf.cols());
+  double N[10], dN[20];
+  for (int it = 0; it < 20; ++it) {
+    shape_functions(type, eta, N, dN);
+    Eigen::VectorXd r = theta * m.head(D) - p.head(D);
+    Eigen::MatrixXd J(D, D);
+    J.setZero();
+    for (int a = 0; a < npf; ++a) {
+      r += N[a] * xf.col(a);
+      for (int i = 0; i < d; ++i) J.col(i) += dN[a * d + i] * xf.col(a);
+    }
+    J.col(d) = m.head(D);
+    const Eigen::VectorXd dz = J.partialPivLu().solve(r);
+    if (!dz.allFinite()) return false;
+    for (int i = 0; i < d; ++i) eta[i] -= dz[i];
+    theta -= dz[d];
+    if (std::abs(eta[0]) > 10 || (d == 2 && std::abs(eta[1]) > 10)) return false;
+    if (dz.head(d).cwiseAbs().maxCoeff() < 1e-15) return true;
+  }
+  return true;  // 20 Newton steps: as close as it gets
+}
+
+/// Is η in the reference facet (to `tol`)? Clamps it into the facet in any case (near enough to the
+/// nearest point for evaluating normals on the way to a fixed point).
+bool clamp_to_facet(int d, double* eta, double tol) {
+  if (d == 1) {
+    const bool in = eta[0] >= -tol && eta[0] <= 1 + tol;
+    eta[0] = std::clamp(eta[0], 0.0, 1.0);
+    return in;
+  }
+  const bool in = eta[0] >= -tol && eta[1] >= -tol && eta[0] + eta[1] <= 1 + tol;
+  eta[0] = std::max(eta[0], 0.0);
+  eta[1] = std::max(eta[1], 0.0);
+  const double sum = eta[0] + eta[1];
+  if (sum > 1.0) {
+    eta[0] /= sum;
+    eta[1] /= sum;
+  }
+  return in;
+}
+
+/// The bisector-ray projection (project_to_master(), `ray_normal`): from the closest-point projection in
+/// cp, the fixed point  m = (n̄(x̄) − n_s)/|n̄(x̄) − n_s|,  x̄ = the point where the line p − θ m meets the
+/// master,  updating cp (facet, η, x̄, normal m, gap θ) when it settles. The facet met: the current one,
+/// else the facing facet nearest p along the line among those whose boxes meet a box around p of
+/// half-width 2|p − x̄| (on a smooth patch the ray's foot lies within |p − x̄| of the closest point);
+/// when the line meets none, the current facet's extension, clamped into it, stands in for x̄ for the
+/// next pass (near the master's end the first bisector can miss it while the fixed point is inside).
+/// Left unchanged (the closest point) when the iteration does not settle inside the master within 50
+/// passes.
+void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d& p, const Eigen::Vector3d& slave_normal,
+                            const Eigen::Vector3d& ns, ContactPoint& cp) {
+  const ContactSurface& ms = *master.surface;
+  const int d = ms.dim - 1;
+  Index f = cp.master_facet;
+  double eta[2] = {cp.eta[0], cp.eta[1]};
+  double theta = cp.gap;
+  Eigen::Vector3d n = cp.normal;
+  const double reach = 2.0 * (p - cp.xbar).norm() +
+                       1e-6 * facet_box(ms.facet_type, facet_nodes(ms, master.x, f), 0.0).diagonal().norm();
+  for (int it = 0; it < 50; ++it) {
+    Eigen::Vector3d m = n - ns;
+    if (!(m.norm() > 0)) return;
+    m.normalize();
+    Index hit = -1;
+    bool inside = false;
+    double hit_eta[2] = {eta[0], eta[1]}, hit_theta = theta;
+    {
+      double e[2] = {eta[0], eta[1]}, t = theta;
+      if (ray_meets_facet(ms.facet_type, facet_nodes(ms, master.x, f), p, m, e, t)) {
+        hit = f;
+        inside = clamp_to_facet(d, e, 1e-10);
+        hit_eta[0] = e[0];
+        hit_eta[1] = e[1];
+        hit_theta = t;
+      }
+    }
+    if (!inside) {
+      BoundingVolumeHierarchy::Box ball(p, p);
+      ball.min().array() -= reach;
+      ball.max().array() += reach;
+      master.tree.for_each_overlap(ball, [&](int k) {
+        if (k == f) return;
+        const Eigen::MatrixXd xk = facet_nodes(ms, master.x, k);
+        double e[2] = {d == 1 ? 0.5 : 1.0 / 3.0, 1.0 / 3.0}, t = theta;
+        if (!ray_meets_facet(ms.facet_type, xk, p, m, e, t) || !clamp_to_facet(d, e, 1e-10)) return;
+        if (pad3(facet_normal(ms.facet_type, xk, e)).dot(slave_normal) >= 0) return;  // back-facing
+        if (inside && std::abs(t) >= std::abs(hit_theta)) return;
+        hit = k;
+        inside = true;
+        hit_eta[0] = e[0];
+        hit_eta[1] = e[1];
+        hit_theta = t;
+      });
+    }
+    if (hit < 0) return;
+    const double change = std::abs(hit_eta[0] - eta[0]) + std::abs(hit_eta[1] - eta[1]);
+    const Eigen::Vector3d n_new = smoothed_normal(master, hit, hit_eta);
+    const bool settled = inside && hit == f && change < 1e-14 && (n_new - n).norm() < 1e-14;
+    f = hit;
+    eta[0] = hit_eta[0];
+    eta[1] = hit_eta[1];
+    theta = hit_theta;
+    n = n_new;
+    if (!(n.norm() > 0) || slave_normal.dot(n) >= 0) return;
+    if (settled) {
+      cp.master_facet = f;
+      cp.eta[0] = eta[0];
+      cp.eta[1] = d == 2 ? eta[1] : 0.0;
+      double M[10];
+      shape_functions(ms.facet_type, cp.eta, M, nullptr);
+      cp.xbar.setZero();
+      for (int b = 0; b < ms.nodes_per_facet(); ++b) cp.xbar.head(ms.dim) += M[b] * master.x.col(ms.facet(f)[b]);
+      cp.normal = m;
+      cp.gap = (p - cp.xbar).dot(m);
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
+                       double search, ContactPoint& cp, bool allow_past_end, const Eigen::Vector3d* ray_normal) {
+  const ContactSurface& ms = *master.surface;
   const Eigen::Vector3d p3 = pad3(p);
   // The nearest FACING master facet: back-facing facets (a point's own facet in self-contact, the far
   // face of a thin master) are skipped so that the search goes on to the one that matters.
@@ -148,8 +301,6 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   if (mf < 0) return false;
   const FacetProjection pr = project_on_facet(ms.facet_type, facet_nodes(ms, master.x, mf), p);
   if (!allow_past_end && past_end(ms, mf, pr)) return false;
-  double M[10];
-  shape_functions(ms.facet_type, pr.eta, M, nullptr);
   Eigen::Vector3d nbar = Eigen::Vector3d::Zero();
   const bool at_corner = ms.dim == 2 && pr.clamped_vertex >= 0 && ms.corner[ms.facet(mf)[pr.clamped_vertex]];
   if (at_corner) {
@@ -157,28 +308,20 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
     nbar.head<2>() = nearest_in_cone(master.corner_normals.block<2, 1>(0, k), master.corner_normals.block<2, 1>(2, k),
                                      -slave_normal.head<2>());
   } else {
-    for (int b = 0; b < mpf; ++b) {
-      const Index k = ms.facet(mf)[b];
-      // At a corner node, this facet's own normal there (rows 0–1 when the facet ends at it: local node 1).
-      if (ms.dim == 2 && b < 2 && ms.corner[k])
-        nbar.head<2>() += M[b] * master.corner_normals.block<2, 1>(b == 1 ? 0 : 2, k);
-      else
-        nbar.head(ms.dim) += M[b] * master.normals.col(k);
-    }
+    nbar = smoothed_normal(master, mf, pr.eta);
   }
   if (nbar.norm() == 0) return false;
   nbar.normalize();
   if (slave_normal.dot(nbar) >= 0) return false;  // not facing each other
-  const double theta = (p3 - pr.point).dot(nbar);
-  if (std::abs(theta) > search) return false;
   cp.master_facet = mf;
   cp.eta[0] = pr.eta[0];
   cp.eta[1] = pr.eta[1];
   cp.x = p3;
   cp.xbar = pr.point;
   cp.normal = nbar;
-  cp.gap = theta;
-  return true;
+  cp.gap = (p3 - pr.point).dot(nbar);
+  if (ray_normal && !at_corner) project_along_bisector(master, p3, slave_normal, *ray_normal, cp);
+  return std::abs(cp.gap) <= search;
 }
 
 namespace {
@@ -192,6 +335,7 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
   std::vector<ContactPoint> points;
   std::vector<double> cuts;
   std::vector<double> N(npf);
+  const Eigen::MatrixXd ns_nodal = options.bisector_ray ? nodal_normals(slave, xs) : Eigen::MatrixXd();
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
@@ -210,8 +354,9 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
       shape_functions(slave.facet_type, &xi, N.data(), nullptr);
       const Eigen::VectorXd p = xf * Eigen::Map<const Eigen::VectorXd>(N.data(), npf);
       const Eigen::Vector3d ns = pad3(facet_normal(slave.facet_type, xf, &xi));
+      const Eigen::Vector3d ray = options.bisector_ray ? smoothed_at(slave, ns_nodal, f, N.data()) : Eigen::Vector3d();
       ContactPoint cp;
-      if (!project_to_master(master, p, ns, search, cp)) return;
+      if (!project_to_master(master, p, ns, search, cp, false, options.bisector_ray ? &ray : nullptr)) return;
       cp.slave_facet = f;
       cp.xi[0] = xi;
       cp.weight = w * facet_normal(slave.facet_type, Xf, &xi).norm();
@@ -230,6 +375,7 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
   const QuadratureRule rule = simplex_quadrature(2, degree);
   std::vector<ContactPoint> points;
   std::vector<double> N(npf);
+  const Eigen::MatrixXd ns_nodal = options.bisector_ray ? nodal_normals(slave, xs) : Eigen::MatrixXd();
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
@@ -245,8 +391,10 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
           shape_functions(slave.facet_type, xi, N.data(), nullptr);
           const Eigen::VectorXd p = xf * Eigen::Map<const Eigen::VectorXd>(N.data(), npf);
           const Eigen::Vector3d ns = facet_normal(slave.facet_type, xf, xi).head<3>();
+          const Eigen::Vector3d ray = options.bisector_ray ? smoothed_at(slave, ns_nodal, f, N.data()) : Eigen::Vector3d();
           ContactPoint cp;
-          if (!project_to_master(master, p, ns, options.search_distance, cp)) continue;
+          if (!project_to_master(master, p, ns, options.search_distance, cp, false, options.bisector_ray ? &ray : nullptr))
+            continue;
           cp.slave_facet = f;
           cp.xi[0] = xi[0];
           cp.xi[1] = xi[1];
@@ -351,7 +499,7 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
 
 std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
                                                const MasterGeometry* master, const Obstacle* obstacle,
-                                               double search_distance) {
+                                               double search_distance, bool bisector_ray) {
   const int npf = slave.nodes_per_facet();
   const int d = cell_dim(slave.facet_type);
   const std::vector<double> ref = reference_nodes(slave.facet_type);
@@ -367,7 +515,7 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
     const Eigen::Vector3d ns = pad3(normals.col(k));
     ContactPoint cp;
     if (master) {
-      if (!project_to_master(*master, xs.col(k), ns, search_distance, cp, true)) continue;
+      if (!project_to_master(*master, xs.col(k), ns, search_distance, cp, true, bisector_ray ? &ns : nullptr)) continue;
     } else {
       const Eigen::Vector3d p = pad3(xs.col(k));
       Eigen::Vector3d xbar, n;
@@ -396,9 +544,9 @@ Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::Vector
 }
 
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
-                                  const Obstacle* obstacle, double search_distance) {
+                                  const Obstacle* obstacle, double search_distance, bool bisector_ray) {
   Eigen::MatrixXd n = nodal_normals(slave, xs);
-  for (const ContactPoint& p : nodal_contact_points(slave, xs, master, obstacle, search_distance))
+  for (const ContactPoint& p : nodal_contact_points(slave, xs, master, obstacle, search_distance, bisector_ray))
     n.col(p.slave_node) = -p.normal.head(slave.dim);
   return n;
 }

@@ -49,6 +49,9 @@ struct ContactPoint {
 struct ContactSearchOptions {
   double search_distance = 0.0;  ///< > 0
   int gauss_points = 0;          ///< per sub-segment; 0: 2·order + 1 (3D: see the file comment)
+  /// Project along the bisector of the two sides' smoothed normals instead of to the closest point
+  /// (project_to_master(), `ray_normal`); self-contact pairs (ContactPair::bisector_ray()).
+  bool bisector_ray = false;
 };
 
 /// A master surface in its current configuration, ready for queries.
@@ -82,8 +85,26 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// Mechanics, 2nd ed., 2006, §4.1.2; the normal cone: Moreau's convex analysis.)
 /// With `allow_past_end`, a point past an end of the master surface projects onto that end (used for
 /// nodal friction: a slave node that hangs over the master's end can still carry pressure).
+///
+/// With `ray_normal` (the slave surface's SMOOTHED unit normal n_s at p), the bisector-ray projection:
+/// the projection x̄ is where the line through p along the interface normal m meets the master, and
+///     m = (n̄(x̄) − n_s) / |n̄(x̄) − n_s|,   θ = (p − x̄)·m,   cp.normal = m,
+/// solved as a fixed point from the closest point (m depends on x̄ through n̄; it settles in a few passes,
+/// the change of n̄ along the surface being the curvature times the gap). m is the bisector of the
+/// master's normal and the reversed slave normal, so both sides enter alike: at a state that is
+/// mirror-symmetric about a plane (the two sides each other's reflection, n_s and n̄ reflections of each
+/// other), m is the plane's normal, x̄ is the mirror image of p and θ = 2·(distance of p to the plane)
+/// exactly — twice the gap of the half model on a rigid plane, where the closest point on the tilted
+/// reflected facet gives 2y·cos t·(n_f·n̄) (t the facet's tilt; V7, docs/validation.md). A ray
+/// projection along an averaged normal is the usual one of mortar contact (Popp, Gee & Wall, IJNME 79,
+/// 2009, §3.1, with the slave's normal; here the bisector). It measures a different gap than the talk's
+/// eq. 10 (closest point, master normal) only where the two sides are tilted against each other; both
+/// vanish together, so the continuous constraint θ ≥ 0 is the same. Where the line meets no facing facet
+/// near the closest point (past the master's end), or at a 2D corner of the master, the closest point
+/// and n̄ are kept.
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
-                       double search, ContactPoint& cp, bool allow_past_end = false);
+                       double search, ContactPoint& cp, bool allow_past_end = false,
+                       const Eigen::Vector3d* ray_normal = nullptr);
 
 /// One cell of the 3D segmentation: the part of slave facet f (reference coordinates, counter-clockwise)
 /// covered by master facet `master_facet` projected along the slave normal.
@@ -110,10 +131,11 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
 /// holds it, with weight = its lumped area A_k and its projection on the master (or the obstacle); nodes
 /// that project onto nothing (the rules above, with the smoothed nodal normal, except that a node past
 /// an end of the master projects onto that end) are left out.
-/// `master` or `obstacle` is given, not both.
+/// `master` or `obstacle` is given, not both. `bisector_ray`: the projection along the bisector
+/// (project_to_master(), with the node's smoothed normal), for self-contact pairs.
 std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, const Eigen::MatrixXd& xs,
                                                const MasterGeometry* master, const Obstacle* obstacle,
-                                               double search_distance);
+                                               double search_distance, bool bisector_ray = false);
 
 /// The interface normal of a node, outward for its side, along which its pressure is recovered
 /// (surface_tractions.hpp), from its own smoothed normal n_s and the opposite side's smoothed normal n̄ at
@@ -139,7 +161,7 @@ Eigen::VectorXd interface_normal(const Eigen::VectorXd& own, const Eigen::Vector
 /// node's projection (nodal_contact_points), or the node's own smoothed normal where it projects onto
 /// nothing. The normal of the friction term and of the Coulomb threshold's pressure.
 Eigen::MatrixXd interface_normals(const ContactSurface& slave, const Eigen::MatrixXd& xs, const MasterGeometry* master,
-                                  const Obstacle* obstacle, double search_distance);
+                                  const Obstacle* obstacle, double search_distance, bool bisector_ray = false);
 
 /// Bounding box of a facet from its node positions (for Line3/Tri6 also the Bézier control points of the
 /// edges, which bound the curved facet), padded by `pad`.

@@ -44,6 +44,7 @@ ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u
     const ContactPair& pair = pairs[fam.pair];
     ContactSearchOptions opt;
     opt.search_distance = pair.search_distance;
+    opt.bisector_ray = pair.bisector_ray();
     const ContactSurface& slave = surfaces[fam.slave];
     std::vector<ContactPoint> pts;
     if (fam.master >= 0) {

@@ -40,6 +40,10 @@ struct ContactPair {
   /// Constraints push on each node from both sides (symmetric or self-contact): the reported pressure is
   /// along the bisector of the two sides' normals (contact_points.hpp, interface_normal()).
   bool two_sided() const { return obstacle < 0 && (mode == ContactMode::kSymmetric || surface_a == surface_b); }
+  /// Self-contact projects along the bisector of the two sides' normals (project_to_master(), contact_points.hpp):
+  /// the surface meets itself, and a mirror-symmetric fold then sees exactly twice the distance to its plane
+  /// of symmetry (V7). Its interface normal is the projection's m.
+  bool bisector_ray() const { return obstacle < 0 && surface_a == surface_b; }
 };
 
 struct ContactFamily {

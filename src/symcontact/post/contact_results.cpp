@@ -36,9 +36,10 @@ Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int si
     Eigen::Vector3d n3 = Eigen::Vector3d::Zero();
     n3.head(s.dim) = own.col(k);
     ContactPoint cp;
-    if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp)) {
+    if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp, false, pair.bisector_ray() ? &n3 : nullptr)) {
       gap[k] = cp.gap;
-      normals.col(k) = interface_normal(own.col(k), cp.normal.head(s.dim), pair.two_sided());
+      // With the bisector ray, cp.normal is already the interface normal (the master side's).
+      normals.col(k) = interface_normal(own.col(k), cp.normal.head(s.dim), pair.two_sided() && !pair.bisector_ray());
     }
   }
   return gap;

@@ -275,7 +275,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
             const ContactSurface& ms = contacts.surfaces[fam.master];
             const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, up));
             nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), &mg, nullptr,
-                                         contacts.pairs[p].search_distance);
+                                         contacts.pairs[p].search_distance, contacts.pairs[p].bisector_ray());
           } else {
             nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), nullptr,
                                          &contacts.obstacles[contacts.pairs[p].obstacle], contacts.pairs[p].search_distance);

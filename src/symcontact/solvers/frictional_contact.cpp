@@ -20,7 +20,7 @@ Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap
   if (fam.master >= 0) {
     const ContactSurface& ms = cs.surfaces[fam.master];
     const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, u));
-    normals = interface_normals(s, xs, &mg, nullptr, cs.pairs[p].search_distance);
+    normals = interface_normals(s, xs, &mg, nullptr, cs.pairs[p].search_distance, cs.pairs[p].bisector_ray());
   } else {
     normals = interface_normals(s, xs, nullptr, &cs.obstacles[cs.pairs[p].obstacle], cs.pairs[p].search_distance);
   }
