@@ -159,28 +159,41 @@ Eigen::Vector3d smoothed_normal(const MasterGeometry& master, Index mf, const do
   return n.norm() > 0 ? Eigen::Vector3d(n.normalized()) : n;
 }
 
-/// Where the line p − θ m meets the (extended) facet geometry xf (dim × npf): Newton on x(η) + θ m = p
-/// for (η, θ), from the η and θ given; one step on a flat facet. False if it does not converge.
-bool ray_meets_facet(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, const Eigen::Vector3d& m,
+/// Where the line p − θ m meets the (extended) facet f of the master (current positions): Newton on
+/// x(η) + θ m = p for (η, θ), from the η and θ given; one step on a flat facet. False if it does not
+/// converge. Fixed-size and allocation-free: it runs for every point of a self-contact surface.
+bool ray_meets_facet(const MasterGeometry& master, Index f, const Eigen::Vector3d& p, const Eigen::Vector3d& m,
                      double* eta, double& theta) {
-  const int D = static_cast<int>(xf.rows()), d = D - 1, npf = static_cast<int>(xf.cols());
+  const ContactSurface& ms = *master.surface;
+  const int D = ms.dim, d = D - 1, npf = ms.nodes_per_facet();
+  const Index* nodes = ms.facet(f);
   double N[10], dN[20];
   for (int it = 0; it < 20; ++it) {
-    shape_functions(type, eta, N, dN);
-    Eigen::VectorXd r = theta * m.head(D) - p.head(D);
-    Eigen::MatrixXd J(D, D);
-    J.setZero();
-    for (int a = 0; a < npf; ++a) {
-      r += N[a] * xf.col(a);
-      for (int i = 0; i < d; ++i) J.col(i) += dN[a * d + i] * xf.col(a);
+    shape_functions(ms.facet_type, eta, N, dN);
+    // r = x(η) + θ m − p; J = [∂x/∂η_1 … ∂x/∂η_d, m] (the identity's last row and column in 2D).
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
+    for (int c = 0; c < D; ++c) {
+      r[c] = theta * m[c] - p[c];
+      for (int i = 0; i < d; ++i) J(c, i) = 0.0;
+      J(c, d) = m[c];
+      for (int a = 0; a < npf; ++a) {
+        const double xa = master.x(c, nodes[a]);
+        r[c] += N[a] * xa;
+        for (int i = 0; i < d; ++i) J(c, i) += dN[a * d + i] * xa;
+      }
     }
-    J.col(d) = m.head(D);
-    const Eigen::VectorXd dz = J.partialPivLu().solve(r);
+    if (D == 2) J(0, 2) = J(1, 2) = J(2, 0) = J(2, 1) = 0.0;
+    const Eigen::Vector3d dz = J.partialPivLu().solve(r);
     if (!dz.allFinite()) return false;
-    for (int i = 0; i < d; ++i) eta[i] -= dz[i];
+    double step = 0.0;
+    for (int i = 0; i < d; ++i) {
+      eta[i] -= dz[i];
+      step = std::max(step, std::abs(dz[i]));
+    }
     theta -= dz[d];
     if (std::abs(eta[0]) > 10 || (d == 2 && std::abs(eta[1]) > 10)) return false;
-    if (dz.head(d).cwiseAbs().maxCoeff() < 1e-15) return true;
+    if (step < 1e-15) return true;
   }
   return true;  // 20 Newton steps: as close as it gets
 }
@@ -207,8 +220,8 @@ bool clamp_to_facet(int d, double* eta, double tol) {
 /// The bisector-ray projection (project_to_master(), `ray_normal`): from the closest-point projection in
 /// cp, the fixed point  m = (n̄(x̄) − n_s)/|n̄(x̄) − n_s|,  x̄ = the point where the line p − θ m meets the
 /// master,  updating cp (facet, η, x̄, normal m, gap θ) when it settles. The facet met: the current one,
-/// else the facing facet nearest p along the line among those whose boxes meet a box around p of
-/// half-width 2|p − x̄| (on a smooth patch the ray's foot lies within |p − x̄| of the closest point);
+/// else the facing facet nearest p along the line among those whose boxes meet the box of the line's
+/// segment |θ| ≤ 2|p − x̄| (on a smooth patch the line meets the master within about |p − x̄| of p);
 /// when the line meets none, the current facet's extension, clamped into it, stands in for x̄ for the
 /// next pass (near the master's end the first bisector can miss it while the fixed point is inside).
 /// Left unchanged (the closest point) when the iteration does not settle inside the master within 50
@@ -221,8 +234,8 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
   double eta[2] = {cp.eta[0], cp.eta[1]};
   double theta = cp.gap;
   Eigen::Vector3d n = cp.normal;
-  const double reach = 2.0 * (p - cp.xbar).norm() +
-                       1e-6 * facet_box(ms.facet_type, facet_nodes(ms, master.x, f), 0.0).diagonal().norm();
+  const double pad = 1e-6 * facet_box(ms.facet_type, facet_nodes(ms, master.x, f), 0.0).diagonal().norm();
+  const double reach = 2.0 * (p - cp.xbar).norm() + pad;
   for (int it = 0; it < 50; ++it) {
     Eigen::Vector3d m = n - ns;
     if (!(m.norm() > 0)) return;
@@ -232,7 +245,7 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
     double hit_eta[2] = {eta[0], eta[1]}, hit_theta = theta;
     {
       double e[2] = {eta[0], eta[1]}, t = theta;
-      if (ray_meets_facet(ms.facet_type, facet_nodes(ms, master.x, f), p, m, e, t)) {
+      if (ray_meets_facet(master, f, p, m, e, t)) {
         hit = f;
         inside = clamp_to_facet(d, e, 1e-10);
         hit_eta[0] = e[0];
@@ -241,15 +254,17 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
       }
     }
     if (!inside) {
-      BoundingVolumeHierarchy::Box ball(p, p);
-      ball.min().array() -= reach;
-      ball.max().array() += reach;
-      master.tree.for_each_overlap(ball, [&](int k) {
+      // A facet the line meets within |θ| ≤ reach of p overlaps the box of that segment of the line.
+      BoundingVolumeHierarchy::Box segment(p, p);
+      segment.extend(Eigen::Vector3d(p + reach * m));
+      segment.extend(Eigen::Vector3d(p - reach * m));
+      segment.min().array() -= pad;
+      segment.max().array() += pad;
+      master.tree.for_each_overlap(segment, [&](int k) {
         if (k == f) return;
-        const Eigen::MatrixXd xk = facet_nodes(ms, master.x, k);
         double e[2] = {d == 1 ? 0.5 : 1.0 / 3.0, 1.0 / 3.0}, t = theta;
-        if (!ray_meets_facet(ms.facet_type, xk, p, m, e, t) || !clamp_to_facet(d, e, 1e-10)) return;
-        if (pad3(facet_normal(ms.facet_type, xk, e)).dot(slave_normal) >= 0) return;  // back-facing
+        if (!ray_meets_facet(master, k, p, m, e, t) || !clamp_to_facet(d, e, 1e-10)) return;
+        if (pad3(facet_normal(ms.facet_type, facet_nodes(ms, master.x, k), e)).dot(slave_normal) >= 0) return;
         if (inside && std::abs(t) >= std::abs(hit_theta)) return;
         hit = k;
         inside = true;
