@@ -293,6 +293,8 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
       for (int b = 0; b < ms.nodes_per_facet(); ++b) cp.xbar.head(ms.dim) += M[b] * master.x.col(ms.facet(f)[b]);
       cp.normal = m;
       cp.gap = (p - cp.xbar).dot(m);
+      const Eigen::Vector3d nf = pad3(facet_normal(ms.facet_type, facet_nodes(ms, master.x, f), cp.eta)).normalized();
+      cp.gap_direction = nf / nf.dot(m);  // n_f·m > 0: the facet faces the slave point, m is near n̄
       return;
     }
   }

@@ -43,6 +43,10 @@ struct ContactPoint {
   Eigen::Vector3d xbar = Eigen::Vector3d::Zero();  ///< current projection
   Eigen::Vector3d normal = Eigen::Vector3d::Zero(); ///< unit smoothed master normal n̄ at x̄
   double gap = 0.0;                ///< θ = (x − x̄)·n̄
+  /// The direction d of the frozen linearisation θ(u) ≈ (x(u) − x̄(u; η))·d (gap_constraints.hpp); zero:
+  /// `normal` (the talk's frozen normal). Set by the bisector-ray projection (project_to_master()).
+  Eigen::Vector3d gap_direction = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d& row_direction() const { return gap_direction.squaredNorm() > 0 ? gap_direction : normal; }
   Index slave_node = -1;           ///< nodal points only (nodal_contact_points): the slave surface node
 };
 
@@ -89,6 +93,12 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// With `ray_normal` (the slave surface's SMOOTHED unit normal n_s at p), the bisector-ray projection:
 /// the projection x̄ is where the line through p along the interface normal m meets the master, and
 ///     m = (n̄(x̄) − n_s) / |n̄(x̄) − n_s|,   θ = (p − x̄)·m,   cp.normal = m,
+/// and the gap's linearisation (cp.gap_direction) is the consistent one of the ray: with m frozen, a change
+/// δ of x − x̄(η) moves the foot along the facet too, and δθ = δ·n_f/(n_f·m), n_f the master facet's own
+/// unit normal at x̄ (differentiate x − θ m = x_m(η) in θ and η). Freezing η and dotting with m instead
+/// would miss the gap's first-order change under a slide along a facet tilted against m (the fixed
+/// point then wanders along that slide: measured on the crushed ring, whose contact zone ends where the
+/// walls part at 20°); for the closest point the same term vanishes up to the smoothing of n̄.
 /// solved as a fixed point from the closest point (m depends on x̄ through n̄; it settles in a few passes,
 /// the change of n̄ along the surface being the curvature times the gap). m is the bisector of the
 /// master's normal and the reversed slave normal, so both sides enter alike: at a state that is

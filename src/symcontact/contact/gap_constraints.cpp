@@ -67,17 +67,18 @@ GapConstraints assemble_gap_constraints(const ContactSurface& slave, const Conta
       Ym.setZero();
       for (int b = 0; b < mpf; ++b) Ym.head(D) += M[b] * master->X.col(master->facet(p.master_facet)[b]);
     }
-    const double theta0 = (Xs - Ym).dot(p.normal);
+    const Eigen::Vector3d& dir = p.row_direction();
+    const double theta0 = (Xs - Ym).dot(dir);
     for (int i = 0; i < npf; ++i) {
       const double wi = p.weight * phi[i];
       if (wi == 0.0) continue;
       bl[i] += wi * theta0;
       sl[i] += wi;
       for (int a = 0; a < npf; ++a)
-        for (int c = 0; c < D; ++c) Ks(i, D * a + c) += wi * N[a] * p.normal[c];
+        for (int c = 0; c < D; ++c) Ks(i, D * a + c) += wi * N[a] * dir[c];
       if (master)
         for (int b = 0; b < mpf; ++b)
-          for (int c = 0; c < D; ++c) Km(i, D * b + c) -= wi * M[b] * p.normal[c];
+          for (int c = 0; c < D; ++c) Km(i, D * b + c) -= wi * M[b] * dir[c];
     }
   }
   flush();

@@ -267,3 +267,70 @@ INSTANTIATE_TEST_SUITE_P(ContactPoints, BisectorRay,
                          [](const ::testing::TestParamInfo<std::tuple<int, int>>& p) {
                            return std::to_string(std::get<0>(p.param)) + "D_P" + std::to_string(std::get<1>(p.param));
                          });
+
+// The linearisation of the bisector-ray gap (ContactPoint::gap_direction): at a point where the gap is
+// zero, moving the slave point by δp and the master's nodes by δx_b changes θ by d·(δp − Σ N_b(η) δx_b)
+// to first order, d = n_f/(n_f·m) — checked by central differences of re-projected gaps (m, n̄ and the
+// foot recomputed) on the curved master of the test above, where d differs from m by up to the facets'
+// tilt against m (m alone misses the gap's change under a slide along a tilted facet).
+TEST_P(BisectorRay, TheGapDirectionIsTheDerivativeOfTheRayGapByFiniteDifferences) {
+  const auto [dim, order] = GetParam();
+  const Mesh lower = dim == 2 ? rectangle_mesh(0.0, -0.5, 1.0, 0.0, 4, 1, order)
+                              : box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), 4, 4, 1, order);
+  const ContactSurface master = make_contact_surface(lower, dim == 2 ? "top" : "zmax", 0, "lower.top");
+  const int up = dim - 1;
+  Eigen::MatrixXd x = master.X;
+  for (Index k = 0; k < master.num_nodes(); ++k) {
+    double r2 = 0.0;
+    for (int i = 0; i < up; ++i) r2 += (master.X(i, k) - 0.3) * (master.X(i, k) - 0.3);
+    x(up, k) = -0.3 * r2;
+  }
+  const MasterGeometry mg = prepare_master(master, x);
+  const int npf = master.nodes_per_facet();
+  Eigen::Vector3d facing = Eigen::Vector3d::Zero();
+  facing[up] = -1.0;
+  double worst = 0.0, largest_tilt = 0.0;
+  std::srand(7);
+  for (Index fm = 0; fm < master.num_facets(); fm += 3) {
+    const double eta[2] = {dim == 2 ? 0.37 : 0.29, 0.23};
+    double M[10];
+    shape_functions(master.facet_type, eta, M, nullptr);
+    Eigen::Vector3d q = Eigen::Vector3d::Zero(), nq = Eigen::Vector3d::Zero();
+    for (int b = 0; b < npf; ++b) {
+      q.head(dim) += M[b] * x.col(master.facet(fm)[b]);
+      nq.head(dim) += M[b] * mg.normals.col(master.facet(fm)[b]);
+    }
+    nq.normalize();
+    Eigen::Vector3d ns = nq;  // the mirror image's normal: the slave surface touches the master at q
+    ns[up] = -nq[up];
+    ContactPoint cp;
+    ASSERT_TRUE(project_to_master(mg, q.head(dim), facing, 1.0, cp, false, &ns));
+    ASSERT_NEAR(cp.gap, 0.0, 1e-14);
+    ASSERT_GT(cp.gap_direction.norm(), 0.0);
+    largest_tilt = std::max(largest_tilt, (cp.gap_direction - cp.normal).norm());
+    // A random direction of the slave point and of the master facet's nodes.
+    const Eigen::Vector3d dp = Eigen::Vector3d::Random();
+    Eigen::MatrixXd dx = Eigen::MatrixXd::Zero(dim, master.num_nodes());
+    for (int b = 0; b < npf; ++b) dx.col(master.facet(cp.master_facet)[b]) = Eigen::VectorXd::Random(dim);
+    double Mh[10];
+    shape_functions(master.facet_type, cp.eta, Mh, nullptr);
+    Eigen::Vector3d dxbar = Eigen::Vector3d::Zero();
+    for (int b = 0; b < npf; ++b) dxbar.head(dim) += Mh[b] * dx.col(master.facet(cp.master_facet)[b]);
+    const double predicted = cp.gap_direction.dot(dp - dxbar);  // in 2D the third components are unused (0 in d)
+    const double eps = 1e-6;
+    double g[2];
+    for (int s = 0; s < 2; ++s) {
+      const double e = s == 0 ? eps : -eps;
+      const MasterGeometry mge = prepare_master(master, x + e * dx);
+      const Eigen::VectorXd pe = (q + e * dp).head(dim);
+      ContactPoint ce;
+      ASSERT_TRUE(project_to_master(mge, pe, facing, 1.0, ce, false, &ns));
+      g[s] = ce.gap;
+    }
+    const double fd = (g[0] - g[1]) / (2 * eps);
+    worst = std::max(worst, std::abs(fd - predicted));
+  }
+  std::printf("bisector ray %dD P%d: |FD − d·δ| up to %.2e; |d − m| up to %.2e\n", dim, order, worst, largest_tilt);
+  EXPECT_LT(worst, 1e-7);
+  EXPECT_GT(largest_tilt, 1e-2) << "the master should be tilted against m somewhere";
+}
