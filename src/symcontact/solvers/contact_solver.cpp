@@ -280,6 +280,12 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
             nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), nullptr,
                                          &contacts.obstacles[contacts.pairs[p].obstacle], contacts.pairs[p].search_distance);
           }
+          // A self-contact surface holds both sides of its interface, and every node of it carries a
+          // friction point: j_τ = ∫_Γc τ |[u_T]| counts the interface once (METHOD.md, eq. 16), so each
+          // side carries half of it (with the full weight the friction force doubles; measured: an arm
+          // dragged over its own body, SelfContactFriction2D).
+          if (contacts.pairs[p].surface_a == contacts.pairs[p].surface_b)
+            for (ContactPoint& q : nodal) q.weight *= 0.5;
           const std::vector<double> tau = interpolate_at_points(slave, nodal, friction->nodal_tau[p]);
           friction_terms[p] = std::make_shared<FrictionTerm>(
               "friction(" + contacts.pairs[p].name + ")", slave, fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
