@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <tuple>
 
 #include "symcontact/contact/polygon_clipping.hpp"
@@ -207,6 +208,24 @@ TEST(InterfaceNormal, TwoSidedIsTheBisectorOfBothSidesNormalsOneSidedTheOpposite
 // grid of every facet (the ray leaves the facet of p's closest point near facet edges, so the search
 // must go on to the neighbour: counted). The closest point instead measures the distance to the tilted
 // facet, 2 f cos t (n_f·n̄), short of 2 f by up to 5 % here.
+namespace {
+
+/// The point at η of master facet f and the smoothed master normal there (unit), both padded to 3D.
+void master_point(const MasterGeometry& mg, Index f, const double* eta, Eigen::Vector3d& q, Eigen::Vector3d& n) {
+  const ContactSurface& s = *mg.surface;
+  double M[10];
+  shape_functions(s.facet_type, eta, M, nullptr);
+  q.setZero();
+  n.setZero();
+  for (int b = 0; b < s.nodes_per_facet(); ++b) {
+    q.head(s.dim) += M[b] * mg.x.col(s.facet(f)[b]);
+    n.head(s.dim) += M[b] * mg.normals.col(s.facet(f)[b]);
+  }
+  n.normalize();
+}
+
+}  // namespace
+
 class BisectorRay : public ::testing::TestWithParam<std::tuple<int, int>> {};
 
 TEST_P(BisectorRay, TheMirrorImageOfAMasterPointProjectsOntoItWithTwiceItsDistanceToThePlane) {
@@ -223,7 +242,6 @@ TEST_P(BisectorRay, TheMirrorImageOfAMasterPointProjectsOntoItWithTwiceItsDistan
   Eigen::MatrixXd x = master.X;
   for (Index k = 0; k < master.num_nodes(); ++k) x(up, k) = -f(master.X.col(k));
   const MasterGeometry mg = prepare_master(master, x);
-  const int npf = master.nodes_per_facet();
   int crossed = 0, points = 0;
   double worst_closest = 0.0;
   const int n = 6;
@@ -232,14 +250,8 @@ TEST_P(BisectorRay, TheMirrorImageOfAMasterPointProjectsOntoItWithTwiceItsDistan
       for (int j = 0; j <= (dim == 3 ? n - i : 0); ++j) {
         // In 2D from 0.003 to 0.997 of the facet: the ends are where the ray leaves the closest point's facet.
         const double eta[2] = {dim == 2 ? 0.003 + 0.994 * i / n : (i + 0.25) / (n + 1), (j + 0.25) / (n + 1)};
-        double M[10];
-        shape_functions(master.facet_type, eta, M, nullptr);
-        Eigen::Vector3d q = Eigen::Vector3d::Zero(), nq = Eigen::Vector3d::Zero();
-        for (int b = 0; b < npf; ++b) {
-          q.head(dim) += M[b] * x.col(master.facet(fm)[b]);
-          nq.head(dim) += M[b] * mg.normals.col(master.facet(fm)[b]);
-        }
-        nq.normalize();
+        Eigen::Vector3d q, nq;
+        master_point(mg, fm, eta, q, nq);
         Eigen::Vector3d p = q, ns = nq;
         p[up] = -q[up];
         ns[up] = -nq[up];
@@ -290,17 +302,11 @@ TEST_P(BisectorRay, TheGapDirectionIsTheDerivativeOfTheRayGapByFiniteDifferences
   Eigen::Vector3d facing = Eigen::Vector3d::Zero();
   facing[up] = -1.0;
   double worst = 0.0, largest_tilt = 0.0;
-  std::srand(7);
+  std::srand(7);  // Eigen's Random draws from std::rand: the same directions in every run
   for (Index fm = 0; fm < master.num_facets(); fm += 3) {
     const double eta[2] = {dim == 2 ? 0.37 : 0.29, 0.23};
-    double M[10];
-    shape_functions(master.facet_type, eta, M, nullptr);
-    Eigen::Vector3d q = Eigen::Vector3d::Zero(), nq = Eigen::Vector3d::Zero();
-    for (int b = 0; b < npf; ++b) {
-      q.head(dim) += M[b] * x.col(master.facet(fm)[b]);
-      nq.head(dim) += M[b] * mg.normals.col(master.facet(fm)[b]);
-    }
-    nq.normalize();
+    Eigen::Vector3d q, nq;
+    master_point(mg, fm, eta, q, nq);
     Eigen::Vector3d ns = nq;  // the mirror image's normal: the slave surface touches the master at q
     ns[up] = -nq[up];
     ContactPoint cp;
