@@ -160,6 +160,8 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
 ///    normal, along which the nodal force points, while −n̄ or n_s alone are tilted by the local slope t
 ///    and report cos t of the force (V7, docs/validation.md: 2.0e-5 → 1.0e-5 of p_max in 3D). Where n_s
 ///    and −n̄ agree (a closed, conforming contact) the choices coincide.
+///  - self-contact pairs project along the bisector already (ContactPair::bisector_ray()): their n̄ is the
+///    projection's m, and the caller passes two_sided = false, so that −m is returned.
 /// Used by the reported contact results (post/contact_results.hpp). The Coulomb threshold's pressure
 /// keeps −n̄ (interface_normals() below), the normal of the friction term, so that the friction law holds
 /// in the friction term's own decomposition. Known limit: at a corner of the surface the node's own
