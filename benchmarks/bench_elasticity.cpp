@@ -54,8 +54,8 @@
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case suite --csv results/suite-
 ///
 /// `--case hertz3d --large` is the large 3D sweep instead of the default ladder: h = 0.0045 0.0035 0.0028
-/// 0.0025, 2.0e5, 4.1e5, 7.8e5 and 1.1e6 DOFs (hours on 2 cores; 1.1e6 needs more than 24 GiB, 7.8e5 about
-/// 20 GiB, 4.1e5 9 GiB). Before each size is
+/// 0.0025, 2.0e5, 4.1e5, 7.8e5 and 1.1e6 DOFs (hours on 2 cores; 4.1e5 needs 9 GiB, 7.8e5 more than the
+/// 21 GiB it reached before it was stopped, 1.1e6 more than 24 GiB). Before each size is
 /// solved, CHOLMOD's analysis predicts its factor, and the sweep stops at the first size that would not fit
 /// in the memory available (check_hertz_fits(), hertz.hpp); --check-only does only that (meshing and
 /// CHOLMOD's analysis, minutes), for every size, and solves none:
@@ -319,8 +319,8 @@ int main(int argc, char** argv) {
   app.add_flag("--keep-work", opt.keep_work, "contact: keep the temporary wrapper .geo and .toml");
   app.add_flag("--large", opt.large,
                "hertz3d: the large sweep h = 0.0045 0.0035 0.0028 0.0025 (2.0e5, 4.1e5, 7.8e5, 1.1e6 DOFs) instead of "
-               "the default ladder: hours; a size that does not fit in memory stops the sweep (1.1e6 needs more "
-               "than 24 GiB)");
+               "the default ladder: hours; a size that does not fit in memory stops the sweep (on 24 GiB, 7.8e5 "
+               "and 1.1e6 do not)");
   app.add_flag("--check-only", opt.check_only,
                "Hertz cases: mesh each size and print its DOFs, predicted factor and whether it fits in memory; "
                "solve none");
