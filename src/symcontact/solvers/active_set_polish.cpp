@@ -112,6 +112,8 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
   const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
   // The factorised KKT system of the last dense direct step, which preconditions the next ones.
   std::unique_ptr<DenseRangeSpace> reference;
+  SparseMatrix AtA;  // lower triangle of A_Sᵀ A_S
+  double adiag = 0.0;
   for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
     SparseMatrix H;
     problem.hessian_lower(xs, H);
@@ -144,13 +146,11 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       }
       reference.reset();
     }
-    SparseMatrix AtA;
-    double adiag = 0.0;
-    if (AS.rows() > 0) {
+    if (AS.rows() > 0 && AtA.rows() == 0) {  // A_S is the same for every Newton step: formed once
       AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
       adiag = AtA.diagonal().cwiseAbs().maxCoeff();
-      if (!(adiag > 0)) return false;
     }
+    if (AS.rows() > 0 && !(adiag > 0)) return false;
     // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced ρ
     // keeps M well conditioned. The method of multipliers wants a large ρ: the nearly dependent rows of
     // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
