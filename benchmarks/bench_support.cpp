@@ -257,7 +257,7 @@ void ResultTable::add_row(const std::vector<Value>& row) {
       if (row[k].is_text)
         csv_ << row[k].text;
       else
-        csv_ << std::setprecision(9) << row[k].number;
+        csv_ << std::setprecision(17) << row[k].number;  // round-trip: results compared to 1e-9 relative
     }
     csv_ << "\n" << std::flush;
   }

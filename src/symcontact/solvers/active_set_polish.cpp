@@ -12,18 +12,13 @@
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/solvers/cholesky.hpp"
+#include "symcontact/solvers/dense_kkt.hpp"
 
 // BLAS and LAPACK (Fortran interfaces; column-major, every argument by address).
 extern "C" {
 void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
-void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
-            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
 void dtrsv_(const char* uplo, const char* trans, const char* diag, const int* n, const double* a, const int* lda,
             double* x, const int* incx);
-void dsymv_(const char* uplo, const int* n, const double* alpha, const double* a, const int* lda, const double* x,
-            const int* incx, const double* beta, double* y, const int* incy);
-void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
-            const int* lda, const double* beta, double* c, const int* ldc);
 }
 
 namespace symcontact {
@@ -34,39 +29,16 @@ namespace {
 /// above it, by the method of multipliers.
 constexpr Index kDirectLimit = 3000;
 
+/// Projected CG of a later Newton step (dense_kkt.hpp) stops once its update is below kCgTolerance × max |x|
+/// (1e-3 of the Newton loop's own stopping step, 1e-10 × max |x|: the steps it takes are those of the direct
+/// solve to far below what ends the loop); after kCgMaxIterations the step refactorises instead. Measured on
+/// the inclined interface with Coulomb friction (2e4 DOFs, |B| = 382, |S| = 191): 1–2 iterations per step,
+/// each O(|B|²) against a factorisation's O(|B|³).
+constexpr double kCgTolerance = 1e-13;
+constexpr int kCgMaxIterations = 50;
+
 /// A constraint is violated when its scaled value is below −kViolationTolerance × max |x|.
 constexpr double kViolationTolerance = 1e-10;
-
-/// A dense column-major matrix in 64-byte aligned storage, for the BLAS/LAPACK calls below. OpenBLAS's
-/// kernels round differently with the alignment of their operands (measured with OpenBLAS 0.3.21: dpotrf,
-/// dtrsm and dsyrk on the same data placed 16, 24 or 32 bytes past a 64-byte boundary give other last
-/// digits), so every operand handed to them lives in one of these: the same input gives the same digits.
-class AlignedMatrix {
- public:
-  AlignedMatrix(Index rows, Index cols)
-      : rows_(rows), cols_(cols),
-        data_(static_cast<double*>(std::aligned_alloc(64, ((std::max<Index>(rows * cols, 1) * 8 + 63) / 64) * 64))) {
-    if (!data_) throw std::bad_alloc();
-  }
-  AlignedMatrix(const AlignedMatrix&) = delete;
-  AlignedMatrix& operator=(const AlignedMatrix&) = delete;
-  ~AlignedMatrix() { std::free(data_); }
-  Eigen::Map<MatrixXd> map() { return Eigen::Map<MatrixXd>(data_, rows_, cols_); }
-  Eigen::Map<const MatrixXd> map() const { return Eigen::Map<const MatrixXd>(data_, rows_, cols_); }
-  double* data() { return data_; }
-  const double* data() const { return data_; }
-
- private:
-  Index rows_, cols_;
-  double* data_;
-};
-
-/// Triangular solves with the lower factor L of a dense SPD matrix (LAPACK dpotrf storage, column-major, leading
-/// dimension n): B ← L⁻¹ B (`transpose` false) or B ← L⁻ᵀ B, for the n × k matrix B.
-void lower_solve(const AlignedMatrix& L, int n, bool transpose, AlignedMatrix& B, int k) {
-  const double one = 1.0;
-  dtrsm_("L", "L", transpose ? "T" : "N", "N", &n, &k, &one, L.data(), &n, B.data(), &n);
-}
 
 /// M = L Lᵀ for the polish. A sparse M goes to CHOLMOD. A dense one — the condensed problem, whose Schur
 /// complement fills its |B| × |B| Hessian (ConstrainedProblem::hessian_is_dense()) — goes to LAPACK's dpotrf
@@ -88,7 +60,7 @@ class SpdFactor {
       }
     }
     n_ = static_cast<int>(h.rows());
-    factor_ = std::make_unique<AlignedMatrix>(n_, n_);
+    factor_ = std::make_shared<AlignedMatrix>(n_, n_);
     auto m = factor_->map();
     m = dense_h->map();
     if (AtA)
@@ -110,13 +82,13 @@ class SpdFactor {
   bool dense() const { return dense_; }
   int size() const { return n_; }
   /// L of M = L Lᵀ in its lower triangle (only when dense()).
-  const AlignedMatrix& dense_factor() const { return *factor_; }
+  std::shared_ptr<const AlignedMatrix> dense_factor() const { return factor_; }
 
  private:
   bool dense_;
   int n_ = 0;
   CholeskySolver sparse_;
-  std::unique_ptr<AlignedMatrix> factor_;
+  std::shared_ptr<AlignedMatrix> factor_;
 };
 
 /// The lower triangle of a compressed lower-triangular matrix as a dense matrix (zero above).
@@ -130,17 +102,6 @@ std::unique_ptr<AlignedMatrix> dense_lower(const SparseMatrix& lower) {
   return d;
 }
 
-/// y ← y + H x for H symmetric, given by its lower triangle (dsymv).
-void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y) {
-  const int n = static_cast<int>(x.size()), inc = 1;
-  AlignedMatrix xa(n, 1), ya(n, 1);
-  xa.map() = x;
-  ya.map() = y;
-  const double one = 1.0;
-  dsymv_("L", &n, &one, H.data(), &n, xa.data(), &inc, &one, ya.data(), &inc);
-  y = ya.map();
-}
-
 /// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
 /// solved directly (range space, `direct`) or by the method of multipliers, with M = H + ρ A_Sᵀ A_S
 /// (H alone when S is empty).
@@ -149,6 +110,10 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
                   int& iterations, bool direct) {
   const bool quadratic = problem.hessian_is_constant();
   const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
+  // The factorised KKT system of the last dense direct step, which preconditions the next ones.
+  std::unique_ptr<DenseRangeSpace> reference;
+  SparseMatrix AtA;  // lower triangle of A_Sᵀ A_S
+  double adiag = 0.0;
   for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
     SparseMatrix H;
     problem.hessian_lower(xs, H);
@@ -159,13 +124,33 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     const bool dense = problem.hessian_is_dense();
     const std::unique_ptr<AlignedMatrix> Hd = dense ? dense_lower(H) : nullptr;
     if (!(hdiag > 0)) return false;
-    SparseMatrix AtA;
-    double adiag = 0.0;
-    if (AS.rows() > 0) {
+    if (reference) {
+      // A later Newton step of the dense direct solve: between two steps only the friction Hessian
+      // changed (one small block per contact node), so the KKT system is solved by projected CG
+      // preconditioned with the last factorised one (dense_kkt.hpp) instead of a new O(|B|³)
+      // factorisation; if it does not converge fast, the step refactorises as before.
+      const VectorXd cS = AS * xs + bS;
+      auto multiply = [&](const VectorXd& v, VectorXd& out) {
+        out = VectorXd::Zero(v.size());
+        symmetric_multiply_add(*Hd, v, out);
+      };
+      VectorXd dx, lambda;
+      const ProjectedCgResult cg =
+          projected_cg(*reference, multiply, g, cS, dx, lambda, kCgTolerance * xscale0, kCgMaxIterations);
+      if (cg.converged) {
+        xs += dx;
+        nu = lambda;
+        ++iterations;
+        if (dx.lpNorm<Eigen::Infinity>() <= 1e-10 * xscale0) break;
+        continue;
+      }
+      reference.reset();
+    }
+    if (AS.rows() > 0 && AtA.rows() == 0) {  // A_S is the same for every Newton step: formed once
       AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
       adiag = AtA.diagonal().cwiseAbs().maxCoeff();
-      if (!(adiag > 0)) return false;
     }
+    if (AS.rows() > 0 && !(adiag > 0)) return false;
     // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced ρ
     // keeps M well conditioned. The method of multipliers wants a large ρ: the nearly dependent rows of
     // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
@@ -193,34 +178,13 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       const VectorXd cS = AS * xs + bS;
       const VectorXd ghat = g + rho * (AS.transpose() * cS);
       if (chol.dense()) {
-        // With M = L Lᵀ dense and W = L⁻¹ A_Sᵀ (one multi-column triangular solve, BLAS-3; operands
-        // 64-byte aligned, see AlignedMatrix):
-        //   A_S M⁻¹ A_Sᵀ = Wᵀ W,   A_S M⁻¹ ĝ = Wᵀ v with v = L⁻¹ ĝ,   Δ = M⁻¹(A_Sᵀ λ − ĝ) = L⁻ᵀ (W λ − v).
-        // The same algebra as the sparse branch below, with one triangular solve of |S| columns instead of
-        // |S| + 2 pairs of single-column solves (measured on the two elastic cylinders: see
-        // docs/performance.md).
-        const int n = chol.size(), m = static_cast<int>(AS.rows());
-        const AlignedMatrix& L = chol.dense_factor();
-        AlignedMatrix W(n, m);
-        W.map() = MatrixXd(AS.transpose());
-        lower_solve(L, n, false, W, m);
-        AlignedMatrix WtW(m, m);
-        const double one = 1.0, zero = 0.0;
-        dsyrk_("L", "T", &m, &n, &one, W.data(), &n, &zero, WtW.data(), &m);
-        MatrixXd S = WtW.map();
-        S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
-        AlignedMatrix v(n, 1);
-        v.map() = ghat;
-        lower_solve(L, n, false, v, 1);
-        const VectorXd rhs = W.map().transpose() * v.map() - cS;
-        Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
-        cod.setThreshold(1e-12);  // before compute(): see the sparse branch
-        cod.compute(S);
-        const VectorXd lambda = cod.solve(rhs);
-        AlignedMatrix dx(n, 1);
-        dx.map() = W.map() * lambda - v.map();
-        lower_solve(L, n, true, dx, 1);
-        xs += dx.map();
+        // With M = L Lᵀ dense: DenseRangeSpace, one multi-column triangular solve for W = L⁻¹ A_Sᵀ instead
+        // of |S| + 2 pairs of single-column solves (measured on the two elastic cylinders: see
+        // docs/performance.md). It is kept to precondition the next Newton steps (above).
+        reference = std::make_unique<DenseRangeSpace>(chol.dense_factor(), AS, rho);
+        VectorXd dx, lambda;
+        reference->solve(g, cS, dx, lambda);
+        xs += dx;
         nu = lambda;
         ++iterations;
       } else {

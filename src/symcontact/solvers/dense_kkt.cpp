@@ -1,0 +1,139 @@
+#include "symcontact/solvers/dense_kkt.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+#include <stdexcept>
+#include <utility>
+
+// BLAS (Fortran interfaces; column-major, every argument by address).
+extern "C" {
+void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dsymv_(const char* uplo, const int* n, const double* alpha, const double* a, const int* lda, const double* x,
+            const int* incx, const double* beta, double* y, const int* incy);
+void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
+            const int* lda, const double* beta, double* c, const int* ldc);
+}
+
+namespace symcontact {
+
+AlignedMatrix::AlignedMatrix(Index rows, Index cols)
+    : rows_(rows), cols_(cols),
+      data_(static_cast<double*>(std::aligned_alloc(64, ((std::max<Index>(rows * cols, 1) * 8 + 63) / 64) * 64))) {
+  if (!data_) throw std::bad_alloc();
+}
+
+AlignedMatrix::~AlignedMatrix() { std::free(data_); }
+
+void lower_solve(const AlignedMatrix& L, bool transpose, AlignedMatrix& B) {
+  const int n = static_cast<int>(L.rows()), k = static_cast<int>(B.cols());
+  const double one = 1.0;
+  dtrsm_("L", "L", transpose ? "T" : "N", "N", &n, &k, &one, L.data(), &n, B.data(), &n);
+}
+
+void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y) {
+  const int n = static_cast<int>(x.size()), inc = 1;
+  AlignedMatrix xa(n, 1), ya(n, 1);
+  xa.map() = x;
+  ya.map() = y;
+  const double one = 1.0;
+  dsymv_("L", &n, &one, H.data(), &n, xa.data(), &inc, &one, ya.data(), &inc);
+  y = ya.map();
+}
+
+DenseRangeSpace::DenseRangeSpace(std::shared_ptr<const AlignedMatrix> L, const SparseMatrix& A, double rho)
+    : L_(std::move(L)), A_(A), rho_(rho), n_(A.cols()), m_(A.rows()) {
+  if (!L_ || L_->rows() != n_ || L_->cols() != n_ || m_ < 1)
+    throw std::invalid_argument("DenseRangeSpace: the factor and the constraints differ in size, or no constraint");
+  const int n = static_cast<int>(n_), m = static_cast<int>(m_);
+  W_ = std::make_unique<AlignedMatrix>(n_, m_);
+  W_->map() = MatrixXd(A_.transpose());
+  lower_solve(*L_, false, *W_);
+  AlignedMatrix WtW(m_, m_);
+  const double one = 1.0, zero = 0.0;
+  dsyrk_("L", "T", &m, &n, &one, W_->data(), &n, &zero, WtW.data(), &m);
+  MatrixXd S = WtW.map();
+  S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+  // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z are
+  // formed, and solve() must use that same rank.
+  cod_.setThreshold(1e-12);
+  cod_.compute(S);
+}
+
+void DenseRangeSpace::solve(const VectorXd& h, const VectorXd& c, VectorXd& y, VectorXd& lambda,
+                            double* load_norm) const {
+  const VectorXd h_hat = h + rho_ * (A_.transpose() * c);
+  AlignedMatrix v(n_, 1);
+  v.map() = h_hat;
+  lower_solve(*L_, false, v);
+  if (load_norm) *load_norm = v.map().norm();
+  const VectorXd rhs = W_->map().transpose() * v.map() - c;
+  lambda = cod_.solve(rhs);
+  AlignedMatrix dx(n_, 1);
+  dx.map() = W_->map() * lambda - v.map();
+  lower_solve(*L_, true, dx);
+  y = dx.map();
+}
+
+VectorXd DenseRangeSpace::project(VectorXd& r) const {
+  VectorXd z, nu;
+  solve(-r, VectorXd::Zero(m_), z, nu);
+  r += A_.transpose() * nu;
+  return z;
+}
+
+ProjectedCgResult projected_cg(const DenseRangeSpace& factor,
+                               const std::function<void(const VectorXd&, VectorXd&)>& multiply, const VectorXd& h,
+                               const VectorXd& c, VectorXd& y, VectorXd& lambda, double step_tolerance, int max_iterations) {
+  const SparseMatrix& A = factor.constraints();
+  const double rho = factor.rho();
+  // M' x = K' x + ρ Aᵀ(A x)
+  auto apply = [&](const VectorXd& x, VectorXd& out) {
+    multiply(x, out);
+    out += rho * (A.transpose() * (A * x));
+  };
+  const VectorXd h_hat = h + rho * (A.transpose() * c);
+  ProjectedCgResult res;
+  double load_norm = 0.0;
+  factor.solve(h, c, y, lambda, &load_norm);
+  VectorXd r, q;
+  apply(y, r);
+  r += h_hat;
+  VectorXd z = factor.project(r);
+  double rz = r.dot(z);
+  VectorXd p = -z;
+  while (true) {
+    res.relative_residual = std::sqrt(std::max(rz, 0.0)) / std::max(load_norm, 1e-300);
+    if (!(rz > 0)) {  // exactly solved (or NaN)
+      res.converged = rz == 0;
+      break;
+    }
+    if (res.iterations >= max_iterations) break;
+    apply(p, q);
+    const double pq = p.dot(q);
+    if (!(pq > 0)) break;  // not definite on null(A) (or NaN)
+    const double alpha = rz / pq;
+    y += alpha * p;
+    r += alpha * q;
+    ++res.iterations;
+    if (!(alpha * p.lpNorm<Eigen::Infinity>() > step_tolerance)) {
+      res.converged = std::isfinite(alpha);
+      break;
+    }
+    z = factor.project(r);
+    const double rz_new = r.dot(z);
+    p = -z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  if (!res.converged) return res;
+  // The multiplier from the recomputed gradient: Aᵀλ = M'y + ĥ.
+  apply(y, r);
+  r += h_hat;
+  VectorXd unused;
+  factor.solve(r, VectorXd::Zero(A.rows()), unused, lambda);
+  return res;
+}
+
+}  // namespace symcontact
