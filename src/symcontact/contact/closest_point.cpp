@@ -121,17 +121,6 @@ bool inside_triangle(const double* eta) {
   return eta[0] >= -kInsideTol && eta[1] >= -kInsideTol && 1.0 - eta[0] - eta[1] >= -kInsideTol;
 }
 
-/// Snaps round-off excursions past the edges back onto the reference triangle.
-void snap_inside(double* eta) {
-  eta[0] = std::max(eta[0], 0.0);
-  eta[1] = std::max(eta[1], 0.0);
-  const double s = eta[0] + eta[1];
-  if (s > 1.0) {
-    eta[0] /= s;
-    eta[1] /= s;
-  }
-}
-
 /// Edge parameter t ∈ [0, 1] → clamping report: a vertex at the ends, else the edge.
 void report_edge(int e, double t, FacetProjection& r) {
   r.clamped_edge = -1;
@@ -146,7 +135,7 @@ FacetProjection project_on_tri3(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   const Eigen::Vector2d e = plane_coordinates(xf, p);
   double eta[2] = {e[0], e[1]};
   if (inside_triangle(eta)) {
-    snap_inside(eta);
+    snap_into_triangle(eta);
     r.eta[0] = eta[0];
     r.eta[1] = eta[1];
     r.point = triangle_point(CellType::kTri3, xf, eta, nullptr);
@@ -214,7 +203,7 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   if (inside && local_min) {
     // A local minimum inside the facet: on a facet whose curvature radius exceeds its size (any
     // sensible mesh), the squared distance is convex over the facet and this is the closest point.
-    snap_inside(e);
+    snap_into_triangle(e);
     r.eta[0] = e[0];
     r.eta[1] = e[1];
     r.point = triangle_point(CellType::kTri6, xf, e, nullptr);
@@ -236,7 +225,7 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
     }
   }
   if (inside) {
-    snap_inside(e);
+    snap_into_triangle(e);
     const Eigen::Vector3d x = triangle_point(CellType::kTri6, xf, e, nullptr);
     const double d2 = (x - p).squaredNorm();
     if (d2 <= r.distance2 * (1 + 1e-14) + 1e-300) {
@@ -269,6 +258,16 @@ FacetProjection project_on_facet(CellType type, const Eigen::MatrixXd& xf, const
     default: break;
   }
   throw std::logic_error("project_on_facet: " + cell_name(type) + " is not a contact facet type");
+}
+
+void snap_into_triangle(double* eta) {
+  eta[0] = std::max(eta[0], 0.0);
+  eta[1] = std::max(eta[1], 0.0);
+  const double s = eta[0] + eta[1];
+  if (s > 1.0) {
+    eta[0] /= s;
+    eta[1] /= s;
+  }
 }
 
 }  // namespace symcontact

@@ -43,6 +43,10 @@ inline const int* triangle_edge(int e) {
   return edges[e];
 }
 
+/// Moves triangle reference coordinates slightly outside the reference triangle back onto it: negative
+/// ones to 0, then (η1, η2) scaled so that η1 + η2 ≤ 1.
+void snap_into_triangle(double* eta);
+
 /// Triangle reference coordinates (η1, η2) of the point at parameter t ∈ [0, 1] along edge e (from its
 /// vertex a to its vertex b).
 void triangle_edge_point(int e, double t, double* eta);

@@ -133,6 +133,14 @@ bool past_end(const ContactSurface& s, Index f, const FacetProjection& pr) {
   return pr.clamped_vertex >= 0 && s.boundary_vertex[s.facet(f)[pr.clamped_vertex]] != 0;
 }
 
+/// The slave's smoothed nodal normals for the bisector ray (empty without it): a self-contact's slave is
+/// its master, whose normals prepare_master() has computed at the same positions.
+Eigen::MatrixXd slave_normals_for_ray(const ContactSurface& slave, const Eigen::MatrixXd& xs,
+                                      const MasterGeometry& master, const ContactSearchOptions& options) {
+  if (!options.bisector_ray) return Eigen::MatrixXd();
+  return master.surface == &slave ? master.normals : nodal_normals(slave, xs);
+}
+
 int default_gauss(const ContactSurface& s, const ContactSearchOptions& o) {
   return o.gauss_points > 0 ? o.gauss_points : 2 * cell_order(s.facet_type) + 1;
 }
@@ -183,7 +191,6 @@ bool ray_meets_facet(const MasterGeometry& master, Index f, const Eigen::Vector3
         for (int i = 0; i < d; ++i) J(c, i) += dN[a * d + i] * xa;
       }
     }
-    if (D == 2) J(0, 2) = J(1, 2) = J(2, 0) = J(2, 1) = 0.0;
     const Eigen::Vector3d dz = J.partialPivLu().solve(r);
     if (!dz.allFinite()) return false;
     double step = 0.0;
@@ -207,13 +214,7 @@ bool clamp_to_facet(int d, double* eta, double tol) {
     return in;
   }
   const bool in = eta[0] >= -tol && eta[1] >= -tol && eta[0] + eta[1] <= 1 + tol;
-  eta[0] = std::max(eta[0], 0.0);
-  eta[1] = std::max(eta[1], 0.0);
-  const double sum = eta[0] + eta[1];
-  if (sum > 1.0) {
-    eta[0] /= sum;
-    eta[1] /= sum;
-  }
+  snap_into_triangle(eta);
   return in;
 }
 
@@ -352,7 +353,7 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
   std::vector<ContactPoint> points;
   std::vector<double> cuts;
   std::vector<double> N(npf);
-  const Eigen::MatrixXd ns_nodal = options.bisector_ray ? nodal_normals(slave, xs) : Eigen::MatrixXd();
+  const Eigen::MatrixXd ns_nodal = slave_normals_for_ray(slave, xs, master, options);
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
@@ -392,7 +393,7 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
   const QuadratureRule rule = simplex_quadrature(2, degree);
   std::vector<ContactPoint> points;
   std::vector<double> N(npf);
-  const Eigen::MatrixXd ns_nodal = options.bisector_ray ? nodal_normals(slave, xs) : Eigen::MatrixXd();
+  const Eigen::MatrixXd ns_nodal = slave_normals_for_ray(slave, xs, master, options);
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
