@@ -5,6 +5,9 @@
 ///
 ///     min_x f(x)   subject to   c(x) = A x + b ≥ 0,      x ∈ R^n,
 ///
+/// optionally with its first k rows equalities (c_i(x) = 0, num_equalities()) and simple lower bounds
+/// x ≥ x_l (lower_bounds(); the dual of the condensed contact problem, dual_condensed_problem.hpp, has both),
+///
 /// f smooth (twice differentiable; convex for linear elasticity), A a constant sparse m × n matrix for
 /// the duration of one solve (contact constraints linearised at frozen projections and normals).
 /// The Hessian of the Lagrangian is ∇²f because the constraints are linear.
@@ -32,6 +35,10 @@ class ConstrainedProblem {
   /// A (m × n, compressed) and b (m) of the constraints c(x) = A x + b ≥ 0.
   virtual const SparseMatrix& constraint_matrix() const = 0;
   virtual const VectorXd& constraint_offset() const = 0;
+  /// k: the first k rows of A x + b are equalities (= 0), the rest inequalities (≥ 0).
+  virtual Index num_equalities() const { return 0; }
+  /// Lower bounds x ≥ x_l on the variables (size n), or null for none.
+  virtual const VectorXd* lower_bounds() const { return nullptr; }
 };
 
 }  // namespace symcontact

@@ -74,6 +74,7 @@ class CallbackTimer {
 struct AdapterSetup {
   VectorXd x0;
   const VectorXd* multipliers0 = nullptr;  ///< μ ≥ 0 convention; used when warm starting
+  const VectorXd* bound_multipliers0 = nullptr;  ///< z ≥ 0 of the lower bounds; used when warm starting
   SparseMatrix hessian0;                   ///< lower triangle at x0, compressed: fixes the pattern
   double objective_scaling = 1.0;
 };
@@ -116,9 +117,11 @@ class ContactTNLP final : public Ipopt::TNLP {
   bool get_bounds_info(IpIndex n, IpNumber* x_l, IpNumber* x_u, IpIndex m, IpNumber* g_l,
                        IpNumber* g_u) override {
     std::fill(x_l, x_l + n, -kIpoptInfinity);
+    if (const VectorXd* lower = problem_.lower_bounds()) std::copy(lower->data(), lower->data() + n, x_l);
     std::fill(x_u, x_u + n, kIpoptInfinity);
     std::fill(g_l, g_l + m, 0.0);
     std::fill(g_u, g_u + m, kIpoptInfinity);
+    std::fill(g_u, g_u + std::min<IpIndex>(m, static_cast<IpIndex>(problem_.num_equalities())), 0.0);
     return true;
   }
 
@@ -140,9 +143,10 @@ class ContactTNLP final : public Ipopt::TNLP {
   bool get_starting_point(IpIndex n, bool init_x, IpNumber* x, bool init_z, IpNumber* z_L,
                           IpNumber* z_U, IpIndex m, bool init_lambda, IpNumber* lambda) override {
     if (init_x) std::copy(setup_.x0.data(), setup_.x0.data() + n, x);
-    if (init_z) {  // no bounds on x: these bound multipliers are not used
+    if (init_z) {  // only a warm start asks for them: the bounds' multipliers it was given, else zero
       std::fill(z_L, z_L + n, 0.0);
       std::fill(z_U, z_U + n, 0.0);
+      if (setup_.bound_multipliers0) std::copy(setup_.bound_multipliers0->data(), setup_.bound_multipliers0->data() + n, z_L);
     }
     if (init_lambda) {
       // IPOPT's λ = −μ. Without multipliers (warm_start_init_point set by the user alone): zero.
@@ -221,13 +225,14 @@ class ContactTNLP final : public Ipopt::TNLP {
   }
 
   void finalize_solution(Ipopt::SolverReturn /*status*/, IpIndex n, const IpNumber* x,
-                         const IpNumber* /*z_L*/, const IpNumber* /*z_U*/, IpIndex m, const IpNumber* g,
+                         const IpNumber* z_L, const IpNumber* /*z_U*/, IpIndex m, const IpNumber* g,
                          const IpNumber* lambda, IpNumber obj_value, const Ipopt::IpoptData* /*ip_data*/,
                          Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) override {
     result_.x = Eigen::Map<const VectorXd>(x, n);
     // IPOPT's Lagrangian is f + λᵀg, so λ ≤ 0 at a KKT point of g ≥ 0; we report μ = −λ ≥ 0.
     result_.multipliers = -Eigen::Map<const VectorXd>(lambda, m);
     result_.constraint_values = Eigen::Map<const VectorXd>(g, m);
+    result_.bound_multipliers = problem_.lower_bounds() ? VectorXd(Eigen::Map<const VectorXd>(z_L, n)) : VectorXd::Zero(n);
     result_.objective = obj_value;
     finalized_ = true;
   }
@@ -399,7 +404,7 @@ double objective_scaling(const VectorXd& x0, const VectorXd& g0, const SparseMat
 }  // namespace
 
 IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, const IpoptOptions& options,
-                             const VectorXd* multipliers0) {
+                             const VectorXd* multipliers0, const VectorXd* bound_multipliers0) {
   const Index n = problem.num_variables();
   const SparseMatrix& A = problem.constraint_matrix();
   const VectorXd& b = problem.constraint_offset();
@@ -421,11 +426,22 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   result.x = x0;
   result.constraint_values = A * x0 + b;
   result.multipliers = VectorXd::Zero(A.rows());
+  result.bound_multipliers = VectorXd::Zero(n);
 
   // Gradient and Hessian at x0: the scaling and the (fixed) Hessian pattern.
   AdapterSetup setup;
   setup.x0 = x0;
   setup.multipliers0 = warm ? multipliers0 : nullptr;
+  if (warm && bound_multipliers0 && problem.lower_bounds()) {
+    if (bound_multipliers0->size() != n)
+      throw std::invalid_argument("solve_with_ipopt: bound_multipliers0 has size " +
+                                  std::to_string(bound_multipliers0->size()) + ", expected " + std::to_string(n));
+    setup.bound_multipliers0 = bound_multipliers0;
+  }
+  if (problem.num_equalities() < 0 || problem.num_equalities() > A.rows())
+    throw std::invalid_argument("solve_with_ipopt: num_equalities() is outside [0, rows of A]");
+  if (problem.lower_bounds() && problem.lower_bounds()->size() != n)
+    throw std::invalid_argument("solve_with_ipopt: lower_bounds() does not have the problem size");
   {
     VectorXd g0;
     try {

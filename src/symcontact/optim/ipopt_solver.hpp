@@ -12,7 +12,10 @@
 /// - IPOPT sees g(x) = A x + b with bounds 0 ≤ g ≤ +∞ and free variables. Its Lagrangian is
 ///   f + λᵀg, so at a KKT point λ ≤ 0. We report μ = −λ ≥ 0, the contact-pressure sign:
 ///       ∇f(x) = Aᵀ μ,   μ ≥ 0,   c(x) ≥ 0,   μ_i c_i(x) = 0.
-///   Warm-start multipliers are given in the same (μ ≥ 0) convention.
+///   Warm-start multipliers are given in the same (μ ≥ 0) convention. Equality rows
+///   (ConstrainedProblem::num_equalities()) get bounds 0 ≤ g ≤ 0 and multipliers of either sign in the
+///   same convention (∇f = Aᵀμ still holds). Lower bounds on x (ConstrainedProblem::lower_bounds()) are
+///   IPOPT's own variable bounds; their multipliers z ≥ 0 are reported (∇f = Aᵀμ + z).
 /// - Hessian of the Lagrangian = obj_factor · ∇²f (the constraints are linear); its sparsity is the
 ///   pattern of hessian_lower() at x0, fixed for the whole solve.
 ///
@@ -77,15 +80,19 @@ struct IpoptResult {
   VectorXd x;
   VectorXd multipliers;        ///< μ ≥ 0 with ∇f(x) = Aᵀμ at a KKT point (= −IPOPT's λ)
   VectorXd constraint_values;  ///< c(x) = A x + b
+  /// z ≥ 0 of the lower bounds x ≥ x_l (ConstrainedProblem::lower_bounds()): ∇f(x) = Aᵀμ + z at a KKT
+  /// point; zero when the problem has no bounds.
+  VectorXd bound_multipliers;
   double seconds = 0.0;               ///< wall time inside IPOPT (including callbacks)
   double seconds_in_callbacks = 0.0;  ///< wall time spent evaluating f, ∇f, ∇²f, c
   double objective_scaling = 1.0;     ///< s_f used (see the file comment)
 };
 
 /// Solves min f(x) s.t. A x + b ≥ 0 from x0 (size problem.num_variables()). `multipliers0` (size m,
-/// μ ≥ 0 convention) is only used when options.warm_start is true. The problem is evaluated at x0
-/// before IPOPT starts (gradient and Hessian, for the scaling and the Hessian pattern).
+/// μ ≥ 0 convention) and `bound_multipliers0` (size n, z ≥ 0 of the lower bounds) are only used when
+/// options.warm_start is true. The problem is evaluated at x0 before IPOPT starts (gradient and
+/// Hessian, for the scaling and the Hessian pattern).
 IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, const IpoptOptions& options,
-                             const VectorXd* multipliers0 = nullptr);
+                             const VectorXd* multipliers0 = nullptr, const VectorXd* bound_multipliers0 = nullptr);
 
 }  // namespace symcontact

@@ -65,6 +65,8 @@ class CondensedProblem : public ConstrainedProblem {
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
+  const VectorXd& linear_term() const { return load_->g_hat; }  ///< ĝ
+  const StaticCondensation& condensation() const { return sc_; }
   VectorXd restrict(const VectorXd& x) const;  ///< y = x_B
   VectorXd expand(const VectorXd& y) const;    ///< x with x_B = y and x_I = x_I(y) (one interior solve)
 

@@ -13,6 +13,8 @@
 #include "symcontact/solvers/anderson_acceleration.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
+#include "symcontact/solvers/dual_condensed_problem.hpp"
+#include "symcontact/solvers/semidefinite_factor.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
 #include "symcontact/solvers/static_condensation.hpp"
 
@@ -196,6 +198,49 @@ void log_geometry_change(const VectorXd& du, const DofMap& dofs, const ContactLi
   log.debug(s.str());
 }
 
+/// The pivoted factor of the workspace's Schur complement (computed once per condensation), or null when
+/// the dual cannot be used: a null space that is not clean (max |S N| above 1e-8 of max |S|: a pivot
+/// between round-off and stiffness, no clear rank) is left to the primal.
+const SemidefiniteFactor* dual_schur_factor(ContactWorkspace& ws, const Logger& log) {
+  // Pivots below this fraction of max diag(S) are rigid motions: theirs are round-off (1e-16 relative),
+  // the softest deformation seen from the contact DOFs of a body is far above it.
+  constexpr double kRankTolerance = 1e-10;
+  constexpr double kNullResidual = 1e-8;
+  if (!ws.condensation || ws.condensation->empty()) return nullptr;
+  if (ws.schur_factor_of != ws.factorisations) {
+    ws.schur_factor.reset();
+    ws.schur_factor_of = ws.factorisations;
+    try {
+      auto f = std::make_unique<SemidefiniteFactor>(ws.condensation->schur_lower(), kRankTolerance);
+      std::ostringstream s;
+      s << "  dual solve: Schur complement of rank " << f->rank() << " of " << f->size() << " ("
+        << f->size() - f->rank() << " rigid motion(s), null residual " << f->null_residual() << ")";
+      if (f->null_residual() <= kNullResidual) {
+        ws.schur_factor = std::move(f);
+      } else {
+        s << ": not clean, the primal is solved instead";
+      }
+      log.debug(s.str());
+    } catch (const SolveError& e) {
+      log.debug(std::string("  dual solve not used: ") + e.what());
+    }
+  }
+  return ws.schur_factor.get();
+}
+
+/// IPOPT on the dual of a frictionless condensed problem; the result in the primal's terms (x = y, μ = λ).
+IpoptResult solve_dual(const SemidefiniteFactor& factor, const CondensedProblem& condensed, const IpoptOptions& options) {
+  DualCondensedProblem dual(factor, condensed.constraint_matrix(), condensed.constraint_offset(),
+                            condensed.linear_term());
+  IpoptResult r = solve_with_ipopt(dual, VectorXd::Zero(dual.num_variables()), options);
+  const VectorXd lambda_hat = r.x;
+  const VectorXd eq = r.multipliers;
+  r.x = dual.primal(lambda_hat, eq);
+  r.multipliers = dual.multipliers(lambda_hat);
+  r.constraint_values = condensed.constraint_matrix() * r.x + condensed.constraint_offset();
+  return r;
+}
+
 ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                       const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                       const Logger& log, const FrictionState* friction) {
@@ -324,7 +369,15 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       mu0 = mu_prev;
     }
     IpoptResult res;
-    {
+    bool dual = false;
+    if (condensed && options.dual && condensed->hessian_is_constant() && lin.A.rows() > 0) {
+      ScopedPhase t(rep.times, "condensation");  // the Schur complement's factor: once per condensation
+      dual = dual_schur_factor(*workspace, log) != nullptr;
+    }
+    if (dual) {
+      ScopedPhase t(rep.times, "optimizer");
+      res = solve_dual(*workspace->schur_factor, *condensed, options.ipopt);
+    } else {
       ScopedPhase t(rep.times, "optimizer");
       res = solve_with_ipopt(target, to_target(x), opt, same_rows ? &mu0 : nullptr);
       if (!res.success && it == 1 && same_rows) {
@@ -373,7 +426,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
           log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
         }
       }
-      if (!pr.applied) {
+      if (!pr.applied && !dual) {  // the dual's displacements balance the forces exactly already
         pr = polish_active_set(target, res.x, res.multipliers, true);
         if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
       }

@@ -26,6 +26,7 @@
 namespace symcontact {
 
 class StaticCondensation;
+class SemidefiniteFactor;
 
 /// What solve_contact keeps between calls: the static condensation of a quadratic bulk energy (its
 /// Cholesky factor and Schur complement, see condensed_problem.hpp), reused while the energy object,
@@ -38,6 +39,10 @@ struct ContactWorkspace {
   std::vector<Index> free_index;        ///< its DOF → free numbering
   std::unique_ptr<StaticCondensation> condensation;
   int factorisations = 0;               ///< condensations computed (for reports and tests)
+  /// The pivoted factor of the condensation's Schur complement for the dual solve, and the value of
+  /// `factorisations` it belongs to.
+  std::unique_ptr<SemidefiniteFactor> schur_factor;
+  int schur_factor_of = -1;
   /// The last converged solve's multipliers and the identity of its rows (family, node): the warm start of
   /// the next solve's first IPOPT call when its rows are the same.
   VectorXd multipliers;
@@ -81,6 +86,12 @@ struct ContactSolveOptions {
   /// iteration (23 s wall at 5,224 on a loaded machine that gave the run a third of a core). The 3D Hertz sphere on its plane has |B| = 5,224 at 4e5 DOFs
   /// (the limit was 4,000 until that size was run) and about 9,500 at 1e6.
   Index max_condensed_dofs = 12000;
+  /// Solve a condensed problem without friction terms through its dual (dual_condensed_problem.hpp): IPOPT
+  /// works on the m contact multipliers with bounds, on a Hessian formed once per geometry iteration, instead
+  /// of on the |B| condensed DOFs with m inequalities and a dense |B| × |B| KKT factorisation at each of its
+  /// iterations; the displacements follow exactly from the multipliers (forces balanced with no optimiser
+  /// error). Same solution to the optimiser's tolerance; off only to compare.
+  bool dual = true;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
 };

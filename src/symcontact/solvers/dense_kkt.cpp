@@ -33,6 +33,13 @@ void lower_solve(const AlignedMatrix& L, bool transpose, AlignedMatrix& B) {
   dtrsm_("L", "L", transpose ? "T" : "N", "N", &n, &k, &one, L.data(), &n, B.data(), &n);
 }
 
+void gram_lower(const AlignedMatrix& Z, AlignedMatrix& G) {
+  if (G.rows() != Z.cols() || G.cols() != Z.cols()) throw std::invalid_argument("gram_lower: G must be k × k for Z n × k");
+  const int n = static_cast<int>(Z.rows()), k = static_cast<int>(Z.cols());
+  const double one = 1.0, zero = 0.0;
+  dsyrk_("L", "T", &k, &n, &one, Z.data(), &n, &zero, G.data(), &k);
+}
+
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y) {
   const int n = static_cast<int>(x.size()), inc = 1;
   AlignedMatrix xa(n, 1), ya(n, 1);
@@ -47,13 +54,11 @@ DenseRangeSpace::DenseRangeSpace(std::shared_ptr<const AlignedMatrix> L, const S
     : L_(std::move(L)), A_(A), rho_(rho), n_(A.cols()), m_(A.rows()) {
   if (!L_ || L_->rows() != n_ || L_->cols() != n_ || m_ < 1)
     throw std::invalid_argument("DenseRangeSpace: the factor and the constraints differ in size, or no constraint");
-  const int n = static_cast<int>(n_), m = static_cast<int>(m_);
   W_ = std::make_unique<AlignedMatrix>(n_, m_);
   W_->map() = MatrixXd(A_.transpose());
   lower_solve(*L_, false, *W_);
   AlignedMatrix WtW(m_, m_);
-  const double one = 1.0, zero = 0.0;
-  dsyrk_("L", "T", &m, &n, &one, W_->data(), &n, &zero, WtW.data(), &m);
+  gram_lower(*W_, WtW);
   MatrixXd S = WtW.map();
   S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
   // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z are

@@ -59,6 +59,9 @@ class AlignedMatrix {
 /// column-major, leading dimension n) and the n × k matrix B (dtrsm).
 void lower_solve(const AlignedMatrix& L, bool transpose, AlignedMatrix& B);
 
+/// G ← Zᵀ Z (lower triangle) for the n × k matrix Z; G is k × k (dsyrk).
+void gram_lower(const AlignedMatrix& Z, AlignedMatrix& G);
+
 /// y ← y + H x for H symmetric n × n, given by its lower triangle (dsymv).
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y);
 

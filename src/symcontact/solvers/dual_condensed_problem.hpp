@@ -1,0 +1,81 @@
+#pragma once
+/// \file dual_condensed_problem.hpp
+/// The Lagrangian dual of a frictionless condensed contact problem: a problem in the contact multipliers
+/// alone, whose size is the number of constraint rows m instead of the condensed DOFs |B| (about 2m for a
+/// symmetric pair), with simple bounds instead of general inequalities, and whose Hessian is formed once per
+/// geometry iteration instead of being factorised by IPOPT at every one of its iterations.
+///
+/// Primal (condensed_problem.hpp, no friction term): S = K_BB − K_BI K_II⁻¹ K_IB positive SEMIdefinite —
+/// its null space N (n × k, semidefinite_factor.hpp) holds the rigid motions of the bodies that only the
+/// contact holds (the upper cylinder of the Hertz pair slides vertically without it):
+///     min_y  ½ yᵀS y + ĝᵀy   subject to   A y + b ≥ 0.
+/// Its Lagrangian ½yᵀSy + ĝᵀy − λᵀ(Ay + b) is bounded below in y only if Nᵀ(Aᵀλ − ĝ) = 0 (the contact forces
+/// balance the loads along every rigid motion); then y = S⁺(Aᵀλ − ĝ) + N α and the dual is (Dorn 1960; the
+/// FETI form with a rigid-body equality: Dostál, Optimal Quadratic Programming Algorithms, 2009, §8.3)
+///     min_λ  ½ λᵀW λ − dᵀλ   subject to   λ ≥ 0,   G λ = e,
+///     W = A S⁺ Aᵀ,   d = A S⁺ ĝ − b,   G = (A N)ᵀ,   e = Nᵀ ĝ.
+/// Its KKT conditions are W λ − d − Gᵀβ = z ≥ 0, z ⊥ λ; with α = −β the primal gaps are
+///     A y + b = W λ − d + Gᵀ α = z,
+/// so the bound multipliers z are the gaps, complementary to the contact multipliers λ, and the primal is
+/// recovered exactly: y = S⁺(Aᵀλ − ĝ) − N β balances the forces for ANY λ (no optimiser error in it).
+/// IPOPT's stationarity ∇f + Gᵀλ_ip − z = 0 gives β = −λ_ip, so α = λ_ip = −μ_eq in the μ = −λ_ip
+/// convention of ipopt_solver.hpp (the unit tests check it against the primal solved by IPOPT).
+///
+/// Scaling: the rows of A are scaled to force units, λ_i = D_i λ̂_i with D_i = f_ref / max_j |A_ij|
+/// (f_ref = ‖ĝ‖∞, or max|S|·max|b_i / max_j A_ij| without load), so that λ̂ is O(1) where the contact
+/// carries the load and IPOPT's absolute bound pushes (1e-2) mean what they mean on a unit problem.
+/// The problem's variables are λ̂; multipliers() and primal() convert.
+
+#include <memory>
+
+#include "symcontact/optim/constrained_problem.hpp"
+#include "symcontact/solvers/dense_kkt.hpp"
+#include "symcontact/solvers/semidefinite_factor.hpp"
+
+namespace symcontact {
+
+class DualCondensedProblem : public ConstrainedProblem {
+ public:
+  /// `factor`: of S (must outlive the object); A (m × n), b: the condensed constraints; g_hat: ĝ (size n).
+  /// Forms W, d, G, e: O(n² m + n m²).
+  DualCondensedProblem(const SemidefiniteFactor& factor, const SparseMatrix& A, const VectorXd& b,
+                       const VectorXd& g_hat);
+
+  Index num_variables() const override { return m_; }
+  double objective(const VectorXd& lambda_hat) override;
+  void gradient(const VectorXd& lambda_hat, VectorXd& g) override;
+  void hessian_lower(const VectorXd& lambda_hat, SparseMatrix& H) override;
+  bool hessian_is_constant() const override { return true; }
+  bool hessian_is_dense() const override { return true; }
+  const SparseMatrix& constraint_matrix() const override { return G_; }
+  const VectorXd& constraint_offset() const override { return minus_e_; }
+  Index num_equalities() const override { return G_.rows(); }
+  const VectorXd* lower_bounds() const override { return &zero_; }
+
+  /// The contact multipliers of the primal rows, λ = D λ̂ (negative entries, round-off of the bound,
+  /// are set to zero).
+  VectorXd multipliers(const VectorXd& lambda_hat) const;
+  /// y = S⁺(Aᵀλ − ĝ) + N α with α = −μ_eq (`equality_multipliers`, IPOPT's result in the μ convention).
+  VectorXd primal(const VectorXd& lambda_hat, const VectorXd& equality_multipliers) const;
+  /// The scaled primal gaps D (A y + b) for that y (what the bound multipliers should equal).
+  VectorXd scaled_gaps(const VectorXd& y) const;
+
+  Index num_rigid_modes() const { return G_.rows(); }
+
+ private:
+  const SemidefiniteFactor& factor_;
+  Index m_ = 0;
+  VectorXd D_;                       ///< row scales
+  SparseMatrix A_scaled_;            ///< D A
+  VectorXd b_scaled_;                ///< D b
+  std::unique_ptr<AlignedMatrix> Z_;  ///< L₁₁⁻¹ (P Ãᵀ)₁..ᵣ  (r × m)
+  VectorXd t_;                       ///< L₁₁⁻¹ (P ĝ)₁..ᵣ
+  std::unique_ptr<AlignedMatrix> W_;  ///< ZᵀZ, lower triangle
+  SparseMatrix W_lower_;             ///< the same as a (full) sparse lower triangle, for IPOPT
+  VectorXd d_;
+  SparseMatrix G_;
+  VectorXd minus_e_;
+  VectorXd zero_;
+};
+
+}  // namespace symcontact

@@ -1,0 +1,133 @@
+// The dual of a frictionless condensed contact problem (solvers/dual_condensed_problem.hpp) against the
+// primal solved by IPOPT: two "bodies" of 12 DOFs each, the first held (S₁ definite), the second held by
+// contact alone (S₂ has the rigid translation in its null space), pressed onto the first by a load; eight
+// contact rows, some of them open at the solution.
+#include <random>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "symcontact/optim/ipopt_solver.hpp"
+#include "symcontact/solvers/dual_condensed_problem.hpp"
+#include "symcontact/solvers/semidefinite_factor.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+constexpr Index kBody = 12, kN = 2 * kBody, kRows = 8;
+
+/// min ½ yᵀS y + gᵀy  s.t.  A y + b ≥ 0, S dense.
+class DenseQp : public ConstrainedProblem {
+ public:
+  DenseQp(MatrixXd S, VectorXd g, SparseMatrix A, VectorXd b)
+      : S_(std::move(S)), g_(std::move(g)), A_(std::move(A)), b_(std::move(b)) {}
+  Index num_variables() const override { return S_.rows(); }
+  double objective(const VectorXd& y) override { return 0.5 * y.dot(S_ * y) + g_.dot(y); }
+  void gradient(const VectorXd& y, VectorXd& g) override { g = S_ * y + g_; }
+  void hessian_lower(const VectorXd&, SparseMatrix& H) override {
+    H = MatrixXd(S_.triangularView<Eigen::Lower>()).sparseView(0.0, 0.0);
+  }
+  bool hessian_is_constant() const override { return true; }
+  const SparseMatrix& constraint_matrix() const override { return A_; }
+  const VectorXd& constraint_offset() const override { return b_; }
+
+ private:
+  MatrixXd S_;
+  VectorXd g_;
+  SparseMatrix A_;
+  VectorXd b_;
+};
+
+struct Case {
+  MatrixXd S;
+  VectorXd g;
+  SparseMatrix A;
+  VectorXd b;
+};
+
+/// `floating`: the second body has no support of its own (S singular).
+Case make_case(bool floating, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto spd = [&](Index n) {
+    MatrixXd B(n, n);
+    for (Index i = 0; i < n; ++i)
+      for (Index j = 0; j < n; ++j) B(i, j) = u(rng);
+    return MatrixXd(B * B.transpose() + 0.5 * MatrixXd::Identity(n, n));
+  };
+  Case c;
+  c.S = MatrixXd::Zero(kN, kN);
+  c.S.topLeftCorner(kBody, kBody) = spd(kBody);
+  MatrixXd s2 = spd(kBody);
+  if (floating) {  // remove the uniform motion: P s2 P with P = I − 11ᵀ/n
+    const MatrixXd P = MatrixXd::Identity(kBody, kBody) - MatrixXd::Constant(kBody, kBody, 1.0 / kBody);
+    s2 = P * s2 * P;
+  }
+  c.S.bottomRightCorner(kBody, kBody) = s2;
+  // Load: the second body pushed down (energy ĝᵀy falls as its DOFs fall), the first one loaded at random.
+  c.g = VectorXd::Zero(kN);
+  for (Index i = 0; i < kBody; ++i) c.g[i] = 0.1 * u(rng);
+  c.g.tail(kBody).setConstant(0.05);
+  // Gaps y₂ᵢ − y₁ᵢ + bᵢ ≥ 0 with a little of the neighbours, initial gaps growing with i.
+  std::vector<Triplet> t;
+  c.b.resize(kRows);
+  for (int i = 0; i < kRows; ++i) {
+    t.emplace_back(i, static_cast<int>(kBody + i), 1.0 + 0.1 * u(rng));
+    t.emplace_back(i, i, -1.0);
+    t.emplace_back(i, i + 1, 0.2 * u(rng));
+    c.b[i] = 0.02 * i * i;
+  }
+  c.A.resize(kRows, kN);
+  c.A.setFromTriplets(t.begin(), t.end());
+  return c;
+}
+
+IpoptOptions tight() {
+  IpoptOptions o;
+  o.tolerance = 1e-12;
+  return o;
+}
+
+}  // namespace
+
+class DualCondensed : public ::testing::TestWithParam<bool> {};
+
+TEST_P(DualCondensed, SameDisplacementsAndMultipliersAsThePrimal) {
+  const bool floating = GetParam();
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Case c = make_case(floating, seed);
+    DenseQp primal(c.S, c.g, c.A, c.b);
+    const IpoptResult rp = solve_with_ipopt(primal, VectorXd::Zero(kN), tight());
+    ASSERT_TRUE(rp.success) << rp.status_text;
+
+    const SemidefiniteFactor f(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+    EXPECT_EQ(f.rank(), floating ? kN - 1 : kN);
+    DualCondensedProblem dual(f, c.A, c.b, c.g);
+    EXPECT_EQ(dual.num_rigid_modes(), floating ? 1 : 0);
+    const IpoptResult rd = solve_with_ipopt(dual, VectorXd::Zero(kRows), tight());
+    ASSERT_TRUE(rd.success) << rd.status_text;
+    const VectorXd y = dual.primal(rd.x, rd.multipliers);
+    const VectorXd lambda = dual.multipliers(rd.x);
+
+    const double yscale = rp.x.lpNorm<Eigen::Infinity>(), mscale = rp.multipliers.lpNorm<Eigen::Infinity>();
+    ASSERT_GT(mscale, 0.0);
+    EXPECT_LT((y - rp.x).lpNorm<Eigen::Infinity>(), 1e-7 * yscale) << "seed " << seed;
+    EXPECT_LT((lambda - rp.multipliers).lpNorm<Eigen::Infinity>(), 1e-7 * mscale) << "seed " << seed;
+    // Some rows open, some closed: the test sees the active set, not a trivial one.
+    int open = 0;
+    for (Index i = 0; i < kRows; ++i) open += lambda[i] < 1e-8 * mscale;
+    EXPECT_GT(open, 0);
+    EXPECT_LT(open, kRows);
+    // The displacements balance the forces exactly, whatever the optimiser's tolerance: S y + ĝ = Aᵀλ.
+    const VectorXd residual = c.S * y + c.g - c.A.transpose() * lambda;
+    EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-10 * c.g.lpNorm<Eigen::Infinity>()) << "seed " << seed;
+    // The bounds' multipliers are the (scaled) gaps.
+    const VectorXd gaps = dual.scaled_gaps(y);
+    EXPECT_LT((rd.bound_multipliers - gaps).lpNorm<Eigen::Infinity>(), 1e-7 * gaps.lpNorm<Eigen::Infinity>());
+    EXPECT_GE((c.A * y + c.b).minCoeff(), -1e-9 * yscale);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(HeldAndFloating, DualCondensed, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "Floating" : "Held"; });

@@ -1,0 +1,74 @@
+// The pivoted factor of a positive semidefinite matrix (solvers/semidefinite_factor.hpp): its rank, its
+// null basis and its generalised inverse, on random matrices of known rank.
+#include <random>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/solvers/semidefinite_factor.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+/// S = B Bᵀ with B n × r random: positive semidefinite of rank r.
+MatrixXd random_psd(Index n, Index r, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  MatrixXd B(n, r);
+  for (Index i = 0; i < n; ++i)
+    for (Index j = 0; j < r; ++j) B(i, j) = u(rng);
+  return B * B.transpose();
+}
+
+SparseMatrix lower(const MatrixXd& S) { return MatrixXd(S.triangularView<Eigen::Lower>()).sparseView(); }
+
+/// S⁺ R through the two halves.
+MatrixXd apply_pinv(const SemidefiniteFactor& f, const MatrixXd& R) {
+  const auto Z = f.half_solve(R);
+  MatrixXd out(R.rows(), R.cols());
+  for (Index j = 0; j < R.cols(); ++j) out.col(j) = f.back_solve(Z->map().col(j));
+  return out;
+}
+
+}  // namespace
+
+TEST(SemidefiniteFactor, FindsTheRankAndAnOrthonormalNullBasis) {
+  for (const Index rank : {20, 19, 17, 12}) {
+    const MatrixXd S = random_psd(20, rank, 7 + static_cast<unsigned>(rank));
+    const SemidefiniteFactor f(lower(S), 1e-10);
+    EXPECT_EQ(f.rank(), rank);
+    const MatrixXd& N = f.null_basis();
+    ASSERT_EQ(N.cols(), 20 - rank);
+    if (N.cols() == 0) continue;
+    EXPECT_LT((N.transpose() * N - MatrixXd::Identity(N.cols(), N.cols())).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((S * N).cwiseAbs().maxCoeff(), 1e-12 * S.cwiseAbs().maxCoeff());
+    EXPECT_LT(f.null_residual(), 1e-12);
+  }
+}
+
+TEST(SemidefiniteFactor, HalvesMakeAGeneralisedInverse) {
+  for (const Index rank : {20, 18}) {
+    const MatrixXd S = random_psd(20, rank, 3 + static_cast<unsigned>(rank));
+    const SemidefiniteFactor f(lower(S), 1e-10);
+    // S S⁺ S = S, and for a definite S, S⁺ = S⁻¹.
+    const MatrixXd SpS = apply_pinv(f, S);
+    EXPECT_LT((S * SpS - S).cwiseAbs().maxCoeff(), 1e-9 * S.cwiseAbs().maxCoeff()) << "rank " << rank;
+    if (rank == 20) {
+      EXPECT_LT((SpS - MatrixXd::Identity(20, 20)).cwiseAbs().maxCoeff(), 1e-8);
+    }
+    // Rᵀ S⁺ R = Zᵀ Z.
+    const MatrixXd R = random_psd(20, 3, 99).leftCols(3);
+    const auto Z = f.half_solve(R);
+    EXPECT_LT((R.transpose() * apply_pinv(f, R) - Z->map().transpose() * Z->map()).cwiseAbs().maxCoeff(),
+              1e-9 * (R.transpose() * apply_pinv(f, R)).cwiseAbs().maxCoeff());
+  }
+}
+
+TEST(SemidefiniteFactor, RejectsANegativeOrZeroDiagonal) {
+  MatrixXd S = MatrixXd::Identity(3, 3);
+  S(1, 1) = -1.0;
+  EXPECT_THROW(SemidefiniteFactor(lower(S), 1e-10), SolveError);
+  EXPECT_THROW(SemidefiniteFactor(lower(MatrixXd::Zero(3, 3)), 1e-10), SolveError);
+}
