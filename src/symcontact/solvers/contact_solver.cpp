@@ -228,19 +228,6 @@ const SemidefiniteFactor* dual_schur_factor(ContactWorkspace& ws, const Logger& 
   return ws.schur_factor.get();
 }
 
-/// IPOPT on the dual of a frictionless condensed problem; the result in the primal's terms (x = y, μ = λ).
-IpoptResult solve_dual(const SemidefiniteFactor& factor, const CondensedProblem& condensed, const IpoptOptions& options) {
-  DualCondensedProblem dual(factor, condensed.constraint_matrix(), condensed.constraint_offset(),
-                            condensed.linear_term());
-  IpoptResult r = solve_with_ipopt(dual, VectorXd::Zero(dual.num_variables()), options);
-  const VectorXd lambda_hat = r.x;
-  const VectorXd eq = r.multipliers;
-  r.x = dual.primal(lambda_hat, eq);
-  r.multipliers = dual.multipliers(lambda_hat);
-  r.constraint_values = condensed.constraint_matrix() * r.x + condensed.constraint_offset();
-  return r;
-}
-
 ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                       const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                       const Logger& log, const FrictionState* friction) {
@@ -374,9 +361,31 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       ScopedPhase t(rep.times, "condensation");  // the Schur complement's factor: once per condensation
       dual = dual_schur_factor(*workspace, log) != nullptr;
     }
+    bool polished_closed = false;  ///< the closing polish was applied at this iteration
     if (dual) {
-      ScopedPhase t(rep.times, "optimizer");
-      res = solve_dual(*workspace->schur_factor, *condensed, options.ipopt);
+      // IPOPT on the multipliers; then, as the primal polish below, the active set closed exactly (in the
+      // dual's own, cheaper form); the displacements need no force-balancing polish.
+      DualCondensedProblem dual_problem(*workspace->schur_factor, condensed->constraint_matrix(),
+                                        condensed->constraint_offset(), condensed->linear_term());
+      {
+        ScopedPhase t(rep.times, "optimizer");
+        res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
+      }
+      VectorXd lambda_hat = res.x, eq = res.multipliers;
+      if (res.success && options.polish && closing_polish_works) {
+        ScopedPhase t(rep.times, "polish");
+        const DualCondensedProblem::Closing cl = dual_problem.close_contact_set(lambda_hat, eq);
+        polished_closed = cl.applied;
+        if (!cl.applied) {
+          closing_polish_works = false;
+          log.detail("  active-set polish (closing, dual) not applied: " + cl.reason + "; the IPOPT point is kept");
+        }
+        log.debug("  polish (dual): " + std::to_string(cl.rounds) + " rounds on " + std::to_string(cl.active) +
+                  " active constraints");
+      }
+      res.x = dual_problem.primal(lambda_hat, eq);
+      res.multipliers = dual_problem.multipliers(lambda_hat);
+      res.constraint_values = condensed->constraint_matrix() * res.x + condensed->constraint_offset();
     } else {
       ScopedPhase t(rep.times, "optimizer");
       res = solve_with_ipopt(target, to_target(x), opt, same_rows ? &mu0 : nullptr);
@@ -405,8 +414,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       u = problem.expand(res.x.size() == target.num_variables() ? from_target(res.x) : x);
       throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
     }
-    bool polished_closed = false;  ///< the closing polish was applied at this iteration
-    if (options.polish) {
+    if (options.polish && !dual) {
       ScopedPhase t(rep.times, "polish");
       // Closing the active set fails for good when the two families of a curved symmetric pair cannot
       // all be closed at once; after one failure this solve only balances forces (cheaper).
@@ -426,7 +434,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
           log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
         }
       }
-      if (!pr.applied && !dual) {  // the dual's displacements balance the forces exactly already
+      if (!pr.applied) {
         pr = polish_active_set(target, res.x, res.multipliers, true);
         if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
       }

@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
+#include <vector>
+
+#include <Eigen/Dense>
 
 namespace symcontact {
 
@@ -25,6 +29,7 @@ DualCondensedProblem::DualCondensedProblem(const SemidefiniteFactor& factor, con
     f_ref = factor.max_diagonal() * gap_max;
   }
   if (!(f_ref > 0) || !std::isfinite(f_ref)) f_ref = 1.0;
+  f_ref_ = f_ref;
   D_.resize(m_);
   for (Index i = 0; i < m_; ++i) D_[i] = row_max[i] > 0 ? f_ref / row_max[i] : 1.0;
   A_scaled_ = D_.asDiagonal() * A;
@@ -82,5 +87,93 @@ VectorXd DualCondensedProblem::primal(const VectorXd& lambda_hat, const VectorXd
 }
 
 VectorXd DualCondensedProblem::scaled_gaps(const VectorXd& y) const { return A_scaled_ * y + b_scaled_; }
+
+DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& lambda_hat,
+                                                                      VectorXd& equality_multipliers) const {
+  constexpr int kMaxRounds = 30;
+  constexpr double kTolerance = 1e-10;  // gaps, relative to ‖y‖∞ (the primal polish's kViolationTolerance)
+  Closing c;
+  const Index k = G_.rows();
+  if (m_ == 0 || lambda_hat.size() != m_ || equality_multipliers.size() != k) {
+    c.reason = "sizes";
+    return c;
+  }
+  const auto w = W_->map();
+  const double lmax = lambda_hat.maxCoeff();
+  if (!(lmax > 0)) {
+    c.reason = "no contact";
+    return c;
+  }
+  std::vector<char> in_set(m_);
+  for (Index i = 0; i < m_; ++i) in_set[i] = lambda_hat[i] > 1e-6 * lmax;
+  const MatrixXd Gd = MatrixXd(G_);
+  std::set<std::vector<char>> seen;
+  VectorXd lam, alpha;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    c.rounds = round + 1;
+    if (!seen.insert(in_set).second) {
+      c.reason = "the active set cycles";
+      return c;
+    }
+    std::vector<Index> F;
+    for (Index i = 0; i < m_; ++i)
+      if (in_set[i]) F.push_back(i);
+    const Index nf = static_cast<Index>(F.size());
+    c.active = nf;
+    MatrixXd K = MatrixXd::Zero(nf + k, nf + k);
+    VectorXd rhs(nf + k);
+    for (Index a = 0; a < nf; ++a) {
+      for (Index bb = 0; bb <= a; ++bb) {
+        const Index i = std::max(F[a], F[bb]), j = std::min(F[a], F[bb]);
+        K(a, bb) = K(bb, a) = w(i, j);
+      }
+      for (Index q = 0; q < k; ++q) K(a, nf + q) = K(nf + q, a) = Gd(q, F[a]);
+      rhs[a] = d_[F[a]];
+    }
+    rhs.tail(k) = -minus_e_;
+    VectorXd sol = VectorXd::Zero(nf + k);  // an empty set: every contact open, λ = 0
+    if (nf + k > 0) {
+      Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
+      cod.setThreshold(1e-12);
+      cod.compute(K);
+      sol = cod.solve(rhs);
+    }
+    lam = VectorXd::Zero(m_);
+    for (Index a = 0; a < nf; ++a) lam[F[a]] = sol[a];
+    alpha = sol.tail(k);
+    // Gaps (scaled rows): W λ − d + Gᵀα, and the tolerance in those units.
+    VectorXd gaps = -d_;
+    symmetric_multiply_add(*W_, lam, gaps);
+    if (k > 0) gaps += Gd.transpose() * alpha;
+    const VectorXd y = primal(lam, -alpha);
+    const double tol = kTolerance * f_ref_ * std::max(y.lpNorm<Eigen::Infinity>(), 1e-300);
+    const double lam_max = nf ? lam.cwiseAbs().maxCoeff() : 0.0;
+    bool changed = false;
+    for (Index a = 0; a < nf; ++a)
+      if (lam[F[a]] < -1e-8 * lam_max) {
+        in_set[F[a]] = 0;
+        changed = true;
+      }
+    if (!changed)
+      for (Index i = 0; i < m_; ++i)
+        if (!in_set[i] && gaps[i] < -tol) {
+          in_set[i] = 1;
+          changed = true;
+        }
+    if (changed) continue;
+    double open = 0.0;
+    for (Index a = 0; a < nf; ++a) open = std::max(open, std::abs(gaps[F[a]]));
+    if (open > tol) {
+      c.reason = "the active set does not close consistently";
+      return c;
+    }
+    lambda_hat = lam.cwiseMax(0.0);
+    equality_multipliers = -alpha;
+    c.applied = true;
+    return c;
+  }
+  c.reason = "the active set did not settle";
+  return c;
+}
 
 }  // namespace symcontact

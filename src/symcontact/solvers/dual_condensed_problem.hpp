@@ -27,6 +27,7 @@
 /// The problem's variables are λ̂; multipliers() and primal() convert.
 
 #include <memory>
+#include <string>
 
 #include "symcontact/optim/constrained_problem.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
@@ -62,6 +63,27 @@ class DualCondensedProblem : public ConstrainedProblem {
 
   Index num_rigid_modes() const { return G_.rows(); }
 
+  /// The dual form of the active-set polish (active_set_polish.hpp does it on the primal): IPOPT leaves each
+  /// closed contact open by its barrier offset μ_b/λ_i; with F the rows whose λ̂ > 1e-6 max λ̂, the
+  /// equality problem λ_i = 0 off F, gap_i = 0 on F, G λ = e, i.e.
+  ///     [W_FF  G_Fᵀ] [λ_F]   [d_F]
+  ///     [G_F    0  ] [ α ] = [ e ],
+  /// is solved in the least-squares minimum-norm sense (complete orthogonal decomposition: the two nearly
+  /// dependent families of a symmetric pair make W_FF singular), rows with λ_i < 0 leave F and rows whose gap
+  /// went negative join it, until F settles (Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003). Each round
+  /// costs O(|F|³) on the m × m W, against a dense |B| × |B| factorisation and method-of-multipliers solves
+  /// in the primal. Applied only when F settles, its gaps vanish (the set closes consistently: not so for the
+  /// two families of a curved symmetric pair) to 1e-10 · ‖y‖∞, λ ≥ 0 and no gap is negative beyond that;
+  /// then `lambda_hat` and `equality_multipliers` are replaced. A set met before ends the rounds (they are a
+  /// function of F alone: it would cycle).
+  struct Closing {
+    bool applied = false;
+    int rounds = 0;
+    Index active = 0;
+    std::string reason;  ///< why it was not applied
+  };
+  Closing close_contact_set(VectorXd& lambda_hat, VectorXd& equality_multipliers) const;
+
  private:
   const SemidefiniteFactor& factor_;
   Index m_ = 0;
@@ -76,6 +98,7 @@ class DualCondensedProblem : public ConstrainedProblem {
   SparseMatrix G_;
   VectorXd minus_e_;
   VectorXd zero_;
+  double f_ref_ = 1.0;
 };
 
 }  // namespace symcontact

@@ -130,4 +130,4 @@ TEST_P(DualCondensed, SameDisplacementsAndMultipliersAsThePrimal) {
 }
 
 INSTANTIATE_TEST_SUITE_P(HeldAndFloating, DualCondensed, ::testing::Values(false, true),
-                         [](const auto& info) { return info.param ? "Floating" : "Held"; });
+                         [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Floating" : "Held"; });
