@@ -133,7 +133,7 @@ void run_hertz_sweep(const ContactBenchOptions& opt, const MachineInfo& machine)
                   << " GiB available" << (opt.check_only ? ": fits (not solved, --check-only)\n" : ": solving\n")
                   << std::defaultfloat << std::flush;
         if (opt.check_only) throw CheckedOnly();
-      });
+      }, opt.dual);
     } catch (const CheckedOnly&) {
       continue;
     } catch (const FactorTooLarge& e) {

@@ -93,7 +93,7 @@ double HertzRun::contact_seconds() const {
 
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
                                       const std::string& work_dir, bool condense, double search_distance,
-                                      const BeforeSolve& before_solve) {
+                                      const BeforeSolve& before_solve, bool dual) {
   auto run = std::make_unique<HertzRun>();
   run->which = which;
   run->h = h;
@@ -118,11 +118,11 @@ std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::stri
   run->spec = parse_problem(toml, stem + ".toml", work_dir);
   if (run->spec.dim != hertz_dimension(which))
     throw std::runtime_error(stem + ".toml: expected dimension " + std::to_string(hertz_dimension(which)));
-  solve_hertz_model(*run, condense, before_solve);
+  solve_hertz_model(*run, condense, before_solve, dual);
   return run;
 }
 
-void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_solve) {
+void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_solve, bool dual) {
   std::ostringstream quiet;
   const Logger log(quiet, Verbosity::kQuiet);
   run.model = Model::build(run.spec, log, run.build_times);
@@ -135,6 +135,7 @@ void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_s
   // The solver settings exactly as `symcontact run` derives them from the problem file.
   ContactSolveOptions opt = contact_options(run.spec, log).contact;
   opt.condense = opt.condense && condense;
+  opt.dual = opt.dual && dual;
   run.u = VectorXd::Zero(model.dofs().num_dofs());
   const double cpu0 = process_cpu_seconds();
   const double t0 = wall_seconds();

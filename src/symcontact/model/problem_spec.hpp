@@ -114,6 +114,9 @@ struct ContactSolverSpec {
   /// Condense linear-elastic bodies onto their contact DOFs (one Cholesky factorisation per run); the
   /// solution is the same, only the cost changes. Finite-strain bodies are never condensed.
   bool static_condensation = true;
+  /// Solve the condensed frictionless problem through its dual (the contact multipliers: solvers/
+  /// dual_condensed_problem.hpp); the solution is the same to the optimiser's tolerance, only the cost changes.
+  bool dual_solve = true;
   /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
   /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
   int max_step_cuts = 0;

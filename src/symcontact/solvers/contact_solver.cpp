@@ -371,6 +371,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         ScopedPhase t(rep.times, "optimizer");
         res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
       }
+      ++rep.dual_solves;
       VectorXd lambda_hat = res.x, eq = res.multipliers;
       if (res.success && options.polish && closing_polish_works) {
         ScopedPhase t(rep.times, "polish");

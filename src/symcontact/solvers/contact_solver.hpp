@@ -113,6 +113,7 @@ struct ContactSolveReport {
   Index num_constraints = 0;                ///< of the last linearisation
   Index num_condensed = 0;                  ///< DOFs IPOPT worked on when condensed (0: not condensed)
   int condensation_factorisations = 0;      ///< factorisations for the condensation in this call
+  int dual_solves = 0;                      ///< geometry iterations solved through the dual (ContactSolveOptions::dual)
   PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
   ContactLinearization linearization;       ///< at the last geometry iterate
   VectorXd multipliers;                     ///< μ of the last solve (one per row)

@@ -1050,7 +1050,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
-                "coulomb_tolerance, max_coulomb_iterations, static_condensation, max_step_cuts"},
+                "coulomb_tolerance, max_coulomb_iterations, static_condensation, dual_solve, max_step_cuts"},
         BadCase{"MaxStepCutsNegative", kTwoBodies + "[contact_solver]\nmax_step_cuts = -1\n",
                 "contact_solver.max_step_cuts", "expected an integer in [0, 20], got -1"},
         BadCase{"MaxStepCutsTooMany", kTwoBodies + "[contact_solver]\nmax_step_cuts = 21\n",
