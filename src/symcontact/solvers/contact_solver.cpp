@@ -167,7 +167,19 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
     log.debug("  static condensation onto " + std::to_string(ws.condensation->boundary().size()) + " of " +
               std::to_string(n) + " free DOFs");
   }
-  if (!load) load = std::make_shared<const CondensedLoad>(condense_load(bulk, *ws.condensation));
+  if (!load) {
+    // The load part (one interior solve) depends on the loads and Dirichlet values only, through r₀ = ∇E(0):
+    // the Coulomb iterations of a load step share it.
+    VectorXd r0;
+    bulk.gradient(VectorXd::Zero(n), r0);
+    if (ws.load && ws.load_of == ws.factorisations && ws.load->r0.size() == n && ws.load->r0 == r0) {
+      load = ws.load;
+    } else {
+      load = std::make_shared<const CondensedLoad>(condense_load(bulk, *ws.condensation));
+      ws.load = load;
+      ws.load_of = ws.factorisations;
+    }
+  }
   return std::make_unique<CondensedProblem>(bulk, *ws.condensation, load, std::move(extras), A,
                                             problem.constraint_offset(), x);
 }
@@ -250,6 +262,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   }
   VectorXd x = problem.restrict(u);
   VectorXd mu_prev;
+  VectorXd dual_equality_prev;  ///< the dual's rigid-motion multipliers of the previous geometry iteration
   std::vector<int> rows_prev_family;
   std::vector<Index> rows_prev_node;
   bool closing_polish_works = true;
@@ -369,7 +382,23 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
                                         condensed->constraint_offset(), condensed->linear_term());
       {
         ScopedPhase t(rep.times, "optimizer");
-        res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
+        // Warm start from the previous geometry iteration (same rows, same condensation): its multipliers and,
+        // as the bounds' multipliers, the new gaps at its displacements.
+        const bool warm = same_rows && mu_prev.size() == lin.A.rows() &&
+                          dual_equality_prev.size() == dual_problem.num_rigid_modes() &&
+                          rep.dual_solves > 0;
+        if (warm) {
+          const VectorXd l0 = dual_problem.scaled_multipliers(mu_prev);
+          const VectorXd z0 = dual_problem.scaled_gaps(to_target(x)).cwiseMax(0.0);
+          res = solve_with_ipopt(dual_problem, l0, opt, &dual_equality_prev, &z0);
+          if (!res.success) {
+            log.detail("  IPOPT failed on the dual from the previous iteration (" + res.status_text + "); cold start");
+            rep.ipopt_iterations += res.iterations;
+            res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
+          }
+        } else {
+          res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
+        }
       }
       ++rep.dual_solves;
       VectorXd lambda_hat = res.x, eq = res.multipliers;
@@ -384,6 +413,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         log.debug("  polish (dual): " + std::to_string(cl.rounds) + " rounds on " + std::to_string(cl.active) +
                   " active constraints");
       }
+      dual_equality_prev = eq;
       res.x = dual_problem.primal(lambda_hat, eq);
       res.multipliers = dual_problem.multipliers(lambda_hat);
       res.constraint_values = condensed->constraint_matrix() * res.x + condensed->constraint_offset();

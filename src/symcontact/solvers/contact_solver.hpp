@@ -27,6 +27,7 @@ namespace symcontact {
 
 class StaticCondensation;
 class SemidefiniteFactor;
+struct CondensedLoad;
 
 /// What solve_contact keeps between calls: the static condensation of a quadratic bulk energy (its
 /// Cholesky factor and Schur complement, see condensed_problem.hpp), reused while the energy object,
@@ -43,6 +44,10 @@ struct ContactWorkspace {
   /// `factorisations` it belongs to.
   std::unique_ptr<SemidefiniteFactor> schur_factor;
   int schur_factor_of = -1;
+  /// The load part of the condensed problem (condensed_problem.hpp) of the last solve and the value of
+  /// `factorisations` it belongs to: reused while ∇E(0) (loads, Dirichlet values) is the same.
+  std::shared_ptr<const CondensedLoad> load;
+  int load_of = -1;
   /// The last converged solve's multipliers and the identity of its rows (family, node): the warm start of
   /// the next solve's first IPOPT call when its rows are the same.
   VectorXd multipliers;

@@ -58,6 +58,8 @@ class DualCondensedProblem : public ConstrainedProblem {
   VectorXd multipliers(const VectorXd& lambda_hat) const;
   /// y = S⁺(Aᵀλ − ĝ) + N α with α = −μ_eq (`equality_multipliers`, IPOPT's result in the μ convention).
   VectorXd primal(const VectorXd& lambda_hat, const VectorXd& equality_multipliers) const;
+  /// λ̂ = λ / D: multipliers of the primal rows in the problem's variables (a warm start).
+  VectorXd scaled_multipliers(const VectorXd& lambda) const { return lambda.cwiseQuotient(D_); }
   /// The scaled primal gaps D (A y + b) for that y (what the bound multipliers should equal).
   VectorXd scaled_gaps(const VectorXd& y) const;
 
