@@ -27,7 +27,7 @@ std::vector<ResultTable::Column> columns() {
 
 }  // namespace
 
-std::vector<double> default_inclined_sizes() { return {0.05, 0.025, 0.0125}; }
+std::vector<double> default_inclined_sizes() { return {0.025, 0.0125, 0.00625, 0.003125}; }
 
 void run_inclined_sweep(const InclinedBenchOptions& opt, const MachineInfo& machine) {
   const double exact = inclined_exact_ratio();
