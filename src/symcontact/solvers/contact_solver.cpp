@@ -375,36 +375,45 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       dual = dual_schur_factor(*workspace, log) != nullptr;
     }
     bool polished_closed = false;  ///< the closing polish was applied at this iteration
+    std::unique_ptr<DualCondensedProblem> dual_problem;
     if (dual) {
       // IPOPT on the multipliers; then, as the primal polish below, the active set closed exactly (in the
       // dual's own, cheaper form); the displacements need no force-balancing polish.
-      DualCondensedProblem dual_problem(*workspace->schur_factor, condensed->constraint_matrix(),
-                                        condensed->constraint_offset(), condensed->linear_term());
       {
-        ScopedPhase t(rep.times, "optimizer");
+        ScopedPhase t(rep.times, "optimizer");  // forming W and d included
+        dual_problem = std::make_unique<DualCondensedProblem>(*workspace->schur_factor, condensed->constraint_matrix(),
+                                                              condensed->constraint_offset(), condensed->linear_term());
         // Warm start from the previous geometry iteration (same rows, same condensation): its multipliers and,
         // as the bounds' multipliers, the new gaps at its displacements.
         const bool warm = same_rows && mu_prev.size() == lin.A.rows() &&
-                          dual_equality_prev.size() == dual_problem.num_rigid_modes() &&
+                          dual_equality_prev.size() == dual_problem->num_rigid_modes() &&
                           rep.dual_solves > 0;
         if (warm) {
-          const VectorXd l0 = dual_problem.scaled_multipliers(mu_prev);
-          const VectorXd z0 = dual_problem.scaled_gaps(to_target(x)).cwiseMax(0.0);
-          res = solve_with_ipopt(dual_problem, l0, opt, &dual_equality_prev, &z0);
+          const VectorXd l0 = dual_problem->scaled_multipliers(mu_prev);
+          const VectorXd z0 = dual_problem->scaled_gaps(to_target(x)).cwiseMax(0.0);
+          res = solve_with_ipopt(*dual_problem, l0, opt, &dual_equality_prev, &z0);
           if (!res.success) {
             log.detail("  IPOPT failed on the dual from the previous iteration (" + res.status_text + "); cold start");
             rep.ipopt_iterations += res.iterations;
-            res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
+            res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
           }
         } else {
-          res = solve_with_ipopt(dual_problem, VectorXd::Zero(dual_problem.num_variables()), options.ipopt);
+          res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
         }
       }
       ++rep.dual_solves;
+      if (!res.success) {
+        // The primal is the reference formulation: a dual IPOPT fails to solve goes to it (this iteration).
+        log.detail("  IPOPT failed on the dual (" + res.status_text + "); the primal is solved instead");
+        rep.ipopt_iterations += res.iterations;
+        dual = false;
+      }
+    }
+    if (dual) {
       VectorXd lambda_hat = res.x, eq = res.multipliers;
-      if (res.success && options.polish && closing_polish_works) {
+      if (options.polish && closing_polish_works) {
         ScopedPhase t(rep.times, "polish");
-        const DualCondensedProblem::Closing cl = dual_problem.close_contact_set(lambda_hat, eq);
+        const DualCondensedProblem::Closing cl = dual_problem->close_contact_set(lambda_hat, eq);
         polished_closed = cl.applied;
         if (!cl.applied) {
           closing_polish_works = false;
@@ -414,10 +423,11 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
                   " active constraints");
       }
       dual_equality_prev = eq;
-      res.x = dual_problem.primal(lambda_hat, eq);
-      res.multipliers = dual_problem.multipliers(lambda_hat);
+      res.x = dual_problem->primal(lambda_hat, eq);
+      res.multipliers = dual_problem->multipliers(lambda_hat);
       res.constraint_values = condensed->constraint_matrix() * res.x + condensed->constraint_offset();
-    } else {
+    }
+    if (!dual) {
       ScopedPhase t(rep.times, "optimizer");
       res = solve_with_ipopt(target, to_target(x), opt, same_rows ? &mu0 : nullptr);
       if (!res.success && it == 1 && same_rows) {
