@@ -129,5 +129,44 @@ TEST_P(DualCondensed, SameDisplacementsAndMultipliersAsThePrimal) {
   }
 }
 
+// The closing in the dual's form: from IPOPT's point, the closed rows' gaps vanish to round-off, the open rows
+// keep λ = 0 and positive gaps, and the result is the exact solution of the QP on that active set.
+TEST_P(DualCondensed, ClosingMakesTheActiveGapsExactlyZero) {
+  const bool floating = GetParam();
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Case c = make_case(floating, seed);
+    const SemidefiniteFactor f(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+    DualCondensedProblem dual(f, c.A, c.b, c.g);
+    const IpoptResult rd = solve_with_ipopt(dual, VectorXd::Zero(kRows), IpoptOptions{});
+    ASSERT_TRUE(rd.success) << rd.status_text;
+    VectorXd lambda_hat = rd.x, eq = rd.multipliers;
+    const VectorXd y_ipopt = dual.primal(lambda_hat, eq);
+    const DualCondensedProblem::Closing cl = dual.close_contact_set(lambda_hat, eq);
+    ASSERT_TRUE(cl.applied) << cl.reason;
+    const VectorXd y = dual.primal(lambda_hat, eq);
+    const VectorXd lambda = dual.multipliers(lambda_hat);
+    const VectorXd gaps = c.A * y + c.b;
+    const double yscale = y.lpNorm<Eigen::Infinity>();
+    int closed = 0;
+    for (Index i = 0; i < kRows; ++i) {
+      if (lambda[i] > 0) {
+        ++closed;
+        EXPECT_LT(std::abs(gaps[i]), 1e-12 * yscale) << "seed " << seed << " row " << i;
+      } else {
+        EXPECT_GT(gaps[i], -1e-12 * yscale) << "seed " << seed << " row " << i;
+      }
+    }
+    EXPECT_EQ(closed, cl.active);
+    EXPECT_GT(closed, 0);
+    // Still balanced, and the IPOPT point was not already closed to this level (the closing did something).
+    EXPECT_LT((c.S * y + c.g - c.A.transpose() * lambda).lpNorm<Eigen::Infinity>(), 1e-10 * c.g.lpNorm<Eigen::Infinity>());
+    double open_before = 0.0;
+    const VectorXd gaps_before = c.A * y_ipopt + c.b;
+    for (Index i = 0; i < kRows; ++i)
+      if (lambda[i] > 0) open_before = std::max(open_before, std::abs(gaps_before[i]));
+    EXPECT_GT(open_before, 1e-12 * yscale) << "seed " << seed;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(HeldAndFloating, DualCondensed, ::testing::Values(false, true),
                          [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Floating" : "Held"; });
