@@ -5,14 +5,18 @@
 #include <cstdlib>
 #include <new>
 #include <stdexcept>
+#include <string>
 #include <utility>
+#include <vector>
 
-// BLAS (Fortran interfaces; column-major, every argument by address).
+// BLAS and LAPACK (Fortran interfaces; column-major, every argument by address).
 extern "C" {
 void dtrsm_(const char* side, const char* uplo, const char* transa, const char* diag, const int* m, const int* n,
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
 void dsymv_(const char* uplo, const int* n, const double* alpha, const double* a, const int* lda, const double* x,
             const int* incx, const double* beta, double* y, const int* incy);
+void dgelsy_(const int* m, const int* n, const int* nrhs, double* a, const int* lda, double* b, const int* ldb,
+             int* jpvt, const double* rcond, int* rank, double* work, const int* lwork, int* info);
 void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
             const int* lda, const double* beta, double* c, const int* ldc);
 }
@@ -38,6 +42,24 @@ void gram_lower(const AlignedMatrix& Z, AlignedMatrix& G) {
   const int n = static_cast<int>(Z.rows()), k = static_cast<int>(Z.cols());
   const double one = 1.0, zero = 0.0;
   dsyrk_("L", "T", &k, &n, &one, Z.data(), &n, &zero, G.data(), &k);
+}
+
+VectorXd min_norm_solve(const MatrixXd& K, const VectorXd& r, double rcond) {
+  const int n = static_cast<int>(K.rows()), one = 1;
+  if (K.cols() != K.rows() || r.size() != K.rows()) throw std::invalid_argument("min_norm_solve: K must be square, r of its size");
+  if (n == 0) return VectorXd();
+  AlignedMatrix a(n, n), b(n, 1);
+  a.map() = K;
+  b.map() = r;
+  std::vector<int> jpvt(n, 0);
+  int rank = 0, info = 0, lwork = -1;
+  double query = 0.0;
+  dgelsy_(&n, &n, &one, a.data(), &n, b.data(), &n, jpvt.data(), &rcond, &rank, &query, &lwork, &info);
+  lwork = static_cast<int>(query);
+  std::vector<double> work(std::max(lwork, 1));
+  dgelsy_(&n, &n, &one, a.data(), &n, b.data(), &n, jpvt.data(), &rcond, &rank, work.data(), &lwork, &info);
+  if (info != 0) throw std::runtime_error("min_norm_solve: dgelsy failed (info " + std::to_string(info) + ")");
+  return b.map();
 }
 
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y) {

@@ -62,6 +62,11 @@ void lower_solve(const AlignedMatrix& L, bool transpose, AlignedMatrix& B);
 /// G ← Zᵀ Z (lower triangle) for the n × k matrix Z; G is k × k (dsyrk).
 void gram_lower(const AlignedMatrix& Z, AlignedMatrix& G);
 
+/// The minimum-norm least-squares solution of K x = r for a square K (LAPACK dgelsy: QR with column
+/// pivoting, then a complete orthogonal factorisation of the leading block whose condition number stays below
+/// 1 / rcond; the same method as Eigen's CompleteOrthogonalDecomposition, blocked). K and r are copied.
+VectorXd min_norm_solve(const MatrixXd& K, const VectorXd& r, double rcond);
+
 /// y ← y + H x for H symmetric n × n, given by its lower triangle (dsymv).
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y);
 

@@ -131,13 +131,9 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
       rhs[a] = d_[F[a]];
     }
     rhs.tail(k) = -minus_e_;
-    VectorXd sol = VectorXd::Zero(nf + k);  // an empty set: every contact open, λ = 0
-    if (nf + k > 0) {
-      Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
-      cod.setThreshold(1e-12);
-      cod.compute(K);
-      sol = cod.solve(rhs);
-    }
+    // An empty set: every contact open, λ = 0. Otherwise the minimum-norm least-squares solution (LAPACK's
+    // blocked complete orthogonal factorisation: the O(|F|³) of this step is most of the closing's time).
+    const VectorXd sol = nf + k > 0 ? min_norm_solve(K, rhs, 1e-12) : VectorXd::Zero(0);
     lam = VectorXd::Zero(m_);
     for (Index a = 0; a < nf; ++a) lam[F[a]] = sol[a];
     alpha = sol.tail(k);
