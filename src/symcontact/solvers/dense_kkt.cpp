@@ -15,6 +15,7 @@ void dtrsm_(const char* side, const char* uplo, const char* transa, const char* 
             const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
 void dsymv_(const char* uplo, const int* n, const double* alpha, const double* a, const int* lda, const double* x,
             const int* incx, const double* beta, double* y, const int* incy);
+void dpotrf_(const char* uplo, const int* n, double* a, const int* lda, int* info);
 void dgelsy_(const int* m, const int* n, const int* nrhs, double* a, const int* lda, double* b, const int* ldb,
              int* jpvt, const double* rcond, int* rank, double* work, const int* lwork, int* info);
 void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha, const double* a,
@@ -60,6 +61,42 @@ VectorXd min_norm_solve(const MatrixXd& K, const VectorXd& r, double rcond) {
   dgelsy_(&n, &n, &one, a.data(), &n, b.data(), &n, jpvt.data(), &rcond, &rank, work.data(), &lwork, &info);
   if (info != 0) throw std::runtime_error("min_norm_solve: dgelsy failed (info " + std::to_string(info) + ")");
   return b.map();
+}
+
+bool definite_saddle_solve(const AlignedMatrix& H, const MatrixXd& C, const VectorXd& f, const VectorXd& g, VectorXd& x,
+                           VectorXd& z) {
+  const Index n = H.rows(), k = C.rows();
+  if (H.cols() != n || C.cols() != n || f.size() != n || g.size() != k)
+    throw std::invalid_argument("definite_saddle_solve: sizes of H, C, f and g differ");
+  if (n == 0) return false;
+  auto L = std::make_shared<AlignedMatrix>(n, n);
+  L->map() = H.map();
+  const int ni = static_cast<int>(n);
+  int info = 0;
+  dpotrf_("L", &ni, L->data(), &ni, &info);
+  if (info != 0) return false;
+  const auto d = L->map().diagonal();
+  if (!(d.minCoeff() > 1e-6 * d.maxCoeff())) return false;
+  AlignedMatrix v(n, 1);
+  v.map() = f;
+  lower_solve(*L, false, v);
+  AlignedMatrix w(n, 1);
+  w.map() = v.map();
+  z = VectorXd::Zero(k);
+  if (k > 0) {
+    AlignedMatrix Y(n, k);
+    Y.map() = C.transpose();
+    lower_solve(*L, false, Y);
+    const MatrixXd M = Y.map().transpose() * Y.map();
+    Eigen::LDLT<MatrixXd> ldlt(M);
+    const VectorXd md = M.diagonal().cwiseAbs();
+    if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > 1e-12 * md.maxCoeff())) return false;
+    z = ldlt.solve(Y.map().transpose() * v.map() - g);
+    w.map() -= Y.map() * z;
+  }
+  lower_solve(*L, true, w);
+  x = w.map();
+  return x.allFinite() && z.allFinite();
 }
 
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y) {

@@ -67,6 +67,14 @@ void gram_lower(const AlignedMatrix& Z, AlignedMatrix& G);
 /// 1 / rcond; the same method as Eigen's CompleteOrthogonalDecomposition, blocked). K and r are copied.
 VectorXd min_norm_solve(const MatrixXd& K, const VectorXd& r, double rcond);
 
+/// The saddle-point system [H Cᵀ; C 0] [x; z] = [f; g] with H n × n symmetric positive definite (its lower
+/// triangle is read) and C k × n (k ≥ 0) of full rank, by the range-space method: H = L Lᵀ (dpotrf), Y = L⁻¹Cᵀ,
+/// v = L⁻¹f, (YᵀY) z = Yᵀv − g, x = L⁻ᵀ(v − Y z) (Nocedal & Wright §16.2). O(n³/3 + n²k). Returns false, x and z
+/// unspecified, when H is not numerically definite (a Cholesky pivot below 1e-6 of the largest: condition
+/// above about 1e12) or YᵀY is singular; the caller then solves it otherwise.
+bool definite_saddle_solve(const AlignedMatrix& H, const MatrixXd& C, const VectorXd& f, const VectorXd& g, VectorXd& x,
+                           VectorXd& z);
+
 /// y ← y + H x for H symmetric n × n, given by its lower triangle (dsymv).
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y);
 

@@ -120,23 +120,40 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
       if (in_set[i]) F.push_back(i);
     const Index nf = static_cast<Index>(F.size());
     c.active = nf;
-    MatrixXd K = MatrixXd::Zero(nf + k, nf + k);
-    VectorXd rhs(nf + k);
-    for (Index a = 0; a < nf; ++a) {
-      for (Index bb = 0; bb <= a; ++bb) {
-        const Index i = std::max(F[a], F[bb]), j = std::min(F[a], F[bb]);
-        K(a, bb) = K(bb, a) = w(i, j);
+    // W_FF (lower triangle), G_F and d_F of the closed rows.
+    AlignedMatrix wff(nf, nf);
+    MatrixXd gf(k, nf);
+    VectorXd df(nf);
+    {
+      auto wm = wff.map();
+      for (Index a = 0; a < nf; ++a) {
+        for (Index bb = a; bb < nf; ++bb) wm(bb, a) = w(F[bb], F[a]);  // F ascending: F[bb] ≥ F[a]
+        gf.col(a) = Gd.col(F[a]);
+        df[a] = d_[F[a]];
       }
-      for (Index q = 0; q < k; ++q) K(a, nf + q) = K(nf + q, a) = Gd(q, F[a]);
-      rhs[a] = d_[F[a]];
     }
-    rhs.tail(k) = -minus_e_;
-    // An empty set: every contact open, λ = 0. Otherwise the minimum-norm least-squares solution (LAPACK's
-    // blocked complete orthogonal factorisation: the O(|F|³) of this step is most of the closing's time).
-    const VectorXd sol = nf + k > 0 ? min_norm_solve(K, rhs, 1e-12) : VectorXd::Zero(0);
+    const VectorXd e = -minus_e_;
+    // An empty set: every contact open, λ = 0. A definite W_FF (independent rows, as on a rigid obstacle): the
+    // unique solution by Cholesky. Otherwise (the nearly dependent families of a symmetric pair) the minimum-norm
+    // least-squares solution (LAPACK's blocked complete orthogonal factorisation). The O(|F|³) of this step
+    // is most of the closing's time.
+    VectorXd lf = VectorXd::Zero(nf);
+    alpha = VectorXd::Zero(k);
+    if (nf + k > 0 && !(nf > 0 && definite_saddle_solve(wff, gf, df, e, lf, alpha))) {
+      MatrixXd K = MatrixXd::Zero(nf + k, nf + k);
+      const auto wm = wff.map();
+      for (Index a = 0; a < nf; ++a)
+        for (Index bb = a; bb < nf; ++bb) K(bb, a) = K(a, bb) = wm(bb, a);
+      K.topRightCorner(nf, k) = gf.transpose();
+      K.bottomLeftCorner(k, nf) = gf;
+      VectorXd rhs(nf + k);
+      rhs << df, e;
+      const VectorXd sol = min_norm_solve(K, rhs, 1e-12);
+      lf = sol.head(nf);
+      alpha = sol.tail(k);
+    }
     lam = VectorXd::Zero(m_);
-    for (Index a = 0; a < nf; ++a) lam[F[a]] = sol[a];
-    alpha = sol.tail(k);
+    for (Index a = 0; a < nf; ++a) lam[F[a]] = lf[a];
     // Gaps (scaled rows): W λ − d + Gᵀα, and the tolerance in those units.
     VectorXd gaps = -d_;
     symmetric_multiply_add(*W_, lam, gaps);
