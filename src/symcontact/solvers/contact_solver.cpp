@@ -395,11 +395,10 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
           if (!res.success) {
             log.detail("  IPOPT failed on the dual from the previous iteration (" + res.status_text + "); cold start");
             rep.ipopt_iterations += res.iterations;
-            res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
           }
-        } else {
-          res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
         }
+        if (!warm || !res.success)
+          res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
       }
       ++rep.dual_solves;
       if (!res.success) {

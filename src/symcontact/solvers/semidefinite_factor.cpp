@@ -27,8 +27,6 @@ SemidefiniteFactor::SemidefiniteFactor(const SparseMatrix& s_lower, double relat
   max_diag_ = max_diag;
   if (!(max_diag > 0) || !std::isfinite(max_diag) || am.diagonal().minCoeff() < 0)
     throw SolveError("SemidefiniteFactor: S has a negative, zero or non-finite diagonal");
-  MatrixXd s_full = am;  // kept for the null-space check
-  s_full.triangularView<Eigen::StrictlyUpper>() = s_full.transpose();
   piv_.assign(n_, 0);
   std::vector<double> work(2 * n_);
   int rank = 0, info = 0;
@@ -54,7 +52,9 @@ SemidefiniteFactor::SemidefiniteFactor(const SparseMatrix& s_lower, double relat
     }
     Eigen::HouseholderQR<MatrixXd> qr(v);
     null_ = qr.householderQ() * MatrixXd::Identity(n_, k);
-    null_residual_ = (s_full * null_).cwiseAbs().maxCoeff() / s_full.cwiseAbs().maxCoeff();
+    // From S itself (sparse storage, read only here): no dense copy of S is kept for this check.
+    const MatrixXd sn = s_lower.selfadjointView<Eigen::Lower>() * null_;
+    null_residual_ = sn.cwiseAbs().maxCoeff() / s_lower.coeffs().cwiseAbs().maxCoeff();
   }
 }
 
