@@ -139,6 +139,7 @@ struct Options {
   bool keep_work = false;
   bool no_condense = false;
   bool no_dual = false;
+  bool dual_ipopt = false;
   bool large = false;            ///< hertz3d: the large sweep (2e5, 4e5, 1e6 DOFs)
   bool check_only = false;       ///< Hertz cases: mesh and check the memory of each size, solve none
   double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
@@ -252,7 +253,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
   common(c, default_hertz_sizes(c.which, opt.large));
   c.examples_dir = opt.examples;
   c.condense = !opt.no_condense;
-  c.dual = !opt.no_dual;
+  c.dual = opt.no_dual ? DualMode::kPrimal : opt.dual_ipopt ? DualMode::kDualIpopt : DualMode::kDualInteriorPoint;
   c.search_distance = opt.search_distance;
   c.check_only = opt.check_only;
   run_hertz_sweep(c, machine);
@@ -330,6 +331,8 @@ int main(int argc, char** argv) {
                "Hertz cases: no static condensation (IPOPT on the whole problem), to compare");
   app.add_flag("--no-dual", opt.no_dual,
                "Hertz cases: no dual solve (IPOPT on the condensed displacements, with the primal polish), to compare");
+  app.add_flag("--dual-ipopt", opt.dual_ipopt,
+               "Hertz cases: IPOPT on the dual instead of the dense interior point, to compare");
   app.add_option("--search-distance", opt.search_distance,
                  "Hertz cases: the contact pair's search_distance (default: the example's, i.e. automatic)")
       ->check(CLI::PositiveNumber);

@@ -25,13 +25,15 @@ namespace {
 /// IPOPT iterates; what they agree to is what the tolerances of the fixed points and of the optimiser leave:
 /// measured 1e-5 at the defaults of the two-cylinder case).
 std::string prepare(const std::string& dir, const std::string& example, const std::string& geo, const std::string& size,
-                    double geometry_tolerance, bool condense, bool dual = true) {
+                    double geometry_tolerance, bool condense, bool dual = true,
+                    const char* dual_optimizer = "interior_point") {
   const std::string folder = std::string(SYMCONTACT_EXAMPLES) + "/" + example + "/";
   write_text(dir, "case.geo", size + "\nInclude \"" + folder + geo + "\";\n");
   std::string toml = read_text(folder + geo.substr(0, geo.size() - 4) + ".toml");
   for (std::size_t at; (at = toml.find(geo)) != std::string::npos;) toml.replace(at, geo.size(), "case.geo");
   std::string lines = std::string("static_condensation = ") + (condense ? "true" : "false") + "\n" +
-                      "dual_solve = " + (dual ? "true" : "false") + "\n";
+                      "dual_solve = " + (dual ? "true" : "false") + "\n" + "dual_optimizer = \"" + dual_optimizer +
+                      "\"\n";
   if (geometry_tolerance > 0.0) {
     for (const char* key : {"geometry_tolerance", "coulomb_tolerance"})
       for (std::size_t at; (at = toml.find(std::string("\n") + key)) != std::string::npos;)
@@ -102,12 +104,36 @@ TEST_P(DualSolveChangesNothing, SameDisplacementsAndContactForces) {
   auto primal = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, false), dir);
   EXPECT_GT(dual->report.num_condensed, 0);
   // (the report is that of the last solve, which carries friction on the inclined interface)
-  if (p.frictionless) EXPECT_GT(dual->report.dual_solves, 0) << "the dual path was not taken";
+  if (p.frictionless) {
+    EXPECT_GT(dual->report.dual_solves, 0) << "the dual path was not taken";
+  }
   EXPECT_EQ(primal->report.dual_solves, 0);
   ASSERT_EQ(dual->history.size(), primal->history.size());
   const auto [du, df] = differences(*dual, *primal);
   std::printf("  %s: %ld condensed, %ld constraints; |du|/|u| = %.2e, |dF|/|F| = %.2e\n", p.example,
               static_cast<long>(dual->report.num_condensed), static_cast<long>(dual->report.num_constraints), du, df);
+  EXPECT_LT(du, p.agreement);
+  EXPECT_LT(df, p.agreement);
+}
+
+// The dual's two optimisers, the dense interior point (default) and IPOPT, against each other: same results to
+// the same bound (they follow different iterates to the same optimiser tolerance).
+class DualOptimizerChangesNothing : public ::testing::TestWithParam<Case> {};
+
+TEST_P(DualOptimizerChangesNothing, SameDisplacementsAndContactForces) {
+  const Case& p = GetParam();
+  const std::string dir = test_temp_dir(std::string("dual_optimizer_") + p.example);
+  auto ipm = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, true), dir);
+  auto ipopt = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, true, "ipopt"), dir);
+  if (p.frictionless) {
+    EXPECT_GT(ipm->report.dual_solves, 0) << "the dual path was not taken";
+    EXPECT_NE(ipm->report.ipopt_status.find("interior point"), std::string::npos) << ipm->report.ipopt_status;
+    EXPECT_EQ(ipopt->report.ipopt_status.find("interior point"), std::string::npos) << ipopt->report.ipopt_status;
+  }
+  ASSERT_EQ(ipm->history.size(), ipopt->history.size());
+  const auto [du, df] = differences(*ipm, *ipopt);
+  std::printf("  %s: %ld condensed, %ld constraints; |du|/|u| = %.2e, |dF|/|F| = %.2e\n", p.example,
+              static_cast<long>(ipm->report.num_condensed), static_cast<long>(ipm->report.num_constraints), du, df);
   EXPECT_LT(du, p.agreement);
   EXPECT_LT(df, p.agreement);
 }
@@ -129,3 +155,4 @@ std::string case_name(const ::testing::TestParamInfo<Case>& i) {
 
 INSTANTIATE_TEST_SUITE_P(Examples, CondensationChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, DualSolveChangesNothing, kCases, case_name);
+INSTANTIATE_TEST_SUITE_P(Examples, DualOptimizerChangesNothing, kCases, case_name);

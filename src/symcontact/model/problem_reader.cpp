@@ -889,7 +889,7 @@ class Reader {
     const toml::table& t = as_table(*node, "contact_solver");
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations",
-                "static_condensation", "dual_solve", "max_step_cuts"});
+                "static_condensation", "dual_solve", "dual_optimizer", "max_step_cuts"});
     ContactSolverSpec& s = spec.contact_solver;
     if (const toml::node* n = t.get("geometry_tolerance")) {
       const std::string key = "contact_solver.geometry_tolerance";
@@ -910,6 +910,12 @@ class Reader {
     if (const toml::node* n = t.get("static_condensation"))
       s.static_condensation = as_bool(*n, "contact_solver.static_condensation");
     if (const toml::node* n = t.get("dual_solve")) s.dual_solve = as_bool(*n, "contact_solver.dual_solve");
+    if (const toml::node* n = t.get("dual_optimizer")) {
+      const std::string key = "contact_solver.dual_optimizer";
+      const std::string v = as_string(*n, key);
+      if (v != "interior_point" && v != "ipopt") fail(key, "expected \"interior_point\" or \"ipopt\", got \"" + v + "\"");
+      s.dual_interior_point = v == "interior_point";
+    }
     if (const toml::node* n = t.get("max_step_cuts")) {
       const std::string key = "contact_solver.max_step_cuts";
       const std::int64_t c = as_integer(*n, key);

@@ -117,6 +117,8 @@ struct ContactSolverSpec {
   /// Solve the condensed frictionless problem through its dual (the contact multipliers: solvers/
   /// dual_condensed_problem.hpp); the solution is the same to the optimiser's tolerance, only the cost changes.
   bool dual_solve = true;
+  /// The dual's optimiser: the dense interior point (true, "interior_point") or IPOPT (false, "ipopt").
+  bool dual_interior_point = true;
   /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
   /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
   int max_step_cuts = 0;

@@ -388,16 +388,47 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         const bool warm = same_rows && mu_prev.size() == lin.A.rows() &&
                           dual_equality_prev.size() == dual_problem->num_rigid_modes() &&
                           rep.dual_solves > 0;
+        VectorXd l0, z0;
         if (warm) {
-          const VectorXd l0 = dual_problem->scaled_multipliers(mu_prev);
-          const VectorXd z0 = dual_problem->scaled_gaps(to_target(x)).cwiseMax(0.0);
+          l0 = dual_problem->scaled_multipliers(mu_prev);
+          z0 = dual_problem->scaled_gaps(to_target(x)).cwiseMax(0.0);
+        }
+        bool solved = false;
+        if (options.dual_interior_point) {
+          DenseQpOptions qp;
+          // IPOPT's tolerance, also when the problem file sets it ([ipopt] tol).
+          const auto tol = options.ipopt.numeric_options.find("tol");
+          qp.tolerance = tol != options.ipopt.numeric_options.end() ? tol->second : options.ipopt.tolerance;
+          qp.complementarity_tolerance = 1e-6 * qp.tolerance;
+          DenseQpResult r = dual_problem->solve_interior_point(qp, warm ? &l0 : nullptr, warm ? &z0 : nullptr,
+                                                               warm ? &dual_equality_prev : nullptr);
+          if (!r.success && warm) {
+            log.detail("  the interior point failed on the dual from the previous iteration (" + r.status +
+                       "); cold start");
+            rep.ipopt_iterations += r.iterations;
+            r = dual_problem->solve_interior_point(qp);
+          }
+          if (r.success) {
+            res.success = true;
+            res.status_text = "interior point: " + r.status;
+            res.iterations = r.iterations;
+            res.x = std::move(r.x);
+            res.multipliers = std::move(r.beta);
+            res.bound_multipliers = std::move(r.z);
+            solved = true;
+          } else {
+            log.detail("  the interior point failed on the dual (" + r.status + "); IPOPT instead");
+            rep.ipopt_iterations += r.iterations;
+          }
+        }
+        if (!solved && warm) {
           res = solve_with_ipopt(*dual_problem, l0, opt, &dual_equality_prev, &z0);
           if (!res.success) {
             log.detail("  IPOPT failed on the dual from the previous iteration (" + res.status_text + "); cold start");
             rep.ipopt_iterations += res.iterations;
           }
         }
-        if (!warm || !res.success)
+        if (!solved && (!warm || !res.success))
           res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
       }
       ++rep.dual_solves;
@@ -416,7 +447,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         polished_closed = cl.applied;
         if (!cl.applied) {
           closing_polish_works = false;
-          log.detail("  active-set polish (closing, dual) not applied: " + cl.reason + "; the IPOPT point is kept");
+          log.detail("  active-set polish (closing, dual) not applied: " + cl.reason + "; the optimiser's point is kept");
         }
         log.debug("  polish (dual): " + std::to_string(cl.rounds) + " rounds on " + std::to_string(cl.active) +
                   " active constraints");

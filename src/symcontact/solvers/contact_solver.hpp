@@ -97,6 +97,11 @@ struct ContactSolveOptions {
   /// iterations; the displacements follow exactly from the multipliers (forces balanced with no optimiser
   /// error). Same solution to the optimiser's tolerance; off only to compare.
   bool dual = true;
+  /// The optimiser of that dual: the dense interior point of dense_qp_interior_point.hpp (default: each of its
+  /// iterations one LAPACK Cholesky of the m × m matrix), or IPOPT (MUMPS factorising the dense matrix as a
+  /// sparse one: about 3 times the time and 10 m² doubles of workspace). Same solution to the tolerance
+  /// (IpoptOptions::tolerance is used by both). A failed interior point solve falls back to IPOPT.
+  bool dual_interior_point = true;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
 };

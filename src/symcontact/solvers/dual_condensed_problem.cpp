@@ -42,20 +42,11 @@ DualCondensedProblem::DualCondensedProblem(const SemidefiniteFactor& factor, con
   W_ = std::make_unique<AlignedMatrix>(m_, m_);
   gram_lower(*Z_, *W_);
   d_ = Z_->map().transpose() * t_ - b_scaled_;
-  {
-    Eigen::VectorXi nnz(m_);
-    for (Index j = 0; j < m_; ++j) nnz[j] = static_cast<int>(m_ - j);
-    W_lower_.resize(m_, m_);
-    W_lower_.reserve(nnz);
-    const auto w = W_->map();
-    for (Index j = 0; j < m_; ++j)
-      for (Index i = j; i < m_; ++i) W_lower_.insert(i, j) = w(i, j);
-    W_lower_.makeCompressed();
-  }
   // G = (Ã N)ᵀ, e = Nᵀ ĝ.
   const MatrixXd& N = factor.null_basis();
   const MatrixXd AN = A_scaled_ * N;  // m × k
-  G_ = AN.transpose().sparseView(0.0, 0.0);
+  G_dense_ = AN.transpose();
+  G_ = G_dense_.sparseView(0.0, 0.0);
   G_.makeCompressed();
   minus_e_ = -(N.transpose() * g_hat);
   zero_ = VectorXd::Zero(m_);
@@ -72,7 +63,27 @@ void DualCondensedProblem::gradient(const VectorXd& l, VectorXd& g) {
   symmetric_multiply_add(*W_, l, g);
 }
 
-void DualCondensedProblem::hessian_lower(const VectorXd&, SparseMatrix& H) { H = W_lower_; }
+void DualCondensedProblem::hessian_lower(const VectorXd&, SparseMatrix& H) {
+  if (W_lower_.rows() != m_) {  // 12 bytes an entry of the lower triangle: only when IPOPT is the backend
+    Eigen::VectorXi nnz(m_);
+    for (Index j = 0; j < m_; ++j) nnz[j] = static_cast<int>(m_ - j);
+    W_lower_.resize(m_, m_);
+    W_lower_.reserve(nnz);
+    const auto w = W_->map();
+    for (Index j = 0; j < m_; ++j)
+      for (Index i = j; i < m_; ++i) W_lower_.insert(i, j) = w(i, j);
+    W_lower_.makeCompressed();
+  }
+  H = W_lower_;
+}
+
+DenseQpResult DualCondensedProblem::solve_interior_point(const DenseQpOptions& options, const VectorXd* lambda_hat0,
+                                                         const VectorXd* gaps0,
+                                                         const VectorXd* equality_multipliers0) const {
+  // KKT of the interior point: W λ − d − Gᵀβ − z = 0; IPOPT's (header): W λ − d + Gᵀλ_ip − z = 0 and μ_eq = −λ_ip,
+  // so β = μ_eq and the warm start and the result pass through unchanged.
+  return solve_dense_qp(*W_, d_, G_dense_, -minus_e_, options, lambda_hat0, gaps0, equality_multipliers0);
+}
 
 VectorXd DualCondensedProblem::multipliers(const VectorXd& lambda_hat) const {
   return D_.cwiseProduct(lambda_hat.cwiseMax(0.0));

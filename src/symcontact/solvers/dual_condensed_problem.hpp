@@ -31,6 +31,7 @@
 
 #include "symcontact/optim/constrained_problem.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
+#include "symcontact/solvers/dense_qp_interior_point.hpp"
 #include "symcontact/solvers/semidefinite_factor.hpp"
 
 namespace symcontact {
@@ -65,6 +66,14 @@ class DualCondensedProblem : public ConstrainedProblem {
 
   Index num_rigid_modes() const { return G_.rows(); }
 
+  /// The same problem solved by the dense interior point of dense_qp_interior_point.hpp instead of IPOPT
+  /// (the default backend: dense Cholesky instead of MUMPS on a dense matrix). `lambda_hat0`, `gaps0` (both or
+  /// neither) and `equality_multipliers0` start it (a warm start). The result's `beta` is in the convention of
+  /// `equality_multipliers` (IPOPT's μ_eq: primal() and close_contact_set() take it), `z` the scaled gaps.
+  DenseQpResult solve_interior_point(const DenseQpOptions& options, const VectorXd* lambda_hat0 = nullptr,
+                                     const VectorXd* gaps0 = nullptr,
+                                     const VectorXd* equality_multipliers0 = nullptr) const;
+
   /// The dual form of the active-set polish (active_set_polish.hpp does it on the primal): IPOPT leaves each
   /// closed contact open by its barrier offset μ_b/λ_i; with F the rows whose λ̂ > 1e-6 max λ̂, the
   /// equality problem λ_i = 0 off F, gap_i = 0 on F, G λ = e, i.e.
@@ -95,9 +104,10 @@ class DualCondensedProblem : public ConstrainedProblem {
   std::unique_ptr<AlignedMatrix> Z_;  ///< L₁₁⁻¹ (P Ãᵀ)₁..ᵣ  (r × m)
   VectorXd t_;                       ///< L₁₁⁻¹ (P ĝ)₁..ᵣ
   std::unique_ptr<AlignedMatrix> W_;  ///< ZᵀZ, lower triangle
-  SparseMatrix W_lower_;             ///< the same as a (full) sparse lower triangle, for IPOPT
+  SparseMatrix W_lower_;             ///< the same as a (full) sparse lower triangle, for IPOPT (formed on first use)
   VectorXd d_;
   SparseMatrix G_;
+  MatrixXd G_dense_;                 ///< G, k × m (k: the rigid modes, a few)
   VectorXd minus_e_;
   VectorXd zero_;
   double f_ref_ = 1.0;

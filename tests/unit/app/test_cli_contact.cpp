@@ -154,7 +154,10 @@ TEST_F(CliContact, HertzExampleWritesContactResults) {
 }
 
 TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
-  const fs::path f = write_hertz_case("one_iteration.toml", [](std::string& t) { t += "\n[ipopt]\nmax_iter = 1\n"; });
+  // IPOPT as the dual's optimiser too (the default interior point does not read [ipopt] max_iter).
+  const fs::path f = write_hertz_case("one_iteration.toml", [](std::string& t) {
+    t += "\n[contact_solver]\ndual_optimizer = \"ipopt\"\n[ipopt]\nmax_iter = 1\n";
+  });
   const fs::path out = dir_ / "out";
   const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
   EXPECT_EQ(r.exit_code, 3) << r.output;

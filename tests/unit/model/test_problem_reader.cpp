@@ -361,6 +361,8 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
+  EXPECT_TRUE(spec.contact_solver.dual_solve);
+  EXPECT_TRUE(spec.contact_solver.dual_interior_point);
   EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
@@ -462,7 +464,7 @@ TEST(ProblemReader, TrescaFriction) {
 TEST(ProblemReader, CoulombFriction) {
   const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = 2e-6\n") +
                                  "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n"
-                                 "max_step_cuts = 3\n");
+                                 "max_step_cuts = 3\ndual_optimizer = \"ipopt\"\n");
   const ContactSpec& c = spec.contacts.at(0);
   EXPECT_EQ(c.friction, "coulomb");
   EXPECT_EQ(c.mu, 0.3);
@@ -471,6 +473,7 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-8);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 12);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
+  EXPECT_FALSE(spec.contact_solver.dual_interior_point);
   EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);  // the others keep their defaults
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
 }
@@ -1050,7 +1053,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
-                "coulomb_tolerance, max_coulomb_iterations, static_condensation, dual_solve, max_step_cuts"},
+                "coulomb_tolerance, max_coulomb_iterations, static_condensation, dual_solve, dual_optimizer, max_step_cuts"},
+        BadCase{"DualOptimizerUnknown", kTwoBodies + "[contact_solver]\ndual_optimizer = \"mumps\"\n",
+                "contact_solver.dual_optimizer", "expected \"interior_point\" or \"ipopt\", got \"mumps\""},
+        BadCase{"DualOptimizerNotAString", kTwoBodies + "[contact_solver]\ndual_optimizer = 1\n",
+                "contact_solver.dual_optimizer", "expected a string"},
         BadCase{"MaxStepCutsNegative", kTwoBodies + "[contact_solver]\nmax_step_cuts = -1\n",
                 "contact_solver.max_step_cuts", "expected an integer in [0, 20], got -1"},
         BadCase{"MaxStepCutsTooMany", kTwoBodies + "[contact_solver]\nmax_step_cuts = 21\n",

@@ -168,5 +168,44 @@ TEST_P(DualCondensed, ClosingMakesTheActiveGapsExactlyZero) {
   }
 }
 
+// The dense interior point (the default backend) on the same dual: the primal's displacements and multipliers,
+// its z the scaled gaps, its β in IPOPT's μ_eq convention (primal() with it gives the balanced y; a flipped sign
+// fails the floating case), and the closing from its point.
+TEST_P(DualCondensed, InteriorPointGivesThePrimalSolution) {
+  const bool floating = GetParam();
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Case c = make_case(floating, seed);
+    DenseQp primal(c.S, c.g, c.A, c.b);
+    const IpoptResult rp = solve_with_ipopt(primal, VectorXd::Zero(kN), tight());
+    ASSERT_TRUE(rp.success) << rp.status_text;
+    const SemidefiniteFactor f(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+    DualCondensedProblem dual(f, c.A, c.b, c.g);
+    DenseQpOptions o;
+    o.tolerance = 1e-12;
+    const DenseQpResult r = dual.solve_interior_point(o);
+    ASSERT_TRUE(r.success) << r.status;
+    ASSERT_EQ(r.beta.size(), floating ? 1 : 0);
+    const VectorXd y = dual.primal(r.x, r.beta);
+    const VectorXd lambda = dual.multipliers(r.x);
+    const double yscale = rp.x.lpNorm<Eigen::Infinity>(), mscale = rp.multipliers.lpNorm<Eigen::Infinity>();
+    EXPECT_LT((y - rp.x).lpNorm<Eigen::Infinity>(), 1e-7 * yscale) << "seed " << seed;
+    EXPECT_LT((lambda - rp.multipliers).lpNorm<Eigen::Infinity>(), 1e-7 * mscale) << "seed " << seed;
+    const VectorXd gaps = dual.scaled_gaps(y);
+    EXPECT_LT((r.z - gaps).lpNorm<Eigen::Infinity>(), 1e-7 * gaps.lpNorm<Eigen::Infinity>()) << "seed " << seed;
+
+    VectorXd lambda_hat = r.x, eq = r.beta;
+    const DualCondensedProblem::Closing cl = dual.close_contact_set(lambda_hat, eq);
+    ASSERT_TRUE(cl.applied) << cl.reason;
+    const VectorXd yc = dual.primal(lambda_hat, eq);
+    EXPECT_LT((yc - rp.x).lpNorm<Eigen::Infinity>(), 1e-7 * yscale) << "seed " << seed;
+    const VectorXd lc = dual.multipliers(lambda_hat), gc = c.A * yc + c.b;
+    for (Index i = 0; i < kRows; ++i) {
+      if (lc[i] > 0) {
+        EXPECT_LT(std::abs(gc[i]), 1e-12 * yscale) << "seed " << seed << " row " << i;
+      }
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(HeldAndFloating, DualCondensed, ::testing::Values(false, true),
                          [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Floating" : "Held"; });
