@@ -229,10 +229,9 @@ double check_hertz_fits(const HertzRun& run) {
   double m = 0.0;
   for (const int s : {pair.surface_a, pair.surface_b})
     if (s >= 0) m += static_cast<double>(run.model->contacts().surfaces[s].num_nodes());
-  // Beyond the factor and the dense condensed matrix the contact solve holds about one factor's size more
-  // (mesh, model, K, CHOLMOD's workspace): measured peak RSS 9.2 GiB at 4.1e5 DOFs for a 4.6 GiB factor,
-  // and 20.9 GiB reached at 7.8e5 DOFs (11.4 GiB factor) before that run was stopped (docs/performance.md).
-  check_factor_fits(nnz, 8.0 * nnz + kDenseBytesPerEntry * m * m);
+  // The model of hertz.hpp (kFactorStorage, kBytesPerDof, kDenseBytesPerEntry); check_factor_fits() adds 8 · nnz(L).
+  const double dofs = static_cast<double>(run.model->dofs().num_dofs());
+  check_factor_fits(nnz, (kFactorStorage - 1.0) * 8.0 * nnz + kBytesPerDof * dofs + kDenseBytesPerEntry * m * m);
   return nnz;
 }
 

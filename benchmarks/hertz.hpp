@@ -114,19 +114,26 @@ void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& b
 
 /// Throws FactorTooLarge (elastic_block.hpp) when the contact solve of `run` would not fit in the memory
 /// available now, before it starts: CHOLMOD's analysis of the floor's K_ff predicts nnz(L) (assembly and
-/// analysis only, about 2 s at 2e5 DOFs). The solve needs 8·nnz(L) bytes for the factor of the static
-/// condensation (the same matrix with B ordered last, whose nnz(L) is within a few per cent of the floor's)
-/// plus kDenseBytesPerEntry · m² for the dense condensed problem, m taken as the number of contact-surface
-/// nodes (the condensed set on a rigid plane: one u_z per node; a lower bound with two elastic bodies).
-/// The mesh, the model and K come on top (about 2.2 GiB at 4e5 DOFs): the check is a lower bound of the
-/// need, meant to refuse a size that cannot fit before it runs for an hour and is killed.
-/// Returns the predicted nnz(L).
+/// analysis only, about 2 s at 2e5 DOFs). The solve's peak is modelled as
+///     kFactorStorage · 8 · nnz(L) + kBytesPerDof · DOFs + kDenseBytesPerEntry · m²,
+/// the factor of the static condensation (the same matrix with B ordered last, whose nnz(L) is within a few
+/// per cent of the floor's) in CHOLMOD's supernodal storage, the mesh, model and sparse matrices, and the dense
+/// condensed problem, m taken as the number of contact-surface nodes (the condensed set on a rigid plane: one
+/// u_z per node; a lower bound with two elastic bodies). The two coefficients are fitted to the peak RSS of
+/// the 3D Hertz solve at 2.0e5 and 4.1e5 DOFs (3,276 and 8,369 MiB, m = 3,282 and 5,224; session 8, with
+/// the dense interior point on the dual). The check is meant to refuse a size that cannot fit before it runs
+/// for an hour and is killed. Returns the predicted nnz(L).
 double check_hertz_fits(const HertzRun& run);
-/// Bytes per entry of the m × m condensed matrix that a condensed contact solve holds at its peak
-/// besides the factor: S, IPOPT's copy of it and its KKT factorisation, the polish's dense factor
-/// (73 and 84 measured: the 3D Hertz solve's peak RSS beyond the factor and beyond the floor's own
-/// mesh, model and K, at m = 3,282 and 5,224; docs/performance.md).
-inline constexpr double kDenseBytesPerEntry = 80.0;
+/// CHOLMOD's supernodal factor stores more than nnz(L) entries: the zeros of relaxed supernode amalgamation
+/// and the upper triangles of the diagonal blocks. Measured L->xsize / nnz(L) on the 3D Hertz K_ff: 1.235 at
+/// 2.0e5 DOFs, 1.218 at 1.07e6 (docs/performance.md).
+inline constexpr double kFactorStorage = 1.25;
+/// Mesh, model, K and its copies, vectors: fitted (see check_hertz_fits()).
+inline constexpr double kBytesPerDof = 4608.0;
+/// The m × m dense matrices beyond that (S's lower triangle, its pivoted Cholesky factor, W = A S⁺ Aᵀ and the
+/// interior point's factor; during the condensation L_BB and S): fitted as above (25; it was 73–84 with IPOPT
+/// on the dual, whose MUMPS factorised the dense W as a sparse matrix).
+inline constexpr double kDenseBytesPerEntry = 25.0;
 
 /// The contact search proper at the solution run.u, timed on its own: for every contact family, the
 /// current positions of its surfaces, prepare_master() (smoothed normals, bounding volume hierarchy) and

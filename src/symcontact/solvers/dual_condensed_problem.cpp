@@ -36,12 +36,16 @@ DualCondensedProblem::DualCondensedProblem(const SemidefiniteFactor& factor, con
   b_scaled_ = D_.cwiseProduct(b);
 
   // W = Zᵀ Z and d = Zᵀ t − D b with Z = half(Ãᵀ), t = half(ĝ).
-  Z_ = factor.half_solve(MatrixXd(A_scaled_.transpose()));
-  const auto t = factor.half_solve(MatrixXd(g_hat));
-  t_ = t->map().col(0);
-  W_ = std::make_unique<AlignedMatrix>(m_, m_);
-  gram_lower(*Z_, *W_);
-  d_ = Z_->map().transpose() * t_ - b_scaled_;
+  // Z is r × m, as large as W: it is freed once W and d are formed, and primal() solves with the factor instead.
+  {
+    const SparseMatrix At = A_scaled_.transpose();
+    const std::unique_ptr<AlignedMatrix> Z = factor.half_solve(At);
+    const auto t = factor.half_solve(MatrixXd(g_hat));
+    t_ = t->map().col(0);
+    W_ = std::make_unique<AlignedMatrix>(m_, m_);
+    gram_lower(*Z, *W_);
+    d_ = Z->map().transpose() * t_ - b_scaled_;
+  }
   // G = (Ã N)ᵀ, e = Nᵀ ĝ.
   const MatrixXd& N = factor.null_basis();
   const MatrixXd AN = A_scaled_ * N;  // m × k
@@ -92,7 +96,9 @@ VectorXd DualCondensedProblem::multipliers(const VectorXd& lambda_hat) const {
 VectorXd DualCondensedProblem::primal(const VectorXd& lambda_hat, const VectorXd& equality_multipliers) const {
   if (lambda_hat.size() != m_ || equality_multipliers.size() != G_.rows())
     throw std::invalid_argument("DualCondensedProblem::primal: sizes of λ̂ or of the equality multipliers");
-  VectorXd y = factor_.back_solve(Z_->map() * lambda_hat - t_);
+  // Z λ̂ = L₁₁⁻¹ (P Ãᵀ λ̂)₁..ᵣ: one triangular solve with a vector.
+  const VectorXd force = A_scaled_.transpose() * lambda_hat;
+  VectorXd y = factor_.back_solve(factor_.half_solve(MatrixXd(force))->map().col(0) - t_);
   if (G_.rows() > 0) y -= factor_.null_basis() * equality_multipliers;
   return y;
 }

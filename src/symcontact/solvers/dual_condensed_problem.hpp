@@ -101,9 +101,8 @@ class DualCondensedProblem : public ConstrainedProblem {
   VectorXd D_;                       ///< row scales
   SparseMatrix A_scaled_;            ///< D A
   VectorXd b_scaled_;                ///< D b
-  std::unique_ptr<AlignedMatrix> Z_;  ///< L₁₁⁻¹ (P Ãᵀ)₁..ᵣ  (r × m)
   VectorXd t_;                       ///< L₁₁⁻¹ (P ĝ)₁..ᵣ
-  std::unique_ptr<AlignedMatrix> W_;  ///< ZᵀZ, lower triangle
+  std::unique_ptr<AlignedMatrix> W_;  ///< ZᵀZ, lower triangle, Z = L₁₁⁻¹ (P Ãᵀ)₁..ᵣ (r × m; not kept)
   SparseMatrix W_lower_;             ///< the same as a (full) sparse lower triangle, for IPOPT (formed on first use)
   VectorXd d_;
   SparseMatrix G_;

@@ -67,6 +67,20 @@ std::unique_ptr<AlignedMatrix> SemidefiniteFactor::half_solve(const MatrixXd& R)
   return z;
 }
 
+std::unique_ptr<AlignedMatrix> SemidefiniteFactor::half_solve(const SparseMatrix& R) const {
+  if (R.rows() != n_) throw std::invalid_argument("SemidefiniteFactor::half_solve: R has the wrong number of rows");
+  std::vector<Index> position(n_, -1);  // row i of S → its place among the first r pivots, or −1
+  for (Index i = 0; i < r_; ++i) position[piv_[i]] = i;
+  auto z = std::make_unique<AlignedMatrix>(r_, R.cols());
+  auto zm = z->map();
+  zm.setZero();
+  for (int j = 0; j < R.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(R, j); it; ++it)
+      if (position[it.row()] >= 0) zm(position[it.row()], j) += it.value();
+  if (r_ > 0 && R.cols() > 0) lower_solve(*l11_, false, *z);
+  return z;
+}
+
 VectorXd SemidefiniteFactor::back_solve(const VectorXd& z) const {
   if (z.size() != r_) throw std::invalid_argument("SemidefiniteFactor::back_solve: z must have the rank's size");
   AlignedMatrix w(r_, 1);

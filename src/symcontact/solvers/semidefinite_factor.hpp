@@ -40,6 +40,8 @@ class SemidefiniteFactor {
 
   /// Z = L₁₁⁻¹ (P R)₁..ᵣ for R n × k (Z is r × k).
   std::unique_ptr<AlignedMatrix> half_solve(const MatrixXd& R) const;
+  /// The same for a sparse R, scattered straight into Z (no dense n × k copy of R).
+  std::unique_ptr<AlignedMatrix> half_solve(const SparseMatrix& R) const;
   /// Pᵀ [L₁₁⁻ᵀ z; 0] for z of size r.
   VectorXd back_solve(const VectorXd& z) const;
 
