@@ -84,12 +84,13 @@ struct ContactSolveOptions {
   /// Largest condensed set |B| (DOFs) for which the solver condenses; above it the whole problem goes to
   /// IPOPT (which in 3D costs 10–30 times more already at 2e4 DOFs: docs/performance.md). S is dense, so the
   /// condensed problem costs memory and time that grow with |B|², resp. |B|³, besides the factor of K:
-  /// S itself (static_condensation.hpp), IPOPT's copy of its lower triangle and its KKT factorisation
-  /// (MUMPS, dense in effect), and the polish's dense Cholesky factor: 73–84 bytes per entry of the
-  /// |B| × |B| matrix were measured (peak RSS of the 3D Hertz solve beyond the factor and the model, at
-  /// |B| = 3,282 and 5,224; docs/performance.md), i.e. about 11 GiB at 12,000, and O(|B|³) time per IPOPT
-  /// iteration (23 s wall at 5,224 on a loaded machine that gave the run a third of a core). The 3D Hertz sphere on its plane has |B| = 5,224 at 4e5 DOFs
-  /// (the limit was 4,000 until that size was run) and about 9,500 at 1e6.
+  /// S itself (static_condensation.hpp), its pivoted Cholesky factor, W = A S⁺ Aᵀ of the dual and the
+  /// interior point's factor of it (or, on the primal path, IPOPT's KKT factorisation, dense in effect):
+  /// about 25 bytes per entry of the |B| × |B| matrix with the dual's dense interior point, 73–84 with IPOPT
+  /// on the dual (peak RSS of the 3D Hertz solve beyond the factor and the model, at |B| = 3,282 and 5,224;
+  /// docs/performance.md), i.e. about 3.4 GiB at 12,000, and O(|B|³) time per optimiser iteration. The 3D
+  /// Hertz sphere on its plane has |B| = 5,224 at 4e5 DOFs (the limit was 4,000 until that size was run) and
+  /// about 9,500 at 1e6.
   Index max_condensed_dofs = 12000;
   /// Solve a condensed problem without friction terms through its dual (dual_condensed_problem.hpp): IPOPT
   /// works on the m contact multipliers with bounds, on a Hessian formed once per geometry iteration, instead
@@ -100,7 +101,9 @@ struct ContactSolveOptions {
   /// The optimiser of that dual: the dense interior point of dense_qp_interior_point.hpp (default: each of its
   /// iterations one LAPACK Cholesky of the m × m matrix), or IPOPT (MUMPS factorising the dense matrix as a
   /// sparse one: about 3 times the time and 10 m² doubles of workspace). Same solution to the tolerance
-  /// (IpoptOptions::tolerance is used by both). A failed interior point solve falls back to IPOPT.
+  /// (IpoptOptions::tolerance is used by both). A failed interior point solve falls back to IPOPT. Used only
+  /// where the rows are independent (no symmetric pair, no self-contact: the dual's λ is unique); IPOPT
+  /// otherwise.
   bool dual_interior_point = true;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;

@@ -75,6 +75,20 @@ TEST(DenseQpInteriorPoint, DiagonalProblemHasTheClosedFormSolution) {
   }
 }
 
+TEST(DenseQpInteriorPoint, ScalingTheObjectiveScalesOnlyTheBoundMultipliers) {
+  // W and d times 1e-9 (the dual of a lightly loaded contact problem: measured ‖d‖∞ = 2e-9 on the inclined
+  // interface): the same x, z times 1e-9, to the same relative accuracy — the tests are relative, not absolute.
+  const RandomQp q = random_qp(30, 20, 1, 11);
+  DenseQpOptions o;
+  o.tolerance = 1e-11;
+  const DenseQpResult r1 = solve_dense_qp(*aligned(q.W), q.d, q.G, q.e, o);
+  const DenseQpResult r2 = solve_dense_qp(*aligned(1e-9 * q.W), 1e-9 * q.d, q.G, q.e, o);
+  ASSERT_TRUE(r1.success) << r1.status;
+  ASSERT_TRUE(r2.success) << r2.status;
+  EXPECT_LT((r2.x - r1.x).lpNorm<Eigen::Infinity>(), 1e-7 * r1.x.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((1e9 * r2.z - r1.z).lpNorm<Eigen::Infinity>(), 1e-7 * r1.z.lpNorm<Eigen::Infinity>());
+}
+
 TEST(DenseQpInteriorPoint, SemidefiniteWithEqualitiesSatisfiesKkt) {
   for (unsigned seed : {1u, 2u, 3u, 4u}) {
     for (Index k : {0, 1, 3}) {
