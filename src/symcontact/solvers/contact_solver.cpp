@@ -2,6 +2,7 @@
 
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -278,6 +279,9 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   double best_closed_change = std::numeric_limits<double>::infinity();  ///< smallest change with the set closed
   int closed_since_best = 0;  ///< closed iterations since that smallest change
   std::vector<std::shared_ptr<const FrictionTerm>> friction_terms;  ///< per pair, for the reported slips
+  // Where the fixed point stops (ContactSolveOptions::loose_geometry_tolerance); the polish at the end and
+  // `converged` still ask for geometry_tolerance.
+  const double stop_tolerance = std::max(options.geometry_tolerance, options.loose_geometry_tolerance);
   for (int it = 1;; ++it) {
     {
       ScopedPhase t(rep.times, "search");
@@ -466,7 +470,9 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     // Balancing forces only, with friction: that polish moves the iterate by no more than the optimiser's
     // tolerance (far below the geometry tolerance), so it is applied once, to the iterate that ends the
     // fixed point, instead of at every geometry iteration (a dense factorisation each; on the inclined
-    // interface with Coulomb friction about 2.4 geometry iterations per solve).
+    // interface with Coulomb friction about 2.4 geometry iterations per solve). An inexact solve that stops
+    // above geometry_tolerance (loose_geometry_tolerance) is left unbalanced: its iterate is a Coulomb
+    // iteration's intermediate, off by more than the polish would move it.
     const bool balance_at_end = options.polish && !dual && nonquadratic && !closing_polish_works;
     if (options.polish && !dual && !balance_at_end) {
       ScopedPhase t(rep.times, "polish");
@@ -545,7 +551,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         << " iterations (" << res.status_text << "), change " << change;
       log.detail(s.str());
     }
-    if (change < options.geometry_tolerance) {
+    if (change < stop_tolerance) {
+      rep.converged = change < options.geometry_tolerance;
       rep.multipliers = res.multipliers;
       workspace->multipliers = res.multipliers;
       workspace->row_family = lin.row_family;
@@ -556,7 +563,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       u = problem.expand(x);
       std::ostringstream s;
       s << "the geometry fixed point did not converge in " << options.max_geometry_iterations
-        << " iterations (last relative change " << change << ", tolerance " << options.geometry_tolerance << ")";
+        << " iterations (last relative change " << change << ", tolerance " << stop_tolerance << ")";
       throw SolveError(s.str());
     }
     if (anderson) {

@@ -53,9 +53,13 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
       }
     }
   }
-  auto solve = [&]() {
-    ContactSolveReport r =
-        solve_contact(energy, fixed, contacts, dofs, u, options.contact, log, any_friction ? &rep.friction : nullptr);
+  // Inexact inner solves (FrictionalOptions::inner_tolerance_factor): the geometry fixed point of a solve
+  // stops at factor × the threshold change that set its τ (1 before any is known: the frictionless start,
+  // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
+  auto solve = [&](double threshold_change) {
+    ContactSolveOptions o = options.contact;
+    if (any_coulomb) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
+    ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
     rep.geometry_iterations += r.geometry_iterations;
     rep.ipopt_iterations += r.ipopt_iterations;
     rep.times.merge(r.times);
@@ -66,21 +70,22 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     // infeasible, with the friction already on) falls back to the frictionless start.
     const VectorXd u0 = u;
     try {
-      solve();
+      solve(1.0);
     } catch (const SolveError& e) {
       log.detail(std::string("  warm-started Coulomb solve failed (") + e.what() + "); starting frictionless");
       u = u0;
       warm = false;
       for (int p = 0; p < np; ++p)
         if (contacts.pairs[p].friction == FrictionLaw::kCoulomb) rep.friction.nodal_tau[p].setZero();
-      solve();
+      solve(1.0);
     }
   } else {
-    solve();
+    solve(1.0);
   }
   if (!any_coulomb) return rep;
   std::vector<Eigen::VectorXd> r_prev;  // r_{k−1}, per pair (empty before the first Tresca solve)
   double omega = 1.0;
+  double scale = 1.0;  ///< of the next solve's loose geometry tolerance: the last ‖r_k‖∞ / ‖τ_k‖∞ (1 before)
   for (int k = 1;; ++k) {
     // r_k = μ p_k − τ_k for every Coulomb pair (τ_0 = 0: the frictionless solve).
     double num = 0.0, den = 0.0;
@@ -106,6 +111,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     }
     if (k > 1 || warm) {
       const double change = den > 0 ? num / den : (num > 0 ? 1.0 : 0.0);
+      scale = change;
       rep.coulomb_change.push_back(change);
       // Aitken: ω_k from r_{k−1} and r_k (all Coulomb pairs as one vector).
       double dot = 0.0, dd = 0.0;
@@ -120,7 +126,13 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
       std::ostringstream s;
       s << "  Coulomb iteration " << k - (warm ? 0 : 1) << ": threshold change " << change << ", relaxation " << omega;
       log.detail(s.str());
-      if (change < options.coulomb_tolerance) break;
+      if (change < options.coulomb_tolerance) {
+        // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an
+        // inexact one, one more solve at full tolerance (its τ moves by less than the tolerance).
+        if (rep.last.converged) break;
+        log.detail("  thresholds settled on an inexact solve; one more solve to the geometry tolerance");
+        scale = 0.0;
+      }
       if (k - (warm ? 0 : 1) >= options.max_coulomb_iterations) {
         std::ostringstream e;
         e << "the Coulomb fixed point did not converge in " << options.max_coulomb_iterations
@@ -134,7 +146,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
         rep.friction.nodal_tau[p] = (rep.friction.nodal_tau[p] + (k > 1 || warm ? omega : 1.0) * r[p]).cwiseMax(0.0);
     r_prev = std::move(r);
     rep.coulomb_iterations = k;
-    solve();
+    solve(scale);
   }
   return rep;
 }

@@ -11,6 +11,10 @@
 ///      solve regularised Tresca with τ_k → pressure p_k → residual r_k = μ p_k − τ_k,
 ///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that does not converge within the allowed
 ///    iterations throws SolveError — never reported as success.
+///    While τ still moves, each solve's geometry fixed point is stopped early, at a tolerance proportional
+///    to the last threshold change (inexact inner solves; FrictionalOptions::inner_tolerance_factor); the
+///    loop still ends only on a solve converged to the geometry tolerance whose τ satisfies the tolerance
+///    above.
 ///    The update is relaxed by Aitken's Δ² rule (Irons & Tuck 1969; in the vector form of Küttler &
 ///    Wall, Comput. Mech. 43 (2008), eq. 44): τ_{k+1} = max(0, τ_k + ω_k r_k) with
 ///      ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖²,  ω_1 = 1, clipped to [0.1, 1].
@@ -30,6 +34,13 @@ struct FrictionalOptions {
   ContactSolveOptions contact;
   double coulomb_tolerance = 1e-6;
   int max_coulomb_iterations = 50;
+  /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is
+  /// wasted, so each solve's geometry fixed point stops at max(geometry_tolerance, factor × c), c the
+  /// relative threshold change ‖r_k‖∞ / ‖τ_k‖∞ that set its τ (1 for the first solve of a step), and is
+  /// force-balanced only when it reached geometry_tolerance (ContactSolveOptions::loose_geometry_tolerance).
+  /// The loop still ends only on a solve converged to geometry_tolerance, with c below coulomb_tolerance:
+  /// the same fixed point to the same tolerances. 0: every solve to geometry_tolerance.
+  double inner_tolerance_factor = 0.1;
 };
 
 struct FrictionalReport {
