@@ -168,6 +168,9 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
     log.debug("  static condensation onto " + std::to_string(ws.condensation->boundary().size()) + " of " +
               std::to_string(n) + " free DOFs");
   }
+  if (!load && options.same_loads && ws.load && ws.load_of == ws.factorisations && ws.load->r0.size() == n) {
+    load = ws.load;  // the caller vouches for r₀ (ContactSolveOptions::same_loads)
+  }
   if (!load) {
     // The load part (one interior solve) depends on the loads and Dirichlet values only, through r₀ = ∇E(0):
     // the Coulomb iterations of a load step share it.
@@ -278,6 +281,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   std::vector<char> active_prev;  ///< rows with μ > 0 after the previous closed polish
   double best_closed_change = std::numeric_limits<double>::infinity();  ///< smallest change with the set closed
   int closed_since_best = 0;  ///< closed iterations since that smallest change
+  VectorXd residual_b;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
   std::vector<std::shared_ptr<const FrictionTerm>> friction_terms;  ///< per pair, for the reported slips
   // Where the fixed point stops (ContactSolveOptions::loose_geometry_tolerance); the polish at the end and
   // `converged` still ask for geometry_tolerance.
@@ -552,6 +556,13 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       log.detail(s.str());
     }
     if (change < stop_tolerance) {
+      if (condensed) {
+        // The bodies' residual on B, for the contact forces below: ∇E = ĝ + S y there (condensed_problem.hpp),
+        // O(|B|²) instead of an assembly over the whole mesh.
+        const VectorXd y = condensed->restrict(res.x);
+        residual_b = condensed->linear_term() +
+                     condensed->condensation().schur_lower().selfadjointView<Eigen::Lower>() * y;
+      }
       rep.converged = change < options.geometry_tolerance;
       rep.multipliers = res.multipliers;
       workspace->multipliers = res.multipliers;
@@ -587,19 +598,32 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   // equals Aᵀμ + the friction force at the KKT point and carries no optimiser tolerance (it balances the
   // applied loads to round-off), so it is used there; on fixed DOFs the residual also holds the support
   // reaction, and Aᵀμ is kept (friction forces on fixed DOFs are not recovered).
+  // Condensed, the residual on B is ĝ + S y (exactly ∇E there, x_I being x_I(y)); a surface DOF outside B
+  // is touched by no constraint or friction term, and its residual is zero but for round-off: Aᵀμ = 0 is kept.
   rep.contact_force = rep.linearization.A.transpose() * rep.multipliers;
   rep.multiplier_force = rep.contact_force;
-  VectorXd residual = VectorXd::Zero(u.size());
-  energy.add_gradient(u, residual);
   std::vector<Index> free_index;
   fixed.free_numbering(u.size(), free_index);
+  const bool condensed_residual = residual_b.size() > 0;
+  const std::vector<Index>* b_position = condensed_residual ? &workspace->condensation->boundary_position() : nullptr;
+  VectorXd residual;
+  if (!condensed_residual) {
+    residual = VectorXd::Zero(u.size());
+    energy.add_gradient(u, residual);
+  }
   // The residual of the bodies' energy holds the whole interface force, normal and frictional.
   for (const ContactSurface& s : contacts.surfaces) {
     if (s.is_rigid()) continue;
     for (Index node : s.nodes)
       for (int i = 0; i < s.dim; ++i) {
         const Index d = dofs.dof(s.body, node, i);
-        if (free_index[d] >= 0) rep.contact_force[d] = residual[d];
+        const Index f = free_index[d];
+        if (f < 0) continue;
+        if (!condensed_residual) {
+          rep.contact_force[d] = residual[d];
+        } else if ((*b_position)[f] >= 0) {
+          rep.contact_force[d] = residual_b[(*b_position)[f]];
+        }
       }
   }
   return rep;

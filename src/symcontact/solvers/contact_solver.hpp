@@ -106,6 +106,10 @@ struct ContactSolveOptions {
   bool dual = true;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
+  /// The caller vouches that the loads and Dirichlet values are those of the previous solve with this
+  /// workspace (the Coulomb iterations of a load step): the condensation's load part is then reused without
+  /// evaluating ∇E(0) to compare (an assembly over the whole mesh per solve).
+  bool same_loads = false;
 };
 
 /// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).

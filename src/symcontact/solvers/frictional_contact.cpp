@@ -92,10 +92,13 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   // Inexact inner solves (FrictionalOptions::inner_tolerance_factor): the geometry fixed point of a solve
   // stops at factor × the threshold change that set its τ (1 before any is known: the frictionless start,
   // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
+  bool same_loads = false;
   auto solve = [&](double threshold_change) {
     ContactSolveOptions o = options.contact;
     if (any_coulomb) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
+    o.same_loads = same_loads;
     ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
+    same_loads = true;  // the later solves of this call: the same load step, whose load part is now known
     rep.geometry_iterations += r.geometry_iterations;
     rep.ipopt_iterations += r.ipopt_iterations;
     rep.times.merge(r.times);
