@@ -92,10 +92,11 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   // Inexact inner solves (FrictionalOptions::inner_tolerance_factor): the geometry fixed point of a solve
   // stops at factor × the threshold change that set its τ (1 before any is known: the frictionless start,
   // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
+  const bool inexact = any_coulomb && energy.hessian_is_constant() && options.inner_tolerance_factor > 0.0;
   bool same_loads = false;
   auto solve = [&](double threshold_change) {
     ContactSolveOptions o = options.contact;
-    if (any_coulomb) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
+    if (inexact) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
     o.same_loads = same_loads;
     ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
     same_loads = true;  // the later solves of this call: the same load step, whose load part is now known
