@@ -283,9 +283,11 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   int closed_since_best = 0;  ///< closed iterations since that smallest change
   VectorXd residual_b;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
   std::vector<std::shared_ptr<const FrictionTerm>> friction_terms;  ///< per pair, for the reported slips
-  // Where the fixed point stops (ContactSolveOptions::loose_geometry_tolerance); the polish at the end and
-  // `converged` still ask for geometry_tolerance.
-  const double stop_tolerance = std::max(options.geometry_tolerance, options.loose_geometry_tolerance);
+  // Where the fixed point stops (ContactSolveOptions::loose_geometry_tolerance). An inexact solve is never
+  // balanced at the end nor reported converged, even where its change happens to fall below
+  // geometry_tolerance: its answer is an intermediate.
+  const bool inexact = options.loose_geometry_tolerance > options.geometry_tolerance;
+  const double stop_tolerance = inexact ? options.loose_geometry_tolerance : options.geometry_tolerance;
   for (int it = 1;; ++it) {
     {
       ScopedPhase t(rep.times, "search");
@@ -474,9 +476,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     // Balancing forces only, with friction: that polish moves the iterate by no more than the optimiser's
     // tolerance (far below the geometry tolerance), so it is applied once, to the iterate that ends the
     // fixed point, instead of at every geometry iteration (a dense factorisation each; on the inclined
-    // interface with Coulomb friction about 2.4 geometry iterations per solve). An inexact solve that stops
-    // above geometry_tolerance (loose_geometry_tolerance) is left unbalanced: its iterate is a Coulomb
-    // iteration's intermediate, off by more than the polish would move it.
+    // interface with Coulomb friction about 2.4 geometry iterations per solve). An inexact solve
+    // (loose_geometry_tolerance) is left unbalanced: its iterate is a Coulomb iteration's intermediate.
     const bool balance_at_end = options.polish && !dual && nonquadratic && !closing_polish_works;
     if (options.polish && !dual && !balance_at_end) {
       ScopedPhase t(rep.times, "polish");
@@ -503,7 +504,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     }
     const double change =
         (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
-    if (balance_at_end && change < options.geometry_tolerance) {
+    if (balance_at_end && !inexact && change < options.geometry_tolerance) {
       VectorXd xt;
       {
         ScopedPhase t(rep.times, "polish");
@@ -563,7 +564,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         residual_b = condensed->linear_term() +
                      condensed->condensation().schur_lower().selfadjointView<Eigen::Lower>() * y;
       }
-      rep.converged = change < options.geometry_tolerance;
+      rep.converged = !inexact && change < options.geometry_tolerance;
       rep.multipliers = res.multipliers;
       workspace->multipliers = res.multipliers;
       workspace->row_family = lin.row_family;

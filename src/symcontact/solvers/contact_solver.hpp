@@ -62,12 +62,12 @@ struct ContactWorkspace {
 
 struct ContactSolveOptions {
   double geometry_tolerance = 1e-6;
-  /// An inexact solve: the fixed point stops once the change is below max(geometry_tolerance, this), and
-  /// the force-balancing polish of a non-quadratic energy (applied once, to the iterate that ends the
-  /// fixed point) is left out unless the change is also below geometry_tolerance. Set by the Coulomb fixed
+  /// An inexact solve when above geometry_tolerance: the fixed point stops once the change is below this,
+  /// and its answer is taken as an intermediate one: the force-balancing polish of a non-quadratic energy
+  /// (applied once, to the iterate that ends the fixed point) is left out and ContactSolveReport::converged
+  /// is false, even where the change happens to fall below geometry_tolerance. Set by the Coulomb fixed
   /// point while the thresholds still move (frictional_contact.hpp), where a solve to geometry_tolerance
-  /// would be wasted; ContactSolveReport::converged says whether geometry_tolerance itself was reached.
-  /// 0: a solve to geometry_tolerance.
+  /// (and its polish) would be wasted. 0: a solve to geometry_tolerance.
   double loose_geometry_tolerance = 0.0;
   int max_geometry_iterations = 50;
   /// Memory of the Anderson acceleration of the geometry fixed point (anderson_acceleration.hpp); 0: the
@@ -127,8 +127,8 @@ struct ContactSolveReport {
   int ipopt_iterations = 0;                 ///< summed over the geometry iterations
   std::vector<int> ipopt_per_iteration;
   std::vector<double> change_history;       ///< relative change after each geometry iteration
-  /// The last change is below geometry_tolerance (always, unless ContactSolveOptions::loose_geometry_tolerance
-  /// let the solve stop earlier); then a non-quadratic energy's last iterate was also force-balanced.
+  /// A solve to geometry_tolerance (not an inexact one: ContactSolveOptions::loose_geometry_tolerance) that
+  /// reached it (always, unless inexact); a non-quadratic energy's last iterate was then force-balanced.
   bool converged = false;
   std::string ipopt_status;                 ///< of the last solve
   Index num_free = 0;

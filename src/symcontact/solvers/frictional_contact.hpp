@@ -37,13 +37,14 @@ struct FrictionalOptions {
   int max_coulomb_iterations = 50;
   /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is
   /// wasted, so each solve's geometry fixed point stops at max(geometry_tolerance, factor × c), c the
-  /// relative threshold change ‖r_k‖∞ / ‖τ_k‖∞ that set its τ (1 for the first solve of a step), and is
-  /// force-balanced only when it reached geometry_tolerance (ContactSolveOptions::loose_geometry_tolerance).
-  /// The loop still ends only on a solve converged to geometry_tolerance, with c below coulomb_tolerance:
-  /// the same fixed point to the same tolerances. 0: every solve to geometry_tolerance. Quadratic energies
-  /// (linear elasticity) only: with finite-strain bodies every solve goes to geometry_tolerance (tried: on
-  /// the frictional ironing test, finite strain with step cuts, the inexact solves changed the answer of
-  /// the load path, its deepest penetration −0.0220 against the bound −0.0208).
+  /// relative threshold change ‖r_k‖∞ / ‖τ_k‖∞ that set its τ (1 for the first solve of a step); such an
+  /// inexact solve is not force-balanced (ContactSolveOptions::loose_geometry_tolerance). The loop still
+  /// ends only on a solve to geometry_tolerance, with c below coulomb_tolerance (one more solve when τ
+  /// settles on an inexact one): the same fixed point to the same tolerances. 0: every solve to
+  /// geometry_tolerance. Quadratic energies (linear elasticity) only: with finite-strain bodies every
+  /// solve goes to geometry_tolerance (tried: on the frictional ironing test, finite strain with step cuts,
+  /// the inexact solves changed the answer of the load path, its deepest penetration −0.0220 against the
+  /// bound −0.0208).
   double inner_tolerance_factor = 0.1;
   /// Predictor of a warm-started step (quadratic energies: linear elasticity): when this step's Dirichlet
   /// increment is s times the previous step's (proportional loading), the Coulomb fixed point starts from
