@@ -168,6 +168,9 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
     log.debug("  static condensation onto " + std::to_string(ws.condensation->boundary().size()) + " of " +
               std::to_string(n) + " free DOFs");
   }
+  if (!load && options.same_loads && ws.load && ws.load_of == ws.factorisations && ws.load->r0.size() == n) {
+    load = ws.load;  // the caller vouches for r₀ (ContactSolveOptions::same_loads)
+  }
   if (!load) {
     // The load part (one interior solve) depends on the loads and Dirichlet values only, through r₀ = ∇E(0):
     // the Coulomb iterations of a load step share it.
@@ -285,7 +288,13 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   std::vector<char> active_prev;  ///< rows with μ > 0 after the previous closed polish
   double best_closed_change = std::numeric_limits<double>::infinity();  ///< smallest change with the set closed
   int closed_since_best = 0;  ///< closed iterations since that smallest change
+  VectorXd residual_b;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
   std::vector<std::shared_ptr<const FrictionTerm>> friction_terms;  ///< per pair, for the reported slips
+  // Where the fixed point stops (ContactSolveOptions::loose_geometry_tolerance). An inexact solve is never
+  // balanced at the end nor reported converged, even where its change happens to fall below
+  // geometry_tolerance: its answer is an intermediate.
+  const bool inexact = options.loose_geometry_tolerance > options.geometry_tolerance;
+  const double stop_tolerance = inexact ? options.loose_geometry_tolerance : options.geometry_tolerance;
   for (int it = 1;; ++it) {
     {
       ScopedPhase t(rep.times, "search");
@@ -505,7 +514,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     // Balancing forces only, with friction: that polish moves the iterate by no more than the optimiser's
     // tolerance (far below the geometry tolerance), so it is applied once, to the iterate that ends the
     // fixed point, instead of at every geometry iteration (a dense factorisation each; on the inclined
-    // interface with Coulomb friction about 2.4 geometry iterations per solve).
+    // interface with Coulomb friction about 2.4 geometry iterations per solve). An inexact solve
+    // (loose_geometry_tolerance) is left unbalanced: its iterate is a Coulomb iteration's intermediate.
     const bool balance_at_end = options.polish && !dual && nonquadratic && !closing_polish_works;
     if (options.polish && !dual && !balance_at_end) {
       ScopedPhase t(rep.times, "polish");
@@ -532,7 +542,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     }
     const double change =
         (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
-    if (balance_at_end && change < options.geometry_tolerance) {
+    if (balance_at_end && !inexact && change < options.geometry_tolerance) {
       VectorXd xt;
       {
         ScopedPhase t(rep.times, "polish");
@@ -584,7 +594,15 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         << " iterations (" << res.status_text << "), change " << change;
       log.detail(s.str());
     }
-    if (change < options.geometry_tolerance) {
+    if (change < stop_tolerance) {
+      if (condensed) {
+        // The bodies' residual on B, for the contact forces below: ∇E = ĝ + S y there (condensed_problem.hpp),
+        // O(|B|²) instead of an assembly over the whole mesh.
+        const VectorXd y = condensed->restrict(res.x);
+        residual_b = condensed->linear_term() +
+                     condensed->condensation().schur_lower().selfadjointView<Eigen::Lower>() * y;
+      }
+      rep.converged = !inexact && change < options.geometry_tolerance;
       rep.multipliers = res.multipliers;
       workspace->multipliers = res.multipliers;
       workspace->row_family = lin.row_family;
@@ -595,7 +613,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       u = problem.expand(x);
       std::ostringstream s;
       s << "the geometry fixed point did not converge in " << options.max_geometry_iterations
-        << " iterations (last relative change " << change << ", tolerance " << options.geometry_tolerance << ")";
+        << " iterations (last relative change " << change << ", tolerance " << stop_tolerance << ")";
       throw SolveError(s.str());
     }
     if (anderson) {
@@ -619,19 +637,32 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   // equals Aᵀμ + the friction force at the KKT point and carries no optimiser tolerance (it balances the
   // applied loads to round-off), so it is used there; on fixed DOFs the residual also holds the support
   // reaction, and Aᵀμ is kept (friction forces on fixed DOFs are not recovered).
+  // Condensed, the residual on B is ĝ + S y (exactly ∇E there, x_I being x_I(y)); a surface DOF outside B
+  // is touched by no constraint or friction term, and its residual is zero but for round-off: Aᵀμ = 0 is kept.
   rep.contact_force = rep.linearization.A.transpose() * rep.multipliers;
   rep.multiplier_force = rep.contact_force;
-  VectorXd residual = VectorXd::Zero(u.size());
-  energy.add_gradient(u, residual);
   std::vector<Index> free_index;
   fixed.free_numbering(u.size(), free_index);
+  const bool condensed_residual = residual_b.size() > 0;
+  const std::vector<Index>* b_position = condensed_residual ? &workspace->condensation->boundary_position() : nullptr;
+  VectorXd residual;
+  if (!condensed_residual) {
+    residual = VectorXd::Zero(u.size());
+    energy.add_gradient(u, residual);
+  }
   // The residual of the bodies' energy holds the whole interface force, normal and frictional.
   for (const ContactSurface& s : contacts.surfaces) {
     if (s.is_rigid()) continue;
     for (Index node : s.nodes)
       for (int i = 0; i < s.dim; ++i) {
         const Index d = dofs.dof(s.body, node, i);
-        if (free_index[d] >= 0) rep.contact_force[d] = residual[d];
+        const Index f = free_index[d];
+        if (f < 0) continue;
+        if (!condensed_residual) {
+          rep.contact_force[d] = residual[d];
+        } else if ((*b_position)[f] >= 0) {
+          rep.contact_force[d] = residual_b[(*b_position)[f]];
+        }
       }
   }
   return rep;

@@ -62,6 +62,13 @@ struct ContactWorkspace {
 
 struct ContactSolveOptions {
   double geometry_tolerance = 1e-6;
+  /// An inexact solve when above geometry_tolerance: the fixed point stops once the change is below this,
+  /// and its answer is taken as an intermediate one: the force-balancing polish of a non-quadratic energy
+  /// (applied once, to the iterate that ends the fixed point) is left out and ContactSolveReport::converged
+  /// is false, even where the change happens to fall below geometry_tolerance. Set by the Coulomb fixed
+  /// point while the thresholds still move (frictional_contact.hpp), where a solve to geometry_tolerance
+  /// (and its polish) would be wasted. 0: a solve to geometry_tolerance.
+  double loose_geometry_tolerance = 0.0;
   int max_geometry_iterations = 50;
   /// Memory of the Anderson acceleration of the geometry fixed point (anderson_acceleration.hpp); 0: the
   /// plain iteration. Quadratic energies (linear elasticity) only. It is applied only between iterations
@@ -107,6 +114,10 @@ struct ContactSolveOptions {
   bool dual_interior_point = true;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
+  /// The caller vouches that the loads and Dirichlet values are those of the previous solve with this
+  /// workspace (the Coulomb iterations of a load step): the condensation's load part is then reused without
+  /// evaluating ∇E(0) to compare (an assembly over the whole mesh per solve).
+  bool same_loads = false;
 };
 
 /// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).
@@ -114,6 +125,9 @@ struct FrictionState {
   /// Per pair: τ at the nodes of the slave surface of the pair's friction family (empty: no friction).
   std::vector<Eigen::VectorXd> nodal_tau;
   VectorXd u_start;  ///< displacement at the start of the load step (slip increments are measured from it)
+  /// The thresholds the previous load step converged to (empty on the first step): with nodal_tau, the
+  /// last two steps' τ for the predictor of the next step (FrictionalOptions::extrapolate).
+  std::vector<Eigen::VectorXd> previous_tau;
 };
 
 struct ContactSolveReport {
@@ -121,6 +135,9 @@ struct ContactSolveReport {
   int ipopt_iterations = 0;                 ///< summed over the geometry iterations
   std::vector<int> ipopt_per_iteration;
   std::vector<double> change_history;       ///< relative change after each geometry iteration
+  /// A solve to geometry_tolerance (not an inexact one: ContactSolveOptions::loose_geometry_tolerance) that
+  /// reached it (always, unless inexact); a non-quadratic energy's last iterate was then force-balanced.
+  bool converged = false;
   std::string ipopt_status;                 ///< of the last solve
   Index num_free = 0;
   Index num_constraints = 0;                ///< of the last linearisation

@@ -26,6 +26,25 @@ Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap
   }
   return surface_tractions(s, dofs, u, force, &normals).pressure.cwiseMax(0.0);
 }
+
+/// s such that this step's Dirichlet increment (fixed values − u) is s times the previous step's
+/// (u − u_previous_start) on every fixed DOF, to 1e-8 of the largest; 0 when they are not proportional
+/// (a new direction of loading: pressing, then pushing) or either is zero.
+double proportional_increment(const FixedDofs& fixed, const VectorXd& u, const VectorXd& u_previous_start) {
+  if (u_previous_start.size() != u.size() || fixed.dofs.empty()) return 0.0;
+  const Index n = static_cast<Index>(fixed.dofs.size());
+  Eigen::VectorXd now(n), before(n);
+  for (Index k = 0; k < n; ++k) {
+    const Index d = fixed.dofs[k];
+    now[k] = fixed.values[k] - u[d];
+    before[k] = u[d] - u_previous_start[d];
+  }
+  const double bb = before.squaredNorm();
+  if (!(bb > 0.0) || !(now.squaredNorm() > 0.0)) return 0.0;
+  const double s = now.dot(before) / bb;
+  if (!(s > 0.0) || (now - s * before).lpNorm<Eigen::Infinity>() > 1e-8 * now.lpNorm<Eigen::Infinity>()) return 0.0;
+  return s;
+}
 }  // namespace
 
 FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
@@ -35,6 +54,11 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   const int np = static_cast<int>(contacts.pairs.size());
   rep.friction.u_start = u;
   rep.friction.nodal_tau.assign(np, Eigen::VectorXd());
+  if (previous) rep.friction.previous_tau = previous->nodal_tau;
+  // The predictor (FrictionalOptions::extrapolate): this step repeats the previous one's increment, scaled.
+  const double s_extrapolate = options.extrapolate && previous && energy.hessian_is_constant()
+                                   ? proportional_increment(fixed, u, previous->u_start)
+                                   : 0.0;
   bool any_friction = false, any_coulomb = false, warm = false;
   for (int p = 0; p < np; ++p) {
     const ContactPair& pair = contacts.pairs[p];
@@ -50,12 +74,32 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
           previous->nodal_tau[p].size() == s.num_nodes() && previous->nodal_tau[p].maxCoeff() > 0.0) {
         rep.friction.nodal_tau[p] = previous->nodal_tau[p];
         warm = true;
+        if (s_extrapolate > 0.0 && p < static_cast<int>(previous->previous_tau.size()) &&
+            previous->previous_tau[p].size() == s.num_nodes())
+          rep.friction.nodal_tau[p] =
+              (previous->nodal_tau[p] + s_extrapolate * (previous->nodal_tau[p] - previous->previous_tau[p]))
+                  .cwiseMax(0.0);
       }
     }
   }
-  auto solve = [&]() {
-    ContactSolveReport r =
-        solve_contact(energy, fixed, contacts, dofs, u, options.contact, log, any_friction ? &rep.friction : nullptr);
+  const VectorXd u_step_start = u;
+  if (warm && s_extrapolate > 0.0) {
+    u += s_extrapolate * (u - previous->u_start);
+    std::ostringstream m;
+    m << "  predictor: the previous step's increment extrapolated (scale " << s_extrapolate << ")";
+    log.detail(m.str());
+  }
+  // Inexact inner solves (FrictionalOptions::inner_tolerance_factor): the geometry fixed point of a solve
+  // stops at factor × the threshold change that set its τ (1 before any is known: the frictionless start,
+  // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
+  const bool inexact = any_coulomb && energy.hessian_is_constant() && options.inner_tolerance_factor > 0.0;
+  bool same_loads = false;
+  auto solve = [&](double threshold_change) {
+    ContactSolveOptions o = options.contact;
+    if (inexact) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
+    o.same_loads = same_loads;
+    ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
+    same_loads = true;  // the later solves of this call: the same load step, whose load part is now known
     rep.geometry_iterations += r.geometry_iterations;
     rep.ipopt_iterations += r.ipopt_iterations;
     rep.times.merge(r.times);
@@ -64,23 +108,23 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   if (warm) {
     // A warm start the solve cannot take (IPOPT failing from a start the moved boundary made far
     // infeasible, with the friction already on) falls back to the frictionless start.
-    const VectorXd u0 = u;
     try {
-      solve();
+      solve(1.0);
     } catch (const SolveError& e) {
       log.detail(std::string("  warm-started Coulomb solve failed (") + e.what() + "); starting frictionless");
-      u = u0;
+      u = u_step_start;
       warm = false;
       for (int p = 0; p < np; ++p)
         if (contacts.pairs[p].friction == FrictionLaw::kCoulomb) rep.friction.nodal_tau[p].setZero();
-      solve();
+      solve(1.0);
     }
   } else {
-    solve();
+    solve(1.0);
   }
   if (!any_coulomb) return rep;
   std::vector<Eigen::VectorXd> r_prev;  // r_{k−1}, per pair (empty before the first Tresca solve)
   double omega = 1.0;
+  double scale = 1.0;  ///< of the next solve's loose geometry tolerance: the last ‖r_k‖∞ / ‖τ_k‖∞ (1 before)
   for (int k = 1;; ++k) {
     // r_k = μ p_k − τ_k for every Coulomb pair (τ_0 = 0: the frictionless solve).
     double num = 0.0, den = 0.0;
@@ -106,6 +150,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     }
     if (k > 1 || warm) {
       const double change = den > 0 ? num / den : (num > 0 ? 1.0 : 0.0);
+      scale = change;
       rep.coulomb_change.push_back(change);
       // Aitken: ω_k from r_{k−1} and r_k (all Coulomb pairs as one vector).
       double dot = 0.0, dd = 0.0;
@@ -120,7 +165,13 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
       std::ostringstream s;
       s << "  Coulomb iteration " << k - (warm ? 0 : 1) << ": threshold change " << change << ", relaxation " << omega;
       log.detail(s.str());
-      if (change < options.coulomb_tolerance) break;
+      if (change < options.coulomb_tolerance) {
+        // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an
+        // inexact one, one more solve at full tolerance (its τ moves by less than the tolerance).
+        if (rep.last.converged) break;
+        log.detail("  thresholds settled on an inexact solve; one more solve to the geometry tolerance");
+        scale = 0.0;
+      }
       if (k - (warm ? 0 : 1) >= options.max_coulomb_iterations) {
         std::ostringstream e;
         e << "the Coulomb fixed point did not converge in " << options.max_coulomb_iterations
@@ -134,7 +185,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
         rep.friction.nodal_tau[p] = (rep.friction.nodal_tau[p] + (k > 1 || warm ? omega : 1.0) * r[p]).cwiseMax(0.0);
     r_prev = std::move(r);
     rep.coulomb_iterations = k;
-    solve();
+    solve(scale);
   }
   return rep;
 }
