@@ -89,6 +89,16 @@ IpoptOptions tight() {
   return o;
 }
 
+/// IPOPT on the primal of the case, to a tight tolerance: the reference.
+IpoptResult solve_primal(const Case& c) {
+  DenseQp primal(c.S, c.g, c.A, c.b);
+  return solve_with_ipopt(primal, VectorXd::Zero(kN), tight());
+}
+
+SemidefiniteFactor schur_factor(const Case& c) {
+  return SemidefiniteFactor(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+}
+
 }  // namespace
 
 class DualCondensed : public ::testing::TestWithParam<bool> {};
@@ -97,11 +107,10 @@ TEST_P(DualCondensed, SameDisplacementsAndMultipliersAsThePrimal) {
   const bool floating = GetParam();
   for (unsigned seed : {1u, 2u, 3u}) {
     const Case c = make_case(floating, seed);
-    DenseQp primal(c.S, c.g, c.A, c.b);
-    const IpoptResult rp = solve_with_ipopt(primal, VectorXd::Zero(kN), tight());
+    const IpoptResult rp = solve_primal(c);
     ASSERT_TRUE(rp.success) << rp.status_text;
 
-    const SemidefiniteFactor f(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+    const SemidefiniteFactor f = schur_factor(c);
     EXPECT_EQ(f.rank(), floating ? kN - 1 : kN);
     DualCondensedProblem dual(f, c.A, c.b, c.g);
     EXPECT_EQ(dual.num_rigid_modes(), floating ? 1 : 0);
@@ -135,7 +144,7 @@ TEST_P(DualCondensed, ClosingMakesTheActiveGapsExactlyZero) {
   const bool floating = GetParam();
   for (unsigned seed : {1u, 2u, 3u}) {
     const Case c = make_case(floating, seed);
-    const SemidefiniteFactor f(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+    const SemidefiniteFactor f = schur_factor(c);
     DualCondensedProblem dual(f, c.A, c.b, c.g);
     const IpoptResult rd = solve_with_ipopt(dual, VectorXd::Zero(kRows), IpoptOptions{});
     ASSERT_TRUE(rd.success) << rd.status_text;
@@ -168,17 +177,16 @@ TEST_P(DualCondensed, ClosingMakesTheActiveGapsExactlyZero) {
   }
 }
 
-// The dense interior point (the default backend) on the same dual: the primal's displacements and multipliers,
+// The dense interior point (the dual's optimiser where the rows are independent) on the same dual: the primal's displacements and multipliers,
 // its z the scaled gaps, its β in IPOPT's μ_eq convention (primal() with it gives the balanced y; a flipped sign
 // fails the floating case), and the closing from its point.
 TEST_P(DualCondensed, InteriorPointGivesThePrimalSolution) {
   const bool floating = GetParam();
   for (unsigned seed : {1u, 2u, 3u}) {
     const Case c = make_case(floating, seed);
-    DenseQp primal(c.S, c.g, c.A, c.b);
-    const IpoptResult rp = solve_with_ipopt(primal, VectorXd::Zero(kN), tight());
+    const IpoptResult rp = solve_primal(c);
     ASSERT_TRUE(rp.success) << rp.status_text;
-    const SemidefiniteFactor f(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
+    const SemidefiniteFactor f = schur_factor(c);
     DualCondensedProblem dual(f, c.A, c.b, c.g);
     DenseQpOptions o;
     o.tolerance = 1e-12;
