@@ -37,7 +37,8 @@ CondensedLoad condense_load(ReducedProblem& bulk, const StaticCondensation& sc) 
   bulk.gradient(zero, l.r0);
   const double e0 = bulk.objective(zero);
   // w = K_II⁻¹ r₀_I;  ĝ = r₀_B − (K w)_B;  f₀ = E₀ − ½ r₀ · w  (w_B = 0)
-  const VectorXd w = sc.solve_interior(l.r0);
+  l.w = sc.solve_interior(l.r0);
+  const VectorXd& w = l.w;
   const VectorXd kw = sc.matrix().selfadjointView<Eigen::Lower>() * w;
   const auto& B = sc.boundary();
   l.g_hat.resize(static_cast<Index>(B.size()));
@@ -101,9 +102,9 @@ VectorXd CondensedProblem::expand(const VectorXd& y) const {
   const auto& B = sc_.boundary();
   VectorXd xb = VectorXd::Zero(bulk_.num_free());
   for (std::size_t k = 0; k < B.size(); ++k) xb[B[k]] = y[k];
-  // x_I = −K_II⁻¹ (r₀_I + (K x_B)_I): the B entries of the right-hand side are ignored by solve_interior.
-  const VectorXd rhs = load_->r0 + sc_.matrix().selfadjointView<Eigen::Lower>() * xb;
-  VectorXd x = -sc_.solve_interior(rhs);
+  // x_I = −K_II⁻¹ (r₀_I + K_IB x_B) = −w_I − K_II⁻¹ K_IB x_B: the load part once per load (CondensedLoad::w),
+  // the boundary part by one backward solve (StaticCondensation::boundary_response()).
+  VectorXd x = sc_.boundary_response(xb) - load_->w;
   for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
   return x;
 }

@@ -41,6 +41,7 @@ namespace symcontact {
 struct CondensedLoad {
   VectorXd r0;     ///< ∇E(0) on the free DOFs
   VectorXd g_hat;  ///< ĝ (B order)
+  VectorXd w;      ///< K_II⁻¹ r₀_I, zero on B (the interior's response to the loads)
   double f0 = 0.0;
 };
 CondensedLoad condense_load(ReducedProblem& bulk, const StaticCondensation& condensation);

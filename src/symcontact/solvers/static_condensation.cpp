@@ -262,4 +262,36 @@ VectorXd StaticCondensation::solve_interior(const VectorXd& r) const {
   return z;
 }
 
+VectorXd StaticCondensation::boundary_response(const VectorXd& x) const {
+  Impl& m = *impl_;
+  if (!m.factor) throw std::logic_error("StaticCondensation::boundary_response before compute()");
+  if (x.size() != m.n) throw std::invalid_argument("StaticCondensation::boundary_response: x has the wrong size");
+  const Index n = m.n, ni = n - static_cast<Index>(m.boundary.size());
+  // y = [0; L_BBᵀ x_B] in the factor's order (row k of the factor is DOF perm[k]).
+  VectorXd y = VectorXd::Zero(n);
+  const auto* super = static_cast<const CholmodIndex*>(m.factor->super);
+  const auto* pi = static_cast<const CholmodIndex*>(m.factor->pi);
+  const auto* px = static_cast<const CholmodIndex*>(m.factor->px);
+  const auto* s = static_cast<const CholmodIndex*>(m.factor->s);
+  const double* lx = static_cast<const double*>(m.factor->x);
+  for (size_t k = m.factor->nsuper; k-- > 0;) {
+    const Index k1 = super[k], k2 = super[k + 1];
+    if (k2 <= ni) break;  // B is last: the supernodes before hold interior columns only
+    const Index nsrow = pi[k + 1] - pi[k];
+    const CholmodIndex* rows = s + pi[k];
+    const double* xs = lx + px[k];
+    for (Index jj = 0; jj < k2 - k1; ++jj) {
+      const Index col = k1 + jj;
+      if (col < ni) continue;
+      double sum = 0.0;
+      for (Index ii = jj; ii < nsrow; ++ii) sum += xs[ii + jj * nsrow] * x[m.perm[rows[ii]]];
+      y[col] = sum;
+    }
+  }
+  m.triangular_solve(CHOLMOD_Lt, y);
+  VectorXd z = VectorXd::Zero(n);
+  for (Index k = 0; k < ni; ++k) z[m.perm[k]] = y[k];
+  return z;
+}
+
 }  // namespace symcontact

@@ -62,6 +62,11 @@ class StaticCondensation {
   const SparseMatrix& schur_lower() const;
   /// z with z_I = K_II⁻¹ r_I and z_B = 0 (r of size n; its B entries are ignored).
   VectorXd solve_interior(const VectorXd& r) const;
+  /// z with z_I = −K_II⁻¹ K_IB x_B and z_B = 0 (x of size n; only its B entries are read): the interior's
+  /// response to the boundary values, by ONE triangular solve instead of solve_interior()'s two. With the
+  /// factor of K̃ (B last), K_IB = L_II L_BIᵀ, so K_II⁻¹ K_IB x_B = L_II⁻ᵀ L_BIᵀ x_B, which the backward solve
+  /// Lᵀ z = [0; L_BBᵀ x_B] gives as −z_I (its z_B = x_B); L_BBᵀ x_B is read off the factor's last supernodes.
+  VectorXd boundary_response(const VectorXd& x) const;
   /// Number of nonzeros of the factor of K̃ (fill, for reports).
   double factor_nonzeros() const;
 

@@ -82,7 +82,9 @@ TEST(StaticCondensation, SchurComplementAndInteriorSolveMatchDenseAlgebra) {
     const MatrixXd s_ref = dense_schur(k, b);
     const MatrixXd s = MatrixXd(sc.schur_lower()).selfadjointView<Eigen::Lower>();
     EXPECT_LT((s - s_ref).cwiseAbs().maxCoeff(), 1e-12 * s_ref.cwiseAbs().maxCoeff());
-    if (shift == 0.0) EXPECT_LT((s * VectorXd::Ones(s.rows())).norm(), 1e-12 * s.norm());  // constants: S 1 = 0
+    if (shift == 0.0) {
+      EXPECT_LT((s * VectorXd::Ones(s.rows())).norm(), 1e-12 * s.norm());  // constants: S 1 = 0
+    }
 
     // z_I = K_II⁻¹ r_I, z_B = 0
     VectorXd r = VectorXd::LinSpaced(k.rows(), -1.0, 2.0).array().sin();
@@ -94,6 +96,16 @@ TEST(StaticCondensation, SchurComplementAndInteriorSolveMatchDenseAlgebra) {
       residual[i] = 0.0;  // the boundary rows of K z are not part of the interior system
     }
     EXPECT_LT(residual.lpNorm<Eigen::Infinity>(), 1e-12 * r.lpNorm<Eigen::Infinity>());
+
+    // The interior's response to boundary values, z_I = −K_II⁻¹ K_IB x_B (one backward solve), against
+    // solve_interior() of (K x_B)_I; the interior entries of x are not read.
+    VectorXd xb = VectorXd::Zero(k.rows()), x = VectorXd::LinSpaced(k.rows(), 3.0, -1.0).array().cos();
+    for (Index i : b) xb[i] = x[i];
+    const VectorXd response = sc.boundary_response(x);
+    const VectorXd reference = -sc.solve_interior(kd * xb);
+    EXPECT_LT((response - reference).lpNorm<Eigen::Infinity>(), 1e-12 * reference.lpNorm<Eigen::Infinity>());
+    for (Index i : b) EXPECT_EQ(response[i], 0.0);
+    EXPECT_GT(reference.lpNorm<Eigen::Infinity>(), 0.0);
   }
 }
 
@@ -240,8 +252,11 @@ TEST(CondensedProblem, MatchesTheFullProblemAndFiniteDifferences) {
   EXPECT_NEAR(cp.objective(y), full, 1e-12 * std::abs(full));
   std::vector<char> in_b(nf, 0);
   for (Index i : b_free) in_b[i] = 1;
-  for (Index i = 0; i < nf; ++i)
-    if (!in_b[i]) EXPECT_NEAR(g_full[i], 0.0, 1e-12 * g_full.lpNorm<Eigen::Infinity>());
+  for (Index i = 0; i < nf; ++i) {
+    if (!in_b[i]) {
+      EXPECT_NEAR(g_full[i], 0.0, 1e-12 * g_full.lpNorm<Eigen::Infinity>());
+    }
+  }
   VectorXd gy;
   cp.gradient(y, gy);
   VectorXd gs = VectorXd::Zero(n);
