@@ -22,11 +22,11 @@
 /// Steps: Mehrotra's predictor-corrector (Mehrotra, SIAM J. Optim. 2, 1992; for QP as in Nocedal & Wright
 /// Algorithm 16.4 and Gertz & Wright's OOQP, ACM TOMS 29, 2003): an affine step (σ = 0), σ = (μ_aff / μ)³, a
 /// corrector with r_c = x ∘ z + Δx_aff ∘ Δz_aff − σμ 1, both with the same factor; one step length for x and
-/// z (the quadratic couples them), the fraction to the boundary τ = max(0.99, 1 − μ/μ₀).
+/// z (the quadratic couples them), the fraction to the boundary τ = 1 − μ/μ₀ kept in [0.99, 1 − 1e-10].
 ///
 /// Stops when ‖r_d‖∞ ≤ tol · s_d, ‖r_p‖∞ ≤ tol · s_p and μ = xᵀz / m ≤ tol_μ · s_d · max(1, ‖x‖∞), with the
-/// scales s_d = max(1, ‖d‖∞) and s_p = max(1, ‖e‖∞) (the problem is expected to be scaled so that x and d are
-/// O(1), as DualCondensedProblem does); fails (success false, with the reason) after max_iterations, on a
+/// scales s_d = ‖d‖∞ (max diag W if d = 0) and s_p = ‖e‖∞ (1 if e = 0): relative, so that scaling W, d and z
+/// together changes nothing (x is expected to be O(1), as DualCondensedProblem's scaling makes it); fails (success false, with the reason) after max_iterations, on a
 /// factorisation that breaks down twice (the second with a diagonal shift of 1e-14 · max diag W), or on a
 /// non-finite iterate. Never reports a point that does not pass the test as success.
 
@@ -61,7 +61,7 @@ struct DenseQpResult {
 
 /// Solves the problem above. `W_lower`: m × m, lower triangle read; `G`: k × m (k may be 0); `e`: size k.
 /// `x0`, `z0` (both or neither; positive entries are used, others are lifted) and `beta0` start the iteration
-/// (a warm start); without them it starts at x = 1, z = max(1, ‖W 1 − d‖∞) 1, β = 0.
+/// (a warm start); without them it starts at x = 1, z = ‖W 1 − d‖∞ 1, β = 0.
 DenseQpResult solve_dense_qp(const AlignedMatrix& W_lower, const VectorXd& d, const MatrixXd& G, const VectorXd& e,
                              const DenseQpOptions& options, const VectorXd* x0 = nullptr, const VectorXd* z0 = nullptr,
                              const VectorXd* beta0 = nullptr);
