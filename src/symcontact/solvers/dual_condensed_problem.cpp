@@ -123,7 +123,7 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
   }
   std::vector<char> in_set(m_);
   for (Index i = 0; i < m_; ++i) in_set[i] = lambda_hat[i] > 1e-6 * lmax;
-  const MatrixXd Gd = MatrixXd(G_);
+  const MatrixXd& Gd = G_dense_;
   std::set<std::vector<char>> seen;
   VectorXd lam, alpha;
   for (int round = 0; round < kMaxRounds; ++round) {
