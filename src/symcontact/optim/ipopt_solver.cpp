@@ -476,6 +476,16 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
     set_default(*app, "file_print_level", std::min(12, std::max(5, options.print_level)));
   }
   set_default(*app, "linear_solver", std::string("mumps"));
+  if (problem.hessian_is_dense()) {
+    // A full Hessian block (the condensed problem, the dual on symmetric pairs): no fill to reduce and nothing
+    // for MUMPS's maximum-transversal permutation and scaling to find, yet its analysis runs them at every
+    // IPOPT call on the (n + m)-row KKT pattern. Without them and with plain AMD, measured on the inclined
+    // interface with Coulomb friction (52 IPOPT calls, 133 iterations): optimizer CPU −18 % at 8.4e4 DOFs
+    // (2.66 → 2.13 s), −21 % at 3.3e5 (11.8 → 9.5 s), the same iterations and |R_x/R_y| to 9 digits.
+    set_default(*app, "mumps_permuting_scaling", 0);
+    set_default(*app, "mumps_scaling", 0);
+    set_default(*app, "mumps_pivot_order", 0);
+  }
   set_default(*app, "mu_strategy", std::string("adaptive"));
   set_default(*app, "max_iter", options.max_iterations);
   set_default(*app, "tol", options.tolerance);
