@@ -29,7 +29,7 @@
 ///
 /// `inclined` solves the inclined interface with Coulomb friction mu = 0.2 (examples/inclined_2d,
 /// VALIDATION.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
-/// 0.025 0.0125 0.00625 0.003125) against the same floor (bench_inclined.hpp):
+/// 0.025 0.0125 0.00625 0.003125 0.0015625: 5.6e3 to 1.3e6 DOFs) against the same floor (bench_inclined.hpp):
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
 ///
@@ -311,7 +311,7 @@ int main(int argc, char** argv) {
   app.add_option("--h", opt.h,
                  "Hertz cases: fine mesh sizes near the contact point (default hertz2d 0.003 0.0015 0.00085 0.0006 "
                  "0.0004 0.00027, hertz2d-cylinders the same without the last, hertz3d 0.04 0.02 0.01 0.007 0.005, "
-                 "hertz3d-spheres 0.04 0.02 0.014); inclined: element sizes (default 0.025 0.0125 0.00625 0.003125); "
+                 "hertz3d-spheres 0.04 0.02 0.014); inclined: element sizes (default 0.025 0.0125 0.00625 0.003125 0.0015625); "
                  "hertz2d-freefem: sizes of the peers' mesh (default 0.005 0.0025 0.00125)")
       ->check(CLI::PositiveNumber);
   app.add_option("--examples", opt.examples,

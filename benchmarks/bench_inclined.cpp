@@ -27,7 +27,7 @@ std::vector<ResultTable::Column> columns() {
 
 }  // namespace
 
-std::vector<double> default_inclined_sizes() { return {0.025, 0.0125, 0.00625, 0.003125}; }
+std::vector<double> default_inclined_sizes() { return {0.025, 0.0125, 0.00625, 0.003125, 0.0015625}; }
 
 void run_inclined_sweep(const InclinedBenchOptions& opt, const MachineInfo& machine) {
   const double exact = inclined_exact_ratio();
