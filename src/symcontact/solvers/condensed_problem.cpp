@@ -98,13 +98,23 @@ VectorXd CondensedProblem::restrict(const VectorXd& x) const {
   return y;
 }
 
-VectorXd CondensedProblem::expand(const VectorXd& y) const {
-  const auto& B = sc_.boundary();
-  VectorXd xb = VectorXd::Zero(bulk_.num_free());
+VectorXd expand_condensed(const StaticCondensation& sc, const CondensedLoad& load, const VectorXd& y) {
+  const auto& B = sc.boundary();
+  if (y.size() != static_cast<Index>(B.size()) || load.w.size() != sc.size())
+    throw std::invalid_argument("expand_condensed: sizes of y, the load and the condensation differ");
+  VectorXd xb = VectorXd::Zero(sc.size());
   for (std::size_t k = 0; k < B.size(); ++k) xb[B[k]] = y[k];
   // x_I = −K_II⁻¹ (r₀_I + K_IB x_B) = −w_I − K_II⁻¹ K_IB x_B: the load part once per load (CondensedLoad::w),
   // the boundary part by one backward solve (StaticCondensation::boundary_response()).
-  VectorXd x = sc_.boundary_response(xb) - load_->w;
+  VectorXd x = sc.boundary_response(xb) - load.w;
+  for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
+  return x;
+}
+
+VectorXd CondensedProblem::expand(const VectorXd& y) const { return expand_condensed(sc_, *load_, y); }
+
+VectorXd CondensedProblem::with_boundary(VectorXd x, const VectorXd& y) const {
+  const auto& B = sc_.boundary();
   for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
   return x;
 }

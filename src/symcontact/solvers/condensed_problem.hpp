@@ -46,6 +46,11 @@ struct CondensedLoad {
 };
 CondensedLoad condense_load(ReducedProblem& bulk, const StaticCondensation& condensation);
 
+/// The free DOFs x with x_B = y and x_I = x_I(y) = −K_II⁻¹K_IB y − w (one backward solve with the factor,
+/// StaticCondensation::boundary_response()): CondensedProblem::expand(), and the completion of an interior
+/// left out of date (ContactSolveOptions::lazy_interior).
+VectorXd expand_condensed(const StaticCondensation& condensation, const CondensedLoad& load, const VectorXd& y);
+
 class CondensedProblem : public ConstrainedProblem {
  public:
   /// `bulk` is the ReducedProblem of the quadratic energy alone (for r₀, E₀ and the DOF maps);
@@ -70,6 +75,8 @@ class CondensedProblem : public ConstrainedProblem {
   const StaticCondensation& condensation() const { return sc_; }
   VectorXd restrict(const VectorXd& x) const;  ///< y = x_B
   VectorXd expand(const VectorXd& y) const;    ///< x with x_B = y and x_I = x_I(y) (one interior solve)
+  /// x with its B entries replaced by y, the interior left as it is (no solve).
+  VectorXd with_boundary(VectorXd x, const VectorXd& y) const;
 
  private:
   const VectorXd& full_dofs(const VectorXd& y);  ///< u for the extras: x_reference with x_B = y, expanded

@@ -188,6 +188,21 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
                                             problem.constraint_offset(), x);
 }
 
+/// Whether the condensed set holds every free DOF of the contact surfaces (rigid ones have none): then the
+/// search, the friction points and the surface pressures read nothing outside B.
+bool surfaces_condensed(const ContactSet& contacts, const DofMap& dofs, const std::vector<Index>& free_index,
+                        const std::vector<Index>& b_position) {
+  for (const ContactSurface& s : contacts.surfaces) {
+    if (s.is_rigid()) continue;
+    for (Index node : s.nodes)
+      for (int i = 0; i < s.dim; ++i) {
+        const Index f = free_index[dofs.dof(s.body, node, i)];
+        if (f >= 0 && b_position[f] < 0) return false;
+      }
+  }
+  return true;
+}
+
 /// Debug log of one geometry iteration: where the displacement changed most, and which constraint rows
 /// (family, slave surface node) came and went since the previous linearisation — what a fixed point that
 /// wanders or cycles is doing.
@@ -295,6 +310,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   // geometry_tolerance: its answer is an intermediate.
   const bool inexact = options.loose_geometry_tolerance > options.geometry_tolerance;
   const double stop_tolerance = inexact ? options.loose_geometry_tolerance : options.geometry_tolerance;
+  bool lazy = false;  ///< the current iterate's interior is out of date (ContactSolveOptions::lazy_interior)
   for (int it = 1;; ++it) {
     {
       ScopedPhase t(rep.times, "search");
@@ -365,6 +381,10 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
                                    log, rep, condensed_load);
     }
     rep.num_condensed = condensed ? condensed->num_variables() : 0;
+    // ContactSolveOptions::lazy_interior: this iteration updates B only.
+    lazy = options.lazy_interior && options.workspace && condensed &&
+           surfaces_condensed(contacts, dofs, problem.free_index(), workspace->condensation->boundary_position());
+    if (lazy) workspace->interior_pending = true;  // from here on until an iteration expands (a failure completes u)
     ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed) : problem;
     auto to_target = [&](const VectorXd& xf) { return condensed ? condensed->restrict(xf) : xf; };
     auto from_target = [&](const VectorXd& xt) { return condensed ? condensed->expand(xt) : xt; };
@@ -538,7 +558,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     }
     if (condensed) {
       ScopedPhase t(rep.times, "condensation");
-      res.x = condensed->expand(res.x);
+      res.x = lazy ? condensed->with_boundary(x, res.x) : condensed->expand(res.x);
     }
     const double change =
         (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
@@ -553,7 +573,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
                   std::to_string(pr.active) + " active constraints");
       }
       ScopedPhase t(rep.times, "condensation");
-      res.x = from_target(xt);
+      res.x = lazy ? condensed->with_boundary(res.x, xt) : from_target(xt);
     }
     {
       // With the active set closed exactly, the fixed point can have a growing mode that the barrier
@@ -632,6 +652,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     }
   }
   u = problem.expand(x);
+  workspace->interior_pending = lazy;
+  rep.interior_deferred = lazy;
   rep.friction = friction_terms;
   // Contact forces: Aᵀμ (+ friction). On free DOFs the equilibrium residual ∇E(u) of the bodies' energy
   // equals Aᵀμ + the friction force at the KKT point and carries no optimiser tolerance (it balances the
@@ -673,14 +695,33 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
 ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                  const Logger& log, const FrictionState* friction) {
+  // A solve that is not lazy starts from a whole u; one that fails leaves a whole last iterate.
+  if (options.workspace && !options.lazy_interior) complete_interior(energy, fixed, u, *options.workspace);
   // IPOPT and the polish back away from states the energy cannot be evaluated at; one left over (the
   // start point of a step) is a failed solve, not an internal error.
   try {
     return solve_contact_impl(energy, fixed, contacts, dofs, u, options, log, friction);
   } catch (const EvaluationError& e) {
+    if (options.workspace) complete_interior(energy, fixed, u, *options.workspace);
     throw SolveError(std::string("the contact solve reached a state the energy cannot be evaluated at: ") + e.what() +
                      " — use smaller load steps");
+  } catch (const SolveError&) {
+    if (options.workspace) complete_interior(energy, fixed, u, *options.workspace);
+    throw;
   }
+}
+
+void complete_interior(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u, ContactWorkspace& workspace) {
+  if (!workspace.interior_pending) return;
+  workspace.interior_pending = false;
+  if (!workspace.condensation || !workspace.load)
+    throw std::logic_error("complete_interior: the workspace holds no condensation to complete u with");
+  const ReducedProblem bulk(energy, fixed, u.size());
+  const VectorXd x = bulk.restrict(u);
+  const auto& B = workspace.condensation->boundary();
+  VectorXd y(static_cast<Index>(B.size()));
+  for (std::size_t k = 0; k < B.size(); ++k) y[k] = x[B[k]];
+  u = bulk.expand(expand_condensed(*workspace.condensation, *workspace.load, y));
 }
 
 }  // namespace symcontact

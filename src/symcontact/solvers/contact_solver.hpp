@@ -58,6 +58,8 @@ struct ContactWorkspace {
   /// friction it was rejected in every solve (the point it reaches violates a constraint outside its set,
   /// and for a non-quadratic energy the set does not grow), at more than half the contact time.
   bool closing_polish_rejected = false;
+  /// The last solve left u's interior out of date (ContactSolveOptions::lazy_interior): complete_interior().
+  bool interior_pending = false;
 };
 
 struct ContactSolveOptions {
@@ -118,7 +120,20 @@ struct ContactSolveOptions {
   /// workspace (the Coulomb iterations of a load step): the condensation's load part is then reused without
   /// evaluating ∇E(0) to compare (an assembly over the whole mesh per solve).
   bool same_loads = false;
+  /// Leave the interior DOFs of u out of date, where the solve is condensed onto a set B that holds every free
+  /// DOF of the contact surfaces: on exit u's B entries (the surfaces among them) are the solution's, the others
+  /// as they were, and the workspace records it (ContactWorkspace::interior_pending); complete_interior() makes
+  /// u whole (one backward solve). Each geometry iteration and each solve otherwise expands the interior by one
+  /// backward solve with the factor, which nothing between two Tresca solves of a Coulomb fixed point reads
+  /// (pressures and slips live on the surfaces, the next search too). Its fixed point's change is then that of
+  /// B (the interior does not move). Needs `workspace`.
+  bool lazy_interior = false;
 };
+
+/// Makes u whole after solves with ContactSolveOptions::lazy_interior: the interior DOFs from u's condensed
+/// entries and the workspace's factor and load part (those of the last solve), x_I = −K_II⁻¹(r₀_I + K_IB x_B).
+/// Does nothing when the workspace has nothing pending. `energy` and `fixed` must be those of the last solve.
+void complete_interior(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u, ContactWorkspace& workspace);
 
 /// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).
 struct FrictionState {
@@ -144,6 +159,7 @@ struct ContactSolveReport {
   Index num_condensed = 0;                  ///< DOFs IPOPT worked on when condensed (0: not condensed)
   int condensation_factorisations = 0;      ///< factorisations for the condensation in this call
   int dual_solves = 0;                      ///< geometry iterations solved through the dual (ContactSolveOptions::dual)
+  bool interior_deferred = false;           ///< u's interior was left out of date (ContactSolveOptions::lazy_interior)
   PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
   ContactLinearization linearization;       ///< at the last geometry iterate
   VectorXd multipliers;                     ///< μ of the last solve (one per row)

@@ -5,6 +5,7 @@
 
 #include "symcontact/contact/surface_tractions.hpp"
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/contact_solver.hpp"
 
 namespace symcontact {
 
@@ -94,10 +95,30 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
   const bool inexact = any_coulomb && energy.hessian_is_constant() && options.inner_tolerance_factor > 0.0;
   bool same_loads = false;
+  // Between two solves only the surfaces are read (pressures, slips, the next search): with a condensed
+  // workspace each solve leaves the interior out of date (ContactSolveOptions::lazy_interior) and u is made
+  // whole once, when this load step ends — also when it throws (the last iterate is kept for inspection).
+  const std::shared_ptr<ContactWorkspace> workspace = options.contact.workspace;
+  struct CompleteOnExit {
+    const EnergyTerm& energy;
+    const FixedDofs& fixed;
+    VectorXd& u;
+    ContactWorkspace* ws;
+    void now() {
+      if (ws) complete_interior(energy, fixed, u, *ws);
+    }
+    ~CompleteOnExit() {  // a throw in flight: complete what can be, never throw from here
+      try {
+        now();
+      } catch (...) {
+      }
+    }
+  } complete_on_exit{energy, fixed, u, workspace.get()};
   auto solve = [&](double threshold_change) {
     ContactSolveOptions o = options.contact;
     if (inexact) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
     o.same_loads = same_loads;
+    o.lazy_interior = options.lazy_interior && workspace != nullptr && energy.hessian_is_constant();
     ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
     same_loads = true;  // the later solves of this call: the same load step, whose load part is now known
     rep.geometry_iterations += r.geometry_iterations;
@@ -121,7 +142,10 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
   } else {
     solve(1.0);
   }
-  if (!any_coulomb) return rep;
+  if (!any_coulomb) {
+    complete_on_exit.now();
+    return rep;
+  }
   std::vector<Eigen::VectorXd> r_prev;  // r_{k−1}, per pair (empty before the first Tresca solve)
   double omega = 1.0;
   double scale = 1.0;  ///< of the next solve's loose geometry tolerance: the last ‖r_k‖∞ / ‖τ_k‖∞ (1 before)
@@ -187,6 +211,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     rep.coulomb_iterations = k;
     solve(scale);
   }
+  complete_on_exit.now();
   return rep;
 }
 

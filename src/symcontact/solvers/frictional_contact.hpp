@@ -53,6 +53,10 @@ struct FrictionalOptions {
   /// and its tolerances are the same. (Loads other than Dirichlet values are assumed to follow the same
   /// proportion; where they do not, the start is merely worse.)
   bool extrapolate = true;
+  /// The solves of a load step leave u's interior out of date (ContactSolveOptions::lazy_interior; needs
+  /// contact.workspace and linear elasticity) and u is made whole once, at the end of the step: one backward
+  /// solve per load step instead of one per solve. Off only to compare.
+  bool lazy_interior = true;
 };
 
 struct FrictionalReport {
