@@ -91,32 +91,34 @@ CondensedProblem::CondensedProblem(ReducedProblem& bulk, const StaticCondensatio
   }
 }
 
-VectorXd CondensedProblem::restrict(const VectorXd& x) const {
-  const auto& B = sc_.boundary();
+VectorXd boundary_values(const StaticCondensation& sc, const VectorXd& x) {
+  const auto& B = sc.boundary();
   VectorXd y(static_cast<Index>(B.size()));
   for (std::size_t k = 0; k < B.size(); ++k) y[k] = x[B[k]];
   return y;
 }
 
-VectorXd expand_condensed(const StaticCondensation& sc, const CondensedLoad& load, const VectorXd& y) {
+VectorXd with_boundary_values(const StaticCondensation& sc, VectorXd x, const VectorXd& y) {
   const auto& B = sc.boundary();
-  if (y.size() != static_cast<Index>(B.size()) || load.w.size() != sc.size())
-    throw std::invalid_argument("expand_condensed: sizes of y, the load and the condensation differ");
-  VectorXd xb = VectorXd::Zero(sc.size());
-  for (std::size_t k = 0; k < B.size(); ++k) xb[B[k]] = y[k];
-  // x_I = −K_II⁻¹ (r₀_I + K_IB x_B) = −w_I − K_II⁻¹ K_IB x_B: the load part once per load (CondensedLoad::w),
-  // the boundary part by one backward solve (StaticCondensation::boundary_response()).
-  VectorXd x = sc.boundary_response(xb) - load.w;
   for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
   return x;
 }
 
+VectorXd expand_condensed(const StaticCondensation& sc, const CondensedLoad& load, const VectorXd& y) {
+  if (y.size() != static_cast<Index>(sc.boundary().size()) || load.w.size() != sc.size())
+    throw std::invalid_argument("expand_condensed: sizes of y, the load and the condensation differ");
+  const VectorXd xb = with_boundary_values(sc, VectorXd::Zero(sc.size()), y);
+  // x_I = −K_II⁻¹ (r₀_I + K_IB x_B) = −w_I − K_II⁻¹ K_IB x_B: the load part once per load (CondensedLoad::w),
+  // the boundary part by one backward solve (StaticCondensation::boundary_response()).
+  return with_boundary_values(sc, sc.boundary_response(xb) - load.w, y);
+}
+
+VectorXd CondensedProblem::restrict(const VectorXd& x) const { return boundary_values(sc_, x); }
+
 VectorXd CondensedProblem::expand(const VectorXd& y) const { return expand_condensed(sc_, *load_, y); }
 
 VectorXd CondensedProblem::with_boundary(VectorXd x, const VectorXd& y) const {
-  const auto& B = sc_.boundary();
-  for (std::size_t k = 0; k < B.size(); ++k) x[B[k]] = y[k];
-  return x;
+  return with_boundary_values(sc_, std::move(x), y);
 }
 
 const VectorXd& CondensedProblem::full_dofs(const VectorXd& y) {

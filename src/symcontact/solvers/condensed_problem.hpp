@@ -46,6 +46,10 @@ struct CondensedLoad {
 };
 CondensedLoad condense_load(ReducedProblem& bulk, const StaticCondensation& condensation);
 
+/// x_B: the entries of the free DOFs x at B, in B's order (CondensedProblem::restrict()).
+VectorXd boundary_values(const StaticCondensation& condensation, const VectorXd& x);
+/// x with x_B = y, the other entries as they are (CondensedProblem::with_boundary()).
+VectorXd with_boundary_values(const StaticCondensation& condensation, VectorXd x, const VectorXd& y);
 /// The free DOFs x with x_B = y and x_I = x_I(y) = −K_II⁻¹K_IB y − w (one backward solve with the factor,
 /// StaticCondensation::boundary_response()): CondensedProblem::expand(), and the completion of an interior
 /// left out of date (ContactSolveOptions::lazy_interior).

@@ -696,17 +696,21 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                  const Logger& log, const FrictionState* friction) {
   // A solve that is not lazy starts from a whole u; one that fails leaves a whole last iterate.
-  if (options.workspace && !options.lazy_interior) complete_interior(energy, fixed, u, *options.workspace);
+  auto complete = [&] {
+    if (options.workspace) complete_interior(energy, fixed, u, *options.workspace);
+  };
+  if (!options.lazy_interior) complete();
   // IPOPT and the polish back away from states the energy cannot be evaluated at; one left over (the
   // start point of a step) is a failed solve, not an internal error.
   try {
-    return solve_contact_impl(energy, fixed, contacts, dofs, u, options, log, friction);
-  } catch (const EvaluationError& e) {
-    if (options.workspace) complete_interior(energy, fixed, u, *options.workspace);
-    throw SolveError(std::string("the contact solve reached a state the energy cannot be evaluated at: ") + e.what() +
-                     " — use smaller load steps");
+    try {
+      return solve_contact_impl(energy, fixed, contacts, dofs, u, options, log, friction);
+    } catch (const EvaluationError& e) {
+      throw SolveError(std::string("the contact solve reached a state the energy cannot be evaluated at: ") +
+                       e.what() + " — use smaller load steps");
+    }
   } catch (const SolveError&) {
-    if (options.workspace) complete_interior(energy, fixed, u, *options.workspace);
+    complete();
     throw;
   }
 }
@@ -717,10 +721,7 @@ void complete_interior(const EnergyTerm& energy, const FixedDofs& fixed, VectorX
   if (!workspace.condensation || !workspace.load)
     throw std::logic_error("complete_interior: the workspace holds no condensation to complete u with");
   const ReducedProblem bulk(energy, fixed, u.size());
-  const VectorXd x = bulk.restrict(u);
-  const auto& B = workspace.condensation->boundary();
-  VectorXd y(static_cast<Index>(B.size()));
-  for (std::size_t k = 0; k < B.size(); ++k) y[k] = x[B[k]];
+  const VectorXd y = boundary_values(*workspace.condensation, bulk.restrict(u));
   u = bulk.expand(expand_condensed(*workspace.condensation, *workspace.load, y));
 }
 

@@ -118,7 +118,7 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
     ContactSolveOptions o = options.contact;
     if (inexact) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
     o.same_loads = same_loads;
-    o.lazy_interior = options.lazy_interior && workspace != nullptr && energy.hessian_is_constant();
+    o.lazy_interior = options.lazy_interior;  // solve_contact applies it where it condenses (workspace, linear elasticity)
     ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
     same_loads = true;  // the later solves of this call: the same load step, whose load part is now known
     rep.geometry_iterations += r.geometry_iterations;
