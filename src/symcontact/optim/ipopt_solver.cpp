@@ -76,7 +76,7 @@ struct AdapterSetup {
   const VectorXd* multipliers0 = nullptr;  ///< μ ≥ 0 convention; used when warm starting
   const VectorXd* bound_multipliers0 = nullptr;  ///< z ≥ 0 of the lower bounds; used when warm starting
   SparseMatrix hessian0;                   ///< lower triangle at x0, compressed: fixes the pattern
-  double objective_scaling = 1.0;
+  ProblemScales scales;                    ///< g_ref and ℓ (see the header)
 };
 
 /// The TNLP: translation only. IPOPT sees n free variables and m constraints g(x) = A x + b ∈ [0, ∞).
@@ -125,18 +125,21 @@ class ContactTNLP final : public Ipopt::TNLP {
     return true;
   }
 
-  bool get_scaling_parameters(IpNumber& obj_scaling, bool& use_x_scaling, IpIndex /*n*/,
-                              IpNumber* /*x_scaling*/, bool& use_g_scaling, IpIndex m,
+  bool get_scaling_parameters(IpNumber& obj_scaling, bool& use_x_scaling, IpIndex n,
+                              IpNumber* x_scaling, bool& use_g_scaling, IpIndex m,
                               IpNumber* g_scaling) override {
-    obj_scaling = setup_.objective_scaling;
-    use_x_scaling = false;
+    // x̃ = x / ℓ, f̃ = f / (g_ref ℓ), g̃_i = g_i / (ℓ max_j |A_ij|): every scaled quantity is dimensionless.
+    const double ell = setup_.scales.length;
+    obj_scaling = setup_.scales.objective_scaling();
+    use_x_scaling = true;
+    std::fill(x_scaling, x_scaling + n, 1.0 / ell);
     use_g_scaling = true;
     std::fill(g_scaling, g_scaling + m, 0.0);
     for (size_t k = 0; k < jac_rows_.size(); ++k) {
       double& s = g_scaling[jac_rows_[k]];
       s = std::max(s, std::abs(jac_values_[k]));
     }
-    for (IpIndex i = 0; i < m; ++i) g_scaling[i] = g_scaling[i] > 0.0 ? 1.0 / g_scaling[i] : 1.0;
+    for (IpIndex i = 0; i < m; ++i) g_scaling[i] = g_scaling[i] > 0.0 ? 1.0 / (ell * g_scaling[i]) : 1.0 / ell;
     return true;
   }
 
@@ -390,15 +393,31 @@ void set_default(Ipopt::IpoptApplication& app, const std::string& name, int v) {
                            std::to_string(v));
 }
 
-/// g_ref = max(‖∇f(x0)‖∞, max|∇²f(x0)|·‖x0‖∞); see the header.
-double objective_scaling(const VectorXd& x0, const VectorXd& g0, const SparseMatrix& H0) {
+/// min over the non-empty rows i of max_j |A_ij| (1 without any).
+double smallest_row_scale(const SparseMatrix& A) {
+  VectorXd row_max = VectorXd::Zero(A.rows());
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(A, j); it; ++it)
+      row_max[it.row()] = std::max(row_max[it.row()], std::abs(it.value()));
+  double smallest = std::numeric_limits<double>::infinity();
+  for (Index i = 0; i < row_max.size(); ++i)
+    if (row_max[i] > 0.0) smallest = std::min(smallest, row_max[i]);
+  return std::isfinite(smallest) ? smallest : 1.0;
+}
+
+/// g_ref = max(‖∇f(x0)‖∞, h·‖x0‖∞) and ℓ = g_ref / h, h = max|∇²f(x0)|; see the header.
+ProblemScales problem_scales(const VectorXd& x0, const VectorXd& g0, const SparseMatrix& H0) {
   double h_max = 0.0;
   for (Eigen::Index k = 0; k < H0.nonZeros(); ++k) h_max = std::max(h_max, std::abs(H0.valuePtr()[k]));
   const double g_inf = g0.size() ? g0.lpNorm<Eigen::Infinity>() : 0.0;
   const double x_inf = x0.size() ? x0.lpNorm<Eigen::Infinity>() : 0.0;
+  ProblemScales s;
   const double g_ref = std::max(g_inf, h_max * x_inf);
-  if (!(g_ref > 0.0) || !std::isfinite(g_ref)) return 1.0;
-  return 1.0 / g_ref;
+  if (!(g_ref > 0.0) || !std::isfinite(g_ref)) return s;
+  s.force = g_ref;
+  const double ell = g_ref / h_max;
+  if (ell > 0.0 && std::isfinite(ell)) s.length = ell;
+  return s;
 }
 
 }  // namespace
@@ -455,10 +474,10 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
     setup.hessian0.makeCompressed();
     if (setup.hessian0.rows() != n || setup.hessian0.cols() != n || g0.size() != n)
       throw std::invalid_argument("solve_with_ipopt: gradient/Hessian at x0 do not have the problem size");
-    setup.objective_scaling = objective_scaling(x0, g0, setup.hessian0);
+    setup.scales = problem_scales(x0, g0, setup.hessian0);
   }
-  result.objective_scaling = setup.objective_scaling;
-  const double s_f = setup.objective_scaling;
+  result.scales = setup.scales;
+  const double g_ref = setup.scales.force, e_ref = setup.scales.force * setup.scales.length;
 
   // Console output only when asked for: no console journal at all at print level 0, so not even
   // IPOPT's messages about rejected options reach stdout.
@@ -490,11 +509,17 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   set_default(*app, "max_iter", options.max_iterations);
   set_default(*app, "tol", options.tolerance);
   // Absolute checks on the unscaled problem, rescaled to mean what IPOPT's defaults (1, 1e-4, 1e10,
-  // 1e-2) mean on a problem with a unit gradient (unscaled dual and complementarity = scaled / s_f).
-  set_default(*app, "dual_inf_tol", 1.0 / s_f);
-  set_default(*app, "compl_inf_tol", 1e-4 / s_f);
-  set_default(*app, "acceptable_dual_inf_tol", 1e10 / s_f);
-  set_default(*app, "acceptable_compl_inf_tol", 1e-2 / s_f);
+  // 1e-2) mean on the dimensionless one: the unscaled dual infeasibility is a force (× g_ref), the
+  // unscaled complementarity g_i λ_i an energy (× g_ref ℓ).
+  set_default(*app, "dual_inf_tol", 1.0 * g_ref);
+  set_default(*app, "compl_inf_tol", 1e-4 * e_ref);
+  set_default(*app, "acceptable_dual_inf_tol", 1e10 * g_ref);
+  set_default(*app, "acceptable_compl_inf_tol", 1e-2 * e_ref);
+  // The unscaled constraint violation: row i in units of ℓ max_j |A_ij|; the smallest row's unit makes every
+  // row at least as strict as IPOPT's 1e-4 (1e-2 acceptable) on the dimensionless problem.
+  const double c_ref = setup.scales.length * smallest_row_scale(A);
+  set_default(*app, "constr_viol_tol", 1e-4 * c_ref);
+  set_default(*app, "acceptable_constr_viol_tol", 1e-2 * c_ref);
   // Acceptable termination: after 10 iterations stuck within max(tol, min(1e-6, 1e4·tol)).
   set_default(*app, "acceptable_tol", std::max(options.tolerance, std::min(1e-6, 1e4 * options.tolerance)));
   set_default(*app, "acceptable_iter", 10);

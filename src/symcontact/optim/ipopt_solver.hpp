@@ -19,22 +19,22 @@
 /// - Hessian of the Lagrangian = obj_factor · ∇²f (the constraints are linear); its sparsity is the
 ///   pattern of hessian_lower() at x0, fixed for the whole solve.
 ///
-/// Scaling (IPOPT "user-scaling"; why: IPOPT's tolerances are absolute numbers on the scaled problem
-/// and its default gradient-based scaling only ever scales DOWN, so an elastic energy in SI units with
-/// a 1e-8 gradient would be declared converged at x0, and one with a 1e+11 gradient could never
-/// reach tol = 1e-10):
-/// - objective: s_f = 1 / g_ref with g_ref = max(‖∇f(x0)‖∞, max|∇²f(x0)|·‖x0‖∞) (s_f = 1 when g_ref
-///   is 0 or not finite). For the usual cold start x0 = 0 this is exactly "the scaled gradient at x0
-///   has max-norm 1"; the Hessian term keeps the scale physical when x0 is (nearly) a minimiser
-///   (a warm start), where ∇f(x0) ≈ 0 would otherwise blow the scale up.
-///   `tolerance` is therefore relative to the force scale g_ref. IPOPT's extra absolute checks on the
-///   unscaled problem (dual_inf_tol, compl_inf_tol and their "acceptable" variants) are set to
-///   IPOPT's defaults divided by s_f so that they mean on our problem what they mean on a
-///   unit-gradient one.
-/// - constraints: row i is multiplied by 1 / max_j |A_ij| (1 for an empty row), so scaled constraint
-///   values are in the units of x whatever the units of A (weak, area-weighted gaps).
-/// - variables: not scaled.
-/// The IPOPT option "obj_scaling_factor" given by the user multiplies s_f (IPOPT's rule).
+/// Scaling (IPOPT "user-scaling"). IPOPT's tolerances are absolute numbers on the scaled problem, so the
+/// scaled problem is made dimensionless: then `tolerance` means the same in any consistent system of units
+/// (m–N–Pa or mm–N–MPa give the same iterates to round-off), and neither a 1e-8 nor a 1e+11 gradient
+/// (SI units) is declared converged at x0 or kept from converging. From the problem at x0:
+/// - a force scale g_ref = max(‖∇f(x0)‖∞, h ‖x0‖∞), h = max|∇²f(x0)| (a stiffness): for the usual cold start
+///   x0 = 0 the load, for a warm start near a minimiser (∇f(x0) ≈ 0) the internal force of x0;
+/// - a length scale ℓ = g_ref / h: the displacement that load causes (cold start), ‖x0‖∞ (warm start);
+///   (g_ref = ℓ = 1 when g_ref is 0 or not finite; ℓ = 1 when h is);
+/// - variables x̃ = x / ℓ; objective f̃ = f / (g_ref ℓ), so that ∇_x̃ f̃ = ∇f / g_ref and ∇²_x̃ f̃ = ∇²f / h;
+///   constraint row i divided by ℓ max_j |A_ij| (1/ℓ for an empty row), so that scaled gaps are in units
+///   of ℓ whatever the units of A (weak, area-weighted gaps).
+/// `tolerance` is therefore relative to g_ref for the stationarity and to ℓ (times g_ref) for the gaps and
+/// the complementarity. IPOPT's extra absolute checks on the unscaled problem (dual_inf_tol,
+/// compl_inf_tol, constr_viol_tol and their "acceptable" variants) are set to IPOPT's defaults times the
+/// same scales, so that they mean on our problem what they mean on a dimensionless one.
+/// The IPOPT option "obj_scaling_factor" given by the user multiplies 1 / (g_ref ℓ) (IPOPT's rule).
 ///
 /// Errors
 /// - f, ∇f or ∇²f throwing EvaluationError makes the callback return false: IPOPT then shortens the
@@ -52,6 +52,13 @@
 #include "symcontact/optim/constrained_problem.hpp"
 
 namespace symcontact {
+
+/// The problem's own scales at x0 (see the file comment).
+struct ProblemScales {
+  double force = 1.0;   ///< g_ref
+  double length = 1.0;  ///< ℓ
+  double objective_scaling() const { return 1.0 / (force * length); }
+};
 
 struct IpoptOptions {
   double tolerance = 1e-10;  ///< IPOPT "tol" on the scaled problem (relative to g_ref, see above)
@@ -85,7 +92,7 @@ struct IpoptResult {
   VectorXd bound_multipliers;
   double seconds = 0.0;               ///< wall time inside IPOPT (including callbacks)
   double seconds_in_callbacks = 0.0;  ///< wall time spent evaluating f, ∇f, ∇²f, c
-  double objective_scaling = 1.0;     ///< s_f used (see the file comment)
+  ProblemScales scales;               ///< the scaling used (see the file comment)
 };
 
 /// Solves min f(x) s.t. A x + b ≥ 0 from x0 (size problem.num_variables()). `multipliers0` (size m,

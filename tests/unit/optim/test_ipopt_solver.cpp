@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstdio>
@@ -153,8 +155,34 @@ TEST(IpoptSolver, UnconstrainedQuadratic) {
   EXPECT_GE(r.iterations, 1);
   EXPECT_GE(r.seconds, r.seconds_in_callbacks);
   EXPECT_GE(r.seconds_in_callbacks, 0.0);
-  EXPECT_DOUBLE_EQ(r.objective_scaling, 1.0 / q.lpNorm<Eigen::Infinity>());  // ∇f(0) = −q
+  // ∇f(0) = −q: g_ref = ‖q‖∞, ℓ = g_ref / max|Q| (the lower triangle holds the largest entry: Q is symmetric).
+  EXPECT_DOUBLE_EQ(r.scales.force, q.lpNorm<Eigen::Infinity>());
+  EXPECT_DOUBLE_EQ(r.scales.length, q.lpNorm<Eigen::Infinity>() / Q.cwiseAbs().maxCoeff());
   std::printf("[ipopt] unconstrained QP: %d iterations\n", r.iterations);
+}
+
+// 1b. The same constrained problem in other units (x' = L x, f' = F L f, rows × c): the same iterates, so the
+// same iterations and x'/L = x to round-off. Fails when any tolerance is absolute in the units of x, of f or
+// of the constraints.
+TEST(IpoptSolver, ChangeOfUnitsChangesNothing) {
+  const MatrixXd Q = spd5();
+  const VectorXd q = rhs5();
+  MatrixXd A(2, 5);
+  A << 1.0, 0.5, 0.0, -0.2, 0.0,  //
+      0.0, 0.3, -1.0, 0.0, 0.4;
+  const VectorXd b = VectorXd::Constant(2, -0.05);
+  QuadraticProblem reference(Q, q, A, b);
+  const IpoptResult r0 = solve_with_ipopt(reference, VectorXd::Zero(5), IpoptOptions{});
+  ASSERT_TRUE(r0.success) << r0.status_text;
+  ASSERT_GT(r0.multipliers.maxCoeff(), 0.0);  // a constraint is active
+  for (const auto& [L, F, c] : {std::tuple{1e3, 1.0, 1e6}, std::tuple{1e-4, 1e5, 1e-8}}) {
+    QuadraticProblem scaled(F / L * Q, F * q, c / L * A, c * b);
+    const IpoptResult r = solve_with_ipopt(scaled, VectorXd::Zero(5), IpoptOptions{});
+    ASSERT_TRUE(r.success) << r.status_text;
+    EXPECT_EQ(r.iterations, r0.iterations) << "L = " << L;
+    EXPECT_LE((r.x / L - r0.x).norm(), 1e-10 * r0.x.norm()) << "L = " << L;
+    EXPECT_LE((r.multipliers * c / (F * L) - r0.multipliers).norm(), 1e-8 * r0.multipliers.norm()) << "L = " << L;
+  }
 }
 
 // 2. Projection onto the positive orthant: x = max(p, 0), μ = max(−p, 0).
@@ -166,8 +194,11 @@ TEST(IpoptSolver, ProjectionQpMultipliersHaveContactSign) {
   ASSERT_TRUE(r.success) << r.status_text;
   const VectorXd x_expected = p.cwiseMax(0.0);
   const VectorXd mu_expected = (-p).cwiseMax(0.0);
+  // The interior point stops with x_i μ_i at tol relative to the problem's scales (the header): the active x_i
+  // are off by about 1e-9 of the displacement scale ℓ = ‖p‖∞ / max|Q| = 4.
+  EXPECT_DOUBLE_EQ(r.scales.length, 4.0);
   for (Index i = 0; i < 6; ++i) {
-    EXPECT_NEAR(r.x(i), x_expected(i), 1e-9) << i;
+    EXPECT_NEAR(r.x(i), x_expected(i), 1e-9 * r.scales.length) << i;
     EXPECT_NEAR(r.multipliers(i), mu_expected(i), 1e-7) << i;
   }
   EXPECT_LE((r.constraint_values - r.x).norm(), 1e-14);  // c(x) = x here
