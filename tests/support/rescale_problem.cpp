@@ -1,0 +1,136 @@
+#include "support/rescale_problem.hpp"
+
+#include <gmsh.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include <toml++/toml.h>
+
+namespace symcontact::testing {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Multiplies the number, or every number of the array, at `key` of `t` (absent: nothing).
+void scale_key(toml::table& t, const std::string& key, double factor) {
+  toml::node* n = t.get(key);
+  if (!n || factor == 1.0) return;
+  if (auto v = n->value<double>()) {
+    t.insert_or_assign(key, *v * factor);
+  } else if (toml::array* a = n->as_array()) {
+    toml::array scaled;
+    for (const toml::node& e : *a) {
+      const auto x = e.value<double>();
+      if (!x) throw std::runtime_error("rescale_problem: " + key + " holds a non-number");
+      scaled.push_back(*x * factor);
+    }
+    t.insert_or_assign(key, std::move(scaled));
+  } else {
+    throw std::runtime_error("rescale_problem: " + key + " is neither a number nor an array of numbers");
+  }
+}
+
+template <class F>
+void for_each_table(toml::table& t, const std::string& key, const F& f) {
+  if (toml::array* a = t[key].as_array())
+    for (toml::node& e : *a)
+      if (toml::table* s = e.as_table()) f(*s);
+}
+
+struct MeshSettings {
+  int dim = 2;
+  int order = 1;
+  double mesh_size = 0.0;
+};
+
+/// Meshes (.geo) or reads (.msh) `in` and writes it to `out` with coordinates × `length`.
+void write_scaled_mesh(const std::string& in, const std::string& out, const MeshSettings& m, double length) {
+  gmsh::initialize(0, nullptr, false);
+  try {
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::open(in);
+    if (fs::path(in).extension() == ".geo") {
+      if (m.mesh_size > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", m.mesh_size);
+      gmsh::model::mesh::generate(m.dim);
+    }
+    gmsh::model::mesh::setOrder(m.order);
+    gmsh::option::setNumber("Mesh.ScalingFactor", length);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::option::setNumber("Mesh.SaveAll", 1);
+    gmsh::write(out);
+  } catch (const std::string& e) {
+    gmsh::finalize();
+    throw std::runtime_error("rescale_problem: Gmsh failed on " + in + ": " + e);
+  } catch (...) {
+    gmsh::finalize();
+    throw;
+  }
+  gmsh::finalize();
+}
+
+/// Replaces the mesh path at `key` by a scaled copy in `out_dir` (one per distinct source file).
+void rescale_mesh_key(toml::table& t, const fs::path& base, const fs::path& out_dir, const MeshSettings& m,
+                      double length, std::map<std::string, std::string>& written) {
+  const auto name = t["mesh"].value<std::string>();
+  if (!name) return;
+  const fs::path src = fs::weakly_canonical(base / *name);
+  auto [it, fresh] = written.try_emplace(src.string(), "");
+  if (fresh) {
+    it->second = "mesh" + std::to_string(written.size()) + "_" + src.stem().string() + ".msh";
+    write_scaled_mesh(src.string(), (out_dir / it->second).string(), m, length);
+  }
+  t.insert_or_assign("mesh", it->second);
+}
+
+}  // namespace
+
+std::string rescale_problem(const std::string& problem_path, const UnitChange& change, const std::string& out_dir) {
+  toml::table root;
+  try {
+    root = toml::parse_file(problem_path);
+  } catch (const toml::parse_error& e) {
+    throw std::runtime_error("rescale_problem: " + problem_path + ": " + std::string(e.description()));
+  }
+  fs::create_directories(out_dir);
+  const fs::path base = fs::path(problem_path).parent_path();
+  const double L = change.length, S = change.stress(), B = change.force / (L * L * L);
+  MeshSettings m;
+  if (toml::table* p = root["problem"].as_table()) {
+    m.dim = p->get("dimension") ? (*p)["dimension"].value_or(2) : 2;
+    m.order = (*p)["order"].value_or(1);
+    m.mesh_size = (*p)["mesh_size"].value_or(0.0);
+    scale_key(*p, "mesh_size", L);
+  }
+  std::map<std::string, std::string> written;
+  for_each_table(root, "body", [&](toml::table& body) {
+    rescale_mesh_key(body, base, out_dir, m, L, written);
+    scale_key(body, "body_force", B);
+    if (toml::table* mat = body["material"].as_table())
+      for (const char* k : {"E", "mu", "lambda", "c1", "c2", "kappa"}) scale_key(*mat, k, S);
+    for_each_table(body, "dirichlet", [&](toml::table& d) {
+      for (const char* k : {"ux", "uy", "uz"}) scale_key(d, k, L);
+    });
+    for_each_table(body, "traction", [&](toml::table& d) { scale_key(d, "traction", S); });
+    for_each_table(body, "pressure", [&](toml::table& d) { scale_key(d, "pressure", S); });
+  });
+  for_each_table(root, "contact", [&](toml::table& c) {
+    for (const char* k : {"search_distance", "alpha"}) scale_key(c, k, L);
+    scale_key(c, "tau", S);
+    if (toml::table* o = c["obstacle"].as_table()) {
+      for (const char* k : {"point", "center", "radius"}) scale_key(*o, k, L);
+      rescale_mesh_key(*o, base, out_dir, m, L, written);
+    }
+  });
+  const fs::path out = fs::path(out_dir) / "problem.toml";
+  std::ofstream f(out);
+  f << root << "\n";
+  if (!f) throw std::runtime_error("rescale_problem: cannot write " + out.string());
+  return out.string();
+}
+
+}  // namespace symcontact::testing

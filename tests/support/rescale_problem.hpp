@@ -1,0 +1,35 @@
+#pragma once
+/// \file rescale_problem.hpp
+/// Test tool: rewrites a problem file into another consistent system of units, so that a test can solve
+/// the same physical problem twice and compare dimensionless results (every stopping rule of the solver
+/// must be relative to the problem's own scales: docs/input.md, "Units").
+///
+/// A change of units multiplies every length by `length` and every force by `force` (from m–N–Pa to
+/// mm–N–MPa: length = 1e3, force = 1). Each key of docs/input.md is multiplied by its unit's factor:
+///   [length]                 ux uy uz, mesh_size, search_distance, alpha, obstacle point / center / radius
+///   [stress] = F / L²        E, mu and lambda of a material, c1 c2 kappa, traction, pressure, Tresca tau
+///   [force] / [length]³      body_force
+/// and dimensionless keys (nu, Coulomb mu, normal, factors, tolerances, [ipopt]) are left as they are. In
+/// 2D, forces are per unit thickness, so reactions scale as force / length there and as force in 3D.
+///
+/// The meshes are written anew, as ASCII MSH 4.1 files with their coordinates multiplied by `length`: a
+/// `.geo` is meshed by Gmsh first, at the problem's order and mesh_size, and written with its elements as
+/// meshed (P2 edge nodes where Gmsh placed them). Calling it with length = force = 1 gives the reference
+/// the rescaled problem is compared with: both then solve the very same mesh.
+
+#include <string>
+
+namespace symcontact::testing {
+
+struct UnitChange {
+  double length = 1.0;  ///< new length unit per old one (m → mm: 1e3)
+  double force = 1.0;   ///< new force unit per old one
+  double stress() const { return force / (length * length); }
+};
+
+/// Writes `out_dir`/problem.toml and one `<mesh>.msh` per mesh file the problem names, in the units of
+/// `change`. Returns the path of the new problem file. Throws std::runtime_error when the problem cannot be
+/// read or a mesh cannot be made or written.
+std::string rescale_problem(const std::string& problem_path, const UnitChange& change, const std::string& out_dir);
+
+}  // namespace symcontact::testing
