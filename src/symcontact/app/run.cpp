@@ -262,6 +262,8 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
       js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
       js["coulomb_change_history"] = frep.coulomb_change;
       js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
+      // 0: converged to coulomb_tolerance; else the change a stagnated fixed point was accepted at.
+      js["coulomb_accepted_at_noise_floor"] = frep.accepted_at_noise_floor;
       js["last_solve_ipopt_iterations_per_geometry_iteration"] =
           std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
       js["last_solve_geometry_change_history"] = crep.change_history;

@@ -9,8 +9,10 @@
 ///    held spring back (a dragged flexible die: 40 % of the solution's size), and dragging it back
 ///    defeated the geometry fixed point (2D ironing, step 40); it also saves one contact solve per step. Then
 ///      solve regularised Tresca with τ_k → pressure p_k → residual r_k = μ p_k − τ_k,
-///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that does not converge within the allowed
-///    iterations throws SolveError — never reported as success.
+///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that stagnates (a cycle, or the noise floor of its
+///    inner solves) has its inner solves tightened; one that still stagnates is accepted only where the
+///    friction law holds to FrictionalOptions::stagnation_acceptance, and says so. Any other that does not
+///    converge within the allowed iterations throws SolveError — never reported as success.
 ///    With linear-elastic bodies, while τ still moves, each solve's geometry fixed point is stopped early,
 ///    at a tolerance proportional to the last threshold change (inexact inner solves;
 ///    FrictionalOptions::inner_tolerance_factor), and under proportional loading a step starts from the
@@ -57,6 +59,13 @@ struct FrictionalOptions {
   /// contact.workspace and linear elasticity) and u is made whole once, at the end of the step: one backward
   /// solve per load step instead of one per solve. Off only to compare.
   bool lazy_interior = true;
+  /// A fixed point that stagnates (FixedPointMonitor: no new low of the change in six iterations — a cycle, or
+  /// the noise floor of the inner solves) has its inner solves tightened, at most twice (IPOPT's tolerance
+  /// × 1e-2 and the geometry tolerance × 0.1 each time, inexact solves off). Stagnated after that, its
+  /// iterate is accepted, with a warning and FrictionalReport::accepted_at_noise_floor, only when the last
+  /// solve converged and the friction law holds to this relative tolerance: max |μ p − τ| ≤ it × max τ.
+  /// Otherwise the step fails (SolveError naming what was tried).
+  double stagnation_acceptance = 1e-4;
 };
 
 struct FrictionalReport {
@@ -67,6 +76,9 @@ struct FrictionalReport {
   int geometry_iterations = 0;             ///< summed over all solves of the step
   int ipopt_iterations = 0;                ///< summed over all solves of the step
   FrictionState friction;                  ///< the thresholds of the final solve
+  /// The relative threshold change at which a stagnated fixed point was accepted (above coulomb_tolerance,
+  /// at most FrictionalOptions::stagnation_acceptance); 0 when it converged.
+  double accepted_at_noise_floor = 0.0;
   PhaseTimes times;
 };
 
