@@ -222,6 +222,32 @@ Json contact_step_json(const Model& model, const std::vector<ContactPairResult>&
   return pairs;
 }
 
+/// The solver statistics of a step in summary.json: the contact solve's (`contact` not null) or Newton's.
+void add_solver_statistics(Json& js, const LoadStepReport* contact, const EquilibriumReport& newton) {
+  if (!contact) {
+    js["newton_iterations"] = newton.iterations;
+    js["residual"] = newton.residual;
+    js["num_free_dofs"] = static_cast<double>(newton.num_free);
+    return;
+  }
+  const LoadStepReport& lrep = *contact;
+  const FrictionalReport& frep = lrep.last;
+  const ContactSolveReport& crep = frep.last;
+  js["geometry_iterations"] = lrep.geometry_iterations;
+  js["ipopt_iterations"] = lrep.ipopt_iterations;
+  js["coulomb_iterations"] = lrep.coulomb_iterations;
+  js["step_cuts"] = lrep.cuts;
+  js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
+  js["coulomb_change_history"] = frep.coulomb_change;
+  js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
+  js["last_solve_ipopt_iterations_per_geometry_iteration"] =
+      std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
+  js["last_solve_geometry_change_history"] = crep.change_history;
+  js["ipopt_status"] = crep.ipopt_status;
+  js["num_constraints"] = static_cast<double>(crep.num_constraints);
+  js["num_free_dofs"] = static_cast<double>(crep.num_free);
+}
+
 /// The reactions of summary.json: ∇E(u) at the Dirichlet boundaries' nodes, per boundary.
 Json reactions_json(const Model& model, const FixedDofs& fixed, const VectorXd& u) {
   VectorXd g = VectorXd::Zero(model.dofs().num_dofs());
@@ -360,29 +386,9 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     Json js = Json::object();
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
-    const FrictionalReport& frep = lrep.last;
-    const ContactSolveReport& crep = frep.last;
-    if (has_contact) {
-      st.merge(lrep.times);
-      js["geometry_iterations"] = lrep.geometry_iterations;
-      js["ipopt_iterations"] = lrep.ipopt_iterations;
-      js["coulomb_iterations"] = lrep.coulomb_iterations;
-      js["step_cuts"] = lrep.cuts;
-      js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
-      js["coulomb_change_history"] = frep.coulomb_change;
-      js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
-      js["last_solve_ipopt_iterations_per_geometry_iteration"] =
-          std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
-      js["last_solve_geometry_change_history"] = crep.change_history;
-      js["ipopt_status"] = crep.ipopt_status;
-      js["num_constraints"] = static_cast<double>(crep.num_constraints);
-      js["num_free_dofs"] = static_cast<double>(crep.num_free);
-    } else {
-      st.merge(rep.times);
-      js["newton_iterations"] = rep.iterations;
-      js["residual"] = rep.residual;
-      js["num_free_dofs"] = static_cast<double>(rep.num_free);
-    }
+    const ContactSolveReport& crep = lrep.last.last;
+    st.merge(has_contact ? lrep.times : rep.times);
+    add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);
     std::vector<ContactPairResult> cres;
     if (has_contact) {
       ScopedPhase t(st, "output");
