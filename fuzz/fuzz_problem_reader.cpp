@@ -1,6 +1,6 @@
 /// \file fuzz_problem_reader.cpp
-/// libFuzzer target: bytes → parse_problem() (model/problem_reader.hpp), the code path of
-/// read_problem_file() without the file. The contract under test: whatever the text, the reader
+/// libFuzzer target: bytes → parse_problem() and check_ipopt_section() (model/problem_reader.hpp), the
+/// code path of read_problem_file() without the file. The contract under test: whatever the text, the reader
 /// returns a ProblemSpec or throws InputError; any other exception, a crash or a sanitiser report is
 /// a bug. Mesh paths resolve against a scratch folder holding empty files with the names the seed
 /// corpus uses (the reader only checks that they exist), so that inputs get past the mesh keys.
@@ -40,7 +40,8 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    symcontact::parse_problem(text, "fuzz.toml", base_dir());
+    const symcontact::ProblemSpec spec = symcontact::parse_problem(text, "fuzz.toml", base_dir());
+    symcontact::check_ipopt_section(spec);  // the rest of read_problem_file()'s checks
   } catch (const symcontact::InputError&) {
     // the expected outcome for bad input
   }

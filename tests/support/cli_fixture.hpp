@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <string>
 
@@ -27,6 +28,12 @@ inline std::string read_text(const std::filesystem::path& path) {
 }
 
 inline std::string shell_quote(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  ASSERT_TRUE(out.good()) << "cannot write " << path;
+}
 
 /// A test with its own folder `dir_` (named after the test) and `run(args)`.
 class CliTest : public ::testing::Test {
@@ -54,6 +61,27 @@ class CliTest : public ::testing::Test {
     r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
     r.output = read_text(log);
     return r;
+  }
+
+  /// Writes `text` as `name` in the test's folder and returns its path.
+  std::filesystem::path write(const std::string& name, const std::string& text) const {
+    const std::filesystem::path p = dir_ / name;
+    write_text(p, text);
+    return p;
+  }
+
+  /// Runs `run CASE --out out EXTRA`, expects an input error (exit 2) whose message holds every string
+  /// in `expected`, and no output folder.
+  void expect_input_error(const std::filesystem::path& case_file, std::initializer_list<std::string> expected,
+                          const std::string& extra = "") const {
+    const std::filesystem::path out = dir_ / "out";
+    const CliResult r = run("run " + shell_quote(case_file) + " --out " + shell_quote(out) + " " + extra);
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
+    for (const std::string& s : expected) {
+      EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(out)) << "an input error must not create the output folder";
   }
 
   std::filesystem::path dir_;

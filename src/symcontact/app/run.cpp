@@ -1,11 +1,13 @@
 #include "symcontact/app/run.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/interrupt.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/io/atomic_file.hpp"
 #include "symcontact/io/json_writer.hpp"
@@ -143,10 +145,28 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
   return f;
 }
 
-void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd& u, const std::string& path,
-                    const BodyContactFields* contact = nullptr) {
+BodyFields body_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u) {
   const PointLaw law = body.hyperelastic ? hyperelastic_point_law(*body.hyperelastic) : linear_point_law(body.material);
-  const BodyFields f = recover_fields(body.mesh, dofs, b, law, u);
+  return recover_fields(body.mesh, dofs, b, law, u);
+}
+
+/// The name of the first field of `f` holding a NaN or an infinity, or "" when all are finite.
+std::string first_non_finite(const BodyFields& f) {
+  const std::pair<const char*, const Eigen::MatrixXd*> matrices[] = {
+      {"displacement", &f.displacement}, {"strain", &f.strain}, {"stress", &f.stress}, {"stress", &f.cell_stress}};
+  for (const auto& [name, m] : matrices)
+    if (!m->allFinite()) return name;
+  const std::pair<const char*, const Eigen::VectorXd*> vectors[] = {{"von_mises", &f.von_mises},
+                                                                    {"von_mises", &f.cell_von_mises},
+                                                                    {"J", &f.volume_ratio},
+                                                                    {"J", &f.cell_volume_ratio}};
+  for (const auto& [name, v] : vectors)
+    if (!v->allFinite()) return name;
+  return "";
+}
+
+void write_body_vtu(const Body& body, const BodyFields& f, const std::string& path,
+                    const BodyContactFields* contact = nullptr) {
   VtuWriter w(body.mesh);
   if (contact) {
     w.add_point_data("contact_pressure", contact->pressure);
@@ -168,21 +188,88 @@ void write_body_vtu(const Body& body, const DofMap& dofs, int b, const VectorXd&
   w.write(path);
 }
 
-}  // namespace
+/// The "contact" entry of a step in summary.json, one object per pair, and each pair's contact CSV in
+/// `out_dir`; adds the step's slip to `accumulated_slip` (per pair, per side: Σ over steps of
+/// |slip increment| at each node).
+Json contact_step_json(const Model& model, const std::vector<ContactPairResult>& cres, int step,
+                       const std::string& out_dir, std::vector<std::vector<Eigen::VectorXd>>& accumulated_slip) {
+  Json pairs = Json::array();
+  accumulated_slip.resize(cres.size());
+  for (std::size_t pi = 0; pi < cres.size(); ++pi) {
+    const auto& r = cres[pi];
+    // Accumulated slip: Σ over steps of |slip increment| at each node.
+    accumulated_slip[pi].resize(r.sides.size());
+    for (std::size_t side = 0; side < r.sides.size(); ++side) {
+      auto& acc = accumulated_slip[pi][side];
+      if (acc.size() == 0) acc = Eigen::VectorXd::Zero(r.sides[side].slip.cols());
+      for (Index k = 0; k < acc.size(); ++k) {
+        const double sk = r.sides[side].slip.col(k).norm();
+        if (std::isfinite(sk)) acc[k] += sk;
+      }
+    }
+    Json jp = Json::object();
+    jp["name"] = r.name;
+    jp["total_force"] = to_vector(r.total_force);
+    jp["normal_force"] = to_vector(r.normal_force);
+    jp["tangential_force"] = to_vector(r.tangential_force);
+    jp["max_pressure"] = r.max_pressure;
+    jp[model.dim() == 2 ? "contact_length" : "contact_area"] = r.contact_measure;
+    const std::string csv = "contact_" + step_file(r.name, step + 1, "csv");
+    write_contact_csv(model, r, accumulated_slip[pi], (std::filesystem::path(out_dir) / csv).string());
+    jp["csv"] = csv;
+    pairs.push_back(jp);
+  }
+  return pairs;
+}
 
-RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log) {
-  namespace fs = std::filesystem;
-  PhaseTimes times;
-  const double t_start = wall_seconds();
-  // Everything that can fail on input happens here, before the output folder is touched.
-  std::unique_ptr<Model> model = Model::build(spec, log, times, options.mesh_size);
-  const DofMap& dofs = model->dofs();
+/// The solver statistics of a step in summary.json: the contact solve's (`contact` not null) or Newton's.
+void add_solver_statistics(Json& js, const LoadStepReport* contact, const EquilibriumReport& newton) {
+  if (!contact) {
+    js["newton_iterations"] = newton.iterations;
+    js["residual"] = newton.residual;
+    js["num_free_dofs"] = static_cast<double>(newton.num_free);
+    return;
+  }
+  const LoadStepReport& lrep = *contact;
+  const FrictionalReport& frep = lrep.last;
+  const ContactSolveReport& crep = frep.last;
+  js["geometry_iterations"] = lrep.geometry_iterations;
+  js["ipopt_iterations"] = lrep.ipopt_iterations;
+  js["coulomb_iterations"] = lrep.coulomb_iterations;
+  js["step_cuts"] = lrep.cuts;
+  js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
+  js["coulomb_change_history"] = frep.coulomb_change;
+  js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
+  // 0: converged to coulomb_tolerance; else the change a stagnated fixed point was accepted at.
+  js["coulomb_accepted_at_noise_floor"] = frep.accepted_at_noise_floor;
+  js["last_solve_ipopt_iterations_per_geometry_iteration"] =
+      std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
+  js["last_solve_geometry_change_history"] = crep.change_history;
+  js["ipopt_status"] = crep.ipopt_status;
+  js["num_constraints"] = static_cast<double>(crep.num_constraints);
+  js["num_free_dofs"] = static_cast<double>(crep.num_free);
+}
 
-  ensure_directory(options.out_dir);
-  const std::string summary_path = (fs::path(options.out_dir) / "summary.json").string();
-  PvdCollection pvd((fs::path(options.out_dir) / "results.pvd").string());
-  const bool vtu = options.write_vtu && spec.output.vtu;
+/// The reactions of summary.json: ∇E(u) at the Dirichlet boundaries' nodes, per boundary.
+Json reactions_json(const Model& model, const FixedDofs& fixed, const VectorXd& u) {
+  VectorXd g = VectorXd::Zero(model.dofs().num_dofs());
+  model.energy().add_gradient(u, g);
+  Json reactions = Json::array();
+  const std::vector<Eigen::VectorXd> r = model.reactions(fixed, g);
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const auto& db = model.dirichlet_boundaries()[k];
+    Json jr = Json::object();
+    jr["body"] = model.bodies()[db.body]->name;
+    jr["boundary"] = db.name;
+    jr["force"] = to_vector(r[k]);
+    reactions.push_back(jr);
+  }
+  return reactions;
+}
 
+/// summary.json before the first step: the problem, its sizes, "status": "running" and no steps yet.
+Json summary_header(const ProblemSpec& spec, const Model& model) {
+  const DofMap& dofs = model.dofs();
   Json summary = Json::object();
   summary["symcontact_version"] = SYMCONTACT_VERSION;
   summary["problem"] = spec.file;
@@ -194,7 +281,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   summary["num_dofs"] = static_cast<double>(dofs.num_dofs());
   Json bodies = Json::array();
   for (int b = 0; b < dofs.num_bodies(); ++b) {
-    const Body& body = *model->bodies()[b];
+    const Body& body = *model.bodies()[b];
     Json jb = Json::object();
     jb["name"] = body.name;
     jb["cell_type"] = cell_name(body.mesh.cell_type);
@@ -205,6 +292,28 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   }
   summary["bodies"] = bodies;
   summary["steps"] = Json::array();
+  return summary;
+}
+
+}  // namespace
+
+RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log) {
+  namespace fs = std::filesystem;
+  PhaseTimes times;
+  const double t_start = wall_seconds();
+  // Everything that can fail on input happens here, before the output folder is touched.
+  std::unique_ptr<Model> model = Model::build(spec, log, times, options.meshing);
+  const DofMap& dofs = model->dofs();
+
+  ensure_directory(options.out_dir);
+  const int stale = remove_stale_temporaries(options.out_dir);
+  if (stale > 0) log.detail("removed " + std::to_string(stale) + " temporary files left by an earlier run");
+  if (options.signals == SignalHandling::kStopCleanly) install_interrupt_handlers();
+  const std::string summary_path = (fs::path(options.out_dir) / "summary.json").string();
+  PvdCollection pvd((fs::path(options.out_dir) / "results.pvd").string());
+  const bool vtu = options.write_vtu && spec.output.vtu;
+
+  Json summary = summary_header(spec, *model);
   auto write_summary = [&]() {
     summary["timings"] = timings_json(times);
     summary["wall_time"] = wall_seconds() - t_start;
@@ -219,7 +328,35 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   const int nsteps = model->num_steps();
   FrictionState previous_friction;  ///< the thresholds the last step converged to (Coulomb warm start)
   const FrictionalOptions solver_options = contact_options(spec, log);  // its workspace serves every step
+  // Ends the run at `step` (0-based) without its results: summary.json gets `status` and `message`; the
+  // last iterate is written for inspection (not part of the collection) when it is finite.
+  auto stop_run = [&](int step, RunStatus status, const std::string& message) {
+    result.status = status;
+    result.message = message;
+    result.signal = status == RunStatus::kInterrupted ? interrupt_signal() : 0;
+    summary["status"] = status == RunStatus::kInterrupted ? "interrupted" : "solve_failed";
+    summary["message"] = message;
+    if (status == RunStatus::kSolveFailed) {
+      Json failed = Json::array();
+      for (int b = 0; b < dofs.num_bodies(); ++b) {
+        const Body& body = *model->bodies()[b];
+        const BodyFields f = body_fields(body, dofs, b, u);
+        if (!first_non_finite(f).empty()) continue;
+        const std::string name = body.name + "_failed_step" + std::to_string(step + 1) + ".vtu";
+        write_body_vtu(body, f, (fs::path(options.out_dir) / name).string());
+        failed.push_back(name);
+      }
+      summary["failed_iterate_files"] = failed;
+    }
+    write_summary();
+    return result;
+  };
+  auto interrupted_message = [](int step) {
+    return std::string("interrupted by ") + (interrupt_signal() == SIGINT ? "SIGINT" : "SIGTERM") + " before load step " +
+           std::to_string(step + 1) + " finished";
+  };
   for (int step = 0; step < nsteps; ++step) {
+    if (interrupt_requested()) return stop_run(step, RunStatus::kInterrupted, interrupted_message(step));
     PhaseTimes st;
     model->set_step(step);
     const FixedDofs fixed = model->fixed_dofs(step);
@@ -233,95 +370,34 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
     } catch (const SolveError& e) {
-      result.status = RunStatus::kSolveFailed;
-      result.message = "load step " + std::to_string(step + 1) + ": " + e.what();
-      summary["status"] = "solve_failed";
-      summary["message"] = result.message;
-      // The last iterate, for inspection (not part of the collection).
-      Json failed = Json::array();
-      for (int b = 0; b < dofs.num_bodies(); ++b) {
-        const std::string name = model->bodies()[b]->name + "_failed_step" + std::to_string(step + 1) + ".vtu";
-        write_body_vtu(*model->bodies()[b], dofs, b, u, (fs::path(options.out_dir) / name).string());
-        failed.push_back(name);
-      }
-      summary["failed_iterate_files"] = failed;
-      write_summary();
-      return result;
+      // A signal stops IPOPT (interrupt.hpp), which the solver reports as a failure.
+      if (interrupt_requested()) return stop_run(step, RunStatus::kInterrupted, interrupted_message(step));
+      return stop_run(step, RunStatus::kSolveFailed, "load step " + std::to_string(step + 1) + ": " + e.what());
+    }
+    // Overflow (a tiny E, a huge load) gives infinities that no file format holds: a failed solve.
+    std::vector<BodyFields> fields;
+    for (int b = 0; b < dofs.num_bodies(); ++b) {
+      fields.push_back(body_fields(*model->bodies()[b], dofs, b, u));
+      const std::string bad = first_non_finite(fields.back());
+      if (!bad.empty())
+        return stop_run(step, RunStatus::kSolveFailed,
+                        "the solve produced non-finite values in body '" + model->bodies()[b]->name + "' at step " +
+                            std::to_string(step + 1) + " (" + bad +
+                            "): the loads, the material constants or their units are out of range");
     }
     Json js = Json::object();
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
-    const FrictionalReport& frep = lrep.last;
-    const ContactSolveReport& crep = frep.last;
-    if (has_contact) {
-      st.merge(lrep.times);
-      js["geometry_iterations"] = lrep.geometry_iterations;
-      js["ipopt_iterations"] = lrep.ipopt_iterations;
-      js["coulomb_iterations"] = lrep.coulomb_iterations;
-      js["step_cuts"] = lrep.cuts;
-      js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
-      js["coulomb_change_history"] = frep.coulomb_change;
-      js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
-      // 0: converged to coulomb_tolerance; else the change a stagnated fixed point was accepted at.
-      js["coulomb_accepted_at_noise_floor"] = frep.accepted_at_noise_floor;
-      js["last_solve_ipopt_iterations_per_geometry_iteration"] =
-          std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
-      js["last_solve_geometry_change_history"] = crep.change_history;
-      js["ipopt_status"] = crep.ipopt_status;
-      js["num_constraints"] = static_cast<double>(crep.num_constraints);
-      js["num_free_dofs"] = static_cast<double>(crep.num_free);
-    } else {
-      st.merge(rep.times);
-      js["newton_iterations"] = rep.iterations;
-      js["residual"] = rep.residual;
-      js["num_free_dofs"] = static_cast<double>(rep.num_free);
-    }
+    const ContactSolveReport& crep = lrep.last.last;
+    st.merge(has_contact ? lrep.times : rep.times);
+    add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);
     std::vector<ContactPairResult> cres;
     if (has_contact) {
       ScopedPhase t(st, "output");
       cres = contact_results(model->contacts(), dofs, u, crep);
-      Json pairs = Json::array();
-      accumulated_slip.resize(cres.size());
-      for (std::size_t pi = 0; pi < cres.size(); ++pi) {
-        const auto& r = cres[pi];
-        // Accumulated slip: Σ over steps of |slip increment| at each node.
-        accumulated_slip[pi].resize(r.sides.size());
-        for (std::size_t side = 0; side < r.sides.size(); ++side) {
-          auto& acc = accumulated_slip[pi][side];
-          if (acc.size() == 0) acc = Eigen::VectorXd::Zero(r.sides[side].slip.cols());
-          for (Index k = 0; k < acc.size(); ++k) {
-            const double sk = r.sides[side].slip.col(k).norm();
-            if (std::isfinite(sk)) acc[k] += sk;
-          }
-        }
-        Json jp = Json::object();
-        jp["name"] = r.name;
-        jp["total_force"] = to_vector(r.total_force);
-        jp["normal_force"] = to_vector(r.normal_force);
-        jp["tangential_force"] = to_vector(r.tangential_force);
-        jp["max_pressure"] = r.max_pressure;
-        jp[spec.dim == 2 ? "contact_length" : "contact_area"] = r.contact_measure;
-        const std::string csv = "contact_" + step_file(r.name, step + 1, "csv");
-        write_contact_csv(*model, r, accumulated_slip[pi], (fs::path(options.out_dir) / csv).string());
-        jp["csv"] = csv;
-        pairs.push_back(jp);
-      }
-      js["contact"] = pairs;
+      js["contact"] = contact_step_json(*model, cres, step, options.out_dir, accumulated_slip);
     }
-    // Reactions: ∇E(u) at the Dirichlet boundaries' nodes.
-    VectorXd g = VectorXd::Zero(dofs.num_dofs());
-    model->energy().add_gradient(u, g);
-    Json reactions = Json::array();
-    const std::vector<Eigen::VectorXd> r = model->reactions(fixed, g);
-    for (std::size_t k = 0; k < r.size(); ++k) {
-      const auto& db = model->dirichlet_boundaries()[k];
-      Json jr = Json::object();
-      jr["body"] = model->bodies()[db.body]->name;
-      jr["boundary"] = db.name;
-      jr["force"] = to_vector(r[k]);
-      reactions.push_back(jr);
-    }
-    js["reactions"] = reactions;
+    js["reactions"] = reactions_json(*model, fixed, u);
     const VectorXd f = model->external_load();
     Eigen::VectorXd applied = Eigen::VectorXd::Zero(spec.dim);
     for (Index d = 0; d < f.size(); ++d) applied[d % spec.dim] += f[d];
@@ -333,9 +409,9 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
         const std::string name = step_file(body.name, step + 1);
         if (has_contact) {
           const BodyContactFields cf = body_contact_fields(*model, b, cres, accumulated_slip);
-          write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string(), &cf);
+          write_body_vtu(body, fields[b], (fs::path(options.out_dir) / name).string(), &cf);
         } else {
-          write_body_vtu(body, dofs, b, u, (fs::path(options.out_dir) / name).string());
+          write_body_vtu(body, fields[b], (fs::path(options.out_dir) / name).string());
         }
         pvd.add(step + 1, b, name, body.name);
       }

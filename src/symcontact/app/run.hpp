@@ -9,35 +9,53 @@
 ///  - `summary.json`: status, sizes, per step the reactions on every Dirichlet boundary, iterations and
 ///    timings; rewritten after each step ("status": "running"), final status at the end.
 /// All files are written atomically (temporary name, then rename), so a killed run leaves every
-/// finished step's files valid.
+/// finished step's files valid; the temporaries a killed run left behind are removed when the next run
+/// starts in the same folder.
+///
+/// After each step, before anything of it is written, the displacements and the recovered fields of
+/// every body are checked to be finite: a solve that overflowed (E = 1e-300, a pressure of 1e200) ends
+/// the run as a failed solve naming the body and the step, with the finished steps kept.
+///
+/// With RunOptions::signals = kStopCleanly, SIGINT and SIGTERM (interrupt.hpp) stop the run at the next
+/// load step or IPOPT iteration: the file being written is finished, summary.json says "interrupted",
+/// and the result carries the signal.
 
 #include <string>
 
 #include "symcontact/core/log.hpp"
+#include "symcontact/model/model.hpp"
 #include "symcontact/model/problem_spec.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
 
 namespace symcontact {
 
+/// What SIGINT and SIGTERM do during a run: the default (end the process at once), or stop cleanly.
+enum class SignalHandling { kDefault, kStopCleanly };
+
 struct RunOptions {
   std::string out_dir;        ///< output folder
-  double mesh_size = 0.0;     ///< > 0 overrides problem.mesh_size
+  MeshingOverrides meshing;   ///< --mesh-size (> 0 overrides problem.mesh_size) and the meshing limits
   bool write_vtu = true;      ///< and the problem's output.vtu
+  /// kStopCleanly installs the handlers once the output folder exists (before, a signal ends the
+  /// process with nothing written).
+  SignalHandling signals = SignalHandling::kDefault;
 };
 
-enum class RunStatus { kOk, kSolveFailed };
+enum class RunStatus { kOk, kSolveFailed, kInterrupted };
 
 struct RunResult {
   RunStatus status = RunStatus::kOk;
   std::string message;
   int steps_done = 0;
+  int signal = 0;  ///< kInterrupted: the signal received (SIGINT, SIGTERM)
 };
 
 /// The contact-solver settings of a problem (its [contact_solver] and [ipopt] tables).
 FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log);
 
 /// Runs the problem. Input errors propagate as InputError before any file is written; a failed solve
-/// is recorded in summary.json (status "solve_failed", the message) and returned, finished steps kept.
+/// (including non-finite results) is recorded in summary.json (status "solve_failed", the message) and
+/// returned, finished steps kept; so is an interruption (status "interrupted").
 RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log);
 
 }  // namespace symcontact

@@ -15,8 +15,15 @@
 
 namespace symcontact {
 
-/// Exit codes of the command-line program.
-enum ExitCode : int { kExitOk = 0, kExitInputError = 2, kExitSolveError = 3, kExitInternalError = 4 };
+/// Exit codes of the command-line program. A run stopped by a signal (interrupt.hpp) exits with
+/// kExitSignalBase + the signal number: 130 for SIGINT, 143 for SIGTERM (the shell's convention).
+enum ExitCode : int {
+  kExitOk = 0,
+  kExitInputError = 2,
+  kExitSolveError = 3,
+  kExitInternalError = 4,
+  kExitSignalBase = 128
+};
 
 /// An error in what the user gave us. what() reads "FILE: KEY: message" (parts that are empty are left out).
 class InputError : public std::runtime_error {

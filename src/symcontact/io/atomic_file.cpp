@@ -12,6 +12,7 @@
 #include <process.h>
 #define SYMCONTACT_GETPID _getpid
 #else
+#include <signal.h>
 #include <unistd.h>
 #define SYMCONTACT_GETPID getpid
 #endif
@@ -67,6 +68,28 @@ void ensure_directory(const std::string& dir) {
   fs::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create output folder '" + dir + "': " + ec.message());
   if (!fs::is_directory(dir, ec)) throw std::runtime_error("cannot create output folder '" + dir + "'");
+}
+
+int remove_stale_temporaries(const std::string& dir) {
+  std::error_code ec;
+  fs::directory_iterator it(dir.empty() ? fs::path(".") : fs::path(dir), ec);
+  if (ec) return 0;
+  int removed = 0;
+  for (const fs::directory_entry& entry : it) {
+    const std::string name = entry.path().filename().string();
+    const std::size_t mark = name.rfind(".tmp-");
+    if (mark == std::string::npos || mark + 5 >= name.size()) continue;
+    const std::string digits = name.substr(mark + 5);
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) continue;
+    const long pid = std::stol(digits);
+#ifndef _WIN32
+    if (pid == static_cast<long>(SYMCONTACT_GETPID())) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // that process still runs
+#endif
+    std::error_code ignored;
+    if (entry.is_regular_file(ignored) && fs::remove(entry.path(), ignored)) ++removed;
+  }
+  return removed;
 }
 
 }  // namespace symcontact

@@ -30,4 +30,10 @@ void write_file_atomically(const std::string& path, const std::function<void(std
 /// when `dir` (or one of its parents) exists and is not a folder.
 void ensure_directory(const std::string& dir);
 
+/// Removes the temporary files (`NAME.tmp-<pid>`, see write_file_atomically()) that a killed run left
+/// in `dir`: those whose process no longer exists (kill(pid, 0) fails with ESRCH), so that a run still
+/// writing into the same folder keeps its own. Returns how many were removed; a folder that cannot be
+/// listed is left alone (0).
+int remove_stale_temporaries(const std::string& dir);
+
 }  // namespace symcontact

@@ -3,10 +3,15 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <unordered_map>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/input_file.hpp"
+#include "symcontact/mesh/geo_commands.hpp"
 #include "symcontact/mesh/mesh_topology.hpp"
 #include "symcontact/mesh/msh_validation.hpp"
 
@@ -27,9 +32,15 @@ class GmshSession {
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
     gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
+    // Gmsh's API throws its errors as std::string by default (General.AbortOnError = 2), also from
+    // inside its OpenMP meshing loops, where no handler can catch them and the process aborts. With 0,
+    // errors are only logged: the log is read after each call (throw_on_gmsh_errors()).
+    gmsh::option::setNumber("General.AbortOnError", 0);
+    gmsh::logger::start();
   }
   ~GmshSession() {
     try {
+      gmsh::logger::stop();
       gmsh::finalize();
     } catch (...) {
     }
@@ -47,13 +58,55 @@ std::string describe_gmsh_error(const std::string& thrown) {
   return !thrown.empty() ? thrown : (!last.empty() ? last : std::string("unknown Gmsh error"));
 }
 
+/// Throws InputError(path) carrying the errors Gmsh has logged since the session started, if any
+/// ("while meshing it: Error: The 1D mesh seems not to be forming a closed loop ...").
+void throw_on_gmsh_errors(const std::string& path, const std::string& doing) {
+  std::vector<std::string> log;
+  gmsh::logger::get(log);
+  std::string errors;
+  int count = 0;
+  for (const std::string& line : log) {
+    if (line.rfind("Error", 0) != 0) continue;
+    if (++count <= 5) errors += (errors.empty() ? "" : "; ") + line;
+  }
+  if (count == 0) return;
+  if (count > 5) errors += "; and " + std::to_string(count - 5) + " more";
+  throw InputError(path, "", "Gmsh failed while " + doing + ": " + errors);
+}
+
+/// "1e-05", "4e+10", "5000000": short and readable (what a person typed, not 17 digits).
+std::string short_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+/// Refuses to mesh when predicted_cell_count() over the model's bounding box exceeds the limit.
+void check_predicted_size(const std::string& path, const MeshReadOptions& opt) {
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const double extent[3] = {x1 - x0, y1 - y0, z1 - z0};
+  const double cells = predicted_cell_count(opt.dim, extent, opt.mesh_size);
+  if (!(cells > opt.max_predicted_cells)) return;  // also a NaN box (an empty model): Gmsh will say
+  const std::string box = short_number(extent[0]) + " × " + short_number(extent[1]) +
+                          (opt.dim == 3 ? " × " + short_number(extent[2]) : std::string());
+  throw InputError(path, "",
+                   opt.mesh_size_key + " = " + short_number(opt.mesh_size) + " would make about " +
+                       short_number(cells) + (opt.dim == 2 ? " triangles (2·A/h² over the bounding box " : " tetrahedra (6·V/h³ over the bounding box ") +
+                       box + "), more than the limit of " + short_number(opt.max_predicted_cells) +
+                       " cells; use a larger mesh size, or pass --allow-large-mesh to mesh it anyway");
+}
+
 MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, bool is_geo) {
+  gmsh::open(path);
+  throw_on_gmsh_errors(path, "reading the file");
   if (is_geo) {
-    gmsh::open(path);
-    if (opt.mesh_size > 0) gmsh::option::setNumber("Mesh.MeshSizeMax", opt.mesh_size);
+    if (opt.mesh_size > 0) {
+      if (opt.max_predicted_cells > 0) check_predicted_size(path, opt);
+      gmsh::option::setNumber("Mesh.MeshSizeMax", opt.mesh_size);
+    }
     gmsh::model::mesh::generate(opt.dim);
-  } else {
-    gmsh::open(path);
+    throw_on_gmsh_errors(path, "meshing the geometry");
   }
   // Raise or lower the element order when the file's differs from the problem's.
   {
@@ -65,7 +118,10 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
       CellType ct;
       if (from_gmsh_element_type(t, ct) && cell_order(ct) != opt.order) need = true;
     }
-    if (need) gmsh::model::mesh::setOrder(opt.order);
+    if (need) {
+      gmsh::model::mesh::setOrder(opt.order);
+      throw_on_gmsh_errors(path, "changing the element order");
+    }
   }
 
   MeshFile f;
@@ -138,12 +194,13 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
 
 MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) throw InputError(path, "", "mesh file not found");
+  if (const std::string problem = input_file_problem(path); !problem.empty())
+    throw InputError(path, "", "cannot read the mesh file: it " + problem);
   const std::string ext = fs::path(path).extension().string();
   if (ext != ".geo" && ext != ".msh")
     throw InputError(path, "", "expected a Gmsh .geo or .msh file, got extension '" + ext + "'");
   if (options.order != 1 && options.order != 2) throw InputError(path, "", "element order must be 1 or 2");
+  if (ext == ".geo" && options.geo_commands == GeoCommands::kRefuse) check_geo_commands(path);
   // Gmsh's own parser trusts the file's structure: check it first (msh_validation.hpp).
   if (ext == ".msh") validate_msh_file(path);
   GmshSession session(options.verbose);
@@ -158,6 +215,12 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
   } catch (...) {
     throw InputError(path, "", "Gmsh could not read or mesh the file: " + describe_gmsh_error(""));
   }
+}
+
+double predicted_cell_count(int dim, const double extent[3], double h) {
+  double e[3] = {std::abs(extent[0]), std::abs(extent[1]), std::abs(extent[2])};
+  std::sort(e, e + 3, std::greater<double>());  // a 2D geometry may lie in any coordinate plane
+  return dim == 2 ? 2.0 * e[0] * e[1] / (h * h) : 6.0 * e[0] * e[1] * e[2] / (h * h * h);
 }
 
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key) {

@@ -14,12 +14,31 @@
 
 namespace symcontact {
 
+/// The default limit on the predicted number of cells of a .geo meshed with a given size.
+constexpr double kDefaultMaxPredictedCells = 5e6;
+
+/// Whether a .geo may use the Gmsh commands that run other programs (geo_commands.hpp).
+enum class GeoCommands { kRefuse, kAllow };
+
 struct MeshReadOptions {
   int dim = 2;             ///< spatial dimension of the problem
   int order = 1;           ///< 1 or 2
   double mesh_size = 0.0;  ///< > 0: Mesh.MeshSizeMax for .geo meshing
+  /// Where mesh_size comes from, for messages ("--mesh-size", "problem.mesh_size").
+  std::string mesh_size_key = "mesh_size";
+  /// With mesh_size > 0, a .geo is meshed only when the predicted cell count (predicted_cell_count())
+  /// is at most this; 0 or less: no limit.
+  double max_predicted_cells = kDefaultMaxPredictedCells;
+  GeoCommands geo_commands = GeoCommands::kRefuse;
   bool verbose = false;    ///< let Gmsh print its log
 };
+
+/// A lower estimate of the number of cells of a mesh of maximum size h over a box of extents
+/// `extent` (x, y, z): with elements of edge h, an equilateral triangle covers √3/4·h² ≈ 0.43·h² and a
+/// regular tetrahedron h³/(6√2) ≈ 0.12·h³, so a full box holds about 2.3·A/h² triangles and 8.5·V/h³
+/// tetrahedra; the estimate uses 2·A/h² (2D, A = Δx·Δy) and 6·V/h³ (3D, V = Δx·Δy·Δz), a little
+/// below, because the geometry does not fill its bounding box.
+double predicted_cell_count(int dim, const double extent[3], double h);
 
 /// Everything read from one file. Node coordinates are 3 × N (z = 0 in 2D); connectivities index them.
 struct MeshFile {
@@ -45,7 +64,10 @@ struct MeshFile {
 /// Reads or meshes `path`. A `.msh` file is first checked by validate_msh_file() (msh_validation.hpp:
 /// ASCII MSH 2.x or 4.1, sound structure), so that Gmsh never parses a malformed one. Throws
 /// InputError(file = path) for a missing or malformed file (key "line L" when the structural check
-/// locates the fault), an unsupported element type, or a failed meshing.
+/// locates the fault), a path that is not a regular file (input_file.hpp), an unsupported element type,
+/// a .geo running other programs (geo_commands.hpp, unless options.geo_commands allows it), a mesh size
+/// whose predicted cell count is above options.max_predicted_cells, or a failed meshing (the message
+/// carries Gmsh's own error messages).
 MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options);
 
 /// The mesh of one body: the cells of dimension `dim` in physical group `group` (all cells of that

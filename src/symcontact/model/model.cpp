@@ -56,10 +56,17 @@ std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs,
 }  // namespace
 
 std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, PhaseTimes& times,
-                                    double mesh_size_override) {
+                                    const MeshingOverrides& meshing) {
   std::unique_ptr<Model> m(new Model(spec));
   m->dofs_ = DofMap(spec.dim);
-  const double mesh_size = mesh_size_override > 0 ? mesh_size_override : spec.mesh_size;
+  MeshReadOptions mesh_options;
+  mesh_options.dim = spec.dim;
+  mesh_options.order = spec.order;
+  mesh_options.mesh_size = meshing.mesh_size > 0 ? meshing.mesh_size : spec.mesh_size;
+  mesh_options.mesh_size_key = meshing.mesh_size > 0 ? "--mesh-size" : "problem.mesh_size";
+  mesh_options.max_predicted_cells = meshing.max_predicted_cells;
+  mesh_options.geo_commands = meshing.geo_commands;
+  mesh_options.verbose = log.level() >= Verbosity::kDebug;
   {
     ScopedPhase t(times, "meshing");
     // Bodies from the same file share one read.
@@ -67,14 +74,9 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
     for (const auto& bs : spec.bodies) {
       auto it = files.find(bs.mesh_path);
       if (it == files.end()) {
-        MeshReadOptions opt;
-        opt.dim = spec.dim;
-        opt.order = spec.order;
-        opt.mesh_size = mesh_size;
-        opt.verbose = log.level() >= Verbosity::kDebug;
         log.detail("reading mesh " + bs.mesh_path);
         try {
-          it = files.emplace(bs.mesh_path, read_mesh_file(bs.mesh_path, opt)).first;
+          it = files.emplace(bs.mesh_path, read_mesh_file(bs.mesh_path, mesh_options)).first;
         } catch (const InputError& e) {
           // A malformed mesh file: name the problem file, the body that reads it, the mesh file and
           // where in it ("line L" from the structural check).
@@ -147,7 +149,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
       m->boundaries_.push_back({b, ds.group, body.mesh.group_nodes(ds.group)});
     }
   }
-  m->build_contacts(log, mesh_size);
+  m->build_contacts(log, mesh_options);
   m->set_step(0);
   return m;
 }
@@ -158,7 +160,7 @@ int Model::body_index(const std::string& name) const {
   return -1;
 }
 
-void Model::build_contacts(const Logger& log, double mesh_size) {
+void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_options) {
   const ProblemSpec& spec = spec_;
   const int D = spec.dim;
   auto surface = [&](const std::string& body, const std::string& group, const std::string& key) {
@@ -191,13 +193,9 @@ void Model::build_contacts(const Logger& log, double mesh_size) {
     if (cs.obstacle) {
       const ObstacleSpec& os = *cs.obstacle;
       if (os.type == "mesh") {
-        MeshReadOptions opt;
-        opt.dim = D;
-        opt.order = spec.order;
-        opt.mesh_size = mesh_size;
         MeshFile f;
         try {
-          f = read_mesh_file(os.mesh_path, opt);
+          f = read_mesh_file(os.mesh_path, mesh_options);
         } catch (const InputError& e) {
           throw InputError(spec.file, os.key + ".mesh",
                            "obstacle mesh " + e.file() + (e.key().empty() ? "" : ", " + e.key()) + ": " + e.message());

@@ -19,11 +19,21 @@
 
 #include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
+#include "symcontact/mesh/gmsh_io.hpp"
 #include "symcontact/mesh/mesh.hpp"
 #include "symcontact/model/problem_spec.hpp"
 #include "symcontact/solvers/fixed_dofs.hpp"
 
 namespace symcontact {
+
+/// How .geo files are meshed, beyond the problem file (the CLI's --mesh-size, --allow-large-mesh and
+/// --allow-geo-commands).
+struct MeshingOverrides {
+  double mesh_size = 0.0;  ///< > 0 replaces spec.mesh_size
+  /// The limit on the predicted cell count of a .geo meshed with a size (gmsh_io.hpp); ≤ 0: none.
+  double max_predicted_cells = kDefaultMaxPredictedCells;
+  GeoCommands geo_commands = GeoCommands::kRefuse;
+};
 
 struct Body {
   std::string name;
@@ -43,9 +53,9 @@ struct DirichletBoundary {
 class Model {
  public:
   /// Reads or meshes every body's mesh and builds the energy. Throws InputError on bad input.
-  /// `mesh_size_override` > 0 replaces spec.mesh_size.
+  /// `meshing.mesh_size` > 0 replaces spec.mesh_size.
   static std::unique_ptr<Model> build(const ProblemSpec& spec, const Logger& log, PhaseTimes& times,
-                                      double mesh_size_override = 0.0);
+                                      const MeshingOverrides& meshing = {});
 
   const ProblemSpec& spec() const { return spec_; }
   int dim() const { return spec_.dim; }
@@ -86,7 +96,7 @@ class Model {
   std::vector<DirichletBoundary> boundaries_;
   ContactSet contacts_;
   std::vector<Mesh> rigid_meshes_;  ///< meshes of rigid meshed obstacles
-  void build_contacts(const Logger& log, double mesh_size);
+  void build_contacts(const Logger& log, const MeshReadOptions& mesh_options);
 };
 
 /// The factor of load step `step`: own[step] when `own` is given, else global[step]; step −1 is the

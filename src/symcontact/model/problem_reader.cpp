@@ -18,7 +18,9 @@
 #include <toml++/toml.h>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/input_file.hpp"
 #include "symcontact/model/toml_parse.hpp"
+#include "symcontact/optim/ipopt_solver.hpp"
 
 namespace symcontact {
 
@@ -467,13 +469,12 @@ class Reader {
     }
     const fs::path resolved = (written.is_absolute() ? written : fs::path(base_dir_) / written).lexically_normal();
     mesh_path = resolved.string();
-    std::error_code ec;
-    const fs::file_status status = fs::status(resolved, ec);
-    if (!fs::exists(status)) {
+    const std::string problem = input_file_problem(mesh_path);
+    if (problem == "does not exist") {
       fail(key, "mesh file " + in_quotes(mesh_path) + " does not exist (relative paths are resolved against " +
                     "the problem file's folder)");
     }
-    if (fs::is_directory(status)) fail(key, "expected a mesh file, got the folder " + in_quotes(mesh_path));
+    if (!problem.empty()) fail(key, "mesh file " + in_quotes(mesh_path) + " " + problem);
   }
 
   /// [body.material]: model "linear_elastic" (E, nu), "neo_hookean" (E, nu | mu, lambda) or
@@ -925,8 +926,8 @@ class Reader {
     }
   }
 
-  /// [ipopt]: any option, passed to IPOPT as it is, sorted by the TOML type of its value. IPOPT itself
-  /// checks names and ranges when the solver starts.
+  /// [ipopt]: any option, passed to IPOPT as it is, sorted by the TOML type of its value. Names, types
+  /// and ranges are checked by read_problem_file() (check_ipopt_section()).
   void read_ipopt(const toml::table& root, ProblemSpec& spec) const {
     const toml::node* node = root.get("ipopt");
     if (!node) return;
@@ -956,7 +957,20 @@ class Reader {
   std::string base_dir_;
 };
 
+
 }  // namespace
+
+void check_ipopt_section(const ProblemSpec& spec) {
+  IpoptOptions options;
+  options.string_options = spec.contact_solver.ipopt_string;
+  options.numeric_options = spec.contact_solver.ipopt_numeric;
+  options.integer_options = spec.contact_solver.ipopt_integer;
+  try {
+    check_ipopt_options(options);
+  } catch (const IpoptOptionError& e) {
+    throw InputError(spec.file, child("ipopt", e.name()), e.what());
+  }
+}
 
 ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir) {
   return Reader(file_name, base_dir).read(parse_toml(toml_text, file_name));
@@ -964,13 +978,11 @@ ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_
 
 ProblemSpec read_problem_file(const std::string& path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InputError(path, "", "cannot read the problem file: it is a folder");
+  // Only a regular file of bounded size: a FIFO would block, /dev/zero would never end.
+  if (const std::string problem = input_file_problem(path, kMaxProblemFileBytes); !problem.empty())
+    throw InputError(path, "", "cannot open the problem file: it " + problem);
   std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InputError(path, "",
-                     fs::exists(path, ec) ? "cannot open the problem file for reading"
-                                          : "cannot open the problem file: it does not exist");
-  }
+  if (!in) throw InputError(path, "", "cannot open the problem file for reading");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path, "", "error while reading the problem file");
@@ -978,7 +990,9 @@ ProblemSpec read_problem_file(const std::string& path) {
   fs::path folder = fs::path(path).parent_path();
   if (folder.empty()) folder = ".";
   const fs::path absolute = fs::absolute(folder, ec);
-  return parse_problem(text.str(), path, (ec ? folder : absolute).lexically_normal().string());
+  ProblemSpec spec = parse_problem(text.str(), path, (ec ? folder : absolute).lexically_normal().string());
+  check_ipopt_section(spec);
+  return spec;
 }
 
 }  // namespace symcontact

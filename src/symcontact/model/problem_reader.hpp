@@ -17,8 +17,11 @@
 ///   mode = "one-pass", unique contact names; friction = "none" | "tresca" | "coulomb" with `tau` ≥ 0
 ///   required for (and only allowed with) Tresca, `mu` ≥ 0 likewise for Coulomb, `alpha` > 0 optional
 ///   with either law; positive tolerances and iteration counts ≥ 1 in [contact_solver]; [ipopt] values
-///   are strings, integers or floats and are otherwise passed on unchecked (IPOPT checks option names
-///   and ranges).
+///   are strings, integers or floats; read_problem_file() (not parse_problem()) also sets them on an
+///   IPOPT application, so that an unknown option or a value IPOPT rejects is an InputError with key
+///   "ipopt.<name>" before any work;
+/// - the problem file itself: a regular file (not a FIFO, a device, a folder or a symbolic link loop)
+///   of at most 64 MiB (input_file.hpp), checked before it is opened; mesh files likewise regular files.
 ///
 /// Every failure throws InputError(file, key, message) where `key` is the TOML path of the offending
 /// value with bodies counted from 0 ("body[1].material.nu", "body[0].dirichlet[2]") and `message`
@@ -38,6 +41,11 @@ namespace symcontact {
 /// Reads and validates the problem file at `path`. Mesh paths are resolved against the folder of
 /// `path` (made absolute). Throws InputError (file = `path`) if the file cannot be read or is invalid.
 ProblemSpec read_problem_file(const std::string& path);
+
+/// Sets the options of [ipopt] (spec.contact_solver.ipopt_*) on an IPOPT application, as the contact
+/// solve will: throws InputError(spec.file, "ipopt.<name>", IPOPT's objection) for the first option IPOPT
+/// does not know or whose value it rejects. read_problem_file() calls it; parse_problem() does not.
+void check_ipopt_section(const ProblemSpec& spec);
 
 /// Validates the TOML document `toml_text`. `file_name` is used in error messages and stored in
 /// ProblemSpec::file; relative mesh paths are resolved against `base_dir` (a folder; "" means the

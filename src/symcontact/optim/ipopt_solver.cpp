@@ -19,6 +19,7 @@
 #pragma GCC diagnostic pop
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/interrupt.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/energy/energy_term.hpp"
 
@@ -227,6 +228,16 @@ class ContactTNLP final : public Ipopt::TNLP {
     return true;
   }
 
+  /// Called by IPOPT after each iteration: false stops it (User_Requested_Stop) once SIGINT or SIGTERM
+  /// has arrived (interrupt.hpp).
+  bool intermediate_callback(Ipopt::AlgorithmMode /*mode*/, IpIndex /*iter*/, IpNumber /*obj_value*/,
+                             IpNumber /*inf_pr*/, IpNumber /*inf_du*/, IpNumber /*mu*/, IpNumber /*d_norm*/,
+                             IpNumber /*regularization_size*/, IpNumber /*alpha_du*/, IpNumber /*alpha_pr*/,
+                             IpIndex /*ls_trials*/, const Ipopt::IpoptData* /*ip_data*/,
+                             Ipopt::IpoptCalculatedQuantities* /*ip_cq*/) override {
+    return !interrupt_requested();
+  }
+
   void finalize_solution(Ipopt::SolverReturn /*status*/, IpIndex n, const IpNumber* x,
                          const IpNumber* z_L, const IpNumber* /*z_U*/, IpIndex m, const IpNumber* g,
                          const IpNumber* lambda, IpNumber obj_value, const Ipopt::IpoptData* /*ip_data*/,
@@ -310,7 +321,7 @@ const char* type_name(Ipopt::RegisteredOptionType t) {
 
 [[noreturn]] void throw_option_error(const std::string& name, const std::string& value,
                                      const std::string& why) {
-  throw std::invalid_argument("IPOPT option '" + name + "' = '" + value + "': " + why);
+  throw IpoptOptionError(name, "IPOPT option '" + name + "' = '" + value + "': " + why);
 }
 
 std::string to_text(double v) {
@@ -318,6 +329,26 @@ std::string to_text(double v) {
   s.precision(17);
   s << v;
   return s.str();
+}
+
+/// "expected a number > 0", "expected an integer in [0, 12]": the registered range of a numeric or
+/// integer option, for messages.
+std::string expected_range(const Ipopt::RegisteredOption& option) {
+  const bool integer = option.Type() == Ipopt::OT_Integer;
+  auto bound = [&](bool lower) {
+    return integer ? std::to_string(lower ? option.LowerInteger() : option.UpperInteger())
+                   : to_text(lower ? option.LowerNumber() : option.UpperNumber());
+  };
+  std::string s = integer ? "expected an integer" : "expected a number";
+  if (option.HasLower() && option.HasUpper()) {
+    s += std::string(" in ") + (option.LowerStrict() ? "(" : "[") + bound(true) + ", " + bound(false) +
+         (option.UpperStrict() ? ")" : "]");
+  } else if (option.HasLower()) {
+    s += std::string(option.LowerStrict() ? " > " : " >= ") + bound(true);
+  } else if (option.HasUpper()) {
+    s += std::string(option.UpperStrict() ? " < " : " <= ") + bound(false);
+  }
+  return s;
 }
 
 /// A user option, given as a string, a number or an integer. Strings are converted to the option's
@@ -355,7 +386,7 @@ void set_user_option(Ipopt::IpoptApplication& app, const std::string& name, cons
       v = std::strtod(value.text.c_str(), &end);
       if (value.text.empty() || *end != '\0') throw_option_error(name, shown, "expected a number");
     }
-    if (!option->IsValidNumberSetting(v)) throw_option_error(name, shown, "value out of range");
+    if (!option->IsValidNumberSetting(v)) throw_option_error(name, shown, "out of range, " + expected_range(*option));
     ok = app.Options()->SetNumericValue(name, v);
   } else if (type == Ipopt::OT_Integer) {
     long v = value.integer;
@@ -370,12 +401,21 @@ void set_user_option(Ipopt::IpoptApplication& app, const std::string& name, cons
       if (value.text.empty() || *end != '\0') throw_option_error(name, shown, "expected an integer");
     }
     if (!option->IsValidIntegerSetting(static_cast<IpIndex>(v)))
-      throw_option_error(name, shown, "value out of range");
+      throw_option_error(name, shown, "out of range, " + expected_range(*option));
     ok = app.Options()->SetIntegerValue(name, static_cast<IpIndex>(v));
   } else {
     throw_option_error(name, shown, std::string("option is ") + type_name(type));
   }
   if (!ok) throw_option_error(name, shown, "rejected by IPOPT");
+}
+
+void set_user_options(Ipopt::IpoptApplication& app, const IpoptOptions& options) {
+  for (const auto& [name, v] : options.string_options)
+    set_user_option(app, name, UserValue{UserValue::kString, v, 0.0, 0});
+  for (const auto& [name, v] : options.numeric_options)
+    set_user_option(app, name, UserValue{UserValue::kNumber, {}, v, 0});
+  for (const auto& [name, v] : options.integer_options)
+    set_user_option(app, name, UserValue{UserValue::kInteger, {}, 0.0, v});
 }
 
 void set_default(Ipopt::IpoptApplication& app, const std::string& name, const std::string& v) {
@@ -542,12 +582,7 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   }
 
   // ---- user options, last so that they override ----
-  for (const auto& [name, v] : options.string_options)
-    set_user_option(*app, name, UserValue{UserValue::kString, v, 0.0, 0});
-  for (const auto& [name, v] : options.numeric_options)
-    set_user_option(*app, name, UserValue{UserValue::kNumber, {}, v, 0});
-  for (const auto& [name, v] : options.integer_options)
-    set_user_option(*app, name, UserValue{UserValue::kInteger, {}, 0.0, v});
+  set_user_options(*app, options);
 
   // Initialize("") reads no ipopt.opt file from the working directory: all options come from here.
   Ipopt::ApplicationReturnStatus status = app->Initialize("");
@@ -577,6 +612,11 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
     }
   }
   return result;
+}
+
+void check_ipopt_options(const IpoptOptions& options) {
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(false);  // no console output
+  set_user_options(*app, options);
 }
 
 }  // namespace symcontact

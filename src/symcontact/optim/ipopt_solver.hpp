@@ -40,12 +40,13 @@
 /// - f, ∇f or ∇²f throwing EvaluationError makes the callback return false: IPOPT then shortens the
 ///   step (line search) or, at the starting point, stops with a failed status. Any other exception
 ///   propagates out of solve_with_ipopt.
-/// - An unknown IPOPT option, a value of the wrong type or out of range: std::invalid_argument naming
-///   the option. Inconsistent sizes (x0, A, b, multipliers0): std::invalid_argument.
+/// - An unknown IPOPT option, a value of the wrong type or out of range: IpoptOptionError (an
+///   std::invalid_argument) naming the option; check_ipopt_options() finds these before any solve. Inconsistent sizes (x0, A, b, multipliers0): std::invalid_argument.
 /// - A failed solve does NOT throw: success == false and status/status_text say why; the caller
 ///   decides (typically by throwing SolveError with its own context).
 
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "symcontact/core/types.hpp"
@@ -75,6 +76,22 @@ struct IpoptOptions {
   std::map<std::string, double> numeric_options;
   std::map<std::string, int> integer_options;
 };
+
+/// A user IPOPT option that IPOPT does not know, or a value of the wrong type or out of range.
+class IpoptOptionError : public std::invalid_argument {
+ public:
+  IpoptOptionError(std::string name, const std::string& message)
+      : std::invalid_argument(message), name_(std::move(name)) {}
+  const std::string& name() const { return name_; }  ///< the option's name
+
+ private:
+  std::string name_;
+};
+
+/// Sets the user options of `options` (string_options, numeric_options, integer_options) on a fresh
+/// IPOPT application exactly as solve_with_ipopt() does, without solving: throws IpoptOptionError for
+/// the first one IPOPT rejects. Writes nothing to the console.
+void check_ipopt_options(const IpoptOptions& options);
 
 struct IpoptResult {
   bool success = false;       ///< Solve_Succeeded or Solved_To_Acceptable_Level

@@ -11,11 +11,17 @@
 namespace symcontact {
 
 namespace {
+/// ‖g_free‖₂ without overflow or underflow: m·sqrt(Σ (g_d/m)²) with m = max |g_d| (forces of 1e200 have
+/// a finite norm even though their squares do not). Non-finite entries give a non-finite norm.
 double free_norm(const VectorXd& g, const std::vector<Index>& free_index) {
+  double m = 0.0;
+  for (Index d = 0; d < g.size(); ++d)
+    if (free_index[d] >= 0) m = std::max(m, std::abs(g[d]));
+  if (m == 0.0 || !std::isfinite(m)) return m;
   double s = 0.0;
   for (Index d = 0; d < g.size(); ++d)
-    if (free_index[d] >= 0) s += g[d] * g[d];
-  return std::sqrt(s);
+    if (free_index[d] >= 0) s += (g[d] / m) * (g[d] / m);
+  return m * std::sqrt(s);
 }
 
 /// Collects K_ff (lower, free numbering) and adds −K_fD Δu_D to `rhs` (free numbering) from the same
@@ -155,8 +161,14 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
     rep.residual = r;
     // Force scale: the loads, the first residual, and the support reactions (the only forces of a
     // problem driven by Dirichlet values alone).
-    reaction_scale = std::max(reaction_scale, std::sqrt(std::max(0.0, g.squaredNorm() - r * r)));
+    // sqrt(|g|² − r²) as |g|·sqrt((1 − q)(1 + q)), q = r/|g|: no overflow for forces near 1e200.
+    const double g_norm = g.stableNorm();
+    const double q = g_norm > 0.0 ? std::min(1.0, r / g_norm) : 1.0;
+    reaction_scale = std::max(reaction_scale, g_norm * std::sqrt((1.0 - q) * (1.0 + q)));
     const double scale = std::max({load_scale, rep.residual0, reaction_scale});
+    // Before the convergence test: r ≤ tol·scale holds for r = scale = inf.
+    if (!std::isfinite(r) || !std::isfinite(scale))
+      throw SolveError("Newton iteration produced a non-finite residual (the loads or the stiffness overflow)");
     const bool boundary_moving = !constant && dirichlet_jump(fixed, u, jump) > 0.0;
     if (!boundary_moving && (r <= options.tolerance * scale || scale == 0.0)) break;
     if (constant && it >= 1) {
@@ -168,7 +180,6 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
                          "relative residual of " + std::to_string(r / scale) + ")");
       break;
     }
-    if (!std::isfinite(r)) throw SolveError("Newton iteration produced a non-finite residual");
     if (it >= options.max_iterations) {
       std::ostringstream s;
       s << "Newton did not converge in " << options.max_iterations << " iterations (residual " << r

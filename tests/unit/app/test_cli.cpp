@@ -24,12 +24,6 @@ using symcontact::testing::CliResult;
 using symcontact::testing::read_text;
 using symcontact::testing::shell_quote;
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  ASSERT_TRUE(out.good()) << "cannot write " << path;
-}
-
 /// The [problem] table and one 2D linear-elastic body; `extra` is appended (dirichlet, pressure, ...).
 std::string problem_toml(const std::string& mesh, const std::string& group, const std::string& nu,
                          const std::string& extra, const std::string& problem_extra = "") {
@@ -47,26 +41,6 @@ std::string test_mesh(const std::string& name) { return std::string(SYMCONTACT_T
 class Cli : public symcontact::testing::CliTest {
  protected:
   Cli() : CliTest("symcontact_cli_") {}
-
-  /// Writes `text` as `name` in the test's folder and returns its path.
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = dir_ / name;
-    write_text(p, text);
-    return p;
-  }
-
-  /// Runs `run CASE --out out`, expects an input error (exit 2) whose message holds every string in
-  /// `expected`, and no output folder.
-  void expect_input_error(const fs::path& case_file, std::initializer_list<std::string> expected) const {
-    const fs::path out = dir_ / "out";
-    const CliResult r = run("run " + shell_quote(case_file) + " --out " + shell_quote(out));
-    EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
-    for (const std::string& s : expected) {
-      EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
-    }
-    EXPECT_FALSE(fs::exists(out)) << "an input error must not create the output folder";
-  }
 };
 
 TEST_F(Cli, VersionPrintsTheVersion) {

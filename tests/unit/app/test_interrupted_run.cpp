@@ -1,7 +1,9 @@
 /// A run killed in the middle of its load steps loses nothing (issue: "Interrupted runs lose nothing"):
 /// every file named by results.pvd exists and is a complete VTU, every finished step's contact CSV is
 /// complete, and summary.json is a complete document. Files are written under a temporary name and
-/// renamed (io/atomic_file.hpp), so a kill can only leave a stray temporary behind.
+/// renamed (io/atomic_file.hpp), so a kill can only leave a stray temporary behind, which the next run
+/// into the folder removes. SIGINT and SIGTERM are handled (core/interrupt.hpp): the run stops after the
+/// file it is writing, marks summary.json "interrupted" and exits 130 / 143 with no temporary left.
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -10,6 +12,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +20,7 @@
 #include <regex>
 #include <string>
 #include <thread>
+#include <vector>
 
 extern char** environ;
 
@@ -36,14 +40,10 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.compare(end + 1 - tail.size(), tail.size(), tail) == 0;
 }
 
-}  // namespace
-
-TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_killed_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  const fs::path out = dir / "out";
-  // The V4 friction block: 11 load steps of Coulomb friction, long enough to be caught mid-run.
+/// Starts `symcontact run` on the V4 friction block (11 load steps of Coulomb friction, long enough to
+/// be caught mid-run) into `out`, and waits until the third step's contact CSV is there. Returns the
+/// process id, or 0 (after a test failure) when the run ended first or took too long.
+pid_t start_friction_block_until_step_3(const fs::path& out) {
   const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/friction_block/block.toml";
   const std::string cli = SYMCONTACT_CLI;
   const std::string out_s = out.string();
@@ -51,20 +51,92 @@ TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
                              const_cast<char*>(example.c_str()), const_cast<char*>("--out"),
                              const_cast<char*>(out_s.c_str()), const_cast<char*>("-q"), nullptr};
   pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, cli.c_str(), nullptr, nullptr, argv.data(), environ), 0);
-  // Kill it as soon as the third step's results are there (and before the run can end).
+  EXPECT_EQ(posix_spawn(&pid, cli.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  if (pid == 0) return 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  bool caught = false;
   while (std::chrono::steady_clock::now() < deadline) {
-    if (fs::exists(out / "contact_floor_0003.csv")) {
-      caught = true;
-      break;
-    }
+    if (fs::exists(out / "contact_floor_0003.csv")) return pid;
     int status = 0;
-    if (waitpid(pid, &status, WNOHANG) == pid) FAIL() << "the run ended before it could be interrupted";
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      ADD_FAILURE() << "the run ended before it could be interrupted";
+      return 0;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ASSERT_TRUE(caught) << "no third step within the deadline";
+  ADD_FAILURE() << "no third step within the deadline";
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  return 0;
+}
+
+/// The names of the files in `dir` holding ".tmp-" (temporaries of io/atomic_file.hpp).
+std::vector<std::string> temporaries(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().filename().string().find(".tmp-") != std::string::npos) names.push_back(e.path().filename().string());
+  return names;
+}
+
+/// Interrupts the friction block with `signal` after its third step: the run must exit 128 + signal,
+/// mark summary.json "interrupted" with its finished steps, name complete files only, and leave no
+/// temporary file.
+void expect_clean_stop(int signal, const std::string& signal_name) {
+  const fs::path dir = fs::temp_directory_path() / ("symcontact_signal_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const fs::path out = dir / "out";
+  const pid_t pid = start_friction_block_until_step_3(out);
+  ASSERT_NE(pid, 0);
+  ASSERT_EQ(kill(pid, signal), 0);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status)) << "the signal was not handled";
+  EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
+  const std::string summary = read_text(out / "summary.json");
+  EXPECT_TRUE(ends_with(summary, "}")) << summary;
+  EXPECT_NE(summary.find("\"status\": \"interrupted\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("interrupted by " + signal_name), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"step\": 3"), std::string::npos) << summary;
+  EXPECT_TRUE(ends_with(read_text(out / "results.pvd"), "</VTKFile>"));
+  EXPECT_TRUE(temporaries(out).empty()) << temporaries(out).front();
+  fs::remove_all(dir);
+}
+
+}  // namespace
+
+TEST(InterruptedRun, SigtermStopsCleanlyWithExit143) { expect_clean_stop(SIGTERM, "SIGTERM"); }
+
+TEST(InterruptedRun, SigintStopsCleanlyWithExit130) { expect_clean_stop(SIGINT, "SIGINT"); }
+
+TEST(InterruptedRun, TemporariesOfAKilledRunAreRemovedByTheNextRun) {
+  const fs::path dir = fs::temp_directory_path() / ("symcontact_stale_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const fs::path out = dir / "out";
+  fs::create_directories(out);
+  // A process that has ended: its id names the temporaries of a "killed" run.
+  pid_t dead = 0;
+  char* true_argv[] = {const_cast<char*>("/bin/true"), nullptr};
+  ASSERT_EQ(posix_spawn(&dead, "/bin/true", nullptr, nullptr, true_argv, environ), 0);
+  waitpid(dead, nullptr, 0);
+  const std::string stale = "summary.json.tmp-" + std::to_string(dead);
+  std::ofstream(out / stale) << "{ \"status\": ";
+  std::ofstream(out / "notes.tmp-draft") << "not ours";  // not a process id: kept
+  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/block_2d/block.toml";
+  const std::string command = "'" + std::string(SYMCONTACT_CLI) + "' run '" + example + "' --out '" + out.string() +
+                              "' -q";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_FALSE(fs::exists(out / stale));
+  EXPECT_TRUE(fs::exists(out / "notes.tmp-draft"));
+  EXPECT_TRUE(fs::is_regular_file(out / "summary.json"));
+  fs::remove_all(dir);
+}
+
+TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
+  const fs::path dir = fs::temp_directory_path() / ("symcontact_killed_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path out = dir / "out";
+  const pid_t pid = start_friction_block_until_step_3(out);
+  ASSERT_NE(pid, 0);
   ASSERT_EQ(kill(pid, SIGKILL), 0);
   int status = 0;
   waitpid(pid, &status, 0);

@@ -102,3 +102,51 @@ TEST(GmshIo, MalformedFilesAreInputErrors) {
     }
   }
 }
+
+namespace {
+std::size_t cell_count(const MeshFile& f) {
+  std::size_t n = 0;
+  for (const auto& b : f.all_cells) n += b.tags.size();
+  return n;
+}
+}  // namespace
+
+TEST(GmshIo, PredictedCellCountIsALowerEstimateOfTheActualCount) {
+  // The unit square and the unit cube fill their bounding boxes: the actual count is above the
+  // estimate (2·A/h², 6·V/h³), near the full-box count of equilateral triangles (2.3·A/h²); Gmsh's
+  // tetrahedra are smaller than regular ones of edge h (1125 at h = 0.25, 2.9 times the estimate).
+  const double unit[3] = {1.0, 1.0, 0.0}, cube[3] = {1.0, 1.0, 1.0};
+  EXPECT_DOUBLE_EQ(predicted_cell_count(2, unit, 0.1), 200.0);
+  EXPECT_DOUBLE_EQ(predicted_cell_count(3, cube, 0.5), 48.0);
+  const double xz[3] = {2.0, 0.0, 1.0};  // a 2D geometry in the xz plane
+  EXPECT_DOUBLE_EQ(predicted_cell_count(2, xz, 1.0), 4.0);
+  MeshReadOptions opt;
+  opt.dim = 2;
+  opt.mesh_size = 0.05;
+  const double tri = static_cast<double>(cell_count(read_mesh_file(kGeo + "square.geo", opt)));
+  EXPECT_GE(tri, predicted_cell_count(2, unit, 0.05));
+  EXPECT_LE(tri, 1.5 * predicted_cell_count(2, unit, 0.05));
+  opt.dim = 3;
+  opt.mesh_size = 0.25;
+  const double tet = static_cast<double>(cell_count(read_mesh_file(kGeo + "cube.geo", opt)));
+  EXPECT_GE(tet, predicted_cell_count(3, cube, 0.25));
+  EXPECT_LE(tet, 4.0 * predicted_cell_count(3, cube, 0.25));
+}
+
+TEST(GmshIo, MeshSizeAboveTheCellLimitIsRefusedNamingItsKey) {
+  MeshReadOptions opt;
+  opt.dim = 2;
+  opt.mesh_size = 0.05;  // predicted 800 triangles
+  opt.mesh_size_key = "problem.mesh_size";
+  opt.max_predicted_cells = 500;
+  try {
+    read_mesh_file(kGeo + "square.geo", opt);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("problem.mesh_size = 0.05 would make about 800 triangles"), std::string::npos)
+        << e.what();
+    EXPECT_NE(e.message().find("limit of 500 cells"), std::string::npos) << e.what();
+  }
+  opt.max_predicted_cells = 0;  // no limit (--allow-large-mesh)
+  EXPECT_NO_THROW(read_mesh_file(kGeo + "square.geo", opt));
+}

@@ -392,6 +392,19 @@ TEST(IpoptSolver, InvalidUserOptionsThrowNamingTheOption) {
   EXPECT_TRUE(r.success) << r.status_text;
   EXPECT_NEAR(r.x(0), 1.0, 1e-9);
 
+  // The same options checked without a solve (as the problem reader does): the same verdicts, the
+  // option's name, and for a value out of range the range IPOPT registered.
+  try {
+    check_ipopt_options(out_of_range);
+    ADD_FAILURE() << "tol = -1 accepted";
+  } catch (const IpoptOptionError& e) {
+    EXPECT_EQ(e.name(), "tol");
+    EXPECT_NE(std::string(e.what()).find("out of range, expected a number > 0"), std::string::npos) << e.what();
+  }
+  for (const IpoptOptions* o : {&unknown, &bad_value, &not_an_integer, &unknown_int})
+    EXPECT_THROW(check_ipopt_options(*o), IpoptOptionError);
+  EXPECT_NO_THROW(check_ipopt_options(valid));
+
   IpoptOptions few_iterations;
   few_iterations.integer_options["max_iter"] = 0;
   const IpoptResult r0 = solve_with_ipopt(problem, VectorXd::Zero(2), few_iterations);

@@ -1,0 +1,23 @@
+#pragma once
+/// \file geo_commands.hpp
+/// Gmsh's .geo language can run other programs: `SystemCall "cmd"` (also spelt `System`),
+/// `NonBlockingSystemCall "cmd"` and `OnelabRun("name", "cmd")` hand a command to the shell while the
+/// file is parsed, that is during `symcontact check` as well as `run`. A problem file and its meshes are
+/// data; a .geo from someone else must not run commands on the reader's machine. This check refuses such
+/// a file before Gmsh sees it (the CLI's --allow-geo-commands skips it).
+///
+/// The scan reads the file as Gmsh's lexer does: comments (`//`, `/* */`) and string literals are
+/// skipped, and any identifier equal to one of the command keywords is refused, with `Shell` too for
+/// safety. Files pulled in with `Include "f"` or `Merge "f.geo"` are scanned the same way (relative
+/// paths against the including file's folder); an Include or a Merge whose file name is computed (not a
+/// string literal) cannot be followed and is refused as well.
+
+#include <string>
+
+namespace symcontact {
+
+/// Throws InputError(file, "line L", message naming the command) for the first command that runs a
+/// program in `path` or a file it includes; returns when there is none.
+void check_geo_commands(const std::string& path);
+
+}  // namespace symcontact

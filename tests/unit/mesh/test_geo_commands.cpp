@@ -1,0 +1,69 @@
+#include "symcontact/mesh/geo_commands.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "symcontact/core/error.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class GeoCommands : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("symcontact_geo_commands_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return (dir_ / name).string();
+  }
+  /// The key ("line L") of the error check_geo_commands() throws for `path`, or "none".
+  static std::string refused_at(const std::string& path) {
+    try {
+      check_geo_commands(path);
+    } catch (const InputError& e) {
+      return e.key();
+    }
+    return "none";
+  }
+  fs::path dir_;
+};
+
+TEST_F(GeoCommands, CommandsOutsideCommentsAndStringsAreRefusedWithTheirLine) {
+  EXPECT_EQ(refused_at(write("a.geo", "Point(1) = {0, 0, 0};\nSystemCall \"rm -rf x\";\n")), "line 2");
+  EXPECT_EQ(refused_at(write("b.geo", "/* a\nb */ System \"ls\";\n")), "line 2");
+  EXPECT_EQ(refused_at(write("c.geo", "x = 1;\n\n\nNonBlockingSystemCall \"ls\";")), "line 4");
+  EXPECT_EQ(refused_at(write("d.geo", "OnelabRun(\"a\", \"b\");")), "line 1");
+}
+
+TEST_F(GeoCommands, CommentsStringsAndLongerNamesAreNotCommands) {
+  EXPECT_EQ(refused_at(write("ok.geo", "// SystemCall \"ls\";\n/* System */\nPrintf(\"SystemCall\");\n"
+                                       "SystemCalls = 2;\nlc = 0.1; // Shell\n")),
+            "none");
+}
+
+TEST_F(GeoCommands, IncludedFilesAreScannedAndComputedNamesRefused) {
+  write("inner.geo", "\n\nSystemCall \"ls\";\n");
+  try {
+    check_geo_commands(write("outer.geo", "Include \"inner.geo\";\n"));
+    FAIL() << "the included command was not found";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), (dir_ / "inner.geo").string());
+    EXPECT_EQ(e.key(), "line 3");
+  }
+  EXPECT_EQ(refused_at(write("computed.geo", "Include StrCat(\"in\", \"ner.geo\");\n")), "line 1");
+  write("mesh.msh", "$MeshFormat\n");  // merged meshes are data, not scripts
+  EXPECT_EQ(refused_at(write("merge.geo", "Merge \"mesh.msh\";\n")), "none");
+  EXPECT_EQ(refused_at(write("self.geo", "Include \"self.geo\";\n")), "line 1");  // nesting limit
+}
+
+}  // namespace
