@@ -84,17 +84,34 @@ std::string wrapper_geo(const std::string& geo, double h) {
   return std::string(buf) + "Include \"" + kExamples + "/" + geo + "\";\n";
 }
 
+/// The problem file of example `name` (cylinder_on_plane or two_cylinders) at element size h near the
+/// contact and order `order`: its mesh written to `dir` as cyl.geo.
+std::string example_toml(const std::string& name, double h, int order, const std::string& dir) {
+  write_text(dir, "cyl.geo", wrapper_geo(name + ".geo", h));
+  std::ifstream in(kExamples + "/" + name + ".toml");
+  std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string geo = name + ".geo";
+  for (std::size_t at; (at = toml.find(geo)) != std::string::npos;) toml.replace(at, geo.size(), "cyl.geo");
+  toml.replace(toml.find("order = 1"), 9, "order = " + std::to_string(order));
+  return toml;
+}
+
+/// V1's tolerances (VALIDATION.md): p0 3 %, a max(2 %, one element), the load carried to 1e-8, the
+/// pressure profile within 3 % of p0.
+void expect_v1(const HertzMeasure& m) {
+  EXPECT_NEAR(m.p0, p0_ref, 0.03 * p0_ref) << "h = " << m.h;
+  EXPECT_NEAR(m.a, a_ref, std::max(0.02 * a_ref, m.h)) << "h = " << m.h;
+  EXPECT_NEAR(2 * m.force, P, 1e-8 * P) << "h = " << m.h;
+  EXPECT_LT(m.profile_error, 0.03) << "h = " << m.h;
+}
+
 }  // namespace
 
 TEST(Hertz2D, CylinderOnRigidPlaneConvergesToClosedForm) {
   const std::string dir = test_temp_dir("hertz2d_plane");
   std::vector<HertzMeasure> ms;
   for (double h : {0.008, 0.004, 0.002}) {
-    write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h));
-    std::ifstream in(kExamples + "/cylinder_on_plane.toml");
-    std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    toml.replace(toml.find("cylinder_on_plane.geo"), 21, "cyl.geo");
-    auto c = solve_case(toml, dir);
+    auto c = solve_case(example_toml("cylinder_on_plane", h, 1, dir), dir);
     const HertzMeasure m = measure(*c, h);
     ms.push_back(m);
     print(m);
@@ -116,11 +133,7 @@ TEST(Hertz2D, TwoElasticCylindersMatchTheSameClosedForm) {
   const std::string dir = test_temp_dir("hertz2d_cylinders");
   std::vector<HertzMeasure> ms;
   for (double h : {0.008, 0.004}) {
-    write_text(dir, "cyl.geo", wrapper_geo("two_cylinders.geo", h));
-    std::ifstream in(kExamples + "/two_cylinders.toml");
-    std::string toml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    for (std::size_t at; (at = toml.find("two_cylinders.geo")) != std::string::npos;) toml.replace(at, 17, "cyl.geo");
-    auto c = solve_case(toml, dir);
+    auto c = solve_case(example_toml("two_cylinders", h, 1, dir), dir);
     // Both sides report the same interface pressure.
     const HertzMeasure ma = measure(*c, h, 0), mb = measure(*c, h, 1);
     print(ma);
@@ -180,4 +193,53 @@ TEST(Hertz2D, NeoHookeanCylinderAtSmallLoadMatchesLinearElasticity) {
   }
   std::printf("  max nodal pressure difference / p0: %.3e inside 0.9 a, %.3e outside\n", inner / ml.p0, edge / ml.p0);
   EXPECT_LT(inner, 0.01 * ml.p0);
+}
+
+// V1 with quadratic elements (P2: 6-node triangles, Line3 contact facets, curved surfaces): the same
+// closed form and tolerances, on meshes twice as coarse as P1's finest, and the errors falling with h.
+TEST(Hertz2D, CylinderOnRigidPlaneP2) {
+  const std::string dir = test_temp_dir("hertz2d_plane_p2");
+  std::vector<HertzMeasure> ms;
+  for (double h : {0.008, 0.004}) {
+    auto c = solve_case(example_toml("cylinder_on_plane", h, 2, dir), dir);
+    ms.push_back(measure(*c, h));
+    print(ms.back());
+    expect_v1(ms.back());
+  }
+  EXPECT_LT(ms[1].profile_error, ms[0].profile_error);
+}
+
+TEST(Hertz2D, TwoElasticCylindersP2) {
+  const std::string dir = test_temp_dir("hertz2d_cylinders_p2");
+  auto c = solve_case(example_toml("two_cylinders", 0.008, 2, dir), dir);
+  const HertzMeasure ma = measure(*c, 0.008, 0), mb = measure(*c, 0.008, 1);
+  print(ma);
+  print(mb);
+  expect_v1(ma);
+  expect_v1(mb);
+  EXPECT_NEAR(ma.p0, mb.p0, 0.01 * p0_ref);
+}
+
+// A P2 Neo-Hookean cylinder on the rigid plane: the finite-strain tangent at u = 0 has exact zeros
+// that later iterates fill, so IPOPT's Hessian pattern must be the structural one (matrix_sink.hpp).
+// At P/10 (strains ≈ 2 %) it must carry the load exactly and reproduce the linear-elastic P2 solution
+// on the same mesh to 1 % (p0 and a), as the P1 test above.
+TEST(Hertz2D, NeoHookeanCylinderP2AtSmallLoadMatchesLinearElasticity) {
+  const std::string dir = test_temp_dir("hertz2d_neo_hookean_p2");
+  const double h = 0.008, scale = 0.1;
+  auto make = [&](bool neo_hookean) {
+    std::string toml = example_toml("cylinder_on_plane", h, 2, dir);
+    toml.replace(toml.find("pressure = 0.005"), 16, "pressure = 0.0005");
+    if (neo_hookean) toml.replace(toml.find("E = 1.0"), 7, "model = \"neo_hookean\"\nE = 1.0");
+    return toml;
+  };
+  auto lin = solve_case(make(false), dir);
+  auto neo = solve_case(make(true), dir);
+  const HertzMeasure ml = measure(*lin, h), mn = measure(*neo, h);
+  std::printf("  P2 linear:      p0 = %.6f, a = %.6f, 2x force = %.12f\n", ml.p0, ml.a, 2 * ml.force);
+  std::printf("  P2 Neo-Hookean: p0 = %.6f (%+.3f%% of linear), a = %.6f (%+.3f%%), 2x force = %.12f\n", mn.p0,
+              100 * (mn.p0 / ml.p0 - 1), mn.a, 100 * (mn.a / ml.a - 1), 2 * mn.force);
+  EXPECT_NEAR(2 * mn.force, scale * P, 1e-8 * scale * P);
+  EXPECT_NEAR(mn.p0, ml.p0, 0.01 * ml.p0);
+  EXPECT_NEAR(mn.a, ml.a, std::max(0.01 * ml.a, h));
 }

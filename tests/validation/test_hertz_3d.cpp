@@ -98,13 +98,16 @@ TEST(Hertz3D, SphereOnRigidPlaneP2) {
   expect_hertz(m);
 }
 
-TEST(Hertz3D, TwoElasticSpheresMatchTheSameClosedForm) {
-  // examples/hertz_3d/two_spheres.*: symmetric contact of two curved, non-matching P1 surfaces (the
-  // mirrored sphere is meshed on its own), R_eff = 1/2 and E* halved: the same a and p0.
-  const std::string dir = test_temp_dir("hertz3d_spheres");
+namespace {
+
+/// examples/hertz_3d/two_spheres.* at h = 0.04 and order `order`: symmetric contact of two curved,
+/// non-matching surfaces (the mirrored sphere is meshed on its own), R_eff = 1/2 and E* halved: the same
+/// a and p0, on both sides.
+void expect_two_spheres_hertz(int order, const std::string& dir) {
   write_text(dir, "spheres.geo", "h = 0.04;\nInclude \"" + kExamples + "/two_spheres.geo\";\n");
   std::string toml = read_text(kExamples + "/two_spheres.toml");
   for (std::size_t at; (at = toml.find("two_spheres.geo")) != std::string::npos;) toml.replace(at, 15, "spheres.geo");
+  toml.replace(toml.find("order = 1"), 9, "order = " + std::to_string(order));
   const auto t0 = std::chrono::steady_clock::now();
   auto c = solve_case(toml, dir);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -131,6 +134,12 @@ TEST(Hertz3D, TwoElasticSpheresMatchTheSameClosedForm) {
   }
   EXPECT_NEAR(p0_side[0], p0_side[1], 0.01 * p0_of(load));
 }
+
+}  // namespace
+
+TEST(Hertz3D, TwoElasticSpheresMatchTheSameClosedForm) { expect_two_spheres_hertz(1, test_temp_dir("hertz3d_spheres")); }
+
+TEST(Hertz3D, TwoElasticSpheresP2) { expect_two_spheres_hertz(2, test_temp_dir("hertz3d_spheres_p2")); }
 
 TEST(Hertz3D, MeshedRigidFloorGivesTheAnalyticPlaneAnswer) {
   // The same sphere (P1, h = 0.04) on a meshed rigid square z = 0 (one-pass, 3D segment-based mortar

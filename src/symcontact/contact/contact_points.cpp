@@ -145,6 +145,29 @@ int default_gauss(const ContactSurface& s, const ContactSearchOptions& o) {
   return o.gauss_points > 0 ? o.gauss_points : 2 * cell_order(s.facet_type) + 1;
 }
 
+/// How far the points of a slave facet (current nodes xf) are projected: the search distance plus the
+/// diagonal of the facet's box (facet_box(), which bounds a curved facet), so that when one point of the
+/// facet lies within `search` of the master every other point finds its projection too.
+double facet_reach(CellType type, const Eigen::MatrixXd& xf, double search) {
+  return search + facet_box(type, xf, 0.0).diagonal().norm();
+}
+
+/// Appends the points of one slave facet (all projected within facet_reach()) to `points` when at least
+/// one of them has |θ| ≤ search, else none: a facet contributes whole or not at all. Cutting it point by
+/// point at the search distance leaves a node's row g_i = Σ w φ_i θ integrated over part of its support;
+/// with P2 test functions (negative on half of a Line3, and of a Tri6 facet's edges) the part kept can
+/// be where φ_i < 0, so g_i = (negative weight) × (θ ≈ search) < 0: a violated row on a node a search
+/// distance away from the master, which pulls the body towards it by about the search distance at every
+/// geometry iteration (the P2 Hertz cases cycled so). Over a whole facet the row is ∫ θ φ_i, which for
+/// a gap θ = θ0 + s ξ + c ξ² on a Line3 vertex is L (θ0/6 − c/60): positive away from contact.
+void append_whole_facet(const std::vector<ContactPoint>& facet_points, double search, std::vector<ContactPoint>& points) {
+  for (const ContactPoint& cp : facet_points)
+    if (std::abs(cp.gap) <= search) {
+      points.insert(points.end(), facet_points.begin(), facet_points.end());
+      return;
+    }
+}
+
 }  // namespace
 
 namespace {
@@ -350,16 +373,18 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
   const double search = options.search_distance;
   const int ng = default_gauss(slave, options);
   const int npf = slave.nodes_per_facet();
-  std::vector<ContactPoint> points;
+  std::vector<ContactPoint> points, facet_points;
   std::vector<double> cuts;
   std::vector<double> N(npf);
   const Eigen::MatrixXd ns_nodal = slave_normals_for_ray(slave, xs, master, options);
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
+    const double reach = facet_reach(slave.facet_type, xf, search);
     // Segmentation: master vertices near this facet.
     cuts.clear();
-    master.tree.for_each_overlap(facet_box(slave.facet_type, xf, search), [&](int mf) {
+    facet_points.clear();
+    master.tree.for_each_overlap(facet_box(slave.facet_type, xf, reach), [&](int mf) {
       for (int a = 0; a < 2; ++a) {
         const Index v = ms.facet(mf)[a];
         // At a corner, the edge of the fan on this facet's side (the facet's own normal there).
@@ -374,12 +399,13 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
       const Eigen::Vector3d ns = pad3(facet_normal(slave.facet_type, xf, &xi));
       const Eigen::Vector3d ray = options.bisector_ray ? smoothed_at(slave, ns_nodal, f, N.data()) : Eigen::Vector3d();
       ContactPoint cp;
-      if (!project_to_master(master, p, ns, search, cp, false, options.bisector_ray ? &ray : nullptr)) return;
+      if (!project_to_master(master, p, ns, reach, cp, false, options.bisector_ray ? &ray : nullptr)) return;
       cp.slave_facet = f;
       cp.xi[0] = xi;
       cp.weight = w * facet_normal(slave.facet_type, Xf, &xi).norm();
-      points.push_back(cp);
+      facet_points.push_back(cp);
     });
+    append_whole_facet(facet_points, search, points);
   }
   return points;
 }
@@ -391,13 +417,15 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
   // 2·order in ξ), unless gauss_points is given: 2·gauss_points − 1 as on segments.
   const int degree = options.gauss_points > 0 ? 2 * options.gauss_points - 1 : 2 * cell_order(slave.facet_type) + 1;
   const QuadratureRule rule = simplex_quadrature(2, degree);
-  std::vector<ContactPoint> points;
+  std::vector<ContactPoint> points, facet_points;
   std::vector<double> N(npf);
   const Eigen::MatrixXd ns_nodal = slave_normals_for_ray(slave, xs, master, options);
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
-    for (const MortarCell& cell : mortar_cells(slave, xs, f, master, options.search_distance)) {
+    const double reach = facet_reach(slave.facet_type, xf, options.search_distance);
+    facet_points.clear();
+    for (const MortarCell& cell : mortar_cells(slave, xs, f, master, reach)) {
       for (const auto& tri : triangulate_from_centroid(cell.polygon)) {
         // ξ(ζ) = t0 + ζ1 (t1 − t0) + ζ2 (t2 − t0): the rule's weights (sum 1/2) times 2 × the sub-area.
         const double jac = (tri[1] - tri[0]).x() * (tri[2] - tri[0]).y() - (tri[1] - tri[0]).y() * (tri[2] - tri[0]).x();
@@ -411,16 +439,16 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
           const Eigen::Vector3d ns = facet_normal(slave.facet_type, xf, xi).head<3>();
           const Eigen::Vector3d ray = options.bisector_ray ? smoothed_at(slave, ns_nodal, f, N.data()) : Eigen::Vector3d();
           ContactPoint cp;
-          if (!project_to_master(master, p, ns, options.search_distance, cp, false, options.bisector_ray ? &ray : nullptr))
-            continue;
+          if (!project_to_master(master, p, ns, reach, cp, false, options.bisector_ray ? &ray : nullptr)) continue;
           cp.slave_facet = f;
           cp.xi[0] = xi[0];
           cp.xi[1] = xi[1];
           cp.weight = rule.weights[q] * jac * facet_normal(slave.facet_type, Xf, xi).norm();
-          points.push_back(cp);
+          facet_points.push_back(cp);
         }
       }
     }
+    append_whole_facet(facet_points, options.search_distance, points);
   }
   return points;
 }
@@ -486,11 +514,12 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
     return r;
   }()
                                      : simplex_quadrature(d, 2 * default_gauss(slave, options) - 1);
-  std::vector<ContactPoint> points;
+  std::vector<ContactPoint> points, facet_points;
   std::vector<double> N(npf);
   for (Index f = 0; f < slave.num_facets(); ++f) {
     const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
     const Eigen::MatrixXd Xf = facet_nodes(slave, slave.X, f);
+    facet_points.clear();
     for (int q = 0; q < rule.size(); ++q) {
       const double* xi = rule.point(q);
       shape_functions(slave.facet_type, xi, N.data(), nullptr);
@@ -500,7 +529,6 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
       const Eigen::Vector3d ns = pad3(facet_normal(slave.facet_type, xf, xi));
       if (ns.dot(n) >= 0) continue;
       const double theta = (p - xbar).dot(n);
-      if (std::abs(theta) > options.search_distance) continue;
       ContactPoint cp;
       cp.slave_facet = f;
       for (int i = 0; i < d; ++i) cp.xi[i] = xi[i];
@@ -509,8 +537,9 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
       cp.xbar = xbar;
       cp.normal = n;
       cp.gap = theta;
-      points.push_back(cp);
+      facet_points.push_back(cp);
     }
+    append_whole_facet(facet_points, options.search_distance, points);
   }
   return points;
 }

@@ -21,9 +21,11 @@
 /// A slave region that no projected master facet covers gets no points: past the border of the master
 /// there is no contact, which the 3D end rule (contact_surface.hpp, border edges) also enforces.
 ///
-/// A point contributes only if: a master facet lies within `search_distance`; its projection is not
-/// past an end of the master surface; the slave and master normals face each other (n_s·n̄ < 0); and
-/// |θ| ≤ search_distance.
+/// A point contributes only if: its projection is not past an end of the master surface; the slave and
+/// master normals face each other (n_s·n̄ < 0); and some point of its slave facet has |θ| ≤
+/// search_distance. The search distance selects whole slave facets, never parts of one: the weak gap of
+/// a node integrates θ φ_i over whole facets, which P2 test functions (negative over part of a facet)
+/// need to keep the sign of the gap (gap_constraints.hpp).
 
 #include <vector>
 

@@ -83,10 +83,9 @@ GapConstraints assemble_gap_constraints(const ContactSurface& slave, const Conta
   }
   flush();
   // 3D: a row whose support Σ w φ_i is not positive has the wrong sign. With P2 test functions (negative
-  // in parts of a facet) a node whose facets are only partly integrated — cut by the search distance, or
-  // by the border of the master — can get g_i = (negative weight) × (a positive gap) < 0: a violated
-  // constraint where nothing touches (it made the geometry fixed point of the P2 Hertz 3D case
-  // oscillate). Such rows are left out. 2D keeps them (Line3 facets cut at a master end give such rows
+  // in parts of a facet) a node whose facets are only partly integrated — cut by the border of the master
+  // (the search distance selects whole facets, contact_points.hpp) — can get g_i = (negative weight) ×
+  // (a positive gap) < 0: a violated constraint where nothing touches. Such rows are left out. 2D keeps them (Line3 facets cut at a master end give such rows
   // too, test_gap_constraints.cpp PartialOverlap…; 2D behaviour is left unchanged).
   if (slave.dim != 3) return g;
   std::vector<Index> keep(g.num_rows(), -1);

@@ -5,8 +5,7 @@ namespace symcontact {
 void TripletSink::add(const Index* dofs, int n, const double* K) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      const double v = K[i + j * n];
-      if (v != 0.0) triplets_.emplace_back(static_cast<int>(dofs[i]), static_cast<int>(dofs[j]), v);
+      triplets_.emplace_back(static_cast<int>(dofs[i]), static_cast<int>(dofs[j]), K[i + j * n]);
     }
 }
 
@@ -23,8 +22,7 @@ void ReducedTripletSink::add(const Index* dofs, int n, const double* K) {
     for (int i = 0; i < n; ++i) {
       const Index fi = free_index_[dofs[i]];
       if (fi < fj) continue;  // fixed (−1) or upper triangle
-      const double v = K[i + j * n];
-      if (v != 0.0) triplets_.emplace_back(static_cast<int>(fi), static_cast<int>(fj), v);
+      triplets_.emplace_back(static_cast<int>(fi), static_cast<int>(fj), K[i + j * n]);
     }
   }
 }

@@ -5,6 +5,10 @@
 ///  - TripletSink: Eigen triplets in global numbering (duplicates summed later by setFromTriplets).
 ///  - ReducedTripletSink: drops the rows/columns of fixed DOFs and renumbers the free ones, keeping
 ///    only the lower triangle — the form a Cholesky factorisation of K_ff wants.
+/// Both keep every entry of every block, zeros included: the pattern of the assembled matrix is the
+/// structural one of the element connectivity, the same at every state. An entry that happens to be
+/// zero at one state (a Neo-Hookean tangent at u = 0 on a symmetric element) is nonzero at the next,
+/// and a solver that fixes the pattern at its first evaluation (IPOPT, ipopt_solver.hpp) needs it.
 
 #include <vector>
 

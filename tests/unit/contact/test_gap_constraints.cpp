@@ -254,6 +254,44 @@ TEST_P(GapConstraintsFlat, FarOrBackFacingSlaveGivesNoRows) {
   EXPECT_EQ(linearize(deep, VectorXd::Zero(deep.dofs.num_dofs()), 0.2).g.num_rows(), 0);
 }
 
+TEST_P(GapConstraintsFlat, AFacetPartlyWithinTheSearchDistanceCountsWhole) {
+  // The slave's bottom (x in [0.13, 0.83], facets of 0.1) above a plane tilted so that θ grows along x
+  // from 0.10 to 0.42; the search distance 0.25 falls inside the facet [0.43, 0.53] (at x = 0.459).
+  // That facet contributes all its points, the facets past it none: every row is ∫ θ φ_i over whole
+  // facets. Cut at the search distance instead, the P2 vertex at x = 0.53 kept only points where its
+  // test function is negative, a negative gap where θ > 0 everywhere.
+  const int order = GetParam();
+  const Interface it = make_interface(order, 0.13, 0.83, 7, 0.05);
+  ContactSet set;
+  set.surfaces = {it.slave};
+  Obstacle plane;
+  plane.name = "floor";
+  plane.point = Eigen::Vector3d::Zero();
+  plane.normal = Eigen::Vector3d(0.5, 1.0, 0.0).normalized();
+  set.obstacles = {plane};
+  ContactPair p;
+  p.surface_a = 0;
+  p.obstacle = 0;
+  p.search_distance = 0.25;
+  set.pairs = {p};
+  set.finalize();
+  const ContactLinearization lin = set.linearize(it.dofs, VectorXd::Zero(it.dofs.num_dofs()));
+  VectorXd theta(it.slave.num_nodes());
+  Index within = 0;  // nodes of the facets that reach the search distance: x ≤ 0.53
+  for (Index k = 0; k < it.slave.num_nodes(); ++k) {
+    theta[k] = (Eigen::Vector3d(it.slave.X(0, k), it.slave.X(1, k), 0.0) - plane.point).dot(plane.normal);
+    if (it.slave.X(0, k) <= 0.53 + 1e-9) ++within;
+  }
+  const VectorXd whole = weak_integral(it.slave, order, theta);
+  EXPECT_EQ(lin.b.size(), within);
+  for (Index row = 0; row < lin.b.size(); ++row) {
+    const Index k = lin.row_node[row];
+    EXPECT_GT(lin.b[row], 0.0) << "node at x = " << it.slave.X(0, k);
+    // Nodes inside the selected facets: the whole support is integrated.
+    if (it.slave.X(0, k) < 0.53 - 1e-9) EXPECT_NEAR(lin.b[row], whole[k], 1e-13) << "node at x = " << it.slave.X(0, k);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(GapConstraints, GapConstraintsFlat, ::testing::Values(1, 2),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            return "P" + std::to_string(param_info.param);
