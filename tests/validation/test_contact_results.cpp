@@ -94,19 +94,6 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> body_force(const SolvedCase& c, int 
 
 double peak(const ContactSideResult& s) { return s.pressure.maxCoeff(); }
 
-/// The largest pressure per CURRENT lumped length (Line2 facets): p_k A_k / a_k, a_k = Σ |facet| / 2.
-double current_peak(const ContactSurface& surf, const ContactSideResult& s) {
-  Eigen::VectorXd a = Eigen::VectorXd::Zero(surf.num_nodes());
-  for (Index f = 0; f < surf.num_facets(); ++f) {
-    const double len = (s.x.col(surf.facet(f)[1]) - s.x.col(surf.facet(f)[0])).norm();
-    a[surf.facet(f)[0]] += len / 2;
-    a[surf.facet(f)[1]] += len / 2;
-  }
-  double m = 0.0;
-  for (Index k = 0; k < surf.num_nodes(); ++k) m = std::max(m, s.pressure[k] * surf.nodal_area[k] / a[k]);
-  return m;
-}
-
 }  // namespace
 
 // Frictionless, dissimilar (E = 1 on 3): the upper cylinder carries the load through the contact alone.
@@ -124,9 +111,7 @@ TEST(ContactResults, DissimilarCylindersAddUp) {
               "peak pressure a %.6e, b %.6e (b/a - 1 = %.3e)\n",
               pairs.y(), residual.y(), r.normal_load, peak(r.sides[0]), peak(r.sides[1]),
               peak(r.sides[1]) / peak(r.sides[0]) - 1);
-  const ContactSet& cs = c->model->contacts();
-  const double ca = current_peak(cs.surfaces[r.sides[0].surface], r.sides[0]),
-               cb = current_peak(cs.surfaces[r.sides[1].surface], r.sides[1]);
+  const double ca = r.sides[0].current_pressure.maxCoeff(), cb = r.sides[1].current_pressure.maxCoeff();
   std::printf("  per current length: peak a %.6e, b %.6e (b/a - 1 = %.3e)\n", ca, cb, cb / ca - 1);
   // Upward force on the upper body = the applied load; the residual (free DOFs) agrees.
   EXPECT_NEAR(pairs.y(), kLoad, 1e-10 * kLoad);
@@ -135,8 +120,10 @@ TEST(ContactResults, DissimilarCylindersAddUp) {
   // ∫ λ dΓ: the interface is counted once; the zone is nearly flat (a/R = 0.1), so |F_n| to cos of its slope.
   EXPECT_NEAR(r.normal_load, kLoad, 5e-3 * kLoad);
   EXPECT_GE(r.normal_load, kLoad * (1 - 1e-10));
-  // Each side's pressure is per its own reference length: the sides differ by their tangential stretches.
-  EXPECT_NEAR(peak(r.sides[0]), peak(r.sides[1]), 0.03 * peak(r.sides[0]));
+  // Each side's pressure is per its own reference length: the sides differ by their tangential stretches
+  // (measured 2.1 %); per current length they share one interface and agree (measured 2.3e-4).
+  EXPECT_GT(std::abs(peak(r.sides[1]) / peak(r.sides[0]) - 1), 0.01);
+  EXPECT_LT(std::abs(cb / ca - 1), 1e-3);
 }
 
 // One surface in three pairs: the floor declared twice, and a plane 0.01 below it, never reached.

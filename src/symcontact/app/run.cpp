@@ -53,7 +53,7 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
     os << "side,surface,node";
     for (int i = 0; i < D; ++i) os << ',' << xyz[i];
     for (int i = 0; i < D; ++i) os << ',' << xyz[i] << "_ref";
-    os << ",gap,pressure";
+    os << ",gap,pressure,current_pressure";
     for (int i = 0; i < D; ++i) os << ",t" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",f" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",fn_" << xyz[i];
@@ -79,6 +79,7 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
         };
         cell(sr.gap[k]);
         cell(sr.pressure[k]);
+        cell(sr.current_pressure[k]);
         for (int i = 0; i < D; ++i) cell(sr.tangential(i, k));
         for (int i = 0; i < D; ++i) cell(sr.force(i, k));
         for (int i = 0; i < D; ++i) cell(sr.normal_part(i, k));

@@ -67,13 +67,28 @@ Eigen::MatrixXd nodal_slips(const ContactSurface& s, const FrictionTerm& term, c
 }
 
 /// The force of pair `pi` alone on every DOF, split as the solve builds it: its constraint rows' Aᵀμ (the
-/// normal part) and its friction term's −∇j (the tangential part), and ∫ λ dΓ = Σ_r μ_r Σ_q w_q φ_r.
+/// normal part, plus the solve's equilibrium defect where only this pair's rows reach) and its friction
+/// term's −∇j (the tangential part), and ∫ λ dΓ = Σ_r μ_r Σ_q w_q φ_r.
 struct PairForce {
   VectorXd normal, tangential;
   double normal_load = 0.0;
 };
 
-PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolveReport& report, int pi) {
+/// Per DOF, the pair whose constraint rows alone touch it; −1 for none, −2 for several.
+std::vector<int> dof_owners(const ContactSet& cs, const ContactLinearization& lin, Index num_dofs) {
+  std::vector<int> owner(num_dofs, -1);
+  if (lin.A.cols() != num_dofs || static_cast<Index>(lin.row_family.size()) != lin.A.rows()) return owner;
+  for (Index c = 0; c < lin.A.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(lin.A, c); it; ++it) {
+      const int p = cs.families()[lin.row_family[it.row()]].pair;
+      int& o = owner[it.col()];
+      o = o == -1 || o == p ? p : -2;
+    }
+  return owner;
+}
+
+PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolveReport& report,
+                     const std::vector<int>& owner, int pi) {
   const ContactLinearization& lin = report.linearization;
   PairForce f;
   f.normal = VectorXd::Zero(u.size());
@@ -87,6 +102,10 @@ PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolve
       }
     f.normal = lin.A.transpose() * mu;
   }
+  // The solve's equilibrium defect goes to the normal part of the pair that alone touches the DOF.
+  if (report.force_defect.size() == u.size())
+    for (Index d = 0; d < u.size(); ++d)
+      if (owner[d] == pi) f.normal[d] += report.force_defect[d];
   if (pi < static_cast<int>(report.friction.size()) && report.friction[pi]) {
     report.friction[pi]->add_gradient(u, f.tangential);
     f.tangential = -f.tangential;
@@ -124,12 +143,15 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
   sr.tangential_force = tangential_part.rowwise().sum();
   sr.total_force = sr.force.rowwise().sum();
   const Eigen::MatrixXd fn = test_basis_forces(s, sr.normal_part), ft = test_basis_forces(s, tangential_part);
+  const Eigen::VectorXd current_area = lumped_areas(s, sr.x);
   sr.pressure = Eigen::VectorXd::Zero(s.num_nodes());
+  sr.current_pressure = Eigen::VectorXd::Zero(s.num_nodes());
   sr.tangential = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
   for (Index k = 0; k < s.num_nodes(); ++k) {
     if (s.nodal_area[k] <= 0) continue;
     sr.pressure[k] = -fn.col(k).dot(normals.col(k)) / s.nodal_area[k];
     sr.tangential.col(k) = ft.col(k) / s.nodal_area[k];
+    if (current_area[k] > 0) sr.current_pressure[k] = sr.pressure[k] * s.nodal_area[k] / current_area[k];
   }
   const bool has_friction = pi < static_cast<int>(report.friction.size()) && report.friction[pi];
   const bool friction_side = has_friction && si == cs.families()[cs.friction_family(pi)].slave;
@@ -155,11 +177,12 @@ void set_status(ContactSideResult& sr, double max_pressure, double alpha) {
 std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMap& dofs, const VectorXd& u,
                                                const ContactSolveReport& report) {
   std::vector<ContactPairResult> out;
+  const std::vector<int> owner = dof_owners(cs, report.linearization, u.size());
   for (int pi = 0; pi < static_cast<int>(cs.pairs.size()); ++pi) {
     const ContactPair& pair = cs.pairs[pi];
     ContactPairResult r;
     r.name = pair.name;
-    const PairForce pf = pair_force(cs, u, report, pi);
+    const PairForce pf = pair_force(cs, u, report, owner, pi);
     r.normal_load = pf.normal_load;
     // One side for an obstacle and for self-contact (the surface is both sides), two otherwise.
     const int nsides = pair.obstacle >= 0 || pair.surface_a == pair.surface_b ? 1 : 2;
@@ -171,7 +194,7 @@ std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMa
     // — an adhesive pressure, which would be a bug — is left visible.
     for (auto& sr : r.sides) {
       for (Index k = 0; k < sr.pressure.size(); ++k)
-        if (std::abs(sr.pressure[k]) <= 1e-12 * r.max_pressure) sr.pressure[k] = 0.0;
+        if (std::abs(sr.pressure[k]) <= 1e-12 * r.max_pressure) sr.pressure[k] = sr.current_pressure[k] = 0.0;
       set_status(sr, r.max_pressure, pair.alpha);
     }
     r.total_force = r.sides[0].total_force;

@@ -8,11 +8,14 @@
 /// A_p the pair's constraint rows (both families of a symmetric pair; gap_constraints.hpp), j_p its friction
 /// term (friction_term.hpp). The normal part is, row by row, along the row's own normals (those of the
 /// frozen gaps θ_q), so a frictionless pair has a tangential part of exactly zero; nothing is projected on
-/// nodal normals. Per side and per pair, total = normal + tangential as vectors; Σ over the pairs of the
-/// forces on a body's surface is Aᵀμ − Σ_p ∇j_p, the whole contact force of the solve; by action and
-/// reaction (each row's slave and master parts cancel, as do each friction point's) side b carries −side a
-/// where both are deformable. At the KKT point Aᵀμ − ∇j = ∇E(u) on the free DOFs, so that sum equals the
-/// bodies' residual to the optimiser's tolerance (exactly where the polish or the dual closed the solve).
+/// nodal normals. At the KKT point Aᵀμ − Σ_p ∇j_p = ∇E(u) on the free DOFs, to the optimiser's tolerance
+/// (round-off where the polish or the dual closed the solve); that defect (ContactSolveReport::force_defect)
+/// is added to the normal part of the pair whose rows alone reach the DOF, so that the reported forces
+/// balance the loads as the residual does (the frictional patch tests: 1e-6 of p otherwise). Per side and
+/// per pair, total = normal + tangential as vectors; Σ over the pairs of the forces on a body's surface is
+/// the body's contact force, ∇E(u) on its free surface DOFs (but for the defect at DOFs two pairs reach);
+/// by action and reaction (each row's slave and master parts cancel, as do each friction point's) side b
+/// carries −side a where both are deformable (to the defect).
 ///
 /// Sides: side a (surface a) and side b (surface b) of a two-body pair; an obstacle pair has side a only;
 /// a self-contact pair has one side, the surface, whose total force is zero by action and reaction (its
@@ -27,6 +30,10 @@
 ///    node's own where it projects onto nothing. Both sides of a symmetric pair carry the same force over
 ///    the same current interface, each per its own reference area: their pressures differ by the ratio of
 ///    the two sides' tangential stretches (1 + O(p/E)), besides discretisation error,
+///  - current_pressure p_k A_k / a_k, a_k the lumped area in the current configuration (lumped_areas(),
+///    contact_surface.hpp): the same force per current area, in which the sides share one interface, so
+///    that both sides' agree to discretisation error (two-material Hertz cylinders, peak: 2.1 % apart per
+///    reference length, 2.3e-4 per current length),
 ///  - gap: the signed distance θ of the node to the opposite surface (closest point, smoothed normal),
 ///    NaN when the node projects onto nothing,
 ///  - slip (friction side only, NaN elsewhere): the tangential slip increment of the load step at the
@@ -62,7 +69,8 @@ struct ContactSideResult {
   Eigen::MatrixXd force;       ///< dim × n nodal force of the pair: normal_part + the friction part
   Eigen::MatrixXd normal_part; ///< dim × n nodal A_pᵀ μ_p
   Eigen::MatrixXd normals;     ///< dim × n interface normals ν_k of the pressure
-  Eigen::VectorXd pressure;    ///< n
+  Eigen::VectorXd pressure;    ///< n, per lumped reference area of this side
+  Eigen::VectorXd current_pressure;  ///< n, the same force per current lumped area a_k: p_k A_k / a_k
   Eigen::MatrixXd tangential;  ///< dim × n tangential traction
   Eigen::VectorXd gap;         ///< n (NaN: no projection)
   Eigen::MatrixXd slip;        ///< dim × n (NaN off the friction side)
