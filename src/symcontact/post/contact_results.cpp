@@ -70,7 +70,7 @@ Eigen::MatrixXd nodal_slips(const ContactSurface& s, const FrictionTerm& term, c
 /// normal part, plus the solve's equilibrium defect where only this pair's rows reach) and its friction
 /// term's −∇j (the tangential part), and ∫ λ dΓ = Σ_r μ_r Σ_q w_q φ_r.
 struct PairForce {
-  VectorXd normal, tangential;
+  VectorXd normal, defect, tangential;  ///< Aᵀμ_p, the defect at the DOFs the pair alone reaches, −∇j_p
   double normal_load = 0.0;
 };
 
@@ -92,6 +92,7 @@ PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolve
   const ContactLinearization& lin = report.linearization;
   PairForce f;
   f.normal = VectorXd::Zero(u.size());
+  f.defect = VectorXd::Zero(u.size());
   f.tangential = VectorXd::Zero(u.size());
   if (report.multipliers.size() == lin.A.rows() && lin.A.cols() == u.size()) {
     VectorXd mu = VectorXd::Zero(report.multipliers.size());
@@ -105,7 +106,7 @@ PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolve
   // The solve's equilibrium defect goes to the normal part of the pair that alone touches the DOF.
   if (report.force_defect.size() == u.size())
     for (Index d = 0; d < u.size(); ++d)
-      if (owner[d] == pi) f.normal[d] += report.force_defect[d];
+      if (owner[d] == pi) f.defect[d] = report.force_defect[d];
   if (pi < static_cast<int>(report.friction.size()) && report.friction[pi]) {
     report.friction[pi]->add_gradient(u, f.tangential);
     f.tangential = -f.tangential;
@@ -124,8 +125,10 @@ Eigen::MatrixXd nodal_values(const ContactSurface& s, const DofMap& dofs, const 
 
 /// One side of pair `pi` on surface `si`: forces from the pair's own rows and friction term, pressure and
 /// traction per lumped reference area (in the test basis, surface_tractions.hpp), gaps, slips.
+/// `multiplier_pressure`: the pressure of Aᵀμ_p alone (for the status: exactly zero where no active row reaches).
 ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofMap& dofs, const VectorXd& u,
-                              const PairForce& pf, const ContactSolveReport& report) {
+                              const PairForce& pf, const ContactSolveReport& report,
+                              Eigen::VectorXd& multiplier_pressure) {
   const ContactPair& pair = cs.pairs[pi];
   const int si = side == 0 ? pair.surface_a : pair.surface_b;
   const ContactSurface& s = cs.surfaces[si];
@@ -136,13 +139,16 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
   Eigen::MatrixXd normals = nodal_normals(s, sr.x);
   sr.gap = nodal_gaps(cs, pair, side, dofs, u, sr.x, normals);
   sr.normals = normals;
-  sr.normal_part = nodal_values(s, dofs, pf.normal);
+  const Eigen::MatrixXd multiplier_part = nodal_values(s, dofs, pf.normal);
+  sr.normal_part = multiplier_part + nodal_values(s, dofs, pf.defect);
   const Eigen::MatrixXd tangential_part = nodal_values(s, dofs, pf.tangential);
   sr.force = sr.normal_part + tangential_part;
   sr.normal_force = sr.normal_part.rowwise().sum();
   sr.tangential_force = tangential_part.rowwise().sum();
   sr.total_force = sr.force.rowwise().sum();
-  const Eigen::MatrixXd fn = test_basis_forces(s, sr.normal_part), ft = test_basis_forces(s, tangential_part);
+  const Eigen::MatrixXd fn = test_basis_forces(s, sr.normal_part), ft = test_basis_forces(s, tangential_part),
+                        fm = test_basis_forces(s, multiplier_part);
+  multiplier_pressure = Eigen::VectorXd::Zero(s.num_nodes());
   const Eigen::VectorXd current_area = lumped_areas(s, sr.x);
   sr.pressure = Eigen::VectorXd::Zero(s.num_nodes());
   sr.current_pressure = Eigen::VectorXd::Zero(s.num_nodes());
@@ -150,6 +156,7 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
   for (Index k = 0; k < s.num_nodes(); ++k) {
     if (s.nodal_area[k] <= 0) continue;
     sr.pressure[k] = -fn.col(k).dot(normals.col(k)) / s.nodal_area[k];
+    multiplier_pressure[k] = -fm.col(k).dot(normals.col(k)) / s.nodal_area[k];
     sr.tangential.col(k) = ft.col(k) / s.nodal_area[k];
     if (current_area[k] > 0) sr.current_pressure[k] = sr.pressure[k] * s.nodal_area[k] / current_area[k];
   }
@@ -161,11 +168,11 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
 }
 
 /// Status from the law (see the header): open / contact (stick) / slip.
-void set_status(ContactSideResult& sr, double max_pressure, double alpha) {
+void set_status(ContactSideResult& sr, const Eigen::VectorXd& multiplier_pressure, double max_pressure, double alpha) {
   sr.status = Eigen::VectorXi::Zero(sr.pressure.size());
   if (!(max_pressure > 0)) return;
   for (Index k = 0; k < sr.status.size(); ++k) {
-    if (!(sr.pressure[k] > kContactPressureFraction * max_pressure)) continue;
+    if (!(multiplier_pressure[k] > kContactPressureFraction * max_pressure)) continue;
     sr.status[k] = 1;
     const double s = sr.slip.col(k).norm();
     if (std::isfinite(s) && s >= kSlipRatio * std::sqrt(s * s + alpha * alpha)) sr.status[k] = 2;
@@ -186,16 +193,20 @@ std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMa
     r.normal_load = pf.normal_load;
     // One side for an obstacle and for self-contact (the surface is both sides), two otherwise.
     const int nsides = pair.obstacle >= 0 || pair.surface_a == pair.surface_b ? 1 : 2;
+    std::vector<Eigen::VectorXd> multiplier_pressure(nsides);
+    double max_multiplier_pressure = 0.0;
     for (int side = 0; side < nsides; ++side) {
-      r.sides.push_back(side_result(cs, pi, side, dofs, u, pf, report));
+      r.sides.push_back(side_result(cs, pi, side, dofs, u, pf, report, multiplier_pressure[side]));
       r.max_pressure = std::max(r.max_pressure, r.sides.back().pressure.maxCoeff());
+      max_multiplier_pressure = std::max(max_multiplier_pressure, multiplier_pressure[side].maxCoeff());
     }
     // Round-off at nodes no active row reaches (|p| ~ 1e-16 max p) is reported as 0; anything larger
     // — an adhesive pressure, which would be a bug — is left visible.
-    for (auto& sr : r.sides) {
+    for (int side = 0; side < nsides; ++side) {
+      ContactSideResult& sr = r.sides[side];
       for (Index k = 0; k < sr.pressure.size(); ++k)
         if (std::abs(sr.pressure[k]) <= 1e-12 * r.max_pressure) sr.pressure[k] = sr.current_pressure[k] = 0.0;
-      set_status(sr, r.max_pressure, pair.alpha);
+      set_status(sr, multiplier_pressure[side], max_multiplier_pressure, pair.alpha);
     }
     r.total_force = r.sides[0].total_force;
     r.normal_force = r.sides[0].normal_force;

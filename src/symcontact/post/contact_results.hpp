@@ -38,8 +38,8 @@
 ///    NaN when the node projects onto nothing,
 ///  - slip (friction side only, NaN elsewhere): the tangential slip increment of the load step at the
 ///    node, the weak average Σ_q w_q N_k s_q / Σ_q w_q N_k of the friction term's point slips,
-///  - status: 0 open, 1 in contact (frictionless) or sticking, 2 slipping. In contact where the pressure
-///    exceeds kContactPressureFraction × the pair's maximum (exactly zero where no active row reaches the
+///  - status: 0 open, 1 in contact (frictionless) or sticking, 2 slipping. In contact where the pressure of
+///    Aᵀμ_p alone exceeds kContactPressureFraction × its maximum (exactly zero where no active row reaches the
 ///    node; an unpolished interior point leaves multipliers of order barrier/gap, far below that, on open
 ///    constraints), open elsewhere. Slipping where, in contact, the regularised law's traction has reached
 ///    the threshold: |t|/τ = |s|/√(|s|² + α²) ≥ kSlipRatio (|s| ≥ 22.3 α), sticking otherwise.
