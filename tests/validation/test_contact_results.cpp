@@ -4,7 +4,8 @@
 // in two pairs, a pair declared twice, an open pair), their sum is the body's contact force (the applied
 // load here, and the solve's residual), and the status follows the friction law. Cases: the Hertz
 // cylinders of examples/hertz_2d (curved), with dissimilar materials, frictionless and with Coulomb
-// friction; the cylinder on a rigid plane in several pairs. Self-contact: test_self_contact.cpp.
+// friction; the cylinder on a rigid plane in several pairs; the two spheres of examples/hertz_3d with
+// dissimilar materials. Self-contact: test_self_contact.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -197,4 +198,39 @@ TEST(ContactResults, FrictionalDissimilarCylindersFollowTheLaw) {
   EXPECT_GT(counts[2], 0);
   EXPECT_LE(worst_ratio, 1.0 + 1e-3);
   EXPECT_LE(open_pressure, kContactPressureFraction * pmax);
+}
+
+// 3D, frictionless, dissimilar spheres (E = 1 on 3, quarter models, examples/hertz_3d at h = 0.04): the
+// tangential part is exactly zero, the sides balance, and the upper sphere, held by the contact alone, gets
+// from the pair what its residual says.
+TEST(ContactResults, DissimilarSpheres3DAddUp) {
+  const std::string dir = test_temp_dir("contact_results");
+  write_text(dir, "spheres.geo", "h = 0.04;\nInclude \"" + std::string(SYMCONTACT_EXAMPLES) +
+                                     "/hertz_3d/two_spheres.geo\";\n");
+  std::string toml = read_text(std::string(SYMCONTACT_EXAMPLES) + "/hertz_3d/two_spheres.toml");
+  for (std::size_t at; (at = toml.find("two_spheres.geo")) != std::string::npos;) toml.replace(at, 15, "spheres.geo");
+  const std::size_t lower = toml.find("name = \"lower\"");
+  ASSERT_NE(lower, std::string::npos);
+  toml.replace(toml.find("E = 1.0", lower), 7, "E = 3.0");
+  auto c = solve_case(toml, dir);
+  const ContactPairResult& r = c->contact.at(0);
+  ASSERT_EQ(r.sides.size(), 2u);
+  const double scale = r.normal_load;
+  ASSERT_GT(scale, 0.0);
+  expect_sums(*c, scale);
+  // The upper body's residual over its contact nodes (free DOFs in z).
+  const ContactSurface& s = c->model->contacts().surfaces[r.sides[0].surface];
+  double residual_z = 0.0;
+  for (Index v : s.nodes) residual_z += c->report.contact_force[c->model->dofs().dof(s.body, v, 2)];
+  std::printf("dissimilar spheres: F_z %.15e (pair) %.15e (residual); normal load %.9e; tangential %.1e; peak "
+              "pressure a %.6e, b %.6e; per current area a %.6e, b %.6e\n",
+              r.total_force.z(), residual_z, r.normal_load, r.tangential_force.norm(), peak(r.sides[0]),
+              peak(r.sides[1]), r.sides[0].current_pressure.maxCoeff(), r.sides[1].current_pressure.maxCoeff());
+  EXPECT_NEAR(r.total_force.z(), residual_z, 1e-10 * scale);
+  EXPECT_NEAR(r.normal_force.z(), residual_z, 1e-10 * scale);
+  EXPECT_EQ(r.tangential_force.norm(), 0.0);
+  // Peaks: 2.2 % apart per reference area, 1.1e-3 per current area (measured, h = 0.04).
+  const double ca = r.sides[0].current_pressure.maxCoeff(), cb = r.sides[1].current_pressure.maxCoeff();
+  EXPECT_GT(std::abs(peak(r.sides[1]) / peak(r.sides[0]) - 1), 0.01);
+  EXPECT_LT(std::abs(cb / ca - 1), 5e-3);
 }
