@@ -154,6 +154,19 @@ void check_self_contact_equals_half_model(int dim, const std::string& geo, const
               "tangential traction %.2e p_max; contact force on the half model %.9e; %.1f s\n",
               dim, pmax, touching, static_cast<std::ptrdiff_t>(hs.pressure.size()), worst / pmax, worst_mirror / pmax,
               worst_force / pmax, tangential_self / pmax, h->contact[0].total_force.norm(), secs);
+  // The self-contact pair reports one side, the surface: its force sums to zero (action and reaction), its
+  // normal load ∫ λ dΓ is the force across the interface, the half model's on the plane; no tangential part.
+  const ContactPairResult& self = f->contact[0];
+  const double load = h->contact[0].normal_load;
+  std::printf("V7 %dD hairpin: normal load %.9e (self) %.9e (half); |F_n| on the plane %.9e; self total force "
+              "%.2e\n", dim, self.normal_load, load, h->contact[0].normal_force.norm(), self.total_force.norm());
+  EXPECT_EQ(self.sides.size(), 1u);
+  EXPECT_GT(load, 0.0);
+  EXPECT_NEAR(self.normal_load, load, 1e-5 * load);
+  EXPECT_LE(self.total_force.norm(), 1e-10 * load);
+  EXPECT_LE((self.normal_force + self.tangential_force - self.total_force).norm(), 1e-10 * load);
+  EXPECT_EQ(self.tangential_force.norm(), 0.0);
+  EXPECT_NEAR(h->contact[0].normal_force.norm(), load, 1e-10 * load);  // a plane: one normal
   EXPECT_LT(worst_sym, 1e-5 * umax);
   EXPECT_LT(worst_u, 1e-5 * umax);
   EXPECT_LT(worst, 1e-5 * pmax);

@@ -55,9 +55,10 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
     os << "side,surface,node";
     for (int i = 0; i < D; ++i) os << ',' << xyz[i];
     for (int i = 0; i < D; ++i) os << ',' << xyz[i] << "_ref";
-    os << ",gap,pressure";
+    os << ",gap,pressure,current_pressure";
     for (int i = 0; i < D; ++i) os << ",t" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",f" << xyz[i];
+    for (int i = 0; i < D; ++i) os << ",fn_" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",slip_" << xyz[i];
     os << ",accumulated_slip,status\n";
     os.precision(17);
@@ -70,17 +71,23 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
         os << (side == 0 ? "a" : "b") << ',' << s.name << ',' << s.nodes[k] + 1;
         for (int i = 0; i < D; ++i) os << ',' << sr.x(i, k);
         for (int i = 0; i < D; ++i) os << ',' << sr.X(i, k);
-        os << ',';
-        if (std::isfinite(sr.gap[k])) os << sr.gap[k];
-        os << ',' << sr.pressure[k];
-        for (int i = 0; i < D; ++i) os << ',' << sr.tangential(i, k);
-        for (int i = 0; i < D; ++i) os << ',' << sr.force(i, k);
-        for (int i = 0; i < D; ++i) {
+        // Undefined values (no projection, no friction on this side) are written "nan" (numpy reads it).
+        const auto cell = [&os](double v) {
           os << ',';
-          if (std::isfinite(sr.slip(i, k))) os << sr.slip(i, k);
-        }
-        os << ',';
-        if (side < accumulated.size() && accumulated[side].size() > k && friction) os << accumulated[side][k];
+          if (std::isnan(v))
+            os << "nan";
+          else
+            os << v;
+        };
+        cell(sr.gap[k]);
+        cell(sr.pressure[k]);
+        cell(sr.current_pressure[k]);
+        for (int i = 0; i < D; ++i) cell(sr.tangential(i, k));
+        for (int i = 0; i < D; ++i) cell(sr.force(i, k));
+        for (int i = 0; i < D; ++i) cell(sr.normal_part(i, k));
+        for (int i = 0; i < D; ++i) cell(sr.slip(i, k));
+        const bool has_acc = side < accumulated.size() && accumulated[side].size() > k && friction;
+        cell(has_acc ? accumulated[side][k] : std::nan(""));
         const int st = sr.status[k];
         os << ',' << (st == 1 && friction ? "stick" : status[st]) << '\n';
       }
@@ -110,7 +117,8 @@ FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
 
 namespace {
 
-/// Contact fields of one body at its nodes (zero away from contact surfaces; status −1 there).
+/// Contact fields of one body at its nodes, summed over the pairs (zero away from contact surfaces; status −1 there,
+/// else the largest over the pairs).
 struct BodyContactFields {
   Eigen::VectorXd pressure, gap, status;
   Eigen::MatrixXd force;       ///< 3 × n
@@ -132,7 +140,7 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
       if (s.body != b) continue;
       for (Index k = 0; k < s.num_nodes(); ++k) {
         const Index v = s.nodes[k];
-        f.pressure[v] = std::max(f.pressure[v], side.pressure[k]);
+        f.pressure[v] += side.pressure[k];  // each pair reports its own force: a node's pressure is their sum
         f.gap[v] = std::isfinite(side.gap[k]) ? side.gap[k] : 0.0;
         f.status[v] = std::max(f.status[v], static_cast<double>(side.status[k]));
         f.force.col(v).head(s.dim) += side.force.col(k);
@@ -212,6 +220,7 @@ Json contact_step_json(const Model& model, const std::vector<ContactPairResult>&
     jp["total_force"] = to_vector(r.total_force);
     jp["normal_force"] = to_vector(r.normal_force);
     jp["tangential_force"] = to_vector(r.tangential_force);
+    jp["normal_load"] = r.normal_load;
     jp["max_pressure"] = r.max_pressure;
     jp[model.dim() == 2 ? "contact_length" : "contact_area"] = r.contact_measure;
     const std::string csv = "contact_" + step_file(r.name, step + 1, "csv");

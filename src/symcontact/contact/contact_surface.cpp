@@ -67,7 +67,6 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   s.body = body;
   s.dim = mesh.dim;
   s.facet_type = mesh.facet_cell_type();
-  const int npf = s.nodes_per_facet();
   const int nv = cell_num_vertices(s.facet_type);
   std::unordered_map<Index, Index> local;
   for (Index v : g.facets) {
@@ -107,20 +106,26 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
           s.boundary_vertex[s.facet(f)[triangle_edge(e)[1]]] = 1;
         }
   }
-  // Lumped areas ∫ φ_k dS with a rule exact for the (polynomial, straight-facet) integrand.
-  s.nodal_area = Eigen::VectorXd::Zero(s.num_nodes());
+  s.nodal_area = lumped_areas(s, s.X);
+  return s;
+}
+
+Eigen::VectorXd lumped_areas(const ContactSurface& s, const Eigen::MatrixXd& x) {
+  // A rule exact for the (polynomial, straight-facet) integrand.
+  const int npf = s.nodes_per_facet();
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(s.num_nodes());
   const QuadratureRule rule = simplex_quadrature(s.dim - 1, 2 * cell_order(s.facet_type) + 1);
   Eigen::MatrixXd xf(s.dim, npf);
   std::vector<double> N(npf);
   for (Index f = 0; f < s.num_facets(); ++f) {
-    for (int a = 0; a < npf; ++a) xf.col(a) = s.X.col(s.facet(f)[a]);
+    for (int a = 0; a < npf; ++a) xf.col(a) = x.col(s.facet(f)[a]);
     for (int q = 0; q < rule.size(); ++q) {
       test_functions(s.facet_type, rule.point(q), N.data());
       const double J = facet_normal(s.facet_type, xf, rule.point(q)).norm();
-      for (int a = 0; a < npf; ++a) s.nodal_area[s.facet(f)[a]] += rule.weights[q] * J * N[a];
+      for (int a = 0; a < npf; ++a) area[s.facet(f)[a]] += rule.weights[q] * J * N[a];
     }
   }
-  return s;
+  return area;
 }
 
 Eigen::MatrixXd current_positions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u) {

@@ -64,6 +64,10 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
 /// Current positions x = X + u of the surface nodes (dim × num_nodes); X for a rigid surface.
 Eigen::MatrixXd current_positions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u);
 
+/// Lumped areas ∫_Γ φ_k dS (num_nodes) of the surface with node positions `x` (dim × num_nodes), φ_k the test
+/// functions (test_functions()): ContactSurface::nodal_area for x = X, the current ones for x = X + u.
+Eigen::VectorXd lumped_areas(const ContactSurface& s, const Eigen::MatrixXd& x);
+
 /// Smoothed nodal normals (dim × num_nodes, unit): at every node the outward normals of the facets
 /// around it, evaluated at the node and weighted by the local surface Jacobian, summed and normalised
 /// (the averaged-normal field of Yang, Laursen and Meng 2005, §2.2, interpolated by the shape functions).

@@ -23,8 +23,8 @@ struct SurfaceTractions {
 };
 
 /// `normals` (dim × n), when given, replaces the surface's own smoothed normals for the decomposition
-/// (the contact results use the opposite surface's normal at each node's projection, the normal the
-/// constraints and the friction term use).
+/// (the Coulomb threshold uses the opposite surface's normal at each node's projection, the normal of the
+/// constraints and of the friction term).
 SurfaceTractions surface_tractions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u,
                                    const VectorXd& force, const Eigen::MatrixXd* normals = nullptr);
 

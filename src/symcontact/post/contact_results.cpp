@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "symcontact/contact/surface_tractions.hpp"
+#include "symcontact/contact/contact_surface.hpp"
 #include "symcontact/fem/shape_functions.hpp"
 
 namespace symcontact {
@@ -66,69 +66,151 @@ Eigen::MatrixXd nodal_slips(const ContactSurface& s, const FrictionTerm& term, c
   return out;
 }
 
+/// The force of pair `pi` alone on every DOF, split as the solve builds it: its constraint rows' Aᵀμ (the
+/// normal part, plus the solve's equilibrium defect where only this pair's rows reach) and its friction
+/// term's −∇j (the tangential part), and ∫ λ dΓ = Σ_r μ_r Σ_q w_q φ_r.
+struct PairForce {
+  VectorXd normal, defect, tangential;  ///< Aᵀμ_p, the defect at the DOFs the pair alone reaches, −∇j_p
+  double normal_load = 0.0;
+};
+
+/// Per DOF, the pair whose constraint rows alone touch it; −1 for none, −2 for several.
+std::vector<int> dof_owners(const ContactSet& cs, const ContactLinearization& lin, Index num_dofs) {
+  std::vector<int> owner(num_dofs, -1);
+  if (lin.A.cols() != num_dofs || static_cast<Index>(lin.row_family.size()) != lin.A.rows()) return owner;
+  for (Index c = 0; c < lin.A.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(lin.A, c); it; ++it) {
+      const int p = cs.families()[lin.row_family[it.row()]].pair;
+      int& o = owner[it.col()];
+      o = o == -1 || o == p ? p : -2;
+    }
+  return owner;
+}
+
+PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolveReport& report,
+                     const std::vector<int>& owner, int pi) {
+  const ContactLinearization& lin = report.linearization;
+  PairForce f;
+  f.normal = VectorXd::Zero(u.size());
+  f.defect = VectorXd::Zero(u.size());
+  f.tangential = VectorXd::Zero(u.size());
+  if (report.multipliers.size() == lin.A.rows() && lin.A.cols() == u.size()) {
+    VectorXd mu = VectorXd::Zero(report.multipliers.size());
+    for (Index r = 0; r < mu.size(); ++r)
+      if (cs.families()[lin.row_family[r]].pair == pi) {
+        mu[r] = report.multipliers[r];
+        f.normal_load += mu[r] * lin.row_support[r];
+      }
+    f.normal = lin.A.transpose() * mu;
+  }
+  // The solve's equilibrium defect goes to the normal part of the pair that alone touches the DOF.
+  if (report.force_defect.size() == u.size())
+    for (Index d = 0; d < u.size(); ++d)
+      if (owner[d] == pi) f.defect[d] = report.force_defect[d];
+  if (pi < static_cast<int>(report.friction.size()) && report.friction[pi]) {
+    report.friction[pi]->add_gradient(u, f.tangential);
+    f.tangential = -f.tangential;
+  }
+  return f;
+}
+
+/// The dim × n nodal values of a DOF vector on surface s (zero for a rigid surface).
+Eigen::MatrixXd nodal_values(const ContactSurface& s, const DofMap& dofs, const VectorXd& v) {
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
+  if (!s.is_rigid())
+    for (Index k = 0; k < s.num_nodes(); ++k)
+      for (int i = 0; i < s.dim; ++i) out(i, k) = v[dofs.dof(s.body, s.nodes[k], i)];
+  return out;
+}
+
+/// One side of pair `pi` on surface `si`: forces from the pair's own rows and friction term, pressure and
+/// traction per lumped reference area (in the test basis, surface_tractions.hpp), gaps, slips.
+/// `multiplier_pressure`: the pressure of Aᵀμ_p alone (for the status: exactly zero where no active row reaches).
+ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofMap& dofs, const VectorXd& u,
+                              const PairForce& pf, const ContactSolveReport& report,
+                              Eigen::VectorXd& multiplier_pressure) {
+  const ContactPair& pair = cs.pairs[pi];
+  const int si = side == 0 ? pair.surface_a : pair.surface_b;
+  const ContactSurface& s = cs.surfaces[si];
+  ContactSideResult sr;
+  sr.surface = si;
+  sr.x = current_positions(s, dofs, u);
+  sr.X = s.X;
+  Eigen::MatrixXd normals = nodal_normals(s, sr.x);
+  sr.gap = nodal_gaps(cs, pair, side, dofs, u, sr.x, normals);
+  sr.normals = normals;
+  const Eigen::MatrixXd multiplier_part = nodal_values(s, dofs, pf.normal);
+  sr.normal_part = multiplier_part + nodal_values(s, dofs, pf.defect);
+  const Eigen::MatrixXd tangential_part = nodal_values(s, dofs, pf.tangential);
+  sr.force = sr.normal_part + tangential_part;
+  sr.normal_force = sr.normal_part.rowwise().sum();
+  sr.tangential_force = tangential_part.rowwise().sum();
+  sr.total_force = sr.force.rowwise().sum();
+  const Eigen::MatrixXd fn = test_basis_forces(s, sr.normal_part), ft = test_basis_forces(s, tangential_part),
+                        fm = test_basis_forces(s, multiplier_part);
+  multiplier_pressure = Eigen::VectorXd::Zero(s.num_nodes());
+  const Eigen::VectorXd current_area = lumped_areas(s, sr.x);
+  sr.pressure = Eigen::VectorXd::Zero(s.num_nodes());
+  sr.current_pressure = Eigen::VectorXd::Zero(s.num_nodes());
+  sr.tangential = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
+  for (Index k = 0; k < s.num_nodes(); ++k) {
+    if (s.nodal_area[k] <= 0) continue;
+    sr.pressure[k] = -fn.col(k).dot(normals.col(k)) / s.nodal_area[k];
+    multiplier_pressure[k] = -fm.col(k).dot(normals.col(k)) / s.nodal_area[k];
+    sr.tangential.col(k) = ft.col(k) / s.nodal_area[k];
+    if (current_area[k] > 0) sr.current_pressure[k] = sr.pressure[k] * s.nodal_area[k] / current_area[k];
+  }
+  const bool has_friction = pi < static_cast<int>(report.friction.size()) && report.friction[pi];
+  const bool friction_side = has_friction && si == cs.families()[cs.friction_family(pi)].slave;
+  sr.slip = friction_side ? nodal_slips(s, *report.friction[pi], u)
+                          : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
+  return sr;
+}
+
+/// Status from the law (see the header): open / contact (stick) / slip.
+void set_status(ContactSideResult& sr, const Eigen::VectorXd& multiplier_pressure, double max_pressure, double alpha) {
+  sr.status = Eigen::VectorXi::Zero(sr.pressure.size());
+  if (!(max_pressure > 0)) return;
+  for (Index k = 0; k < sr.status.size(); ++k) {
+    if (!(multiplier_pressure[k] > kContactPressureFraction * max_pressure)) continue;
+    sr.status[k] = 1;
+    const double s = sr.slip.col(k).norm();
+    if (std::isfinite(s) && s >= kSlipRatio * std::sqrt(s * s + alpha * alpha)) sr.status[k] = 2;
+  }
+}
+
 }  // namespace
 
 std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMap& dofs, const VectorXd& u,
                                                const ContactSolveReport& report) {
-  const VectorXd& contact_force = report.contact_force;
-  const auto& friction = report.friction;
   std::vector<ContactPairResult> out;
+  const std::vector<int> owner = dof_owners(cs, report.linearization, u.size());
   for (int pi = 0; pi < static_cast<int>(cs.pairs.size()); ++pi) {
     const ContactPair& pair = cs.pairs[pi];
     ContactPairResult r;
     r.name = pair.name;
-    const int nsides = pair.obstacle >= 0 ? 1 : 2;
-    const bool has_friction = pi < static_cast<int>(friction.size()) && friction[pi];
-    const int friction_surface = has_friction ? cs.families()[cs.friction_family(pi)].slave : -1;
-    std::vector<Eigen::VectorXd> multiplier_pressure;
+    const PairForce pf = pair_force(cs, u, report, owner, pi);
+    r.normal_load = pf.normal_load;
+    // One side for an obstacle and for self-contact (the surface is both sides), two otherwise.
+    const int nsides = pair.obstacle >= 0 || pair.surface_a == pair.surface_b ? 1 : 2;
+    std::vector<Eigen::VectorXd> multiplier_pressure(nsides);
     double max_multiplier_pressure = 0.0;
     for (int side = 0; side < nsides; ++side) {
-      const int si = side == 0 ? pair.surface_a : pair.surface_b;
-      const ContactSurface& s = cs.surfaces[si];
-      // Decompose along the interface normal of each node (see nodal_gaps).
-      const Eigen::MatrixXd x = current_positions(s, dofs, u);
-      Eigen::MatrixXd normals = nodal_normals(s, x);
-      ContactSideResult sr;
-      sr.gap = nodal_gaps(cs, pair, side, dofs, u, x, normals);
-      const SurfaceTractions t = surface_tractions(s, dofs, u, contact_force, &normals);
-      sr.surface = si;
-      sr.x = t.x;
-      sr.X = s.X;
-      sr.force = t.force;
-      sr.pressure = t.pressure;
-      sr.tangential = t.tangential;
-      sr.slip = si == friction_surface ? nodal_slips(s, *friction[pi], u)
-                                       : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
-      r.max_pressure = std::max(r.max_pressure, sr.pressure.maxCoeff());
-      // Contact status from the multipliers' normal force (see the header).
-      const SurfaceTractions tm = surface_tractions(s, dofs, u, report.multiplier_force, &normals);
-      sr.status = Eigen::VectorXi::Zero(s.num_nodes());
-      for (Index k = 0; k < s.num_nodes(); ++k) sr.status[k] = tm.pressure[k] > 0 ? 1 : 0;
-      multiplier_pressure.push_back(tm.pressure);
-      max_multiplier_pressure = std::max(max_multiplier_pressure, tm.pressure.maxCoeff());
-      if (side == 0) {
-        r.normal_force = Eigen::VectorXd::Zero(s.dim);
-        for (Index k = 0; k < s.num_nodes(); ++k)
-          r.normal_force += t.force.col(k).dot(t.normals.col(k)) * t.normals.col(k);
-      }
-      r.sides.push_back(std::move(sr));
+      r.sides.push_back(side_result(cs, pi, side, dofs, u, pf, report, multiplier_pressure[side]));
+      r.max_pressure = std::max(r.max_pressure, r.sides.back().pressure.maxCoeff());
+      max_multiplier_pressure = std::max(max_multiplier_pressure, multiplier_pressure[side].maxCoeff());
     }
-    // Round-off of the residual at open nodes (|p| ~ 1e-16 max p) is reported as 0; anything larger
+    // Round-off at nodes no active row reaches (|p| ~ 1e-16 max p) is reported as 0; anything larger
     // — an adhesive pressure, which would be a bug — is left visible.
-    for (auto& sr : r.sides)
+    for (int side = 0; side < nsides; ++side) {
+      ContactSideResult& sr = r.sides[side];
       for (Index k = 0; k < sr.pressure.size(); ++k)
-        if (std::abs(sr.pressure[k]) <= 1e-12 * r.max_pressure) sr.pressure[k] = 0.0;
-    r.total_force = r.sides[0].force.rowwise().sum();
-    r.tangential_force = r.total_force - r.normal_force;
-    for (std::size_t side = 0; side < r.sides.size(); ++side) {
-      auto& sr = r.sides[side];
-      sr.status = (multiplier_pressure[side].array() > 1e-4 * max_multiplier_pressure).cast<int>();
-      if (!(max_multiplier_pressure > 0)) sr.status.setZero();
-      for (Index k = 0; k < sr.status.size(); ++k) {
-        const double s = sr.slip.col(k).norm();
-        if (sr.status[k] && std::isfinite(s) && s >= 7.0 * pair.alpha) sr.status[k] = 2;
-      }
+        if (std::abs(sr.pressure[k]) <= 1e-12 * r.max_pressure) sr.pressure[k] = sr.current_pressure[k] = 0.0;
+      set_status(sr, multiplier_pressure[side], max_multiplier_pressure, pair.alpha);
     }
+    r.total_force = r.sides[0].total_force;
+    r.normal_force = r.sides[0].normal_force;
+    r.tangential_force = r.sides[0].tangential_force;
     const ContactSurface& sa = cs.surfaces[pair.surface_a];
     for (Index k = 0; k < sa.num_nodes(); ++k)
       if (r.sides[0].status[k]) r.contact_measure += sa.nodal_area[k];

@@ -673,6 +673,10 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     energy.add_gradient(u, residual);
   }
   // The residual of the bodies' energy holds the whole interface force, normal and frictional.
+  VectorXd friction_gradient = VectorXd::Zero(u.size());
+  for (const auto& t : friction_terms)
+    if (t) t->add_gradient(u, friction_gradient);
+  rep.force_defect = VectorXd::Zero(u.size());
   for (const ContactSurface& s : contacts.surfaces) {
     if (s.is_rigid()) continue;
     for (Index node : s.nodes)
@@ -684,7 +688,10 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
           rep.contact_force[d] = residual[d];
         } else if ((*b_position)[f] >= 0) {
           rep.contact_force[d] = residual_b[(*b_position)[f]];
+        } else {
+          continue;
         }
+        rep.force_defect[d] = rep.contact_force[d] - (rep.multiplier_force[d] - friction_gradient[d]);
       }
   }
   return rep;

@@ -165,6 +165,10 @@ struct ContactSolveReport {
   VectorXd multipliers;                     ///< μ of the last solve (one per row)
   VectorXd contact_force;                   ///< F_c = Aᵀ μ (∇E(u) on free DOFs, see the .cpp), full DOF vector
   VectorXd multiplier_force;                ///< Aᵀ μ alone (zero exactly where no constraint is active)
+  /// ∇E(u) − (Aᵀμ − ∇j) on the free DOFs of the contact surfaces where contact_force is the residual, 0
+  /// elsewhere: the optimiser's error in the multipliers' balance (round-off where the polish or the dual
+  /// closed the solve). j: the friction terms below.
+  VectorXd force_defect;
   /// The friction terms of the last geometry iterate, per pair (null without friction).
   std::vector<std::shared_ptr<const FrictionTerm>> friction;
 };

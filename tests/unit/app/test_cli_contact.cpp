@@ -108,6 +108,22 @@ TEST_F(CliContact, HertzExampleWritesContactResults) {
   EXPECT_GT(max_pressure, 0.05);  // Hertz: p0 = 0.059143
   EXPECT_LT(max_pressure, 0.065);
   EXPECT_GT(json_number(summary, "contact_length"), 0.05);  // a = 0.107641 on the half model
+  // Frictionless: the tangential part is exactly zero; on a plane the normal load is |normal_force|.
+  const std::vector<double> tangential = json_array(summary, "tangential_force");
+  ASSERT_EQ(tangential.size(), 2u) << summary;
+  EXPECT_EQ(tangential[0], 0.0);
+  EXPECT_EQ(tangential[1], 0.0);
+  EXPECT_NEAR(json_number(summary, "normal_load"), 0.005, 1e-10);
+  {
+    // Undefined cells (no friction: slips, accumulated slip) are "nan", never blank: numpy reads them.
+    const std::string text = read_text(out / "contact_floor_0001.csv");
+    EXPECT_EQ(text.find(",,"), std::string::npos);
+    EXPECT_EQ(text.find(",\n"), std::string::npos);
+    EXPECT_NE(text.find(",nan,"), std::string::npos);
+    const std::string header = text.substr(0, text.find('\n'));
+    for (const char* column : {",current_pressure,", ",fn_x,", ",fn_y,"})
+      EXPECT_NE(header.find(column), std::string::npos) << column << " missing from " << header;
+  }
 
   // contact_floor_0001.csv: one row per node of the contact surface, consistent with summary.json.
   std::ifstream csv(out / "contact_floor_0001.csv");
