@@ -120,7 +120,7 @@ void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& b
 /// per cent of the floor's) in CHOLMOD's supernodal storage, the mesh, model and sparse matrices, and the dense
 /// condensed problem, m taken as the number of contact-surface nodes (the condensed set on a rigid plane: one
 /// u_z per node; a lower bound with two elastic bodies). The two coefficients are fitted to the peak RSS of
-/// the 3D Hertz solve (session 8, with the dense interior point on the dual): 3,276, 8,369 and 20,406 MiB
+/// the 3D Hertz solve (with the dense interior point on the dual): 3,276, 8,369 and 20,406 MiB
 /// at 2.0e5, 4.1e5 and 7.8e5 DOFs (m = 3,282, 5,224 and 7,978), against 3,488, 8,800 and 20,367 predicted.
 /// The check is meant to refuse a size that cannot fit before it runs for an hour and is killed. Returns the
 /// predicted nnz(L).
@@ -132,7 +132,7 @@ inline constexpr double kFactorStorage = 1.25;
 /// Mesh, model, K and its copies, vectors: fitted (see check_hertz_fits()).
 inline constexpr double kBytesPerDof = 5632.0;
 /// The m × m dense matrices beyond that (S's lower triangle, its pivoted Cholesky factor, W = A S⁺ Aᵀ and the
-/// interior point's factor; during the condensation L_BB and S): fitted as above (25; it was 73–84 with IPOPT
+/// interior point's factor; during the condensation L_BB and S): fitted as above (25; 73–84 with IPOPT
 /// on the dual, whose MUMPS factorised the dense W as a sparse matrix).
 inline constexpr double kDenseBytesPerEntry = 25.0;
 

@@ -2,7 +2,7 @@
 """Log-log plot of time against DOFs for the side-by-side Hertz benchmark (symcontact, FreeFEM + ff-Ipopt,
 and the CHOLMOD floor of the same stiffness), from the CSV of `symcontact-bench --case hertz2d-freefem`.
 
-    tools/plot_freefem_peer.py hertz2d_freefem.csv docs/img/hertz2d_freefem.png [--title T] [--wall] [--dpi N]
+    tools/plot_freefem_peer.py hertz2d_freefem.csv hertz2d_freefem.png [--title T] [--wall] [--dpi N]
                                [--markdown]
 
 --markdown also prints the two tables of docs/performance.md ("Side by side with FreeFEM + IPOPT": times
