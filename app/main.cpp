@@ -15,6 +15,7 @@
 #include "symcontact/core/timer.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/problem_reader.hpp"
+#include "symcontact/model/setup_checks.hpp"
 
 using namespace symcontact;
 
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
     if (*check) {
       PhaseTimes times;
       auto model = Model::build(spec, log, times, mesh_size);
+      check_setup(*model);
       std::cout << case_file << ": OK, " << model->bodies().size() << " bodies, " << model->dofs().num_dofs()
                 << " DOFs, " << model->num_steps() << " load steps\n";
       return kExitOk;
