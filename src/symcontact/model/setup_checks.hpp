@@ -19,7 +19,7 @@
 ///    1e-9 × the largest, the motions scaled to the body's size). Such a body's stiffness is singular (a block
 ///    on a frictionless plane under a vertical load may slide in x at no cost), so the solve cannot converge.
 /// 3. **Overlap at the start** (key contact[i]): find_penetrations() (contact/penetration.hpp) at u = 0: a
-///    node of a contact surface deeper than 10 % of the local element size inside the other body of its pair,
+///    node of a contact surface deeper than 25 % of the local element size inside the other body of its pair,
 ///    or behind an analytic obstacle.
 /// Folded and inverted cells are refused when the mesh is read (mesh_topology.hpp, check_folds()).
 

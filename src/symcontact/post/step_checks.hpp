@@ -6,7 +6,7 @@
 ///
 /// 1. **Finite values**: every displacement, the gradient ∇E(u) and the contact multipliers are finite.
 /// 2. **Penetration** (contact/penetration.hpp): no contact node lies deeper than
-///    kPenetrationRelativeTolerance × h (10 % of the local element size) inside the other body of its pair,
+///    kPenetrationRelativeTolerance × h (25 % of the local element size) inside the other body of its pair,
 ///    behind the other surface after starting in front of it, or behind an analytic obstacle. Global: not
 ///    limited to the contact search's distance or active set.
 /// 3. **Equilibrium of each body**: on the free DOFs of body b, r = ∇E(u) + ∇j(u) − Aᵀμ (E the bodies'
