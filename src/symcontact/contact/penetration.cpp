@@ -1,7 +1,10 @@
 #include "symcontact/contact/penetration.hpp"
 
 #include <cmath>
+#include <algorithm>
+#include <array>
 #include <limits>
+#include <unordered_set>
 #include <memory>
 
 #include "symcontact/contact/bvh.hpp"
@@ -78,11 +81,33 @@ struct FacetSearch {
   }
 };
 
+using FacetKey = std::array<Index, 3>;  ///< sorted vertex indices of a cell facet (−1 last in 2D)
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+using FacetSet = std::unordered_set<FacetKey, FacetKeyHash>;
+
+/// The vertex facet of cell c opposite its vertex a.
+FacetKey opposite_facet(const Mesh& m, Index c, int a) {
+  FacetKey k{-1, -1, -1};
+  int n = 0;
+  for (int b = 0; b <= m.dim; ++b)
+    if (b != a) k[n++] = m.cell(c)[b];
+  for (int i = 1; i < m.dim; ++i)  // insertion sort of at most three entries
+    for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
+  return k;
+}
+
 /// The cells of a body at node positions X + u, with a hierarchy for point location.
 struct CellSearch {
   const Mesh* mesh = nullptr;
   Eigen::MatrixXd x;  ///< dim × nodes
   BoundingVolumeHierarchy bvh;
+  FacetSet boundary;  ///< facets of one cell only
 
   CellSearch(const Mesh& m, const DofMap& dofs, int body, const VectorXd& u) : mesh(&m), x(m.x) {
     for (Index v = 0; v < m.num_nodes(); ++v)
@@ -93,11 +118,21 @@ struct CellSearch {
       for (int a = 0; a < m.nodes_per_cell(); ++a) boxes[c].extend(pad3(x.col(m.cell(c)[a])));
     }
     bvh.build(boxes);
+    FacetSet seen;
+    for (Index c = 0; c < m.num_cells(); ++c)
+      for (int a = 0; a <= m.dim; ++a) {
+        const FacetKey k = opposite_facet(m, c, a);
+        if (!seen.insert(k).second) boundary.erase(k);
+        else boundary.insert(k);
+      }
   }
 
-  /// Whether p lies strictly inside the vertex simplex of some cell (barycentric coordinates > 1e-9).
+  /// Whether p lies inside the body: in the closed vertex simplex of some cell (barycentric coordinates
+  /// ≥ −1e-9) and on none of that cell's facets that lie on the body's boundary (a point on a facet or
+  /// edge shared by cells is inside; one on the boundary touches the body, it is not in it).
   bool contains(const Eigen::Vector3d& p) const {
     const int D = mesh->dim;
+    constexpr double eps = 1e-9;
     bool found = false;
     bvh.for_each_overlap(Box(p, p), [&](int c) {
       if (found) return;
@@ -105,7 +140,12 @@ struct CellSearch {
       Eigen::MatrixXd J(D, D);
       for (int i = 0; i < D; ++i) J.col(i) = x.col(n[i + 1]) - x.col(n[0]);
       const Eigen::VectorXd l = J.partialPivLu().solve(p.head(D) - x.col(n[0]));
-      found = l.minCoeff() > 1e-9 && l.sum() < 1.0 - 1e-9;  // strictly inside, not on the cell's boundary
+      Eigen::VectorXd lambda(D + 1);  // barycentric coordinates of vertices 0..D
+      lambda << 1.0 - l.sum(), l;
+      if (lambda.minCoeff() < -eps) return;
+      for (int a = 0; a <= D; ++a)
+        if (lambda[a] <= eps && boundary.count(opposite_facet(*mesh, c, a))) return;
+      found = true;
     });
     return found;
   }
