@@ -89,6 +89,21 @@ TEST_F(CliChecks, MotionBeyondTheSearchDistanceFailsTheStepCheck) {
   EXPECT_NE(summary().find("\"status\": \"solve_failed\""), std::string::npos);
 }
 
+TEST_F(CliChecks, FailedStepCheckKeepsTheFinishedSteps) {
+  // Step 1 (1 % of the motion) holds; step 2 goes 0.7 down with the search distance at 0.6.
+  write_case("[steps]\nload_factors = [0.01, 1.0]\n" + driven_blocks(0.7, "", "search_distance = 0.6\n"));
+  const CliResult r = run("run case.toml --out out");
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("load step 2: check of the answer: contact 'interface'"), std::string::npos) << r.output;
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "lower_0001.vtu"));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "upper_failed_step2.vtu"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "lower_0002.vtu"));
+  const std::string s = summary();
+  EXPECT_NE(s.find("\"status\": \"solve_failed\""), std::string::npos);
+  EXPECT_NE(s.find("\"step\": 1"), std::string::npos);
+  EXPECT_EQ(s.find("\"step\": 2"), std::string::npos);
+}
+
 TEST_F(CliChecks, ContactThatHoldsPassesTheStepChecks) {
   write_case(driven_blocks(0.05));
   const CliResult r = run("run case.toml --out out");
