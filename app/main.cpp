@@ -20,6 +20,7 @@
 #include "symcontact/io/output_folder.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/problem_reader.hpp"
+#include "symcontact/model/setup_checks.hpp"
 
 using namespace symcontact;
 
@@ -112,6 +113,7 @@ int main(int argc, char** argv) {
     if (*check) {
       PhaseTimes times;
       auto model = Model::build(spec, log, times, meshing.overrides());
+      check_setup(*model);
       std::cout << case_file << ": OK, " << model->bodies().size() << " bodies, " << model->dofs().num_dofs()
                 << " DOFs, " << model->num_steps() << " load steps\n";
       return kExitOk;

@@ -10,6 +10,7 @@
 #include "symcontact/app/run.hpp"
 #include "symcontact/model/load_step.hpp"
 #include "symcontact/model/problem_reader.hpp"
+#include "symcontact/model/setup_checks.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
 namespace symcontact::testing {
@@ -21,6 +22,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
   const Logger log(sink, Verbosity::kQuiet);
   PhaseTimes times;
   c->model = Model::build(c->spec, log, times);
+  check_setup(*c->model);  // as `symcontact run` does
   const DofMap& dofs = c->model->dofs();
   c->u = VectorXd::Zero(dofs.num_dofs());
   const FrictionalOptions opt = contact_options(c->spec, log);
@@ -29,6 +31,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
     const FixedDofs fixed = c->model->fixed_dofs(step);
     if (c->model->contacts().empty()) {
       solve_equilibrium(c->model->energy(), fixed, c->u);
+      c->checks.push_back(check_step(*c->model, c->u, fixed, nullptr));
     } else {
       FrictionState friction = step > 0 ? c->frictional.friction : FrictionState();
       const LoadStepReport lrep =
@@ -36,6 +39,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
       c->frictional = lrep.last;
       c->step_cuts.push_back(lrep.cuts);
       c->report = c->frictional.last;
+      c->checks.push_back(check_step(*c->model, c->u, fixed, &c->report));
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
       c->history.push_back(c->contact);
       c->constraint_values = c->report.linearization.A * c->u + c->report.linearization.b;

@@ -9,6 +9,7 @@
 
 #include "symcontact/model/model.hpp"
 #include "symcontact/post/contact_results.hpp"
+#include "symcontact/post/step_checks.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
 
 namespace symcontact::testing {
@@ -26,9 +27,14 @@ struct SolvedCase {
   std::vector<std::vector<Eigen::VectorXd>> reactions;
   /// Automatic step cuts of every step (contact problems; [contact_solver] max_step_cuts).
   std::vector<int> step_cuts;
+  /// What the checks of each step's answer measured (post/step_checks.hpp); solve_case runs the checks of
+  /// `symcontact run` (model/setup_checks.hpp before the solve, check_step() after each step) and throws
+  /// what they throw.
+  std::vector<StepCheckFigures> checks;
 };
 
-/// `base_dir` resolves relative mesh paths. Throws what the library throws.
+/// `base_dir` resolves relative mesh paths. Throws what the library throws, the checks of the run driver
+/// included.
 std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::string& base_dir);
 
 /// The whole file at `path`; throws std::runtime_error when it cannot be read.

@@ -15,7 +15,9 @@
 #include "symcontact/io/vtu_writer.hpp"
 #include "symcontact/model/load_step.hpp"
 #include "symcontact/model/model.hpp"
+#include "symcontact/model/setup_checks.hpp"
 #include "symcontact/post/contact_results.hpp"
+#include "symcontact/post/step_checks.hpp"
 #include "symcontact/post/stress_recovery.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
@@ -312,6 +314,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   const double t_start = wall_seconds();
   // Everything that can fail on input happens here, before the output folder is touched.
   std::unique_ptr<Model> model = Model::build(spec, log, times, options.meshing);
+  check_setup(*model);
   const DofMap& dofs = model->dofs();
 
   ensure_directory(options.out_dir);
@@ -372,12 +375,14 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     const bool has_contact = !model->contacts().empty();
     EquilibriumReport rep;
     LoadStepReport lrep;
+    StepCheckFigures checks;
     try {
       if (has_contact)
         lrep = solve_load_step(*model, step, u, previous_friction, solver_options,
                                spec.contact_solver.max_step_cuts, log);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
+      checks = check_step(*model, u, fixed, has_contact ? &lrep.last.last : nullptr);
     } catch (const SolveError& e) {
       // A signal stops IPOPT (interrupt.hpp), which the solver reports as a failure.
       if (interrupt_requested()) return stop_run(step, RunStatus::kInterrupted, interrupted_message(step));
@@ -397,6 +402,8 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     Json js = Json::object();
     js["step"] = step + 1;
     js["load_factor"] = spec.load_factors[step];
+    js["equilibrium_residual"] = checks.equilibrium;  // post/step_checks.hpp
+    js["max_penetration_ratio"] = checks.penetration;
     const ContactSolveReport& crep = lrep.last.last;
     st.merge(has_contact ? lrep.times : rep.times);
     add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);

@@ -299,6 +299,11 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
       if (!nodes.empty()) m.node_groups[g.name] = std::move(nodes);
     }
   }
+  try {
+    check_folds(m);  // on the cells as read: orient_cells() would hide which one is folded
+  } catch (const InputError& e) {
+    throw e.in_file(file.path);
+  }
   m.orient_cells();
   try {
     m.check();

@@ -75,8 +75,8 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
 /// (facet groups from dimension dim − 1, node groups from the rest). Cells are oriented, checked and
 /// facets located; the mesh keeps the file's node and element tags for messages. Throws
 /// InputError(file, key = `group_key`) when the group is absent or empty, and InputError(file, ...)
-/// for a fault of the body's mesh: Mesh::check() (a non-finite coordinate, an inverted or degenerate
-/// element), check_topology() (coincident nodes that make a crack, a body in several pieces;
+/// for a fault of the body's mesh: check_folds() on the cells as read, before they are oriented (a cell
+/// folded over its neighbour), Mesh::check() (a non-finite coordinate, a degenerate element), check_topology() (coincident nodes that make a crack, a body in several pieces;
 /// mesh_topology.hpp) and Mesh::locate_facets() (a group facet inside the body or off it).
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key);
 

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <unordered_map>
 
+#include <Eigen/Geometry>
+
 #include "symcontact/core/error.hpp"
 
 namespace symcontact {
@@ -146,6 +148,80 @@ void check_topology(const Mesh& m) {
                      "the body is disconnected: its elements form " + std::to_string(count) +
                          " separate pieces that share no node (" + parts +
                          "); a body must be one piece: give each piece its own [[body]] (its own physical group)");
+  }
+}
+
+}  // namespace symcontact
+
+namespace symcontact {
+
+namespace {
+
+struct FacetKeyHash {
+  std::size_t operator()(const std::array<Index, 3>& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+
+/// Side of the hyperplane through facet vertices k (sorted indices; k[2] = −1 in 2D) on which point r lies:
+/// the sign of det[q − p, (s − p,) r − p].
+int side_of(const Mesh& m, const std::array<Index, 3>& k, const Eigen::VectorXd& r) {
+  const Eigen::VectorXd p = m.x.col(k[0]);
+  double d = 0.0;
+  if (m.dim == 2) {
+    const Eigen::Vector2d a = m.x.col(k[1]) - p, b = r - p;
+    d = a.x() * b.y() - a.y() * b.x();
+  } else {
+    const Eigen::Vector3d a = m.x.col(k[1]) - p, b = m.x.col(k[2]) - p, c = r - p;
+    d = a.cross(b).dot(c);
+  }
+  return (d > 0) - (d < 0);
+}
+
+}  // namespace
+
+void check_folds(const Mesh& m) {
+  const int nv = m.dim + 1;  // vertices of a simplex
+  const int nf = cell_num_facets(m.cell_type);
+  Index positive = 0, negative = 0;
+  for (Index c = 0; c < m.num_cells(); ++c) (simplex_determinant(m, c) > 0 ? positive : negative) += 1;
+  const int majority = positive >= negative ? 1 : -1;
+  struct Seen {
+    Index cell;
+    int side;
+  };
+  std::unordered_map<std::array<Index, 3>, Seen, FacetKeyHash> seen;
+  seen.reserve(static_cast<std::size_t>(m.num_cells()) * nf);
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    const Index* n = m.cell(c);
+    for (int f = 0; f < nf; ++f) {
+      const int* loc = cell_facet_nodes(m.cell_type, f);
+      std::array<Index, 3> k{-1, -1, -1};
+      for (int i = 0; i < nv - 1; ++i) k[i] = n[loc[i]];
+      for (int i = 1; i < nv - 1; ++i)  // insertion sort of at most three entries
+        for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
+      Index opposite = -1;  // the vertex of the cell not on facet f
+      for (int a = 0; a < nv; ++a)
+        if (std::find(k.begin(), k.begin() + (nv - 1), n[a]) == k.begin() + (nv - 1)) opposite = n[a];
+      const int side = side_of(m, k, m.x.col(opposite));
+      auto [it, inserted] = seen.emplace(k, Seen{c, side});
+      if (inserted || side == 0 || it->second.side != side) continue;
+      // Both cells on the same side of their common facet: they overlap. Name the one whose orientation
+      // differs from the body's majority (both when neither does).
+      const Index other = it->second.cell;
+      const bool c_odd = (simplex_determinant(m, c) > 0 ? 1 : -1) != majority;
+      const bool o_odd = (simplex_determinant(m, other) > 0 ? 1 : -1) != majority;
+      const Index named = c_odd || !o_odd ? c : other, partner = named == c ? other : c;
+      throw InputError("", m.cell_label(named),
+                       std::string("folded element: it lies on the same side of its ") +
+                           (m.dim == 2 ? "edge" : "face") + " shared with " + m.cell_label(partner) +
+                           " as that element, so the two overlap" +
+                           (c_odd || o_odd ? " (its orientation is opposite to that of the rest of the body: a node "
+                                             "was moved across an edge or face of the mesh)"
+                                           : ""));
+    }
   }
 }
 

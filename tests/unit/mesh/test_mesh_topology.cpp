@@ -33,6 +33,66 @@ std::string message_of(const Mesh& m) {
   return "";
 }
 
+/// Two triangles on the edge (1,0)–(0,1): the first (0,0),(1,0),(0,1) counter-clockwise; the second with its
+/// free vertex at `apex`, its vertices listed (1,0), apex, (0,1) — or (1,0), (0,1), apex when `clockwise`.
+Mesh two_triangles(const Eigen::Vector2d& apex, bool clockwise) {
+  Mesh m;
+  m.dim = 2;
+  m.cell_type = CellType::kTri3;
+  m.x.resize(2, 4);
+  m.x << 0, 1, 0, apex.x(), 0, 0, 1, apex.y();
+  m.cells = {0, 1, 2};
+  if (clockwise)
+    m.cells.insert(m.cells.end(), {1, 2, 3});
+  else
+    m.cells.insert(m.cells.end(), {1, 3, 2});
+  return m;
+}
+
+TEST(MeshTopology, CellsOnOppositeSidesOfTheirEdgeAreNotFolded) {
+  // Whatever the orientation each is written in (two surfaces meshed the opposite way round).
+  EXPECT_NO_THROW(check_folds(two_triangles({1, 1}, false)));
+  EXPECT_NO_THROW(check_folds(two_triangles({1, 1}, true)));
+  for (int order : {1, 2}) {
+    EXPECT_NO_THROW(check_folds(rectangle_mesh(0, 0, 2, 1, 6, 3, order)));
+    EXPECT_NO_THROW(check_folds(box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 2, 2, 2, order)));
+  }
+}
+
+TEST(MeshTopology, CellFoldedOverItsNeighbourIsNamed) {
+  // The second triangle's apex on the first one's side of the common edge: they overlap.
+  Mesh m = two_triangles({0.2, 0.2}, false);
+  m.cell_tags = {7, 8};
+  try {
+    check_folds(m);
+    FAIL() << "no fold found";
+  } catch (const InputError& e) {
+    // Element 8 is negatively oriented, element 7 positively; a tie counts as a positive majority.
+    EXPECT_EQ(e.key(), "element 8");
+    EXPECT_NE(e.message().find("folded element"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("edge shared with element 7"), std::string::npos) << e.message();
+  }
+  // In a larger mesh the odd one out is named: move an interior node of a structured mesh across a
+  // neighbouring vertex so that the cells around it turn over.
+  Mesh r = rectangle_mesh(0, 0, 1, 1, 2, 2);
+  Index centre = -1;
+  for (Index v = 0; v < r.num_nodes(); ++v)
+    if ((r.x.col(v) - Eigen::Vector2d(0.5, 0.5)).norm() < 1e-12) centre = v;
+  ASSERT_GE(centre, 0);
+  r.x.col(centre) = Eigen::Vector2d(0.5, 1.4);  // above the top edge
+  try {
+    check_folds(r);
+    FAIL() << "no fold found";
+  } catch (const InputError& e) {
+    const std::string label = e.key();
+    Index named = -1;
+    for (Index c = 0; c < r.num_cells(); ++c)
+      if (r.cell_label(c) == label) named = c;
+    ASSERT_GE(named, 0) << label;
+    EXPECT_LT(simplex_determinant(r, named), 0.0) << "the folded cell is the one turned over";
+  }
+}
+
 TEST(MeshTopology, StructuredMeshesAreOnePieceWithoutTwins) {
   for (int order : {1, 2}) {
     const Mesh tri = rectangle_mesh(0, 0, 2, 1, 6, 3, order);

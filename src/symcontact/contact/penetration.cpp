@@ -1,0 +1,255 @@
+#include "symcontact/contact/penetration.hpp"
+
+#include <cmath>
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <unordered_set>
+#include <memory>
+
+#include "symcontact/contact/bvh.hpp"
+#include "symcontact/contact/closest_point.hpp"
+#include "symcontact/contact/contact_points.hpp"
+#include "symcontact/contact/contact_surface.hpp"
+
+namespace symcontact {
+
+namespace {
+
+using Box = BoundingVolumeHierarchy::Box;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Eigen::Vector3d pad3(const Eigen::VectorXd& v) {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  r.head(v.size()) = v;
+  return r;
+}
+
+Eigen::MatrixXd facet_positions(const ContactSurface& s, const Eigen::MatrixXd& x, Index f) {
+  const int npf = s.nodes_per_facet();
+  Eigen::MatrixXd xf(s.dim, npf);
+  for (int a = 0; a < npf; ++a) xf.col(a) = x.col(s.facet(f)[a]);
+  return xf;
+}
+
+/// Largest distance between two vertices of a facet.
+double facet_diameter(const ContactSurface& s, const Eigen::MatrixXd& x, Index f) {
+  const int nv = cell_num_vertices(s.facet_type);
+  double h = 0.0;
+  for (int a = 0; a < nv; ++a)
+    for (int b = a + 1; b < nv; ++b) h = std::max(h, (x.col(s.facet(f)[a]) - x.col(s.facet(f)[b])).norm());
+  return h;
+}
+
+/// Longest reference facet at each node of s.
+Eigen::VectorXd nodal_sizes(const ContactSurface& s) {
+  Eigen::VectorXd h = Eigen::VectorXd::Zero(s.num_nodes());
+  for (Index f = 0; f < s.num_facets(); ++f) {
+    const double d = facet_diameter(s, s.X, f);
+    for (int a = 0; a < s.nodes_per_facet(); ++a) h[s.facet(f)[a]] = std::max(h[s.facet(f)[a]], d);
+  }
+  return h;
+}
+
+/// A surface's facets at node positions x, with a hierarchy for nearest-facet queries.
+struct FacetSearch {
+  const ContactSurface* s = nullptr;
+  Eigen::MatrixXd x;
+  BoundingVolumeHierarchy bvh;
+
+  FacetSearch(const ContactSurface& surface, const Eigen::MatrixXd& positions) : s(&surface), x(positions) {
+    std::vector<Box> boxes(s->num_facets());
+    for (Index f = 0; f < s->num_facets(); ++f) boxes[f] = facet_box(s->facet_type, facet_positions(*s, x, f), 0.0);
+    bvh.build(boxes);
+  }
+
+  /// Nearest facet to p (global): its index, the projection, and the signed distance along the facet's unit
+  /// normal at the projection (NaN unless the projection is inside the facet).
+  int nearest(const Eigen::Vector3d& p, FacetProjection& proj, double& signed_distance) const {
+    const Eigen::VectorXd q = p.head(s->dim);
+    const int f = bvh.nearest(p, kInf, [&](int k) {
+      return project_on_facet(s->facet_type, facet_positions(*s, x, k), q).distance2;
+    });
+    signed_distance = std::nan("");
+    if (f < 0) return f;
+    proj = project_on_facet(s->facet_type, facet_positions(*s, x, f), q);
+    if (proj.inside()) {
+      const Eigen::VectorXd n = facet_normal(s->facet_type, facet_positions(*s, x, f), proj.eta);
+      if (n.norm() > 0) signed_distance = (q - proj.point.head(s->dim)).dot(n.normalized());
+    }
+    return f;
+  }
+};
+
+using FacetKey = std::array<Index, 3>;  ///< sorted vertex indices of a cell facet (−1 last in 2D)
+struct FacetKeyHash {
+  std::size_t operator()(const FacetKey& k) const {
+    std::size_t h = 1469598103934665603ull;
+    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+    return h;
+  }
+};
+using FacetSet = std::unordered_set<FacetKey, FacetKeyHash>;
+
+/// The vertex facet of cell c opposite its vertex a.
+FacetKey opposite_facet(const Mesh& m, Index c, int a) {
+  FacetKey k{-1, -1, -1};
+  int n = 0;
+  for (int b = 0; b <= m.dim; ++b)
+    if (b != a) k[n++] = m.cell(c)[b];
+  for (int i = 1; i < m.dim; ++i)  // insertion sort of at most three entries
+    for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
+  return k;
+}
+
+/// The cells of a body at node positions X + u, with a hierarchy for point location.
+struct CellSearch {
+  const Mesh* mesh = nullptr;
+  Eigen::MatrixXd x;  ///< dim × nodes
+  BoundingVolumeHierarchy bvh;
+  FacetSet boundary;  ///< facets of one cell only
+
+  CellSearch(const Mesh& m, const DofMap& dofs, int body, const VectorXd& u) : mesh(&m), x(m.x) {
+    for (Index v = 0; v < m.num_nodes(); ++v)
+      for (int i = 0; i < m.dim; ++i) x(i, v) += u[dofs.dof(body, v, i)];
+    std::vector<Box> boxes(m.num_cells());
+    for (Index c = 0; c < m.num_cells(); ++c) {
+      boxes[c].setEmpty();
+      for (int a = 0; a < m.nodes_per_cell(); ++a) boxes[c].extend(pad3(x.col(m.cell(c)[a])));
+    }
+    bvh.build(boxes);
+    FacetSet seen;
+    for (Index c = 0; c < m.num_cells(); ++c)
+      for (int a = 0; a <= m.dim; ++a) {
+        const FacetKey k = opposite_facet(m, c, a);
+        if (!seen.insert(k).second) boundary.erase(k);
+        else boundary.insert(k);
+      }
+  }
+
+  /// Whether p lies inside the body: in the closed vertex simplex of some cell (barycentric coordinates
+  /// ≥ −1e-9) and on none of that cell's facets that lie on the body's boundary (a point on a facet or
+  /// edge shared by cells is inside; one on the boundary touches the body, it is not in it).
+  bool contains(const Eigen::Vector3d& p) const {
+    const int D = mesh->dim;
+    constexpr double eps = 1e-9;
+    bool found = false;
+    bvh.for_each_overlap(Box(p, p), [&](int c) {
+      if (found) return;
+      const Index* n = mesh->cell(c);
+      Eigen::MatrixXd J(D, D);
+      for (int i = 0; i < D; ++i) J.col(i) = x.col(n[i + 1]) - x.col(n[0]);
+      const Eigen::VectorXd l = J.partialPivLu().solve(p.head(D) - x.col(n[0]));
+      Eigen::VectorXd lambda(D + 1);  // barycentric coordinates of vertices 0..D
+      lambda << 1.0 - l.sum(), l;
+      if (lambda.minCoeff() < -eps) return;
+      for (int a = 0; a <= D; ++a)
+        if (lambda[a] <= eps && boundary.count(opposite_facet(*mesh, c, a))) return;
+      found = true;
+    });
+    return found;
+  }
+};
+
+/// The slave nodes of `slave` against the opposite surface `master` of a pair (see the file comment).
+void scan_side(const ContactSurface& slave, const ContactSurface& master, const CellSearch* cells,
+               const DofMap& dofs, const VectorXd& u, double rel, Penetration& deepest) {
+  const Eigen::MatrixXd xs = current_positions(slave, dofs, u);
+  const Eigen::MatrixXd xm = current_positions(master, dofs, u);
+  const FacetSearch now(master, xm), ref(master, master.X);
+  const Eigen::VectorXd h = nodal_sizes(slave);
+  for (Index k = 0; k < slave.num_nodes(); ++k) {
+    FacetProjection proj;
+    double d = 0.0, d0 = 0.0;
+    const int f = now.nearest(pad3(xs.col(k)), proj, d);
+    if (f < 0) continue;
+    const double size = std::max(h[k], facet_diameter(master, master.X, f));
+    const double tol = rel * size;
+    double depth = 0.0;
+    bool through = false;
+    if (cells && cells->contains(pad3(xs.col(k)))) depth = std::sqrt(proj.distance2);
+    if (std::isfinite(d) && d < -tol && -d > depth) {
+      FacetProjection p0;
+      ref.nearest(pad3(slave.X.col(k)), p0, d0);
+      if (!(d0 < -tol)) {  // in front (or beside) at the start, behind now
+        depth = -d;
+        through = cells && !cells->contains(pad3(xs.col(k)));
+        if (!cells) through = true;
+      }
+    }
+    if (depth > 0 && depth / size > deepest.ratio()) {
+      deepest.node = k;
+      deepest.depth = depth;
+      deepest.size = size;
+      deepest.passed_through = through;
+    }
+  }
+}
+
+void scan_obstacle(const ContactSurface& slave, const Obstacle& ob, const DofMap& dofs, const VectorXd& u,
+                   Penetration& deepest) {
+  const Eigen::MatrixXd xs = current_positions(slave, dofs, u);
+  const Eigen::VectorXd h = nodal_sizes(slave);
+  for (Index k = 0; k < slave.num_nodes(); ++k) {
+    Eigen::Vector3d xbar, n;
+    const Eigen::Vector3d p = pad3(xs.col(k));
+    ob.project(p, xbar, n);
+    const double depth = -(p - xbar).dot(n);
+    if (depth > 0 && depth / h[k] > deepest.ratio()) {
+      deepest.node = k;
+      deepest.depth = depth;
+      deepest.size = h[k];
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::VectorXd signed_distances(const ContactSurface& s, const Eigen::MatrixXd& x, const Eigen::MatrixXd& points) {
+  const FacetSearch search(s, x);
+  Eigen::VectorXd d(points.cols());
+  for (Index k = 0; k < points.cols(); ++k) {
+    FacetProjection proj;
+    search.nearest(pad3(points.col(k)), proj, d[k]);
+  }
+  return d;
+}
+
+std::vector<Penetration> find_penetrations(const ContactSet& contacts, const std::vector<const Mesh*>& meshes,
+                                           const DofMap& dofs, const VectorXd& u, double relative_tolerance) {
+  std::vector<Penetration> out;
+  for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
+    const ContactPair& pair = contacts.pairs[p];
+    if (pair.surface_a == pair.surface_b) continue;  // self-contact
+    std::vector<std::pair<int, int>> sides;          // (slave, master)
+    if (pair.obstacle >= 0 || contacts.surfaces[pair.surface_b].is_rigid() || pair.mode == ContactMode::kSymmetric) {
+      sides.push_back({pair.surface_a, pair.surface_b});
+      if (pair.obstacle < 0 && !contacts.surfaces[pair.surface_b].is_rigid())
+        sides.push_back({pair.surface_b, pair.surface_a});
+    } else {
+      sides.push_back(pair.slave_is_b ? std::make_pair(pair.surface_b, pair.surface_a)
+                                      : std::make_pair(pair.surface_a, pair.surface_b));
+    }
+    for (const auto& [s, m] : sides) {
+      Penetration deepest;
+      deepest.pair = p;
+      deepest.slave = s;
+      deepest.master = m;
+      const ContactSurface& slave = contacts.surfaces[s];
+      if (m < 0) {
+        scan_obstacle(slave, contacts.obstacles[pair.obstacle], dofs, u, deepest);
+      } else {
+        const ContactSurface& master = contacts.surfaces[m];
+        std::unique_ptr<CellSearch> cells;
+        // Two surfaces of one body: its nodes lie on its own cells, so only the "passed through" test applies.
+        if (!master.is_rigid() && master.body != slave.body)
+          cells = std::make_unique<CellSearch>(*meshes[master.body], dofs, master.body, u);
+        scan_side(slave, master, cells.get(), dofs, u, relative_tolerance, deepest);
+      }
+      if (deepest.node >= 0) out.push_back(deepest);
+    }
+  }
+  return out;
+}
+
+}  // namespace symcontact

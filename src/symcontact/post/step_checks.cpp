@@ -1,0 +1,122 @@
+#include "symcontact/post/step_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "symcontact/contact/penetration.hpp"
+#include "symcontact/core/error.hpp"
+
+namespace symcontact {
+
+namespace {
+
+void check_finite(const Model& model, const VectorXd& u, const VectorXd& g,
+                  const ContactSolveReport* contact) {
+  const DofMap& dofs = model.dofs();
+  for (Index d = 0; d < u.size(); ++d) {
+    if (std::isfinite(u[d]) && std::isfinite(g[d])) continue;
+    for (int b = 0; b < dofs.num_bodies(); ++b) {
+      const Body& body = *model.bodies()[b];
+      if (d < dofs.dof(b, 0, 0) || d >= dofs.dof(b, 0, 0) + dofs.num_body_dofs(b)) continue;
+      const Index node = (d - dofs.dof(b, 0, 0)) / model.dim();
+      throw SolveError("check of the answer: body '" + body.name + "', " +
+                       body.mesh.node_label(node) + ": " +
+                       (std::isfinite(u[d]) ? "the force ∇E" : "the displacement") +
+                       " is not a finite number");
+    }
+  }
+  if (contact && !contact->multipliers.allFinite())
+    throw SolveError("check of the answer: a contact multiplier is not a finite number");
+}
+
+/// The largest depth / h over the pairs' nodes; throws when one exceeds the tolerance.
+double check_penetration(const Model& model, const VectorXd& u) {
+  std::vector<const Mesh*> meshes;
+  for (const auto& b : model.bodies()) meshes.push_back(&b->mesh);
+  const ContactSet& cs = model.contacts();
+  const std::vector<Penetration> found = find_penetrations(cs, meshes, model.dofs(), u);
+  double worst = 0.0;
+  for (const Penetration& p : found) worst = std::max(worst, p.ratio());
+  auto it = std::find_if(found.begin(), found.end(), [](const Penetration& p) { return p.exceeds(); });
+  if (it == found.end()) return worst;
+  const Penetration& p = *it;
+  const ContactSurface& slave = cs.surfaces[p.slave];
+  std::string into = "the obstacle";
+  if (p.master >= 0) {
+    const ContactSurface& m = cs.surfaces[p.master];
+    into = p.passed_through || m.is_rigid() ? "'" + m.name + "'" : "body '" + model.bodies()[m.body]->name + "'";
+  }
+  std::ostringstream s;
+  s.precision(4);
+  s << "check of the answer: contact '" << cs.pairs[p.pair].name << "': "
+    << model.bodies()[slave.body]->mesh.node_label(slave.nodes[p.node]) << " of '" << slave.name << "' is "
+    << p.depth << (p.passed_through ? " behind " : " inside ") << into << " ("
+    << 100.0 * p.depth / p.size << " % of the element size " << p.size << "; at most "
+    << 100.0 * kPenetrationRelativeTolerance
+    << " % is tolerated): the bodies went through each other, the contact was not enforced (the search "
+       "distance may be smaller than the motion of a step: more load steps or a larger search_distance)";
+  throw SolveError(s.str());
+}
+
+/// Largest ‖r_b‖ / F over the bodies (step_checks.hpp); throws when above the tolerance.
+double check_equilibrium(const Model& model, const VectorXd& u, const VectorXd& g, const FixedDofs& fixed,
+                         const ContactSolveReport* contact) {
+  const DofMap& dofs = model.dofs();
+  VectorXd r = g;
+  double contact_scale = 0.0;
+  if (contact) {
+    if (contact->multipliers.size() > 0) {
+      const VectorXd am = contact->linearization.A.transpose() * contact->multipliers;
+      r -= am;
+      contact_scale = am.norm();
+    }
+    for (const auto& f : contact->friction)
+      if (f) f->add_gradient(u, r);
+  }
+  std::vector<Index> free_index;
+  fixed.free_numbering(u.size(), free_index);
+  double reactions2 = 0.0;
+  std::vector<double> body_r2(dofs.num_bodies(), 0.0);
+  for (int b = 0; b < dofs.num_bodies(); ++b)
+    for (Index d = dofs.dof(b, 0, 0); d < dofs.dof(b, 0, 0) + dofs.num_body_dofs(b); ++d) {
+      if (free_index[d] < 0)
+        reactions2 += g[d] * g[d];
+      else
+        body_r2[b] += r[d] * r[d];
+    }
+  const double scale = std::max({model.external_load().norm(), std::sqrt(reactions2), contact_scale});
+  double worst = 0.0;
+  for (int b = 0; b < dofs.num_bodies(); ++b) {
+    const double rel = scale > 0 ? std::sqrt(body_r2[b]) / scale : 0.0;
+    worst = std::max(worst, rel);
+    if (rel > kEquilibriumRelativeTolerance) {
+      std::ostringstream s;
+      s.precision(3);
+      s << "check of the answer: body '" << model.bodies()[b]->name
+        << "' is not in equilibrium: the force residual ‖∇E − contact forces‖ on its free DOFs is " << rel
+        << " of the step's force scale " << scale << " (at most " << kEquilibriumRelativeTolerance << ")";
+      throw SolveError(s.str());
+    }
+  }
+  return worst;
+}
+
+}  // namespace
+
+StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDofs& fixed,
+                            const ContactSolveReport* contact) {
+  VectorXd g = VectorXd::Zero(u.size());
+  try {
+    if (u.allFinite()) model.energy().add_gradient(u, g);
+  } catch (const EvaluationError& e) {
+    throw SolveError(std::string("check of the answer: the energy cannot be evaluated at the answer: ") + e.what());
+  }
+  check_finite(model, u, g, contact);
+  StepCheckFigures f;
+  if (contact) f.penetration = check_penetration(model, u);
+  f.equilibrium = check_equilibrium(model, u, g, fixed, contact);
+  return f;
+}
+
+}  // namespace symcontact

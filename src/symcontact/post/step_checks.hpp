@@ -1,0 +1,45 @@
+#pragma once
+/// \file step_checks.hpp
+/// The checks a load step's answer must pass before the run writes it as converged (app/run.cpp). They look
+/// at the answer itself, not at what the solver reported, so that a solve that "succeeded" on a wrong
+/// problem (bodies pushed through each other, a body left free) is not reported as a result:
+///
+/// 1. **Finite values**: every displacement, the gradient ∇E(u) and the contact multipliers are finite.
+/// 2. **Penetration** (contact/penetration.hpp): no contact node lies deeper than
+///    kPenetrationRelativeTolerance × h (25 % of the local element size) inside the other body of its pair,
+///    behind the other surface after starting in front of it, or behind an analytic obstacle. Global: not
+///    limited to the contact search's distance or active set.
+/// 3. **Equilibrium of each body**: on the free DOFs of body b, r = ∇E(u) + ∇j(u) − Aᵀμ (E the bodies'
+///    energy: elastic minus the loads' work; j the regularised friction terms of the last solve; A, μ the
+///    gap constraints of the last geometry iteration and their multipliers), and
+///    ‖r_b‖₂ ≤ kEquilibriumRelativeTolerance × F with F the force scale of the step:
+///    max(‖f_ext‖₂, ‖∇E(u) on the fixed DOFs‖₂ (the reactions), ‖Aᵀμ‖₂).
+///
+/// A failed check throws SolveError naming the step, the body or pair, the node and the measured figure;
+/// the run turns it into exit 3 with the finished steps kept.
+
+#include <string>
+
+#include "symcontact/model/model.hpp"
+#include "symcontact/solvers/contact_solver.hpp"
+
+namespace symcontact {
+
+/// ‖r_b‖₂ / F above which a body is not in equilibrium (see the file comment). The solvers balance forces to
+/// round-off on the condensed and dual paths and to the optimiser's tolerance otherwise.
+constexpr double kEquilibriumRelativeTolerance = 1e-6;
+
+/// What the checks measured (for summary.json): the largest ‖r_b‖₂ / F over the bodies, and the largest
+/// depth / h over the contact nodes (0 without contact or penetration).
+struct StepCheckFigures {
+  double equilibrium = 0.0;
+  double penetration = 0.0;
+};
+
+/// Runs the checks on a load step's solution u, with the Dirichlet conditions `fixed` of the step
+/// and, with contact, the report of its last contact solve (null without contact). Throws SolveError when one
+/// fails (the run prefixes the step); returns the figures otherwise.
+StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDofs& fixed,
+                            const ContactSolveReport* contact);
+
+}  // namespace symcontact

@@ -1,0 +1,111 @@
+/// Tests of the global penetration test (contact/penetration.hpp) on two structured unit squares, "lower"
+/// [0,1]² and "upper" [0,1]×[1,2], one symmetric pair between lower.top and upper.bottom: the reference
+/// configuration and a small press measure nothing beyond the tolerance; a node pushed inside the other
+/// body, and the upper square pushed right through the lower one, are found with their depth.
+
+#include "symcontact/contact/penetration.hpp"
+
+#include <gtest/gtest.h>
+
+#include "symcontact/contact/contact_surface.hpp"
+#include "symcontact/mesh/structured.hpp"
+
+namespace symcontact {
+namespace {
+
+struct TwoSquares {
+  Mesh lower = rectangle_mesh(0, 0, 1, 1, 4, 4);
+  Mesh upper = rectangle_mesh(0, 1, 1, 2, 4, 4);
+  DofMap dofs{2};
+  ContactSet contacts;
+  TwoSquares() {
+    dofs.add_body(lower.num_nodes());
+    dofs.add_body(upper.num_nodes());
+    contacts.surfaces.push_back(make_contact_surface(lower, "top", 0, "lower.top"));
+    contacts.surfaces.push_back(make_contact_surface(upper, "bottom", 1, "upper.bottom"));
+    ContactPair pair;
+    pair.name = "interface";
+    pair.surface_a = 0;
+    pair.surface_b = 1;
+    pair.search_distance = 0.1;
+    contacts.pairs.push_back(pair);
+    contacts.finalize();
+  }
+  std::vector<const Mesh*> meshes() const { return {&lower, &upper}; }
+  /// u with the upper square translated by (0, dy).
+  VectorXd upper_moved(double dy) const {
+    VectorXd u = VectorXd::Zero(dofs.num_dofs());
+    for (Index v = 0; v < upper.num_nodes(); ++v) u[dofs.dof(1, v, 1)] = dy;
+    return u;
+  }
+};
+
+double worst_ratio(const std::vector<Penetration>& found) {
+  double r = 0.0;
+  for (const auto& p : found) r = std::max(r, p.ratio());
+  return r;
+}
+
+TEST(Penetration, TouchingSquaresAndASmallOverlapAreWithinTheTolerance) {
+  const TwoSquares s;
+  const auto at_rest = find_penetrations(s.contacts, s.meshes(), s.dofs, s.upper_moved(0.0));
+  EXPECT_LT(worst_ratio(at_rest), 1e-9);
+  // 5 % of h = 0.25 into the lower square: measured, not beyond 25 %.
+  const auto small = find_penetrations(s.contacts, s.meshes(), s.dofs, s.upper_moved(-0.0125));
+  ASSERT_FALSE(small.empty());
+  EXPECT_NEAR(worst_ratio(small), 0.05, 1e-9);
+  for (const auto& p : small) EXPECT_FALSE(p.exceeds());
+}
+
+TEST(Penetration, OverlapBeyondTheToleranceIsFoundWithItsDepth) {
+  const TwoSquares s;
+  const auto found = find_penetrations(s.contacts, s.meshes(), s.dofs, s.upper_moved(-0.3));
+  ASSERT_EQ(found.size(), 2u);  // both sides of the symmetric pair
+  int inside = 0;
+  for (const auto& p : found) {
+    EXPECT_TRUE(p.exceeds());
+    EXPECT_NEAR(p.depth, 0.3, 1e-12);
+    EXPECT_NEAR(p.size, 0.25, 1e-12);
+    inside += !p.passed_through;
+  }
+  // The upper surface's end nodes lie on the lower square's sides (its boundary, not inside it) and count
+  // as behind its top; the lower surface's nodes lie inside the upper square, on edges between its cells.
+  EXPECT_GE(inside, 1);
+}
+
+TEST(Penetration, BodyPushedRightThroughTheOtherIsFound) {
+  // The upper square ends at [0,1]×[−4,−3]: no node lies inside the other square, but each surface's
+  // nodes started in front of the other surface and now lie 5 behind it.
+  const TwoSquares s;
+  const auto found = find_penetrations(s.contacts, s.meshes(), s.dofs, s.upper_moved(-5.0));
+  ASSERT_EQ(found.size(), 2u);
+  for (const auto& p : found) {
+    EXPECT_TRUE(p.exceeds());
+    EXPECT_TRUE(p.passed_through);
+    EXPECT_NEAR(p.depth, 5.0, 1e-12);
+  }
+}
+
+TEST(Penetration, AnalyticObstacleDepthIsTheSignedDistance) {
+  TwoSquares s;
+  ContactSet plane;
+  plane.surfaces.push_back(make_contact_surface(s.lower, "bottom", 0, "lower.bottom"));
+  Obstacle ob;
+  ob.point = Eigen::Vector3d(0, 0.1, 0);  // the floor y = 0.1, above the square's bottom y = 0
+  ob.normal = Eigen::Vector3d::UnitY();
+  plane.obstacles.push_back(ob);
+  ContactPair pair;
+  pair.name = "floor";
+  pair.surface_a = 0;
+  pair.obstacle = 0;
+  plane.pairs.push_back(pair);
+  plane.finalize();
+  const auto found = find_penetrations(plane, s.meshes(), s.dofs, VectorXd::Zero(s.dofs.num_dofs()));
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NEAR(found[0].depth, 0.1, 1e-12);
+  EXPECT_EQ(found[0].master, -1);
+  EXPECT_TRUE(found[0].exceeds());  // 0.1 / 0.25 = 40 %
+}
+
+}  // namespace
+}  // namespace symcontact
