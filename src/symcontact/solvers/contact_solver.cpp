@@ -14,6 +14,7 @@
 #include "symcontact/solvers/anderson_acceleration.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
+#include "symcontact/solvers/fixed_point_monitor.hpp"
 #include "symcontact/solvers/dual_condensed_problem.hpp"
 #include "symcontact/solvers/semidefinite_factor.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
@@ -54,6 +55,11 @@ class CompositeEnergy : public EnergyTerm {
   const EnergyTerm& base_;
 };
 }  // namespace
+
+void tighten_optimiser(IpoptOptions& o) {
+  o.tolerance *= 1e-2;
+  if (auto it = o.numeric_options.find("tol"); it != o.numeric_options.end()) it->second *= 1e-2;
+}
 
 ContactWorkspace::ContactWorkspace() = default;
 ContactWorkspace::~ContactWorkspace() = default;
@@ -309,6 +315,10 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
   // balanced at the end nor reported converged, even where its change happens to fall below
   // geometry_tolerance: its answer is an intermediate.
   const bool inexact = options.loose_geometry_tolerance > options.geometry_tolerance;
+  // The IPOPT settings of this solve: tightened when the fixed point stagnates at their noise floor.
+  IpoptOptions ipopt = options.ipopt;
+  FixedPointMonitor monitor;
+  int tightenings = 0;
   const double stop_tolerance = inexact ? options.loose_geometry_tolerance : options.geometry_tolerance;
   bool lazy = false;  ///< the current iterate's interior is out of date (ContactSolveOptions::lazy_interior)
   for (int it = 1;; ++it) {
@@ -389,7 +399,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
     auto to_target = [&](const VectorXd& xf) { return condensed ? condensed->restrict(xf) : xf; };
     auto from_target = [&](const VectorXd& xt) { return condensed ? condensed->expand(xt) : xt; };
     // Warm start when the rows are the same (same families, same nodes).
-    IpoptOptions opt = options.ipopt;
+    IpoptOptions opt = ipopt;
     VectorXd mu0;
     // The first geometry iteration starts from the previous solve of the run (the previous Coulomb iteration
     // or load step) when its rows are the same: IPOPT then needs a few iterations instead of a cold start's 15.
@@ -434,8 +444,8 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
         if (options.dual_interior_point && independent_rows) {
           DenseQpOptions qp;
           // IPOPT's tolerance, also when the problem file sets it ([ipopt] tol).
-          const auto tol = options.ipopt.numeric_options.find("tol");
-          qp.tolerance = tol != options.ipopt.numeric_options.end() ? tol->second : options.ipopt.tolerance;
+          const auto tol = ipopt.numeric_options.find("tol");
+          qp.tolerance = tol != ipopt.numeric_options.end() ? tol->second : ipopt.tolerance;
           qp.complementarity_tolerance = 1e-6 * qp.tolerance;
           DenseQpResult r = dual_problem->solve_interior_point(qp, warm ? &l0 : nullptr, warm ? &z0 : nullptr,
                                                                warm ? &dual_equality_prev : nullptr);
@@ -466,7 +476,7 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
           }
         }
         if (!solved && (!warm || !res.success))
-          res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), options.ipopt);
+          res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), ipopt);
       }
       ++rep.dual_solves;
       if (!res.success) {
@@ -500,13 +510,13 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       if (!res.success && it == 1 && same_rows) {
         log.detail("  IPOPT failed from the previous solve's multipliers (" + res.status_text + "); cold start");
         rep.ipopt_iterations += res.iterations;
-        res = solve_with_ipopt(target, to_target(x), options.ipopt);
+        res = solve_with_ipopt(target, to_target(x), ipopt);
       }
       if (!res.success && friction) {
         // Stiff regularised friction (small α) can defeat IPOPT's line search from a start that is
         // already close; one cold retry from the start of the load step before giving up.
         log.detail("  IPOPT failed (" + res.status_text + "); retrying from the start of the load step");
-        IpoptOptions cold = options.ipopt;
+        IpoptOptions cold = ipopt;
         VectorXd u_retry = friction->u_start;  // the start of the step, moved as at the first solve
         predict_dirichlet_increment(energy, fixed, u_retry);
         const IpoptResult retry = solve_with_ipopt(target, to_target(problem.restrict(u_retry)), cold);
@@ -629,11 +639,25 @@ ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs&
       workspace->row_node = lin.row_node;
       break;
     }
+    monitor.record(change);
+    if (monitor.stagnated() && tightenings < kMaxTightenings) {
+      // No new low in six iterations: the subproblems' answers carry the optimiser's tolerance (where the closing
+      // polish does not apply, the interior point's barrier offset), a noise floor above the geometry tolerance.
+      ++tightenings;
+      tighten_optimiser(ipopt);
+      std::ostringstream s;
+      s << "  the geometry fixed point stagnated (no new low below " << monitor.best() << "); IPOPT tol tightened to "
+        << ipopt.tolerance;
+      log.detail(s.str());
+      monitor.restart();
+    }
     if (it >= options.max_geometry_iterations) {
       u = problem.expand(x);
       std::ostringstream s;
       s << "the geometry fixed point did not converge in " << options.max_geometry_iterations
         << " iterations (last relative change " << change << ", tolerance " << stop_tolerance << ")";
+      if (tightenings > 0) s << "; tried: IPOPT tol tightened " << tightenings << " time(s), to " << ipopt.tolerance;
+      s << "; try smaller load steps ([contact_solver] max_step_cuts = 4, or more [steps])";
       throw SolveError(s.str());
     }
     if (anderson) {

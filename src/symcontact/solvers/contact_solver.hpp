@@ -130,6 +130,13 @@ struct ContactSolveOptions {
   bool lazy_interior = false;
 };
 
+/// A fixed point that stagnates at the noise floor of its optimiser (the geometry fixed point here, the Coulomb
+/// fixed point of frictional_contact.hpp) tightens it at most this many times, by tighten_optimiser() each.
+constexpr int kMaxTightenings = 2;
+/// IPOPT's tolerance × 1e-2 (also a `tol` given in the problem file's [ipopt] table); the dense interior point of
+/// the dual reads the same tolerance.
+void tighten_optimiser(IpoptOptions& o);
+
 /// Makes u whole after solves with ContactSolveOptions::lazy_interior: the interior DOFs from u's condensed
 /// entries and the workspace's factor and load part (those of the last solve), x_I = −K_II⁻¹(r₀_I + K_IB x_B).
 /// Does nothing when the workspace has nothing pending. `energy` and `fixed` must be those of the last solve.

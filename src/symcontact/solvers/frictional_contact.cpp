@@ -50,11 +50,8 @@ double proportional_increment(const FixedDofs& fixed, const VectorXd& u, const V
 
 /// Each remedy of a stagnated Coulomb fixed point tightens its inner solves: IPOPT's tolerance × 1e-2 and the
 /// geometry tolerance × 0.1 (the noise of the pressures p(τ) that the fixed point reads falls with them).
-constexpr int kMaxTightenings = 2;
-
 void tighten(ContactSolveOptions& o) {
-  o.ipopt.tolerance *= 1e-2;
-  if (auto it = o.ipopt.numeric_options.find("tol"); it != o.ipopt.numeric_options.end()) it->second *= 1e-2;
+  tighten_optimiser(o.ipopt);
   o.geometry_tolerance *= 0.1;
 }
 
@@ -260,11 +257,12 @@ FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedD
           ++tightenings;
           inexact = false;
           tighten(inner);
-          monitor.restart();
           std::ostringstream m;
-          m << "  the Coulomb fixed point stagnated (no new low below " << monitor.best() << "); inner solves tightened to IPOPT tol " << inner.ipopt.tolerance
-            << ", geometry tolerance " << inner.geometry_tolerance;
+          m << "  the Coulomb fixed point stagnated (no new low below " << monitor.best()
+            << "); inner solves tightened to IPOPT tol " << inner.ipopt.tolerance << ", geometry tolerance "
+            << inner.geometry_tolerance;
           log.detail(m.str());
+          monitor.restart();
         } else if (rep.last.converged && change <= options.stagnation_acceptance) {
           rep.accepted_at_noise_floor = change;
           std::ostringstream m;

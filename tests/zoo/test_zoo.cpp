@@ -1,0 +1,195 @@
+// The zoo: every example as it ships, and each contact example in variants nobody tuned it for (quadratic
+// elements, Coulomb friction μ = 0.3, other units), each held to the checks a contact solution must pass
+// without a reference (tests/support/invariants.hpp):
+//   the solve ends (every load step converged); equilibrium of every body to 1e-8 of the problem's largest
+//   force; no nodal penetration beyond 5 % of the smallest facet of the surface (the weak, integrated gap lets
+//   a node of a curved P1 surface sit O(h²/R) inside; the examples' headers state ≤ 3 %); the Coulomb law
+//   |t| ≤ μ p to 1e-3 of μ max p at every node of the friction side.
+// Each example's own figures (its header) are checked where it states a closed form. Label "zoo"; the cases
+// over about 30 s are labelled "zoo_slow" as well and run with scripts/test --all (tests/zoo/CMakeLists).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "support/invariants.hpp"
+#include "support/rescale_problem.hpp"
+#include "support/solve_case.hpp"
+
+namespace symcontact::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string example_path(const std::string& name) { return std::string(SYMCONTACT_EXAMPLES) + "/" + name; }
+
+void expect_invariants(const SolvedCase& c, const std::string& what) {
+  const Invariants inv = measure_invariants(c);
+  std::printf("%s: equilibrium %.2e, penetration %.2e h, Coulomb law excess %.2e\n", what.c_str(), inv.equilibrium,
+              inv.penetration, inv.friction_excess);
+  EXPECT_LE(inv.equilibrium, 1e-8) << what;
+  EXPECT_LE(inv.penetration, 0.05) << what;
+  EXPECT_LE(inv.friction_excess, 1e-3) << what;
+}
+
+/// |R_x / R_y| of the "upper_top" conditions at the last step (the inclined interface, V5).
+double inclined_ratio(const SolvedCase& c) {
+  const auto& bounds = c.model->dirichlet_boundaries();
+  const auto& last = c.reactions.back();
+  double rx = 0, ry = 0;
+  for (std::size_t k = 0; k < bounds.size(); ++k)
+    if (bounds[k].name == "upper_top") {
+      rx += last[k][0];
+      ry += last[k][1];
+    }
+  return std::abs(rx / ry);
+}
+
+/// The closed-form figures an example's header states, where it states one.
+void expect_header_figures(const std::string& example, const SolvedCase& c) {
+  const double tan_a = 0.1;
+  double mu = -1;
+  if (example == "inclined_2d/inclined_mu0.toml") mu = 0.0;
+  if (example == "inclined_2d/inclined_mu0.1.toml") mu = 0.1;
+  if (example == "inclined_2d/inclined.toml" || example == "inclined_3d/inclined.toml") mu = 0.2;
+  if (mu >= 0) {
+    // Header: exact in gross slip, less about 0.2 % from the interface turning under load.
+    const double exact = (tan_a + mu) / (1 - mu * tan_a);
+    const double ratio = inclined_ratio(c);
+    std::printf("%s: |Rx/Ry| %.6f, exact %.6f (%+.3f %%)\n", example.c_str(), ratio, exact, 100 * (ratio / exact - 1));
+    EXPECT_NEAR(ratio / exact, 1.0, 3e-3) << example;
+  }
+}
+
+class ExampleAsShipped : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExampleAsShipped, SolvesAndPassesItsChecks) {
+  const std::string path = example_path(GetParam());
+  const auto c = solve_case(read_text(path), fs::path(path).parent_path().string());
+  if (!c->model->contacts().empty()) expect_invariants(*c, GetParam());
+  expect_header_figures(GetParam(), *c);
+}
+
+/// Every problem file under examples/, as "folder/file.toml".
+std::vector<std::string> all_examples() {
+  std::vector<std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(SYMCONTACT_EXAMPLES))
+    if (e.path().extension() == ".toml")
+      out.push_back(fs::relative(e.path(), SYMCONTACT_EXAMPLES).generic_string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string param_name(const ::testing::TestParamInfo<std::string>& i) {
+  std::string s = i.param.substr(0, i.param.size() - 5);
+  for (char& ch : s)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return s;
+}
+
+INSTANTIATE_TEST_SUITE_P(Zoo, ExampleAsShipped, ::testing::ValuesIn(all_examples()), param_name);
+
+struct VariantCase {
+  std::string example;
+  std::string name;  ///< order2, coulomb, order2_coulomb, mm
+  ProblemVariant variant;
+  UnitChange units;  ///< applied after `variant` (length = force = 1: none)
+};
+
+class ExampleVariant : public ::testing::TestWithParam<VariantCase> {};
+
+TEST_P(ExampleVariant, SolvesAndPassesItsChecks) {
+  const VariantCase& v = GetParam();
+  const std::string dir = test_temp_dir("zoo");
+  std::string path = write_variant(example_path(v.example), v.variant, dir + "variant");
+  if (v.units.length != 1.0 || v.units.force != 1.0) path = rescale_problem(path, v.units, dir + "units");
+  const auto c = solve_case(read_text(path), fs::path(path).parent_path().string());
+  expect_invariants(*c, v.example + " " + v.name);
+}
+
+/// The contact examples in four variants each; a coarser mesh where the example's own would make the zoo slow.
+std::vector<VariantCase> variants() {
+  struct Example {
+    std::string file;
+    double mesh_size;  ///< 0: the example's
+  };
+  const std::vector<Example> examples = {
+      {"hertz_2d/cylinder_on_plane.toml", 0.0}, {"hertz_2d/two_cylinders.toml", 0.0},
+      {"hertz_3d/sphere_on_plane.toml", 0.0},   {"rings_2d/rings.toml", 0.0},
+      {"friction_block/block.toml", 0.0},       {"inclined_2d/inclined.toml", 0.0},
+      {"inclined_3d/inclined.toml", 0.0}};
+  std::vector<VariantCase> out;
+  for (const Example& e : examples) {
+    ProblemVariant base;
+    base.mesh_size = e.mesh_size;
+    ProblemVariant p2 = base, mu = base, p2mu = base;
+    p2.order = 2;
+    mu.coulomb_mu = 0.3;
+    p2mu.order = 2;
+    p2mu.coulomb_mu = 0.3;
+    out.push_back({e.file, "order2", p2, {}});
+    out.push_back({e.file, "coulomb", mu, {}});
+    out.push_back({e.file, "order2_coulomb", p2mu, {}});
+    out.push_back({e.file, "mm", base, {1e3, 1.0}});
+  }
+  return out;
+}
+
+std::string variant_name(const ::testing::TestParamInfo<VariantCase>& i) {
+  std::string s = i.param.example.substr(0, i.param.example.size() - 5) + "_" + i.param.name;
+  for (char& ch : s)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return s;
+}
+
+INSTANTIATE_TEST_SUITE_P(Zoo, ExampleVariant, ::testing::ValuesIn(variants()), variant_name);
+
+}  // namespace
+}  // namespace symcontact::testing
+
+namespace symcontact::testing {
+namespace {
+
+/// |R_x / R_y| of the "upper_top" reactions at the last step of a summary.json written by `symcontact run`.
+double last_step_ratio(const std::string& summary_path) {
+  const std::string text = read_text(summary_path);
+  const std::regex entry(R"re("boundary": "upper_top",\s*"force": \[\s*([-+0-9.eE]+),\s*([-+0-9.eE]+))re");
+  const std::size_t last = text.rfind("\"step\":");
+  double rx = 0, ry = 0;
+  for (auto it = std::sregex_iterator(text.begin() + static_cast<std::ptrdiff_t>(last), text.end(), entry);
+       it != std::sregex_iterator(); ++it) {
+    rx += std::stod((*it)[1]);
+    ry += std::stod((*it)[2]);
+  }
+  return std::abs(rx / ry);
+}
+
+// The demo's three cases under each of OpenBLAS's x86-64 kernel families (OPENBLAS_CORETYPE, read when the
+// library loads, hence one process per run): all finish and agree on |R_x/R_y| to 1e-6.
+TEST(OpenBlasKernels, InclinedInterfaceAgreesUnderEveryKernel) {
+  const std::string dir = test_temp_dir("kernels");
+  for (const char* example : {"inclined_2d/inclined_mu0.toml", "inclined_2d/inclined_mu0.1.toml", "inclined_2d/inclined.toml"}) {
+    double reference = 0;
+    for (const char* kernel : {"Haswell", "SkylakeX", "Zen", "Sandybridge"}) {
+      const std::string out = dir + kernel + "_" + fs::path(example).stem().string();
+      const std::string cmd = std::string("OPENBLAS_CORETYPE=") + kernel + " '" + SYMCONTACT_CLI + "' run '" +
+                              example_path(example) + "' --out '" + out + "' -q";
+      ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+      const double ratio = last_step_ratio(out + "/summary.json");
+      std::printf("%s under %s: |Rx/Ry| = %.9f\n", example, kernel, ratio);
+      if (reference == 0) reference = ratio;
+      EXPECT_NEAR(ratio, reference, 1e-6 * reference) << example << " under " << kernel;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace symcontact::testing
