@@ -89,13 +89,54 @@ void rescale_mesh_key(toml::table& t, const fs::path& base, const fs::path& out_
 
 }  // namespace
 
-std::string rescale_problem(const std::string& problem_path, const UnitChange& change, const std::string& out_dir) {
-  toml::table root;
+namespace {
+
+toml::table parse_problem_file(const std::string& problem_path) {
   try {
-    root = toml::parse_file(problem_path);
+    return toml::parse_file(problem_path);
   } catch (const toml::parse_error& e) {
     throw std::runtime_error("rescale_problem: " + problem_path + ": " + std::string(e.description()));
   }
+}
+
+void write_problem(const toml::table& root, const fs::path& out) {
+  std::ofstream f(out);
+  f << root << "\n";
+  if (!f) throw std::runtime_error("rescale_problem: cannot write " + out.string());
+}
+
+void make_mesh_path_absolute(toml::table& t, const fs::path& base) {
+  if (const auto name = t["mesh"].value<std::string>())
+    t.insert_or_assign("mesh", fs::weakly_canonical(base / *name).string());
+}
+
+}  // namespace
+
+std::string write_variant(const std::string& problem_path, const ProblemVariant& variant, const std::string& out_dir) {
+  toml::table root = parse_problem_file(problem_path);
+  fs::create_directories(out_dir);
+  const fs::path base = fs::path(problem_path).parent_path();
+  if (toml::table* p = root["problem"].as_table()) {
+    if (variant.order > 0) p->insert_or_assign("order", variant.order);
+    if (variant.mesh_size > 0) p->insert_or_assign("mesh_size", variant.mesh_size);
+  }
+  for_each_table(root, "body", [&](toml::table& body) { make_mesh_path_absolute(body, base); });
+  for_each_table(root, "contact", [&](toml::table& c) {
+    if (toml::table* o = c["obstacle"].as_table()) make_mesh_path_absolute(*o, base);
+    if (variant.coulomb_mu >= 0) {
+      c.erase("tau");
+      c.erase("alpha");
+      c.insert_or_assign("friction", "coulomb");
+      c.insert_or_assign("mu", variant.coulomb_mu);
+    }
+  });
+  const fs::path out = fs::path(out_dir) / "problem.toml";
+  write_problem(root, out);
+  return out.string();
+}
+
+std::string rescale_problem(const std::string& problem_path, const UnitChange& change, const std::string& out_dir) {
+  toml::table root = parse_problem_file(problem_path);
   fs::create_directories(out_dir);
   const fs::path base = fs::path(problem_path).parent_path();
   const double L = change.length, S = change.stress(), B = change.force / (L * L * L);
@@ -127,9 +168,7 @@ std::string rescale_problem(const std::string& problem_path, const UnitChange& c
     }
   });
   const fs::path out = fs::path(out_dir) / "problem.toml";
-  std::ofstream f(out);
-  f << root << "\n";
-  if (!f) throw std::runtime_error("rescale_problem: cannot write " + out.string());
+  write_problem(root, out);
   return out.string();
 }
 

@@ -27,6 +27,17 @@ struct UnitChange {
   double stress() const { return force / (length * length); }
 };
 
+/// Edits of a problem file for the zoo of tests/zoo (none by default).
+struct ProblemVariant {
+  int order = 0;           ///< > 0: [problem] order
+  double coulomb_mu = -1;  ///< ≥ 0: every [[contact]] with Coulomb friction of this μ (its tau and alpha dropped)
+  double mesh_size = 0;    ///< > 0: [problem] mesh_size (the largest element size of .geo meshes)
+};
+
+/// Writes `out_dir`/problem.toml: the problem with every mesh path made absolute and `variant` applied; the
+/// meshes are not copied. Returns its path. Throws std::runtime_error when the problem cannot be read.
+std::string write_variant(const std::string& problem_path, const ProblemVariant& variant, const std::string& out_dir);
+
 /// Writes `out_dir`/problem.toml and one `<mesh>.msh` per mesh file the problem names, in the units of
 /// `change`. Returns the path of the new problem file. Throws std::runtime_error when the problem cannot be
 /// read or a mesh cannot be made or written.

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <ostream>
 #include <string>
 
 #include "support/rescale_problem.hpp"
@@ -23,6 +24,10 @@ struct UnitsCase {
   std::string example;  ///< under examples/
   double length, force;
 };
+
+void PrintTo(const UnitsCase& c, std::ostream* os) {
+  *os << c.example << ", lengths x " << c.length << ", forces x " << c.force;
+}
 
 std::string case_name(const ::testing::TestParamInfo<UnitsCase>& info) {
   std::string s = info.param.example + "_L" + std::to_string(static_cast<int>(std::log10(info.param.length))) +
