@@ -340,13 +340,14 @@ std::string expected_range(const Ipopt::RegisteredOption& option) {
                    : to_text(lower ? option.LowerNumber() : option.UpperNumber());
   };
   std::string s = integer ? "expected an integer" : "expected a number";
+  // IPOPT sets the strictness of number options only (an integer option's is left uninitialised).
+  const bool lower_strict = !integer && option.LowerStrict(), upper_strict = !integer && option.UpperStrict();
   if (option.HasLower() && option.HasUpper()) {
-    s += std::string(" in ") + (option.LowerStrict() ? "(" : "[") + bound(true) + ", " + bound(false) +
-         (option.UpperStrict() ? ")" : "]");
+    s += std::string(" in ") + (lower_strict ? "(" : "[") + bound(true) + ", " + bound(false) + (upper_strict ? ")" : "]");
   } else if (option.HasLower()) {
-    s += std::string(option.LowerStrict() ? " > " : " >= ") + bound(true);
+    s += std::string(lower_strict ? " > " : " >= ") + bound(true);
   } else if (option.HasUpper()) {
-    s += std::string(option.UpperStrict() ? " < " : " <= ") + bound(false);
+    s += std::string(upper_strict ? " < " : " <= ") + bound(false);
   }
   return s;
 }
