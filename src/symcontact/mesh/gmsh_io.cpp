@@ -26,9 +26,9 @@ const MeshFile::Group* MeshFile::find(const std::string& name, int dim) const {
 namespace {
 
 /// Initialises Gmsh for the lifetime of the object (Gmsh itself is a process-wide singleton).
-class GmshSession {
+class GmshInstance {
  public:
-  explicit GmshSession(bool verbose) {
+  explicit GmshInstance(bool verbose) {
     gmsh::initialize(0, nullptr, false);
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
     gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
@@ -38,15 +38,15 @@ class GmshSession {
     gmsh::option::setNumber("General.AbortOnError", 0);
     gmsh::logger::start();
   }
-  ~GmshSession() {
+  ~GmshInstance() {
     try {
       gmsh::logger::stop();
       gmsh::finalize();
     } catch (...) {
     }
   }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
+  GmshInstance(const GmshInstance&) = delete;
+  GmshInstance& operator=(const GmshInstance&) = delete;
 };
 
 std::string describe_gmsh_error(const std::string& thrown) {
@@ -58,7 +58,7 @@ std::string describe_gmsh_error(const std::string& thrown) {
   return !thrown.empty() ? thrown : (!last.empty() ? last : std::string("unknown Gmsh error"));
 }
 
-/// Throws InputError(path) carrying the errors Gmsh has logged since the session started, if any
+/// Throws InputError(path) carrying the errors Gmsh has logged since Gmsh was initialised, if any
 /// ("while meshing it: Error: The 1D mesh seems not to be forming a closed loop ...").
 void throw_on_gmsh_errors(const std::string& path, const std::string& doing) {
   std::vector<std::string> log;
@@ -203,7 +203,7 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
   if (ext == ".geo" && options.geo_commands == GeoCommands::kRefuse) check_geo_commands(path);
   // Gmsh's own parser trusts the file's structure: check it first (msh_validation.hpp).
   if (ext == ".msh") validate_msh_file(path);
-  GmshSession session(options.verbose);
+  GmshInstance gmsh_instance(options.verbose);
   try {
     return read_with_gmsh(path, options, ext == ".geo");
   } catch (const InputError&) {
