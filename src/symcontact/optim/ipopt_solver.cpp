@@ -340,8 +340,10 @@ std::string expected_range(const Ipopt::RegisteredOption& option) {
                    : to_text(lower ? option.LowerNumber() : option.UpperNumber());
   };
   std::string s = integer ? "expected an integer" : "expected a number";
-  // IPOPT sets the strictness of number options only (an integer option's is left uninitialised).
-  const bool lower_strict = !integer && option.LowerStrict(), upper_strict = !integer && option.UpperStrict();
+  // IPOPT initialises a bound's strictness only for a number option that has that bound (an integer
+  // option's, and an absent bound's, are left uninitialised): read it only then.
+  const bool lower_strict = !integer && option.HasLower() && option.LowerStrict();
+  const bool upper_strict = !integer && option.HasUpper() && option.UpperStrict();
   if (option.HasLower() && option.HasUpper()) {
     s += std::string(" in ") + (lower_strict ? "(" : "[") + bound(true) + ", " + bound(false) + (upper_strict ? ")" : "]");
   } else if (option.HasLower()) {
