@@ -24,7 +24,7 @@ struct ContactBenchOptions {
   bool markdown = false;
   bool keep_work = false;      ///< keep the temporary directory with the wrapper .geo and .toml
   bool condense = true;        ///< static condensation (--no-condense: IPOPT on the whole problem)
-  DualMode dual = DualMode::kDualInteriorPoint;  ///< --no-dual: IPOPT on the condensed DOFs; --dual-ipopt: IPOPT on the dual
+  SubproblemSolver dual = SubproblemSolver::kDualInteriorPoint;  ///< --no-dual: IPOPT on the condensed DOFs; --dual-ipopt: IPOPT on the dual
   double search_distance = 0;  ///< > 0: the contact pair's search_distance (default: the example's, automatic)
   bool check_only = false;     ///< mesh each size and check that it fits (check_hertz_fits), solve none
 };

@@ -253,7 +253,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
   common(c, default_hertz_sizes(c.which, opt.large));
   c.examples_dir = opt.examples;
   c.condense = !opt.no_condense;
-  c.dual = opt.no_dual ? DualMode::kPrimal : opt.dual_ipopt ? DualMode::kDualIpopt : DualMode::kDualInteriorPoint;
+  c.dual = opt.no_dual ? SubproblemSolver::kPrimalIpopt : opt.dual_ipopt ? SubproblemSolver::kDualIpopt : SubproblemSolver::kDualInteriorPoint;
   c.search_distance = opt.search_distance;
   c.check_only = opt.check_only;
   run_hertz_sweep(c, machine);

@@ -93,7 +93,7 @@ double HertzRun::contact_seconds() const {
 
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
                                       const std::string& work_dir, bool condense, double search_distance,
-                                      const BeforeSolve& before_solve, DualMode dual) {
+                                      const BeforeSolve& before_solve, SubproblemSolver dual) {
   auto run = std::make_unique<HertzRun>();
   run->which = which;
   run->h = h;
@@ -122,7 +122,7 @@ std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::stri
   return run;
 }
 
-void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_solve, DualMode dual) {
+void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_solve, SubproblemSolver dual) {
   std::ostringstream quiet;
   const Logger log(quiet, Verbosity::kQuiet);
   run.model = Model::build(run.spec, log, run.build_times);
@@ -134,9 +134,9 @@ void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_s
 
   // The solver settings exactly as `symcontact run` derives them from the problem file.
   ContactSolveOptions opt = contact_options(run.spec, log).contact;
-  opt.condense = opt.condense && condense;
-  opt.dual = opt.dual && dual != DualMode::kPrimal;
-  opt.dual_interior_point = opt.dual_interior_point && dual == DualMode::kDualInteriorPoint;
+  opt.static_condensation = opt.static_condensation && condense;
+  // The cheaper of the file's choice and `dual` (the enum runs from the primal to the dense interior point).
+  opt.subproblem_solver = std::min(opt.subproblem_solver, dual);
   run.u = VectorXd::Zero(model.dofs().num_dofs());
   const double cpu0 = process_cpu_seconds();
   const double t0 = wall_seconds();

@@ -88,10 +88,6 @@ struct HertzRun {
 /// Called with the built model right before the contact solve (e.g. check_hertz_fits); may throw to skip it.
 using BeforeSolve = std::function<void(const HertzRun&)>;
 
-/// How a condensed frictionless problem is solved (ContactSolveOptions::dual and dual_interior_point): IPOPT on
-/// the condensed displacements, IPOPT on the dual, or the dense interior point on the dual (the default).
-enum class DualMode { kPrimal, kDualIpopt, kDualInteriorPoint };
-
 /// Writes the wrapper .geo and a copy of the example's TOML (pointing at it) into `work_dir`, builds the
 /// model and solves it (solve_hertz_model). `examples_dir` is the examples/ folder of the source tree.
 /// Throws what the library throws (InputError, SolveError) and what `before_solve` throws.
@@ -101,7 +97,7 @@ enum class DualMode { kPrimal, kDualIpopt, kDualInteriorPoint };
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
                                       const std::string& work_dir, bool condense = true, double search_distance = 0.0,
                                       const BeforeSolve& before_solve = nullptr,
-                                      DualMode dual = DualMode::kDualInteriorPoint);
+                                      SubproblemSolver dual = SubproblemSolver::kDualInteriorPoint);
 
 /// Builds run.model from run.spec (a single load step, one contact pair whose side a is the loaded body),
 /// calls `before_solve` (when set), solves it with the solver settings `symcontact run` derives from the
@@ -110,7 +106,7 @@ std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::stri
 /// and fills the accuracy fields of `run`. Used by solve_hertz() and by the FreeFEM side by side
 /// (freefem_peer.cpp).
 void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& before_solve = nullptr,
-                       DualMode dual = DualMode::kDualInteriorPoint);
+                       SubproblemSolver dual = SubproblemSolver::kDualInteriorPoint);
 
 /// Throws FactorTooLarge (elastic_block.hpp) when the contact solve of `run` would not fit in the memory
 /// available now, before it starts: CHOLMOD's analysis of the floor's K_ff predicts nnz(L) (assembly and

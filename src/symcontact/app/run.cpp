@@ -104,9 +104,10 @@ FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
   ContactSolveOptions& o = f.contact;
   o.geometry_tolerance = spec.contact_solver.geometry_tolerance;
   o.max_geometry_iterations = spec.contact_solver.max_geometry_iterations;
-  o.condense = spec.contact_solver.static_condensation;
-  o.dual = spec.contact_solver.dual_solve;
-  o.dual_interior_point = spec.contact_solver.dual_interior_point;
+  o.static_condensation = spec.contact_solver.static_condensation;
+  o.subproblem_solver = !spec.contact_solver.dual_solve ? SubproblemSolver::kPrimalIpopt
+                        : spec.contact_solver.dual_optimizer == DualOptimizer::kIpopt ? SubproblemSolver::kDualIpopt
+                                                                                       : SubproblemSolver::kDualInteriorPoint;
   o.workspace = std::make_shared<ContactWorkspace>();  // one factorisation for the whole run
   if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
   o.ipopt.string_options = spec.contact_solver.ipopt_string;

@@ -915,7 +915,7 @@ class Reader {
       const std::string key = "contact_solver.dual_optimizer";
       const std::string v = as_string(*n, key);
       if (v != "interior_point" && v != "ipopt") fail(key, "expected \"interior_point\" or \"ipopt\", got \"" + v + "\"");
-      s.dual_interior_point = v == "interior_point";
+      s.dual_optimizer = v == "interior_point" ? DualOptimizer::kInteriorPoint : DualOptimizer::kIpopt;
     }
     if (const toml::node* n = t.get("max_step_cuts")) {
       const std::string key = "contact_solver.max_step_cuts";

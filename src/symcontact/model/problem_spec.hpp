@@ -106,6 +106,9 @@ struct ContactSpec {
 };
 
 /// Settings of the contact solve (Algorithm 2) and of IPOPT.
+/// [contact_solver] dual_optimizer.
+enum class DualOptimizer { kInteriorPoint, kIpopt };
+
 struct ContactSolverSpec {
   double geometry_tolerance = 1e-6;   ///< ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ below which the fixed point stops
   int max_geometry_iterations = 50;
@@ -117,8 +120,8 @@ struct ContactSolverSpec {
   /// Solve the condensed frictionless problem through its dual (the contact multipliers: solvers/
   /// dual_condensed_problem.hpp); the solution is the same to the optimiser's tolerance, only the cost changes.
   bool dual_solve = true;
-  /// The dual's optimiser: the dense interior point (true, "interior_point") or IPOPT (false, "ipopt").
-  bool dual_interior_point = true;
+  /// The dual's optimiser (dual_optimizer = "interior_point" or "ipopt"; SubproblemSolver).
+  DualOptimizer dual_optimizer = DualOptimizer::kInteriorPoint;
   /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
   /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
   int max_step_cuts = 0;

@@ -382,7 +382,8 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
 
 }  // namespace
 
-PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values) {
+PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, PolishMode mode) {
+  const bool hold_values = mode == PolishMode::kBalanceForces;
   // x and mu change only when the polish is applied; a full Newton step of a finite-strain energy may
   // reach a state it cannot be evaluated at (an inverted cell): then the IPOPT point is kept.
   try {

@@ -29,11 +29,17 @@ struct PolishResult {
   std::string reason;        ///< why it was not applied
 };
 
+/// What the polish does with the active rows S.
+enum class PolishMode {
+  kClose,          ///< A_S x + b_S = 0: the barrier offset removed (a KKT point of the inequality problem, or rejected)
+  /// A_S x + b_S = c_S(x_IPOPT): the active constraints keep the values the optimiser left. That always
+  /// consistent variant only removes the optimiser's stationarity error (exact force balance), for when the
+  /// families of a curved symmetric pair cannot all be closed at once.
+  kBalanceForces,
+};
+
 /// x and mu (μ ≥ 0 convention, one per constraint row) are updated in place when the polish is accepted.
-/// With `hold_values`, the active constraints keep the values IPOPT left (A_S x + b_S = c_S(x_IPOPT))
-/// instead of closing: that always-consistent variant only removes the optimiser's stationarity
-/// error (exact force balance), for when the families of a curved symmetric pair cannot all be closed
-/// at once.
-PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values = false);
+PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu,
+                               PolishMode mode = PolishMode::kClose);
 
 }  // namespace symcontact

@@ -1,22 +1,19 @@
 #include "symcontact/solvers/contact_solver.hpp"
 
-#include "symcontact/solvers/equilibrium_solver.hpp"
-
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <set>
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
-#include "symcontact/contact/surface_tractions.hpp"
-#include "symcontact/solvers/active_set_polish.hpp"
 #include "symcontact/solvers/anderson_acceleration.hpp"
-#include "symcontact/solvers/equilibrium_solver.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
+#include "symcontact/solvers/contact_forces.hpp"
+#include "symcontact/solvers/dual_subproblem.hpp"
+#include "symcontact/solvers/equilibrium_solver.hpp"
 #include "symcontact/solvers/fixed_point_monitor.hpp"
-#include "symcontact/solvers/dual_condensed_problem.hpp"
-#include "symcontact/solvers/semidefinite_factor.hpp"
+#include "symcontact/solvers/polish_strategy.hpp"
+#include "symcontact/solvers/primal_subproblem.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
 #include "symcontact/solvers/static_condensation.hpp"
 
@@ -61,152 +58,21 @@ void tighten_optimiser(IpoptOptions& o) {
   if (auto it = o.numeric_options.find("tol"); it != o.numeric_options.end()) it->second *= 1e-2;
 }
 
-ContactWorkspace::ContactWorkspace() = default;
-ContactWorkspace::~ContactWorkspace() = default;
-
 namespace {
 
-/// Widens the condensed set along each contact surface, so that a contact zone that grows over the geometry
-/// iterations and load steps stays inside it (each refactorisation costs about one Cholesky floor): the
-/// surface nodes holding condensed DOFs are grown by k rings of facet neighbours, k = max(2, ⌈n^{1/(d−1)}/4⌉)
-/// for n such nodes (in 2D the zone's node count grows by about half, in 3D its radius by a quarter), and
-/// the grown nodes' free DOFs of the components already condensed on that surface are added.
-void add_condensation_margin(const ContactSet& contacts, const DofMap& dofs, const std::vector<Index>& free_index,
-                             std::vector<char>& in_b) {
-  for (const ContactSurface& s : contacts.surfaces) {
-    if (s.is_rigid()) continue;
-    const Index nn = s.num_nodes();
-    std::vector<char> grown(nn, 0);
-    std::vector<char> component(s.dim, 0);
-    Index seeds = 0;
-    for (Index k = 0; k < nn; ++k)
-      for (int i = 0; i < s.dim; ++i) {
-        const Index f = free_index[dofs.dof(s.body, s.nodes[k], i)];
-        if (f >= 0 && in_b[f]) {
-          if (!grown[k]) ++seeds;
-          grown[k] = 1;
-          component[i] = 1;
-        }
-      }
-    if (seeds == 0) continue;
-    const int rings = std::max(2, static_cast<int>(std::ceil(
-                                      0.25 * std::pow(static_cast<double>(seeds), 1.0 / std::max(1, s.dim - 1)))));
-    const int npf = s.nodes_per_facet();
-    for (int r = 0; r < rings; ++r) {
-      std::vector<char> next = grown;
-      for (Index f = 0; f < s.num_facets(); ++f) {
-        bool touches = false;
-        for (int a = 0; a < npf && !touches; ++a) touches = grown[s.facet(f)[a]];
-        if (touches)
-          for (int a = 0; a < npf; ++a) next[s.facet(f)[a]] = 1;
-      }
-      grown.swap(next);
-    }
-    for (Index k = 0; k < nn; ++k) {
-      if (!grown[k]) continue;
-      for (int i = 0; i < s.dim; ++i) {
-        const Index f = free_index[dofs.dof(s.body, s.nodes[k], i)];
-        if (component[i] && f >= 0) in_b[f] = 1;
-      }
-    }
+/// A pair that sees nothing at all is usually a mistake (a meshed obstacle whose facets face away, a search
+/// distance too small): say so rather than let the bodies pass through each other.
+void warn_pairs_without_points(const ContactSet& contacts, const ContactLinearization& lin, const Logger& log) {
+  for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
+    std::size_t n = 0;
+    for (int f = 0; f < static_cast<int>(contacts.families().size()); ++f)
+      if (contacts.families()[f].pair == p) n += lin.points[f].size();
+    if (n == 0)
+      log.warning("contact '" + contacts.pairs[p].name +
+                  "': no point of its surfaces faces the opposite side within the search distance " +
+                  std::to_string(contacts.pairs[p].search_distance) +
+                  " (a meshed obstacle's facets must be oriented with their normal towards the body)");
   }
-}
-
-/// The condensed form of the current geometry iterate's problem, or null when condensing does not apply
-/// or pay (see ContactSolveOptions::condense). Reuses the workspace's factorisation when its condensed set
-/// holds every DOF the constraints and friction terms touch; otherwise refactorises with the union.
-std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const ReducedProblem& problem,
-                                                   const ContactSet& contacts, const DofMap& dofs,
-                                                   const std::vector<std::shared_ptr<const FrictionTerm>>& friction,
-                                                   const VectorXd& u, const VectorXd& x, const EnergyTerm& energy,
-                                                   ContactWorkspace& ws, const ContactSolveOptions& options,
-                                                   const Logger& log, ContactSolveReport& rep,
-                                                   std::shared_ptr<const CondensedLoad>& load) {
-  const Index n = problem.num_free();
-  const auto& free_index = problem.free_index();
-  // B: the free DOFs of the constraint rows and of the friction terms.
-  std::vector<char> in_b(n, 0);
-  const SparseMatrix& A = problem.constraint_matrix();
-  for (int j = 0; j < A.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(A, j); it; ++it)
-      if (it.value() != 0.0) in_b[j] = 1;
-  std::vector<std::shared_ptr<const EnergyTerm>> extras;
-  for (const auto& t : friction) {
-    if (!t) continue;
-    extras.push_back(t);
-    for (Index d : support_of(*t, u))
-      if (free_index[d] >= 0) in_b[free_index[d]] = 1;
-  }
-  const bool same_model = ws.condensation && !ws.condensation->empty() && ws.energy == &energy &&
-                          ws.free_index == free_index;
-  bool covered = same_model;
-  if (same_model) {
-    const auto& pos = ws.condensation->boundary_position();
-    for (Index k = 0; k < n && covered; ++k)
-      if (in_b[k] && pos[k] < 0) covered = false;
-  }
-  if (!covered) {
-    if (same_model)  // grow: keep what was condensed before, so that a zone moving back and forth settles
-      for (Index k : ws.condensation->boundary()) in_b[k] = 1;
-    add_condensation_margin(contacts, dofs, free_index, in_b);
-    std::vector<Index> boundary;
-    for (Index k = 0; k < n; ++k)
-      if (in_b[k]) boundary.push_back(k);
-    if (boundary.empty() || static_cast<Index>(boundary.size()) > options.max_condensed_dofs ||
-        2 * static_cast<Index>(boundary.size()) > n)
-      return nullptr;
-    if (!ws.condensation) ws.condensation = std::make_unique<StaticCondensation>();
-    try {
-      SparseMatrix K;
-      bulk.hessian_lower(VectorXd::Zero(n), K);
-      ws.condensation->compute(K, std::move(boundary));
-    } catch (const SolveError& e) {
-      log.detail(std::string("  static condensation not used: ") + e.what());
-      ws.energy = nullptr;
-      ws.condensation.reset();
-      return nullptr;
-    }
-    ws.energy = &energy;
-    ws.free_index = free_index;
-    ++ws.factorisations;
-    ++rep.condensation_factorisations;
-    load.reset();
-    log.debug("  static condensation onto " + std::to_string(ws.condensation->boundary().size()) + " of " +
-              std::to_string(n) + " free DOFs");
-  }
-  if (!load && options.same_loads && ws.load && ws.load_of == ws.factorisations && ws.load->r0.size() == n) {
-    load = ws.load;  // the caller vouches for r₀ (ContactSolveOptions::same_loads)
-  }
-  if (!load) {
-    // The load part (one interior solve) depends on the loads and Dirichlet values only, through r₀ = ∇E(0):
-    // the Coulomb iterations of a load step share it.
-    VectorXd r0;
-    bulk.gradient(VectorXd::Zero(n), r0);
-    if (ws.load && ws.load_of == ws.factorisations && ws.load->r0.size() == n && ws.load->r0 == r0) {
-      load = ws.load;
-    } else {
-      load = std::make_shared<const CondensedLoad>(condense_load(bulk, *ws.condensation));
-      ws.load = load;
-      ws.load_of = ws.factorisations;
-    }
-  }
-  return std::make_unique<CondensedProblem>(bulk, *ws.condensation, load, std::move(extras), A,
-                                            problem.constraint_offset(), x);
-}
-
-/// Whether the condensed set holds every free DOF of the contact surfaces (rigid ones have none): then the
-/// search, the friction points and the surface pressures read nothing outside B.
-bool surfaces_condensed(const ContactSet& contacts, const DofMap& dofs, const std::vector<Index>& free_index,
-                        const std::vector<Index>& b_position) {
-  for (const ContactSurface& s : contacts.surfaces) {
-    if (s.is_rigid()) continue;
-    for (Index node : s.nodes)
-      for (int i = 0; i < s.dim; ++i) {
-        const Index f = free_index[dofs.dof(s.body, node, i)];
-        if (f >= 0 && b_position[f] < 0) return false;
-      }
-  }
-  return true;
 }
 
 /// Debug log of one geometry iteration: where the displacement changed most, and which constraint rows
@@ -235,490 +101,318 @@ void log_geometry_change(const VectorXd& du, const DofMap& dofs, const ContactLi
   log.debug(s.str());
 }
 
-/// The pivoted factor of the workspace's Schur complement (computed once per condensation), or null when
-/// the dual cannot be used: a null space that is not clean (max |S N| above 1e-8 of max |S|: a pivot
-/// between round-off and stiffness, no clear rank) is left to the primal.
-const SemidefiniteFactor* dual_schur_factor(ContactWorkspace& ws, const Logger& log) {
-  // Pivots below this fraction of max diag(S) are rigid motions: theirs are round-off (1e-16 relative),
-  // the softest deformation seen from the contact DOFs of a body is far above it.
-  constexpr double kRankTolerance = 1e-10;
-  constexpr double kNullResidual = 1e-8;
-  if (!ws.condensation || ws.condensation->empty()) return nullptr;
-  if (ws.schur_factor_of != ws.factorisations) {
-    ws.schur_factor.reset();
-    ws.schur_factor_of = ws.factorisations;
-    try {
-      auto f = std::make_unique<SemidefiniteFactor>(ws.condensation->schur_lower(), kRankTolerance);
-      std::ostringstream s;
-      s << "  dual solve: Schur complement of rank " << f->rank() << " of " << f->size() << " ("
-        << f->size() - f->rank() << " rigid motion(s), null residual " << f->null_residual() << ")";
-      if (f->null_residual() <= kNullResidual) {
-        ws.schur_factor = std::move(f);
-      } else {
-        s << ": not clean, the primal is solved instead";
-      }
-      log.debug(s.str());
-    } catch (const SolveError& e) {
-      log.debug(std::string("  dual solve not used: ") + e.what());
-    }
-  }
-  return ws.schur_factor.get();
+/// Algorithm 2's loop for one solve: linearise at the iterate, assemble the friction terms, condense, solve
+/// the subproblem (subproblem.hpp), polish (polish_strategy.hpp), accelerate, until the relative change of
+/// the iterate is below the tolerance. One object per solve_contact call.
+class GeometryFixedPoint {
+ public:
+  GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                     const DofMap& dofs, const ContactSolveOptions& options, const Logger& log,
+                     const FrictionState* friction);
+  ContactSolveReport solve(VectorXd& u);
+
+ private:
+  bool iterate(int it, VectorXd& u);
+  void assemble();
+  std::unique_ptr<CondensedProblem> condense();
+  bool rows_match_previous(int it);
+  SubproblemSolution solve_subproblem(int it, ConstrainedProblem& target, const CondensedProblem* condensed,
+                                      bool same_rows, bool& dual);
+  void accept(const CondensedProblem* condensed, const IpoptResult& res, double change);
+  void after_stagnation(int it, double change, VectorXd& u);
+  void accelerate(const VectorXd& x_in, const IpoptResult& res, bool closed, bool same_rows);
+
+  const EnergyTerm& energy_;
+  const FixedDofs& fixed_;
+  const ContactSet& contacts_;
+  const DofMap& dofs_;
+  const ContactSolveOptions& options_;
+  const Logger& log_;
+  const FrictionState* friction_;
+  ContactSolveReport rep_;
+  CompositeEnergy total_;
+  ReducedProblem problem_;  ///< the bodies' energy with the friction terms
+  ReducedProblem bulk_;     ///< the bodies' energy alone (static condensation)
+  const bool condense_;
+  const std::shared_ptr<ContactWorkspace> workspace_;
+  const int factorisations_at_start_;
+  std::shared_ptr<const CondensedLoad> condensed_load_;  ///< of this solve's Dirichlet values and loads
+  PrimalIpopt primal_;
+  std::unique_ptr<DualIpopt> dual_;  ///< null: the dual is not used
+  PolishStrategy polish_;
+  std::unique_ptr<AndersonAcceleration> anderson_;
+  /// An inexact solve (ContactSolveOptions::loose_geometry_tolerance) is never balanced at the end nor
+  /// reported converged, even where its change falls below geometry_tolerance: its answer is an intermediate.
+  const bool inexact_;
+  const double stop_tolerance_;
+  IpoptOptions ipopt_;  ///< the settings of this solve: tightened when the fixed point stagnates
+  FixedPointMonitor monitor_;
+  int tightenings_ = 0;
+  VectorXd x_;                        ///< the iterate (free DOFs)
+  VectorXd mu_prev_;                  ///< the previous rows' multipliers
+  std::vector<int> rows_prev_family_;
+  std::vector<Index> rows_prev_node_;
+  std::vector<char> active_prev_;     ///< rows with μ > 0 after the previous closed polish
+  VectorXd residual_b_;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
+  std::vector<std::shared_ptr<const FrictionTerm>> friction_terms_;  ///< per pair, for the reported slips
+  bool lazy_ = false;  ///< the iterate's interior is out of date (ContactSolveOptions::lazy_interior)
+};
+
+/// The dual method of a solve: the dense interior point only where the constraint rows are independent
+/// (obstacles and one-pass pairs), where λ is unique; IPOPT on the dual for symmetric pairs and
+/// self-contact (dual_subproblem.hpp).
+std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice) {
+  if (choice == SubproblemSolver::kPrimalIpopt) return nullptr;
+  const bool independent_rows = std::none_of(contacts.pairs.begin(), contacts.pairs.end(),
+                                             [](const ContactPair& p) { return p.two_sided(); });
+  if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows) return std::make_unique<DualInteriorPoint>();
+  return std::make_unique<DualIpopt>();
 }
 
-ContactSolveReport solve_contact_impl(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
-                                      const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
-                                      const Logger& log, const FrictionState* friction) {
-  ContactSolveReport rep;
-  CompositeEnergy total(energy);
-  ReducedProblem problem(total, fixed, dofs.num_dofs());
-  ReducedProblem bulk(energy, fixed, dofs.num_dofs());  // the bodies' energy alone (static condensation)
-  rep.num_free = problem.num_free();
-  const bool condense = options.condense && energy.hessian_is_constant();
-  const std::shared_ptr<ContactWorkspace> workspace =
-      options.workspace ? options.workspace : std::make_shared<ContactWorkspace>();
-  std::shared_ptr<const CondensedLoad> condensed_load;  ///< of this solve's Dirichlet values and loads
+GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                       const DofMap& dofs, const ContactSolveOptions& options, const Logger& log,
+                                       const FrictionState* friction)
+    : energy_(energy), fixed_(fixed), contacts_(contacts), dofs_(dofs), options_(options), log_(log),
+      friction_(friction), total_(energy), problem_(total_, fixed, dofs.num_dofs()),
+      bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
+      workspace_(options.workspace ? options.workspace : std::make_shared<ContactWorkspace>()),
+      factorisations_at_start_(workspace_->factorisations), dual_(dual_method(contacts, options.subproblem_solver)),
+      polish_(options.polish, *workspace_,
+              options.geometry_acceleration > 0 && energy.hessian_is_constant() ? options.geometry_acceleration : 0),
+      inexact_(options.loose_geometry_tolerance > options.geometry_tolerance),
+      stop_tolerance_(inexact_ ? options.loose_geometry_tolerance : options.geometry_tolerance),
+      ipopt_(options.ipopt) {
+  // Anderson acceleration: quadratic energies only, where the closing polish solves each subproblem exactly.
+  if (options.geometry_acceleration > 0 && energy.hessian_is_constant())
+    anderson_ = std::make_unique<AndersonAcceleration>(options.geometry_acceleration);
+}
+
+ContactSolveReport GeometryFixedPoint::solve(VectorXd& u) {
+  rep_.num_free = problem_.num_free();
   {
     // New Dirichlet values: a finite-strain body follows them by its linearised response first, so that
     // the start point inverts no cell next to a moved boundary (a quadratic energy just takes them).
-    ScopedPhase t(rep.times, "predictor");
-    if (predict_dirichlet_increment(energy, fixed, u) < 1.0)
-      log.detail("the Dirichlet predictor took a shortened step; the rest of the boundary motion is imposed at once");
-    fixed.impose(u);
+    ScopedPhase t(rep_.times, "predictor");
+    if (predict_dirichlet_increment(energy_, fixed_, u) < 1.0)
+      log_.detail("the Dirichlet predictor took a shortened step; the rest of the boundary motion is imposed at once");
+    fixed_.impose(u);
   }
-  VectorXd x = problem.restrict(u);
-  VectorXd mu_prev;
-  VectorXd dual_equality_prev;  ///< the dual's rigid-motion multipliers of the previous geometry iteration
-  std::vector<int> rows_prev_family;
-  std::vector<Index> rows_prev_node;
-  bool closing_polish_works = true;
-  // The dense interior point on the dual only where the constraint rows are independent (obstacles and one-pass
-  // pairs): there λ is unique. The two families of a symmetric pair (or self-contact) are nearly dependent, the
-  // optimal λ form a face, and the interior point ends on another point of it than IPOPT does, from which the
-  // closing found a smaller set or none (measured: the stacked P2 blocks of V3 then missed their 1e-6 on the
-  // pressure, 5.4e-6); IPOPT stays the dual's optimiser there.
-  const bool independent_rows = std::none_of(contacts.pairs.begin(), contacts.pairs.end(),
-                                             [](const ContactPair& p) { return p.two_sided(); });
-  // Anderson acceleration of the geometry fixed point: with the set closed, the self-contact's map can
-  // have a slowly alternating mode and a growing one (V7 3D: −0.63 and 1.18 per iteration, a mirror-
-  // breaking slide of the arms along each other; docs/validation.md). Quadratic energies only, where
-  // the closed polish solves each subproblem exactly (a finite-strain block on a roller took 7 geometry
-  // iterations instead of 12 with it, but the finite-strain cases were not re-measured).
-  std::unique_ptr<AndersonAcceleration> anderson;
-  if (options.geometry_acceleration > 0 && energy.hessian_is_constant())
-    anderson = std::make_unique<AndersonAcceleration>(options.geometry_acceleration);
-  std::vector<char> active_prev;  ///< rows with μ > 0 after the previous closed polish
-  double best_closed_change = std::numeric_limits<double>::infinity();  ///< smallest change with the set closed
-  int closed_since_best = 0;  ///< closed iterations since that smallest change
-  VectorXd residual_b;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
-  std::vector<std::shared_ptr<const FrictionTerm>> friction_terms;  ///< per pair, for the reported slips
-  // Where the fixed point stops (ContactSolveOptions::loose_geometry_tolerance). An inexact solve is never
-  // balanced at the end nor reported converged, even where its change happens to fall below
-  // geometry_tolerance: its answer is an intermediate.
-  const bool inexact = options.loose_geometry_tolerance > options.geometry_tolerance;
-  // The IPOPT settings of this solve: tightened when the fixed point stagnates at their noise floor.
-  IpoptOptions ipopt = options.ipopt;
-  FixedPointMonitor monitor;
-  int tightenings = 0;
-  const double stop_tolerance = inexact ? options.loose_geometry_tolerance : options.geometry_tolerance;
-  bool lazy = false;  ///< the current iterate's interior is out of date (ContactSolveOptions::lazy_interior)
-  for (int it = 1;; ++it) {
-    {
-      ScopedPhase t(rep.times, "search");
-      rep.linearization = contacts.linearize(dofs, problem.expand(x));
-    }
-    const ContactLinearization& lin = rep.linearization;
-    if (it == 1) {
-      // A pair that sees nothing at all is usually a mistake (a meshed obstacle whose facets face away,
-      // a search distance too small): say so rather than let the bodies pass through each other.
-      for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
-        std::size_t n = 0;
-        for (int f = 0; f < static_cast<int>(contacts.families().size()); ++f)
-          if (contacts.families()[f].pair == p) n += lin.points[f].size();
-        if (n == 0)
-          log.warning("contact '" + contacts.pairs[p].name +
-                      "': no point of its surfaces faces the opposite side within the search distance " +
-                      std::to_string(contacts.pairs[p].search_distance) +
-                      " (a meshed obstacle's facets must be oriented with their normal towards the body)");
-      }
-    }
-    {
-      ScopedPhase t(rep.times, "assembly");
-      problem.set_constraints(lin.A, lin.b);
-      total.extra.assign(contacts.pairs.size(), nullptr);
-      friction_terms.assign(contacts.pairs.size(), nullptr);
-      if (friction)
-        for (int p = 0; p < static_cast<int>(contacts.pairs.size()); ++p) {
-          if (p >= static_cast<int>(friction->nodal_tau.size()) || friction->nodal_tau[p].size() == 0) continue;
-          const int f = contacts.friction_family(p);
-          const ContactFamily& fam = contacts.families()[f];
-          const ContactSurface& slave = contacts.surfaces[fam.slave];
-          // Friction is integrated node by node (weight A_k, the node's own slip and threshold), so that
-          // at every node σ_T = −τ_k s_k / sqrt(|s_k|² + α²) with the same lumped A_k the pressure is
-          // recovered with: the nodal friction law then holds exactly, |σ_T| ≤ μ σ_n included. A
-          // quadrature of the interpolated τ and s instead mixes neighbouring nodes' thresholds, which
-          // breaks the law where the pressure varies (measured: 0.6 μ at the ends of a dragged block).
-          const VectorXd up = problem.expand(x);
-          std::vector<ContactPoint> nodal;
-          if (fam.master >= 0) {
-            const ContactSurface& ms = contacts.surfaces[fam.master];
-            const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, up));
-            nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), &mg, nullptr,
-                                         contacts.pairs[p].search_distance, contacts.pairs[p].bisector_ray());
-          } else {
-            nodal = nodal_contact_points(slave, current_positions(slave, dofs, up), nullptr,
-                                         &contacts.obstacles[contacts.pairs[p].obstacle], contacts.pairs[p].search_distance);
-          }
-          // A self-contact surface holds both sides of its interface, and every node of it carries a
-          // friction point: j_τ = ∫_Γc τ |[u_T]| counts the interface once (METHOD.md, eq. 16), so each
-          // side carries half of it (with the full weight the friction force doubles; measured: an arm
-          // dragged over its own body, SelfContactFriction2D).
-          if (contacts.pairs[p].surface_a == contacts.pairs[p].surface_b)
-            for (ContactPoint& q : nodal) q.weight *= 0.5;
-          const std::vector<double> tau = interpolate_at_points(slave, nodal, friction->nodal_tau[p]);
-          friction_terms[p] = std::make_shared<FrictionTerm>(
-              "friction(" + contacts.pairs[p].name + ")", slave, fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
-              std::move(nodal), tau, contacts.pairs[p].alpha, dofs, friction->u_start);
-          // A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: left out
-          // so that the problem stays quadratic; the term is kept for the slips it reports.
-          if (friction->nodal_tau[p].maxCoeff() > 0.0) total.extra[p] = friction_terms[p];
-        }
-    }
-    rep.num_constraints = lin.A.rows();
-    std::unique_ptr<CondensedProblem> condensed;
-    if (condense) {
-      ScopedPhase t(rep.times, "condensation");
-      condensed = condense_problem(bulk, problem, contacts, dofs, total.extra, problem.expand(x), x, energy, *workspace, options,
-                                   log, rep, condensed_load);
-    }
-    rep.num_condensed = condensed ? condensed->num_variables() : 0;
-    // ContactSolveOptions::lazy_interior: this iteration updates B only.
-    lazy = options.lazy_interior && options.workspace && condensed &&
-           surfaces_condensed(contacts, dofs, problem.free_index(), workspace->condensation->boundary_position());
-    if (lazy) workspace->interior_pending = true;  // from here on until an iteration expands (a failure completes u)
-    ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed) : problem;
-    auto to_target = [&](const VectorXd& xf) { return condensed ? condensed->restrict(xf) : xf; };
-    auto from_target = [&](const VectorXd& xt) { return condensed ? condensed->expand(xt) : xt; };
-    // Warm start when the rows are the same (same families, same nodes).
-    IpoptOptions opt = ipopt;
-    VectorXd mu0;
-    // The first geometry iteration starts from the previous solve of the run (the previous Coulomb iteration
-    // or load step) when its rows are the same: IPOPT then needs a few iterations instead of a cold start's 15.
-    const bool from_previous_solve = it == 1 && workspace->multipliers.size() == lin.A.rows();
-    if (from_previous_solve) {
-      mu_prev = workspace->multipliers;
-      rows_prev_family = workspace->row_family;
-      rows_prev_node = workspace->row_node;
-    }
-    const bool same_rows = (it > 1 || from_previous_solve) && lin.row_family == rows_prev_family &&
-                           lin.row_node == rows_prev_node;
-    if (same_rows) {
-      opt.warm_start = true;
-      mu0 = mu_prev;
-    }
-    IpoptResult res;
-    bool dual = false;
-    if (condensed && options.dual && condensed->hessian_is_constant() && lin.A.rows() > 0) {
-      ScopedPhase t(rep.times, "condensation");  // the Schur complement's factor: once per condensation
-      dual = dual_schur_factor(*workspace, log) != nullptr;
-    }
-    bool polished_closed = false;  ///< the closing polish was applied at this iteration
-    std::unique_ptr<DualCondensedProblem> dual_problem;
-    if (dual) {
-      // IPOPT on the multipliers; then, as the primal polish below, the active set closed exactly (in the
-      // dual's own, cheaper form); the displacements need no force-balancing polish.
-      {
-        ScopedPhase t(rep.times, "optimizer");  // forming W and d included
-        dual_problem = std::make_unique<DualCondensedProblem>(*workspace->schur_factor, condensed->constraint_matrix(),
-                                                              condensed->constraint_offset(), condensed->linear_term());
-        // Warm start from the previous geometry iteration (same rows, same condensation): its multipliers and,
-        // as the bounds' multipliers, the new gaps at its displacements.
-        const bool warm = same_rows && mu_prev.size() == lin.A.rows() &&
-                          dual_equality_prev.size() == dual_problem->num_rigid_modes() &&
-                          rep.dual_solves > 0;
-        VectorXd l0, z0;
-        if (warm) {
-          l0 = dual_problem->scaled_multipliers(mu_prev);
-          z0 = dual_problem->scaled_gaps(to_target(x)).cwiseMax(0.0);
-        }
-        bool solved = false;
-        if (options.dual_interior_point && independent_rows) {
-          DenseQpOptions qp;
-          // IPOPT's tolerance, also when the problem file sets it ([ipopt] tol).
-          const auto tol = ipopt.numeric_options.find("tol");
-          qp.tolerance = tol != ipopt.numeric_options.end() ? tol->second : ipopt.tolerance;
-          qp.complementarity_tolerance = 1e-6 * qp.tolerance;
-          DenseQpResult r = dual_problem->solve_interior_point(qp, warm ? &l0 : nullptr, warm ? &z0 : nullptr,
-                                                               warm ? &dual_equality_prev : nullptr);
-          if (!r.success && warm) {
-            log.detail("  the interior point failed on the dual from the previous iteration (" + r.status +
-                       "); cold start");
-            rep.ipopt_iterations += r.iterations;
-            r = dual_problem->solve_interior_point(qp);
-          }
-          if (r.success) {
-            res.success = true;
-            res.status_text = "interior point: " + r.status;
-            res.iterations = r.iterations;
-            res.x = std::move(r.x);
-            res.multipliers = std::move(r.beta);
-            res.bound_multipliers = std::move(r.z);
-            solved = true;
-          } else {
-            log.detail("  the interior point failed on the dual (" + r.status + "); IPOPT instead");
-            rep.ipopt_iterations += r.iterations;
-          }
-        }
-        if (!solved && warm) {
-          res = solve_with_ipopt(*dual_problem, l0, opt, &dual_equality_prev, &z0);
-          if (!res.success) {
-            log.detail("  IPOPT failed on the dual from the previous iteration (" + res.status_text + "); cold start");
-            rep.ipopt_iterations += res.iterations;
-          }
-        }
-        if (!solved && (!warm || !res.success))
-          res = solve_with_ipopt(*dual_problem, VectorXd::Zero(dual_problem->num_variables()), ipopt);
-      }
-      ++rep.dual_solves;
-      if (!res.success) {
-        // The primal is the reference formulation: a dual IPOPT fails to solve goes to it (this iteration).
-        log.detail("  IPOPT failed on the dual (" + res.status_text + "); the primal is solved instead");
-        rep.ipopt_iterations += res.iterations;
-        dual = false;
-      }
-    }
-    if (dual) {
-      VectorXd lambda_hat = res.x, eq = res.multipliers;
-      if (options.polish && closing_polish_works) {
-        ScopedPhase t(rep.times, "polish");
-        const DualCondensedProblem::Closing cl = dual_problem->close_contact_set(lambda_hat, eq);
-        polished_closed = cl.applied;
-        if (!cl.applied) {
-          closing_polish_works = false;
-          log.detail("  active-set polish (closing, dual) not applied: " + cl.reason + "; the optimiser's point is kept");
-        }
-        log.debug("  polish (dual): " + std::to_string(cl.rounds) + " rounds on " + std::to_string(cl.active) +
-                  " active constraints");
-      }
-      dual_equality_prev = eq;
-      res.x = dual_problem->primal(lambda_hat, eq);
-      res.multipliers = dual_problem->multipliers(lambda_hat);
-      res.constraint_values = condensed->constraint_matrix() * res.x + condensed->constraint_offset();
-    }
-    if (!dual) {
-      ScopedPhase t(rep.times, "optimizer");
-      res = solve_with_ipopt(target, to_target(x), opt, same_rows ? &mu0 : nullptr);
-      if (!res.success && it == 1 && same_rows) {
-        log.detail("  IPOPT failed from the previous solve's multipliers (" + res.status_text + "); cold start");
-        rep.ipopt_iterations += res.iterations;
-        res = solve_with_ipopt(target, to_target(x), ipopt);
-      }
-      if (!res.success && friction) {
-        // Stiff regularised friction (small α) can defeat IPOPT's line search from a start that is
-        // already close; one cold retry from the start of the load step before giving up.
-        log.detail("  IPOPT failed (" + res.status_text + "); retrying from the start of the load step");
-        IpoptOptions cold = ipopt;
-        VectorXd u_retry = friction->u_start;  // the start of the step, moved as at the first solve
-        predict_dirichlet_increment(energy, fixed, u_retry);
-        const IpoptResult retry = solve_with_ipopt(target, to_target(problem.restrict(u_retry)), cold);
-        rep.ipopt_iterations += res.iterations;
-        res = retry;
-      }
-    }
-    rep.ipopt_iterations += res.iterations;
-    rep.ipopt_per_iteration.push_back(res.iterations);
-    rep.ipopt_status = res.status_text;
-    rep.geometry_iterations = it;
-    if (!res.success) {
-      u = problem.expand(res.x.size() == target.num_variables() ? from_target(res.x) : x);
-      throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
-    }
-    // Closing the active set fails for good when the two families of a curved symmetric pair cannot
-    // all be closed at once; after one failure this solve only balances forces (cheaper).
-    // With a non-quadratic energy (friction), a rejection in the previous solve of the run is taken as
-    // this solve's too (ContactWorkspace::closing_polish_rejected).
-    const bool nonquadratic = !target.hessian_is_constant();
-    if (options.polish && !dual && closing_polish_works && nonquadratic && workspace->closing_polish_rejected) {
-      closing_polish_works = false;
-      log.detail("  active-set polish (closing) rejected in the previous solve; balancing forces only");
-    }
-    // Balancing forces only, with friction: that polish moves the iterate by no more than the optimiser's
-    // tolerance (far below the geometry tolerance), so it is applied once, to the iterate that ends the
-    // fixed point, instead of at every geometry iteration (a dense factorisation each; on the inclined
-    // interface with Coulomb friction about 2.4 geometry iterations per solve). An inexact solve
-    // (loose_geometry_tolerance) is left unbalanced: its iterate is a Coulomb iteration's intermediate.
-    const bool balance_at_end = options.polish && !dual && nonquadratic && !closing_polish_works;
-    if (options.polish && !dual && !balance_at_end) {
-      ScopedPhase t(rep.times, "polish");
-      PolishResult pr;
-      if (closing_polish_works) {
-        pr = polish_active_set(target, res.x, res.multipliers);
-        if (nonquadratic) workspace->closing_polish_rejected = !pr.applied;
-        if (!pr.applied) {
-          closing_polish_works = false;
-          log.detail("  active-set polish (closing) not applied: " + pr.reason + "; balancing forces only");
-        }
-      }
-      if (!pr.applied) {
-        pr = polish_active_set(target, res.x, res.multipliers, true);
-        if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
-      }
-      log.debug("  polish: " + std::to_string(pr.iterations) + " iterations on " + std::to_string(pr.active) +
-                " active constraints");
-      polished_closed = pr.applied && closing_polish_works;
-    }
-    if (condensed) {
-      ScopedPhase t(rep.times, "condensation");
-      res.x = lazy ? condensed->with_boundary(x, res.x) : condensed->expand(res.x);
-    }
-    const double change =
-        (res.x - x).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
-    if (balance_at_end && !inexact && change < options.geometry_tolerance) {
-      VectorXd xt;
-      {
-        ScopedPhase t(rep.times, "polish");
-        xt = to_target(res.x);
-        const PolishResult pr = polish_active_set(target, xt, res.multipliers, true);
-        if (!pr.applied) log.detail("  force-balance polish not applied: " + pr.reason);
-        log.debug("  polish (at the end): " + std::to_string(pr.iterations) + " iterations on " +
-                  std::to_string(pr.active) + " active constraints");
-      }
-      ScopedPhase t(rep.times, "condensation");
-      res.x = lazy ? condensed->with_boundary(res.x, xt) : from_target(xt);
-    }
-    {
-      // With the active set closed exactly, the fixed point can have a growing mode that the barrier
-      // offset of the force-balancing variant damps (measured: the V7 3D self-contact, whose change
-      // falls to 1.5e-7 and then grows by 1.18 per iteration). Without acceleration: once the change has
-      // grown twice in a row with the set closed, the rest of the solve only balances forces. With it the
-      // change is not monotone (and that mode converges): the same fallback, once the change has made no
-      // new low in memory + 2 closed iterations.
-      const std::size_t n = rep.change_history.size();
-      bool stalls = false;
-      if (polished_closed) {
-        if (change < best_closed_change) {
-          best_closed_change = change;
-          closed_since_best = 0;
-        } else {
-          ++closed_since_best;
-        }
-        stalls = anderson ? closed_since_best > options.geometry_acceleration + 2
-                          : n >= 2 && change > rep.change_history[n - 1] &&
-                                rep.change_history[n - 1] > rep.change_history[n - 2];
-      }
-      if (stalls) {
-        closing_polish_works = false;
-        log.detail("  the change stalled or grew with the active set closed; balancing forces only from now on");
-      }
-    }
-    rep.change_history.push_back(change);
-    if (log.level() >= Verbosity::kDebug) log_geometry_change(problem.expand(res.x) - problem.expand(x), dofs, lin,
-                                                               rows_prev_family, rows_prev_node, log);
-    const VectorXd x_in = x;
-    x = res.x;
-    mu_prev = res.multipliers;
-    rows_prev_family = lin.row_family;
-    rows_prev_node = lin.row_node;
-    {
-      std::ostringstream s;
-      s << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, IPOPT " << res.iterations
-        << " iterations (" << res.status_text << "), change " << change;
-      log.detail(s.str());
-    }
-    if (change < stop_tolerance) {
-      if (condensed) {
-        // The bodies' residual on B, for the contact forces below: ∇E = ĝ + S y there (condensed_problem.hpp),
-        // O(|B|²) instead of an assembly over the whole mesh.
-        const VectorXd y = condensed->restrict(res.x);
-        residual_b = condensed->linear_term() +
-                     condensed->condensation().schur_lower().selfadjointView<Eigen::Lower>() * y;
-      }
-      rep.converged = !inexact && change < options.geometry_tolerance;
-      rep.multipliers = res.multipliers;
-      workspace->multipliers = res.multipliers;
-      workspace->row_family = lin.row_family;
-      workspace->row_node = lin.row_node;
-      break;
-    }
-    monitor.record(change);
-    if (monitor.stagnated() && tightenings < kMaxTightenings) {
-      // No new low in six iterations: the subproblems' answers carry the optimiser's tolerance (where the closing
-      // polish does not apply, the interior point's barrier offset), a noise floor above the geometry tolerance.
-      ++tightenings;
-      tighten_optimiser(ipopt);
-      std::ostringstream s;
-      s << "  the geometry fixed point stagnated (no new low below " << monitor.best() << "); IPOPT tol tightened to "
-        << ipopt.tolerance;
-      log.detail(s.str());
-      monitor.restart();
-    }
-    if (it >= options.max_geometry_iterations) {
-      u = problem.expand(x);
-      std::ostringstream s;
-      s << "the geometry fixed point did not converge in " << options.max_geometry_iterations
-        << " iterations (last relative change " << change << ", tolerance " << stop_tolerance << ")";
-      if (tightenings > 0) s << "; tried: IPOPT tol tightened " << tightenings << " time(s), to " << ipopt.tolerance;
-      s << "; try smaller load steps ([contact_solver] max_step_cuts = 4, or more [steps])";
-      throw SolveError(s.str());
-    }
-    if (anderson) {
-      // The next geometry: accelerated while the map stays the same smooth one (same rows, set closed
-      // exactly on the same active set), else the plain step, restarting the history.
-      std::vector<char> active(res.multipliers.size());
-      for (Index r = 0; r < res.multipliers.size(); ++r) active[r] = res.multipliers[r] > 0.0;
-      const bool smooth = polished_closed && same_rows && active == active_prev;
-      if (!smooth) anderson->reset();
-      if (polished_closed) {
-        x = anderson->next(x_in, res.x);
-        if (anderson->columns() > 0)
-          log.debug("  next geometry: Anderson step on " + std::to_string(anderson->columns()) + " differences");
-      }
-      active_prev = polished_closed ? active : std::vector<char>();
-    }
+  x_ = problem_.restrict(u);
+  for (int it = 1; !iterate(it, u); ++it) {
   }
-  u = problem.expand(x);
-  workspace->interior_pending = lazy;
-  rep.interior_deferred = lazy;
-  rep.friction = friction_terms;
-  // Contact forces: Aᵀμ (+ friction). On free DOFs the equilibrium residual ∇E(u) of the bodies' energy
-  // equals Aᵀμ + the friction force at the KKT point and carries no optimiser tolerance (it balances the
-  // applied loads to round-off), so it is used there; on fixed DOFs the residual also holds the support
-  // reaction, and Aᵀμ is kept (friction forces on fixed DOFs are not recovered).
-  // Condensed, the residual on B is ĝ + S y (exactly ∇E there, x_I being x_I(y)); a surface DOF outside B
-  // is touched by no constraint or friction term, and its residual is zero but for round-off: Aᵀμ = 0 is kept.
-  rep.contact_force = rep.linearization.A.transpose() * rep.multipliers;
-  rep.multiplier_force = rep.contact_force;
-  std::vector<Index> free_index;
-  fixed.free_numbering(u.size(), free_index);
-  const bool condensed_residual = residual_b.size() > 0;
-  const std::vector<Index>* b_position = condensed_residual ? &workspace->condensation->boundary_position() : nullptr;
-  VectorXd residual;
-  if (!condensed_residual) {
-    residual = VectorXd::Zero(u.size());
-    energy.add_gradient(u, residual);
+  u = problem_.expand(x_);
+  workspace_->interior_pending = lazy_;
+  rep_.interior_deferred = lazy_;
+  rep_.friction = friction_terms_;
+  rep_.condensation_factorisations = workspace_->factorisations - factorisations_at_start_;
+  CondensedResidual condensed;
+  if (residual_b_.size() > 0) condensed = {&residual_b_, &workspace_->condensation->boundary_position()};
+  ContactForces f = recover_contact_forces(energy_, fixed_, contacts_, dofs_, u, rep_.linearization.A,
+                                           rep_.multipliers, friction_terms_, condensed);
+  rep_.contact_force = std::move(f.contact_force);
+  rep_.multiplier_force = std::move(f.multiplier_force);
+  rep_.force_defect = std::move(f.force_defect);
+  return rep_;
+}
+
+/// The constraints of the current linearisation and the friction terms of the current iterate. A zero
+/// threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out of
+/// it, so that the problem stays quadratic, and kept for the slips it reports.
+void GeometryFixedPoint::assemble() {
+  ScopedPhase t(rep_.times, "assembly");
+  const ContactLinearization& lin = rep_.linearization;
+  problem_.set_constraints(lin.A, lin.b);
+  total_.extra.assign(contacts_.pairs.size(), nullptr);
+  friction_terms_.assign(contacts_.pairs.size(), nullptr);
+  if (!friction_) return;
+  friction_terms_ = friction_terms(*friction_, contacts_, dofs_, problem_.expand(x_));
+  for (std::size_t p = 0; p < friction_terms_.size(); ++p)
+    if (friction_terms_[p] && friction_->nodal_tau[p].maxCoeff() > 0.0) total_.extra[p] = friction_terms_[p];
+}
+
+std::unique_ptr<CondensedProblem> GeometryFixedPoint::condense() {
+  if (!condense_) return nullptr;
+  ScopedPhase t(rep_.times, "condensation");
+  return condense_problem(bulk_, problem_, contacts_, dofs_, total_.extra, problem_.expand(x_), x_, energy_,
+                          *workspace_, {options_.max_condensed_dofs, options_.same_loads}, log_, condensed_load_);
+}
+
+/// Whether this iteration's rows are the previous solution's (same families, same nodes): then its
+/// multipliers start the optimiser. The first geometry iteration starts from the previous solve of the run
+/// (the previous Coulomb iteration or load step) when its rows are the same.
+bool GeometryFixedPoint::rows_match_previous(int it) {
+  const ContactLinearization& lin = rep_.linearization;
+  const bool from_previous_solve = it == 1 && workspace_->multipliers.size() == lin.A.rows();
+  if (from_previous_solve) {
+    mu_prev_ = workspace_->multipliers;
+    rows_prev_family_ = workspace_->row_family;
+    rows_prev_node_ = workspace_->row_node;
   }
-  // The residual of the bodies' energy holds the whole interface force, normal and frictional.
-  VectorXd friction_gradient = VectorXd::Zero(u.size());
-  for (const auto& t : friction_terms)
-    if (t) t->add_gradient(u, friction_gradient);
-  rep.force_defect = VectorXd::Zero(u.size());
-  for (const ContactSurface& s : contacts.surfaces) {
-    if (s.is_rigid()) continue;
-    for (Index node : s.nodes)
-      for (int i = 0; i < s.dim; ++i) {
-        const Index d = dofs.dof(s.body, node, i);
-        const Index f = free_index[d];
-        if (f < 0) continue;
-        if (!condensed_residual) {
-          rep.contact_force[d] = residual[d];
-        } else if ((*b_position)[f] >= 0) {
-          rep.contact_force[d] = residual_b[(*b_position)[f]];
-        } else {
-          continue;
-        }
-        rep.force_defect[d] = rep.contact_force[d] - (rep.multiplier_force[d] - friction_gradient[d]);
-      }
+  return (it > 1 || from_previous_solve) && lin.row_family == rows_prev_family_ && lin.row_node == rows_prev_node_;
+}
+
+/// The subproblem by the dual where it applies (a condensed quadratic problem with constraints and a clean
+/// Schur complement), else — or when the dual fails — by the primal, the reference formulation.
+SubproblemSolution GeometryFixedPoint::solve_subproblem(int it, ConstrainedProblem& target,
+                                                        const CondensedProblem* condensed, bool same_rows,
+                                                        bool& dual) {
+  const SemidefiniteFactor* schur = nullptr;
+  if (condensed && dual_ && condensed->hessian_is_constant() && rep_.linearization.A.rows() > 0) {
+    ScopedPhase t(rep_.times, "condensation");  // the Schur complement's factor: once per condensation
+    schur = dual_schur_factor(*workspace_, log_);
   }
-  return rep;
+  const VectorXd start = condensed ? condensed->restrict(x_) : x_;
+  const SubproblemWarmStart warm{same_rows ? &mu_prev_ : nullptr};
+  Subproblem p{target, condensed, schur, start, it, ipopt_, polish_.closes(), {}};
+  dual = false;
+  if (schur) {
+    SubproblemSolution s = dual_->solve(p, warm, log_, rep_.times);
+    ++rep_.dual_solves;
+    if (s.result.success) {
+      dual = true;
+      return s;
+    }
+    log_.detail("  IPOPT failed on the dual (" + s.result.status_text + "); the primal is solved instead");
+    rep_.ipopt_iterations += s.failed_iterations + s.result.iterations;
+  }
+  if (friction_)
+    p.restart = [this, condensed] {
+      VectorXd u_retry = friction_->u_start;  // the start of the step, moved as at the first solve
+      predict_dirichlet_increment(energy_, fixed_, u_retry);
+      const VectorXd xr = problem_.restrict(u_retry);
+      return condensed ? condensed->restrict(xr) : xr;
+    };
+  return primal_.solve(p, warm, log_, rep_.times);
+}
+
+/// One geometry iteration; true when the fixed point has converged (the solution is then in x_).
+bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
+  {
+    ScopedPhase t(rep_.times, "search");
+    rep_.linearization = contacts_.linearize(dofs_, problem_.expand(x_));
+  }
+  const ContactLinearization& lin = rep_.linearization;
+  if (it == 1) warn_pairs_without_points(contacts_, lin, log_);
+  assemble();
+  rep_.num_constraints = lin.A.rows();
+  std::unique_ptr<CondensedProblem> condensed = condense();
+  rep_.num_condensed = condensed ? condensed->num_variables() : 0;
+  // ContactSolveOptions::lazy_interior: this iteration updates B only.
+  lazy_ = options_.lazy_interior && options_.workspace && condensed &&
+          surfaces_condensed(contacts_, dofs_, problem_.free_index(), workspace_->condensation->boundary_position());
+  if (lazy_) workspace_->interior_pending = true;  // from here on until an iteration expands (a failure completes u)
+  ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed) : problem_;
+  auto from_target = [&](const VectorXd& xt) { return condensed ? condensed->expand(xt) : xt; };
+  const bool same_rows = rows_match_previous(it);
+  bool dual = false;
+  SubproblemSolution s = solve_subproblem(it, target, condensed.get(), same_rows, dual);
+  IpoptResult& res = s.result;
+  bool closed = s.closed;  ///< the active set was closed exactly at this iteration
+  if (dual) {
+    if (!s.closing_failure.empty()) polish_.closing_rejected(s.closing_failure, log_);
+    polish_.dual_iteration();
+  }
+  rep_.ipopt_iterations += s.failed_iterations + res.iterations;
+  rep_.ipopt_per_iteration.push_back(res.iterations);
+  rep_.ipopt_status = res.status_text;
+  rep_.geometry_iterations = it;
+  if (!res.success) {
+    u = problem_.expand(res.x.size() == target.num_variables() ? from_target(res.x) : x_);
+    throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
+  }
+  if (!dual) closed = polish_.polish_primal(target, res, log_, rep_.times);
+  if (condensed) {
+    ScopedPhase t(rep_.times, "condensation");
+    res.x = lazy_ ? condensed->with_boundary(x_, res.x) : condensed->expand(res.x);
+  }
+  const double change =
+      (res.x - x_).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
+  if (polish_.balance_deferred() && !inexact_ && change < options_.geometry_tolerance) {
+    VectorXd xt = condensed ? condensed->restrict(res.x) : res.x;
+    polish_.balance(target, xt, res.multipliers, log_, rep_.times);
+    ScopedPhase t(rep_.times, "condensation");
+    res.x = lazy_ ? condensed->with_boundary(res.x, xt) : from_target(xt);
+  }
+  polish_.record_change(change, closed, rep_.change_history, log_);
+  rep_.change_history.push_back(change);
+  if (log_.level() >= Verbosity::kDebug)
+    log_geometry_change(problem_.expand(res.x) - problem_.expand(x_), dofs_, lin, rows_prev_family_, rows_prev_node_,
+                        log_);
+  const VectorXd x_in = x_;
+  x_ = res.x;
+  mu_prev_ = res.multipliers;
+  rows_prev_family_ = lin.row_family;
+  rows_prev_node_ = lin.row_node;
+  {
+    std::ostringstream m;
+    m << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, IPOPT " << res.iterations << " iterations ("
+      << res.status_text << "), change " << change;
+    log_.detail(m.str());
+  }
+  if (change < stop_tolerance_) {
+    accept(condensed.get(), res, change);
+    return true;
+  }
+  after_stagnation(it, change, u);
+  accelerate(x_in, res, closed, same_rows);
+  return false;
+}
+
+/// The converged iterate: the bodies' residual on B for the contact forces (∇E = ĝ + S y there,
+/// condensed_problem.hpp; O(|B|²) instead of an assembly over the whole mesh), the multipliers, and the
+/// warm start of the next solve.
+void GeometryFixedPoint::accept(const CondensedProblem* condensed, const IpoptResult& res, double change) {
+  if (condensed) {
+    const VectorXd y = condensed->restrict(res.x);
+    residual_b_ = condensed->linear_term() +
+                  condensed->condensation().schur_lower().selfadjointView<Eigen::Lower>() * y;
+  }
+  rep_.converged = !inexact_ && change < options_.geometry_tolerance;
+  rep_.multipliers = res.multipliers;
+  workspace_->multipliers = res.multipliers;
+  workspace_->row_family = rep_.linearization.row_family;
+  workspace_->row_node = rep_.linearization.row_node;
+}
+
+/// A fixed point with no new low in six iterations stands at the noise floor of its subproblems' answers
+/// (the optimiser's tolerance, or the barrier offset where the closing polish does not apply), above the
+/// geometry tolerance: IPOPT is tightened, at most kMaxTightenings times. Past the iteration limit the solve
+/// fails, u holding the last iterate.
+void GeometryFixedPoint::after_stagnation(int it, double change, VectorXd& u) {
+  monitor_.record(change);
+  if (monitor_.stagnated() && tightenings_ < kMaxTightenings) {
+    ++tightenings_;
+    tighten_optimiser(ipopt_);
+    std::ostringstream s;
+    s << "  the geometry fixed point stagnated (no new low below " << monitor_.best() << "); IPOPT tol tightened to "
+      << ipopt_.tolerance;
+    log_.detail(s.str());
+    monitor_.restart();
+  }
+  if (it < options_.max_geometry_iterations) return;
+  u = problem_.expand(x_);
+  std::ostringstream s;
+  s << "the geometry fixed point did not converge in " << options_.max_geometry_iterations
+    << " iterations (last relative change " << change << ", tolerance " << stop_tolerance_ << ")";
+  if (tightenings_ > 0) s << "; tried: IPOPT tol tightened " << tightenings_ << " time(s), to " << ipopt_.tolerance;
+  s << "; try smaller load steps ([contact_solver] max_step_cuts = 4, or more [steps])";
+  throw SolveError(s.str());
+}
+
+/// The next iterate: Anderson's (anderson_acceleration.hpp) while the map stays the same smooth one (same
+/// rows, the set closed exactly on the same active set), else the plain step, restarting the history.
+void GeometryFixedPoint::accelerate(const VectorXd& x_in, const IpoptResult& res, bool closed, bool same_rows) {
+  if (!anderson_) return;
+  std::vector<char> active(res.multipliers.size());
+  for (Index r = 0; r < res.multipliers.size(); ++r) active[r] = res.multipliers[r] > 0.0;
+  const bool smooth = closed && same_rows && active == active_prev_;
+  if (!smooth) anderson_->reset();
+  if (closed) {
+    x_ = anderson_->next(x_in, res.x);
+    if (anderson_->columns() > 0)
+      log_.debug("  next geometry: Anderson step on " + std::to_string(anderson_->columns()) + " differences");
+  }
+  active_prev_ = closed ? active : std::vector<char>();
 }
 
 }  // namespace
@@ -735,7 +429,7 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
   // start point of a step) is a failed solve, not an internal error.
   try {
     try {
-      return solve_contact_impl(energy, fixed, contacts, dofs, u, options, log, friction);
+      return GeometryFixedPoint(energy, fixed, contacts, dofs, options, log, friction).solve(u);
     } catch (const EvaluationError& e) {
       throw SolveError(std::string("the contact solve reached a state the energy cannot be evaluated at: ") +
                        e.what() + " — use smaller load steps");
@@ -744,16 +438,6 @@ ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixe
     complete();
     throw;
   }
-}
-
-void complete_interior(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u, ContactWorkspace& workspace) {
-  if (!workspace.interior_pending) return;
-  workspace.interior_pending = false;
-  if (!workspace.condensation || !workspace.load)
-    throw std::logic_error("complete_interior: the workspace holds no condensation to complete u with");
-  const ReducedProblem bulk(energy, fixed, u.size());
-  const VectorXd y = boundary_values(*workspace.condensation, bulk.restrict(u));
-  u = bulk.expand(expand_condensed(*workspace.condensation, *workspace.load, y));
 }
 
 }  // namespace symcontact

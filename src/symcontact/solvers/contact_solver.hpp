@@ -1,19 +1,26 @@
 #pragma once
 /// \file contact_solver.hpp
-/// Algorithm 2 of the talk (METHOD.md): the geometry fixed point of the symmetric contact problem.
+/// Algorithm 2 of the talk (METHOD.md): the geometry fixed point of the symmetric contact problem, in stages.
 ///
-///   repeat:  linearise the contact constraints at U_n (projections, smoothed normals, contact zone);
-///            U_{n+1} = argmin E(U) subject to A_n U + b_n ≥ 0, by the interior point method (IPOPT),
-///            warm-started from U_n and the previous multipliers when the constraint rows match;
+///   repeat:  linearise the contact constraints at U_n: projections, smoothed normals, contact zone
+///              (contact/contact_set.hpp);
+///            add the friction terms of the thresholds τ at U_n (friction_state.hpp);
+///            condense onto the contact DOFs when the bodies' energy is quadratic (condensation_cache.hpp);
+///            U_{n+1} = argmin E(U) + j_τ(U) subject to A_n U + b_n ≥ 0 (subproblem.hpp): the primal by IPOPT
+///              (primal_subproblem.hpp) or, condensed and frictionless, the dual by the dense interior point
+///              or IPOPT (dual_subproblem.hpp), each warm-started from the previous multipliers when the
+///              constraint rows match;
+///            remove the interior point's barrier offset (polish_strategy.hpp);
+///            accelerate while the map is smooth (anderson_acceleration.hpp);
 ///   until    ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ < tolerance.
 ///
-/// The multipliers μ ≥ 0 of the final solve give the contact forces F_c = Aᵀ μ (both constraint
-/// families together: one force per node, from which a single interface pressure is recovered).
-
-#include <string>
-#include <vector>
+/// The multipliers μ ≥ 0 of the final solve and the bodies' residual give the contact forces
+/// (contact_forces.hpp: both constraint families together, one force per node, from which a single
+/// interface pressure is recovered). The Coulomb fixed point around it: frictional_contact.hpp.
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "symcontact/contact/contact_set.hpp"
 #include "symcontact/contact/friction_term.hpp"
@@ -21,45 +28,29 @@
 #include "symcontact/core/timer.hpp"
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/optim/ipopt_solver.hpp"
+#include "symcontact/solvers/condensation_cache.hpp"
 #include "symcontact/solvers/fixed_dofs.hpp"
+#include "symcontact/solvers/friction_state.hpp"
 
 namespace symcontact {
 
-class StaticCondensation;
-class SemidefiniteFactor;
-struct CondensedLoad;
-
-/// What solve_contact keeps between calls: the static condensation of a quadratic bulk energy (its
-/// Cholesky factor and Schur complement, see condensed_problem.hpp), reused while the energy object,
-/// the set of free DOFs and the condensed DOFs still fit. One per run (all load steps and Coulomb
-/// iterations of one model); it is rebuilt, never misused, when given another energy or Dirichlet set.
-struct ContactWorkspace {
-  ContactWorkspace();
-  ~ContactWorkspace();
-  const EnergyTerm* energy = nullptr;   ///< the energy the condensation belongs to
-  std::vector<Index> free_index;        ///< its DOF → free numbering
-  std::unique_ptr<StaticCondensation> condensation;
-  int factorisations = 0;               ///< condensations computed (for reports and tests)
-  /// The pivoted factor of the condensation's Schur complement for the dual solve, and the value of
-  /// `factorisations` it belongs to.
-  std::unique_ptr<SemidefiniteFactor> schur_factor;
-  int schur_factor_of = -1;
-  /// The load part of the condensed problem (condensed_problem.hpp) of the last solve and the value of
-  /// `factorisations` it belongs to: reused while ∇E(0) (loads, Dirichlet values) is the same.
-  std::shared_ptr<const CondensedLoad> load;
-  int load_of = -1;
-  /// The last converged solve's multipliers and the identity of its rows (family, node): the warm start of
-  /// the next solve's first IPOPT call when its rows are the same.
-  VectorXd multipliers;
-  std::vector<int> row_family;
-  std::vector<Index> row_node;
-  /// The closing polish was rejected in the previous solve with a non-quadratic energy (friction): the
-  /// next such solve balances forces only and skips that attempt. On the inclined interface with Coulomb
-  /// friction it was rejected in every solve (the point it reaches violates a constraint outside its set,
-  /// and for a non-quadratic energy the set does not grow), at more than half the contact time.
-  bool closing_polish_rejected = false;
-  /// The last solve left u's interior out of date (ContactSolveOptions::lazy_interior): complete_interior().
-  bool interior_pending = false;
+/// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
+/// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
+/// without friction terms; any other subproblem is solved by the primal whatever the choice.
+enum class SubproblemSolver {
+  /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
+  /// factorisation at each of its iterations (primal_subproblem.hpp).
+  kPrimalIpopt,
+  /// The dual in the m contact multipliers with bounds, its Hessian formed once per geometry iteration, by
+  /// IPOPT (MUMPS factorising the dense matrix as a sparse one: about 3 times the time of the interior point
+  /// and 10 m² doubles of workspace); the displacements follow exactly from the multipliers, forces balanced
+  /// with no optimiser error (dual_subproblem.hpp). Falls back to the primal when IPOPT fails.
+  kDualIpopt,
+  /// The dual by the dense interior point of dense_qp_interior_point.hpp (one LAPACK Cholesky of the m × m
+  /// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance too) where the rows are
+  /// independent (no symmetric pair, no self-contact: the dual's λ is unique); by IPOPT otherwise, and
+  /// where it fails.
+  kDualInteriorPoint,
 };
 
 struct ContactSolveOptions {
@@ -89,7 +80,7 @@ struct ContactSolveOptions {
   /// one Cholesky factorisation of the stiffness serves every IPOPT iteration, geometry iteration and
   /// load step, and IPOPT works on the condensed set only. Same solution (to the optimiser's tolerance);
   /// off only to compare.
-  bool condense = true;
+  bool static_condensation = true;
   /// Largest condensed set |B| (DOFs) for which the solver condenses; above it the whole problem goes to
   /// IPOPT (which in 3D costs 10–30 times more already at 2e4 DOFs: docs/performance.md). S is dense, so the
   /// condensed problem costs memory and time that grow with |B|², resp. |B|³, besides the factor of K:
@@ -101,19 +92,8 @@ struct ContactSolveOptions {
   /// Hertz sphere on its plane has |B| = 5,224 at 4e5 DOFs (the limit was 4,000 until that size was run) and
   /// about 9,500 at 1e6.
   Index max_condensed_dofs = 12000;
-  /// Solve a condensed problem without friction terms through its dual (dual_condensed_problem.hpp): IPOPT
-  /// works on the m contact multipliers with bounds, on a Hessian formed once per geometry iteration, instead
-  /// of on the |B| condensed DOFs with m inequalities and a dense |B| × |B| KKT factorisation at each of its
-  /// iterations; the displacements follow exactly from the multipliers (forces balanced with no optimiser
-  /// error). Same solution to the optimiser's tolerance; off only to compare.
-  bool dual = true;
-  /// The optimiser of that dual: the dense interior point of dense_qp_interior_point.hpp (default: each of its
-  /// iterations one LAPACK Cholesky of the m × m matrix), or IPOPT (MUMPS factorising the dense matrix as a
-  /// sparse one: about 3 times the time and 10 m² doubles of workspace). Same solution to the tolerance
-  /// (IpoptOptions::tolerance is used by both). A failed interior point solve falls back to IPOPT. Used only
-  /// where the rows are independent (no symmetric pair, no self-contact: the dual's λ is unique); IPOPT
-  /// otherwise.
-  bool dual_interior_point = true;
+  /// How each geometry iteration's subproblem is solved (SubproblemSolver).
+  SubproblemSolver subproblem_solver = SubproblemSolver::kDualInteriorPoint;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
   /// The caller vouches that the loads and Dirichlet values are those of the previous solve with this
@@ -136,21 +116,6 @@ constexpr int kMaxTightenings = 2;
 /// IPOPT's tolerance × 1e-2 (also a `tol` given in the problem file's [ipopt] table); the dense interior point of
 /// the dual reads the same tolerance.
 void tighten_optimiser(IpoptOptions& o);
-
-/// Makes u whole after solves with ContactSolveOptions::lazy_interior: the interior DOFs from u's condensed
-/// entries and the workspace's factor and load part (those of the last solve), x_I = −K_II⁻¹(r₀_I + K_IB x_B).
-/// Does nothing when the workspace has nothing pending. `energy` and `fixed` must be those of the last solve.
-void complete_interior(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u, ContactWorkspace& workspace);
-
-/// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).
-struct FrictionState {
-  /// Per pair: τ at the nodes of the slave surface of the pair's friction family (empty: no friction).
-  std::vector<Eigen::VectorXd> nodal_tau;
-  VectorXd u_start;  ///< displacement at the start of the load step (slip increments are measured from it)
-  /// The thresholds the previous load step converged to (empty on the first step): with nodal_tau, the
-  /// last two steps' τ for the predictor of the next step (FrictionalOptions::extrapolate).
-  std::vector<Eigen::VectorXd> previous_tau;
-};
 
 struct ContactSolveReport {
   int geometry_iterations = 0;

@@ -362,7 +362,7 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
   EXPECT_TRUE(spec.contact_solver.dual_solve);
-  EXPECT_TRUE(spec.contact_solver.dual_interior_point);
+  EXPECT_EQ(spec.contact_solver.dual_optimizer, DualOptimizer::kInteriorPoint);
   EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
@@ -473,7 +473,7 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-8);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 12);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
-  EXPECT_FALSE(spec.contact_solver.dual_interior_point);
+  EXPECT_EQ(spec.contact_solver.dual_optimizer, DualOptimizer::kIpopt);
   EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);  // the others keep their defaults
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
 }

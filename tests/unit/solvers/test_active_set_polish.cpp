@@ -126,23 +126,23 @@ class FullQuadratic : public ConstrainedProblem {
 // Round-off here is ε times the condition of M = H + ρ A_SᵀA_S: ρ = 1e6 · mean|diag H| / max diag(A_SᵀA_S)
 // in the method of multipliers, so 1e-9 relative there, 1e-12 in the direct solve (ρ balanced).
 TEST(ActiveSetPolish, DenseAndSparseFactorisationsAgree) {
-  for (const bool hold : {false, true}) {
+  for (const PolishMode mode : {PolishMode::kClose, PolishMode::kBalanceForces}) {
     VectorXd x0(6), mu0(3);
     x0 << 1e-7, 2e-7, 0.3, 1e-7, -0.2, 0.1;
     mu0 << 0.4, 0.3, 0.2;
     FullQuadratic sparse(false), dense(true);
     VectorXd xs = x0, ms = mu0, xd = x0, md = mu0;
-    const PolishResult rs = polish_active_set(sparse, xs, ms, hold);
-    const PolishResult rd = polish_active_set(dense, xd, md, hold);
+    const PolishResult rs = polish_active_set(sparse, xs, ms, mode);
+    const PolishResult rd = polish_active_set(dense, xd, md, mode);
     ASSERT_TRUE(rs.applied) << rs.reason;
     ASSERT_TRUE(rd.applied) << rd.reason;
     EXPECT_EQ(rs.active, rd.active);
     EXPECT_GT((xs - x0).lpNorm<Eigen::Infinity>(), 1e-8) << "the polish should have moved the point";
-    const double tol = hold ? 1e-12 : 1e-9;
-    EXPECT_LT((xs - xd).lpNorm<Eigen::Infinity>(), tol * xs.lpNorm<Eigen::Infinity>()) << "hold_values " << hold;
+    const double tol = mode == PolishMode::kBalanceForces ? 1e-12 : 1e-9;
+    EXPECT_LT((xs - xd).lpNorm<Eigen::Infinity>(), tol * xs.lpNorm<Eigen::Infinity>()) << "balance forces " << (mode == PolishMode::kBalanceForces);
     const SparseMatrix& A = sparse.constraint_matrix();
     const VectorXd fs = A.transpose() * ms, fd = A.transpose() * md;
     EXPECT_GT(fs.lpNorm<Eigen::Infinity>(), 0.1) << "the constraints should carry a force";
-    EXPECT_LT((fs - fd).lpNorm<Eigen::Infinity>(), tol * fs.lpNorm<Eigen::Infinity>()) << "hold_values " << hold;
+    EXPECT_LT((fs - fd).lpNorm<Eigen::Infinity>(), tol * fs.lpNorm<Eigen::Infinity>()) << "balance forces " << (mode == PolishMode::kBalanceForces);
   }
 }

@@ -1,0 +1,94 @@
+#pragma once
+/// \file condensation_cache.hpp
+/// The static condensation of the contact solve and what it keeps between solves of one run.
+///
+/// With a quadratic bulk energy E(x) = ½ xᵀK x + r₀ᵀx (linear elasticity), the free DOFs split into the set
+/// B the contact rows and friction terms touch and the interior I, and the interior is eliminated exactly:
+/// x_I(y) = −K_II⁻¹(r₀_I + K_IB y), leaving the condensed problem in y = x_B with the Schur complement
+/// S = K_BB − K_BI K_II⁻¹ K_IB (condensed_problem.hpp, static_condensation.hpp). One sparse Cholesky factor
+/// of K_II serves every geometry iteration, Coulomb iteration and load step while B holds the DOFs touched;
+/// B grows (never shrinks within a run) by a margin of facet rings when the contact zone leaves it.
+
+#include <memory>
+#include <vector>
+
+#include "symcontact/contact/contact_set.hpp"
+#include "symcontact/contact/friction_term.hpp"
+#include "symcontact/core/log.hpp"
+#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/solvers/fixed_dofs.hpp"
+
+namespace symcontact {
+
+class StaticCondensation;
+class SemidefiniteFactor;
+class CondensedProblem;
+class ReducedProblem;
+struct CondensedLoad;
+
+/// What solve_contact keeps between calls: the static condensation of a quadratic bulk energy (its
+/// Cholesky factor and Schur complement), reused while the energy object, the set of free DOFs and the
+/// condensed DOFs still fit; the warm start of the next solve. One per run (all load steps and Coulomb
+/// iterations of one model); it is rebuilt, never misused, when given another energy or Dirichlet set.
+struct ContactWorkspace {
+  ContactWorkspace();
+  ~ContactWorkspace();
+  const EnergyTerm* energy = nullptr;   ///< the energy the condensation belongs to
+  std::vector<Index> free_index;        ///< its DOF → free numbering
+  std::unique_ptr<StaticCondensation> condensation;
+  int factorisations = 0;               ///< condensations computed (for reports and tests)
+  /// The pivoted factor of the condensation's Schur complement for the dual solve, and the value of
+  /// `factorisations` it belongs to.
+  std::unique_ptr<SemidefiniteFactor> schur_factor;
+  int schur_factor_of = -1;
+  /// The load part of the condensed problem (condensed_problem.hpp) of the last solve and the value of
+  /// `factorisations` it belongs to: reused while ∇E(0) (loads, Dirichlet values) is the same.
+  std::shared_ptr<const CondensedLoad> load;
+  int load_of = -1;
+  /// The last converged solve's multipliers and the identity of its rows (family, node): the warm start of
+  /// the next solve's first optimiser call when its rows are the same.
+  VectorXd multipliers;
+  std::vector<int> row_family;
+  std::vector<Index> row_node;
+  /// The closing polish was rejected in the previous solve with a non-quadratic energy (friction): the
+  /// next such solve balances forces only and skips that attempt (polish_strategy.hpp).
+  bool closing_polish_rejected = false;
+  /// The last solve left u's interior out of date (ContactSolveOptions::lazy_interior): complete_interior().
+  bool interior_pending = false;
+};
+
+/// When and how far to condense (ContactSolveOptions::max_condensed_dofs, ::same_loads).
+struct CondensationLimits {
+  Index max_condensed_dofs = 12000;
+  bool same_loads = false;
+};
+
+/// The condensed form of the current geometry iterate's problem, or null when condensing does not apply
+/// or pay: B empty, |B| above `limits.max_condensed_dofs` or above half the free DOFs, or a factorisation
+/// that fails. Reuses the workspace's factorisation when its B holds every DOF the constraints of `problem`
+/// and the `friction` terms (evaluated at the full vector u) touch; otherwise refactorises with the union
+/// of the old B, the new DOFs and a margin. `load` (null on the first call of a solve) caches the load part
+/// for this solve's Dirichlet values and loads.
+std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const ReducedProblem& problem,
+                                                   const ContactSet& contacts, const DofMap& dofs,
+                                                   const std::vector<std::shared_ptr<const FrictionTerm>>& friction,
+                                                   const VectorXd& u, const VectorXd& x, const EnergyTerm& energy,
+                                                   ContactWorkspace& ws, const CondensationLimits& limits,
+                                                   const Logger& log, std::shared_ptr<const CondensedLoad>& load);
+
+/// Whether the condensed set holds every free DOF of the contact surfaces (rigid ones have none): then the
+/// search, the friction points and the surface pressures read nothing outside B.
+bool surfaces_condensed(const ContactSet& contacts, const DofMap& dofs, const std::vector<Index>& free_index,
+                        const std::vector<Index>& b_position);
+
+/// The pivoted factor of the workspace's Schur complement for the dual (computed once per condensation), or
+/// null when the dual cannot be used: a null space that is not clean (max |S N| above 1e-8 of max |S|: a
+/// pivot between round-off and stiffness, no clear rank) is left to the primal.
+const SemidefiniteFactor* dual_schur_factor(ContactWorkspace& ws, const Logger& log);
+
+/// Makes u whole after solves with ContactSolveOptions::lazy_interior: the interior DOFs from u's condensed
+/// entries and the workspace's factor and load part (those of the last solve), x_I = −K_II⁻¹(r₀_I + K_IB x_B).
+/// Does nothing when the workspace has nothing pending. `energy` and `fixed` must be those of the last solve.
+void complete_interior(const EnergyTerm& energy, const FixedDofs& fixed, VectorXd& u, ContactWorkspace& workspace);
+
+}  // namespace symcontact

@@ -1,0 +1,54 @@
+#pragma once
+/// \file dual_subproblem.hpp
+/// The subproblem of a condensed quadratic problem (linear elasticity, no friction term) solved through its
+/// dual in the contact multipliers (dual_condensed_problem.hpp): min ½λᵀWλ − dᵀλ, λ ≥ 0, Gλ = e, then the
+/// active set closed exactly in the dual's own form, and the displacements y = S⁺(Aᵀλ − ĝ) − Nβ, which
+/// balance the forces for any λ. Warm-started, from the second solve of a run on, from the previous rows'
+/// multipliers, the gaps at the start point as the bounds' multipliers, and the previous rigid-motion
+/// multipliers β.
+///  - DualIpopt: IPOPT (MUMPS factorising the dense W as a sparse matrix), warm then cold.
+///  - DualInteriorPoint: the dense interior point (dense_qp_interior_point.hpp, a LAPACK Cholesky of the m × m
+///    matrix per iteration, stopping at IPOPT's `tol`, complementarity at 1e-6 of it), warm then cold;
+///    DualIpopt's attempts where it fails. For independent rows only (obstacles, one-pass pairs): with the
+///    nearly dependent families of a symmetric pair the optimal λ form a face, and the interior point ends
+///    on another point of it, from which the closing finds a smaller set or none.
+/// A solution with `success` false asks the caller for the primal (the reference formulation).
+
+#include <memory>
+
+#include "symcontact/solvers/subproblem.hpp"
+
+namespace symcontact {
+
+class DualCondensedProblem;
+
+class DualIpopt : public SubproblemMethod {
+ public:
+  DualIpopt();
+  ~DualIpopt() override;
+  SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
+                           PhaseTimes& times) override;
+
+ protected:
+  /// The state of the warm start a dual attempt starts from (all null: cold).
+  struct DualStart {
+    const VectorXd* lambda_hat = nullptr;  ///< scaled multipliers λ̂
+    const VectorXd* gaps = nullptr;        ///< scaled gaps, the bounds' multipliers
+    const VectorXd* equality = nullptr;    ///< rigid-motion multipliers
+  };
+  /// A first optimiser tried before IPOPT; true when it solved (res then holds its solution).
+  virtual bool solve_first(const DualCondensedProblem& dual, const DualStart& start, const IpoptOptions& ipopt,
+                           IpoptResult& res, SubproblemSolution& s, const Logger& log);
+
+ private:
+  VectorXd equality_prev_;  ///< the rigid-motion multipliers of the last dual solved
+  int solves_ = 0;          ///< dual solves attempted
+};
+
+class DualInteriorPoint : public DualIpopt {
+ protected:
+  bool solve_first(const DualCondensedProblem& dual, const DualStart& start, const IpoptOptions& ipopt,
+                   IpoptResult& res, SubproblemSolution& s, const Logger& log) override;
+};
+
+}  // namespace symcontact

@@ -1,0 +1,50 @@
+#include "symcontact/solvers/friction_state.hpp"
+
+#include "symcontact/contact/contact_points.hpp"
+#include "symcontact/contact/surface_tractions.hpp"
+
+namespace symcontact {
+
+namespace {
+
+/// The nodal friction points of pair p's friction family at the displacement u.
+std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int p, const DofMap& dofs,
+                                                const VectorXd& u) {
+  const ContactFamily& fam = contacts.families()[contacts.friction_family(p)];
+  const ContactSurface& slave = contacts.surfaces[fam.slave];
+  const ContactPair& pair = contacts.pairs[p];
+  std::vector<ContactPoint> nodal;
+  if (fam.master >= 0) {
+    const ContactSurface& ms = contacts.surfaces[fam.master];
+    const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, u));
+    nodal = nodal_contact_points(slave, current_positions(slave, dofs, u), &mg, nullptr, pair.search_distance,
+                                 pair.bisector_ray());
+  } else {
+    nodal = nodal_contact_points(slave, current_positions(slave, dofs, u), nullptr, &contacts.obstacles[pair.obstacle],
+                                 pair.search_distance);
+  }
+  if (pair.surface_a == pair.surface_b)  // self-contact: each side carries half of the interface's j_τ
+    for (ContactPoint& q : nodal) q.weight *= 0.5;
+  return nodal;
+}
+
+}  // namespace
+
+std::vector<std::shared_ptr<const FrictionTerm>> friction_terms(const FrictionState& state, const ContactSet& contacts,
+                                                                const DofMap& dofs, const VectorXd& u) {
+  const int num_pairs = static_cast<int>(contacts.pairs.size());
+  std::vector<std::shared_ptr<const FrictionTerm>> terms(num_pairs);
+  for (int p = 0; p < num_pairs; ++p) {
+    if (p >= static_cast<int>(state.nodal_tau.size()) || state.nodal_tau[p].size() == 0) continue;
+    const ContactFamily& fam = contacts.families()[contacts.friction_family(p)];
+    const ContactSurface& slave = contacts.surfaces[fam.slave];
+    std::vector<ContactPoint> nodal = nodal_friction_points(contacts, p, dofs, u);
+    const std::vector<double> tau = interpolate_at_points(slave, nodal, state.nodal_tau[p]);
+    terms[p] = std::make_shared<FrictionTerm>("friction(" + contacts.pairs[p].name + ")", slave,
+                                              fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
+                                              std::move(nodal), tau, contacts.pairs[p].alpha, dofs, state.u_start);
+  }
+  return terms;
+}
+
+}  // namespace symcontact

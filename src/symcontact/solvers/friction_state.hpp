@@ -1,0 +1,35 @@
+#pragma once
+/// \file friction_state.hpp
+/// The friction thresholds of one regularised-Tresca solve and the friction terms they give at a geometry
+/// iterate (METHOD.md, eq. 16: j_{α,τ}(u) = Σ_k A_k τ_k sqrt(|s_k(u)|² + α²), s_k the slip increment of node
+/// k of the pair's friction family since the start of the load step).
+
+#include <memory>
+#include <vector>
+
+#include "symcontact/contact/contact_set.hpp"
+#include "symcontact/contact/friction_term.hpp"
+
+namespace symcontact {
+
+/// Friction thresholds for one solve (regularised Tresca, Algorithm 2 with j_{α,τ} added).
+struct FrictionState {
+  /// Per pair: τ at the nodes of the slave surface of the pair's friction family (empty: no friction).
+  std::vector<Eigen::VectorXd> nodal_tau;
+  VectorXd u_start;  ///< displacement at the start of the load step (slip increments are measured from it)
+  /// The thresholds the previous load step converged to (empty on the first step): with nodal_tau, the
+  /// last two steps' τ for the predictor of the next step (FrictionalOptions::extrapolate).
+  std::vector<Eigen::VectorXd> previous_tau;
+};
+
+/// The friction term of every pair at the displacement u (null for a pair without thresholds), integrated
+/// node by node: node k of the slave surface carries its own weight A_k, slip and threshold τ_k, so that
+/// σ_T = −τ_k s_k / sqrt(|s_k|² + α²) holds at every node with the same lumped A_k the pressure is recovered
+/// with, and the nodal law |σ_T| ≤ μ σ_n with it. (A quadrature of the interpolated τ and s would mix
+/// neighbouring nodes' thresholds and break the law where the pressure varies, at the ends of a dragged
+/// block for instance.) A self-contact surface holds both sides of its interface and every node of it
+/// carries a friction point: j_τ counts the interface once, so each side carries half the weight.
+std::vector<std::shared_ptr<const FrictionTerm>> friction_terms(const FrictionState& state, const ContactSet& contacts,
+                                                                const DofMap& dofs, const VectorXd& u);
+
+}  // namespace symcontact

@@ -1,0 +1,19 @@
+#pragma once
+/// \file primal_subproblem.hpp
+/// The subproblem solved by IPOPT on the displacements (the reference formulation; any energy).
+/// Warm-started from the previous rows' multipliers when the rows are the same; a warm start that fails on
+/// the first geometry iteration (its multipliers come from another solve) is retried cold, and a failure
+/// with friction once more from Subproblem::restart (stiff regularised friction, small α, can defeat the
+/// line search from a start that is already close).
+
+#include "symcontact/solvers/subproblem.hpp"
+
+namespace symcontact {
+
+class PrimalIpopt : public SubproblemMethod {
+ public:
+  SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
+                           PhaseTimes& times) override;
+};
+
+}  // namespace symcontact

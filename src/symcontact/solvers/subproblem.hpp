@@ -1,0 +1,59 @@
+#pragma once
+/// \file subproblem.hpp
+/// The optimisation step of one geometry iteration (Algorithm 2 of METHOD.md): with the contact constraints
+/// linearised at U_n,
+///     U_{n+1} = argmin E(U)  subject to  A_n U + b_n ≥ 0,
+/// and its multipliers μ ≥ 0 (one per row). A SubproblemMethod is one way of solving it; the geometry fixed
+/// point (contact_solver.hpp) chooses one per iteration and stays unaware of how it works:
+///  - PrimalIpopt (primal_subproblem.hpp): IPOPT on the displacements, condensed or not; any energy.
+///  - DualIpopt, DualInteriorPoint (dual_subproblem.hpp): the dual in the multipliers of a condensed
+///    quadratic problem, by IPOPT or by the dense interior point; the displacements follow exactly.
+
+#include <functional>
+
+#include "symcontact/core/log.hpp"
+#include "symcontact/core/timer.hpp"
+#include "symcontact/optim/ipopt_solver.hpp"
+
+namespace symcontact {
+
+class CondensedProblem;
+class SemidefiniteFactor;
+
+/// One geometry iteration's problem, as the optimiser sees it.
+struct Subproblem {
+  ConstrainedProblem& target;          ///< the condensed problem, or the whole reduced one
+  const CondensedProblem* condensed;   ///< target as a condensed problem (null when not condensed)
+  const SemidefiniteFactor* schur;     ///< the pivoted factor of S for the dual (null: no dual)
+  const VectorXd& start;               ///< the current geometry iterate, in target's variables
+  int geometry_iteration;              ///< 1, 2, … within the solve
+  const IpoptOptions& ipopt;           ///< the optimiser settings (IPOPT's; the interior point reads `tol`)
+  bool close_active_set;               ///< close the active set exactly where the method does it itself (dual)
+  /// Another start to retry from when the solve fails from `start` (the primal with friction); empty: none.
+  std::function<VectorXd()> restart;
+};
+
+/// The previous solution's multipliers when this iteration's constraint rows are the same rows (same
+/// families, same nodes) as theirs; null otherwise.
+struct SubproblemWarmStart {
+  const VectorXd* multipliers = nullptr;
+};
+
+struct SubproblemSolution {
+  /// x in target's variables, μ ≥ 0 per row, c(x) = A x + b; `success` false when every attempt failed.
+  IpoptResult result;
+  int failed_iterations = 0;  ///< optimiser iterations of failed attempts before `result`
+  bool closed = false;        ///< the method closed the active set exactly (close_active_set)
+  /// close_active_set was asked and the closing was not applied (why, for the log); empty otherwise.
+  std::string closing_failure;
+};
+
+class SubproblemMethod {
+ public:
+  virtual ~SubproblemMethod() = default;
+  /// One subproblem, logged at `log`'s detail level when an attempt fails, timed into `times`.
+  virtual SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
+                                   PhaseTimes& times) = 0;
+};
+
+}  // namespace symcontact
