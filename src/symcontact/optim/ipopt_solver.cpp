@@ -463,10 +463,9 @@ ProblemScales problem_scales(const VectorXd& x0, const VectorXd& g0, const Spars
   return s;
 }
 
-}  // namespace
-
-IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, const IpoptOptions& options,
-                             const VectorXd* multipliers0, const VectorXd* bound_multipliers0) {
+/// The sizes solve_with_ipopt() is given, checked: std::invalid_argument naming the first that does not fit.
+void check_arguments(const ConstrainedProblem& problem, const VectorXd& x0, bool warm, const VectorXd* multipliers0,
+                     const VectorXd* bound_multipliers0) {
   const Index n = problem.num_variables();
   const SparseMatrix& A = problem.constraint_matrix();
   const VectorXd& b = problem.constraint_offset();
@@ -479,10 +478,27 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
                                 " for " + std::to_string(n) + " variables");
   if (n > std::numeric_limits<IpIndex>::max() || A.nonZeros() > std::numeric_limits<IpIndex>::max())
     throw std::invalid_argument("solve_with_ipopt: problem too large for IPOPT's int indices");
-  const bool warm = options.warm_start && multipliers0 != nullptr;
   if (warm && multipliers0->size() != A.rows())
     throw std::invalid_argument("solve_with_ipopt: multipliers0 has size " + std::to_string(multipliers0->size()) +
                                 ", expected " + std::to_string(A.rows()));
+  if (warm && bound_multipliers0 && problem.lower_bounds() && bound_multipliers0->size() != n)
+    throw std::invalid_argument("solve_with_ipopt: bound_multipliers0 has size " +
+                                std::to_string(bound_multipliers0->size()) + ", expected " + std::to_string(n));
+  if (problem.num_equalities() < 0 || problem.num_equalities() > A.rows())
+    throw std::invalid_argument("solve_with_ipopt: num_equalities() is outside [0, rows of A]");
+  if (problem.lower_bounds() && problem.lower_bounds()->size() != n)
+    throw std::invalid_argument("solve_with_ipopt: lower_bounds() does not have the problem size");
+}
+
+}  // namespace
+
+IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, const IpoptOptions& options,
+                             const VectorXd* multipliers0, const VectorXd* bound_multipliers0) {
+  const Index n = problem.num_variables();
+  const SparseMatrix& A = problem.constraint_matrix();
+  const VectorXd& b = problem.constraint_offset();
+  const bool warm = options.warm_start && multipliers0 != nullptr;
+  check_arguments(problem, x0, warm, multipliers0, bound_multipliers0);
 
   IpoptResult result;
   result.x = x0;
@@ -494,16 +510,7 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   AdapterSetup setup;
   setup.x0 = x0;
   setup.multipliers0 = warm ? multipliers0 : nullptr;
-  if (warm && bound_multipliers0 && problem.lower_bounds()) {
-    if (bound_multipliers0->size() != n)
-      throw std::invalid_argument("solve_with_ipopt: bound_multipliers0 has size " +
-                                  std::to_string(bound_multipliers0->size()) + ", expected " + std::to_string(n));
-    setup.bound_multipliers0 = bound_multipliers0;
-  }
-  if (problem.num_equalities() < 0 || problem.num_equalities() > A.rows())
-    throw std::invalid_argument("solve_with_ipopt: num_equalities() is outside [0, rows of A]");
-  if (problem.lower_bounds() && problem.lower_bounds()->size() != n)
-    throw std::invalid_argument("solve_with_ipopt: lower_bounds() does not have the problem size");
+  if (warm && bound_multipliers0 && problem.lower_bounds()) setup.bound_multipliers0 = bound_multipliers0;
   {
     VectorXd g0;
     try {

@@ -118,175 +118,230 @@ std::string coulomb_failure(const std::string& what, int iteration, double chang
        "regularisation alpha";
   return e.str();
 }
+/// Makes u whole (complete_interior) when the load step ends, also when it throws: a throw in flight
+/// completes what can be, and nothing is thrown from the destructor.
+struct CompleteOnExit {
+  const EnergyTerm& energy;
+  const FixedDofs& fixed;
+  VectorXd& u;
+  ContactWorkspace* ws;
+  void now() {
+    if (ws) complete_interior(energy, fixed, u, *ws);
+  }
+  ~CompleteOnExit() {
+    try {
+      now();
+    } catch (...) {
+    }
+  }
+};
+
+/// The Coulomb fixed point of one load step (the file comment of frictional_contact.hpp), around the
+/// regularised-Tresca solves of solve_contact. One object per solve_frictional_contact call.
+class CoulombFixedPoint {
+ public:
+  CoulombFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts, const DofMap& dofs,
+                    VectorXd& u, const FrictionalOptions& options, const Logger& log, const FrictionState* previous)
+      : energy_(energy), fixed_(fixed), contacts_(contacts), dofs_(dofs), u_(u), options_(options), log_(log),
+        previous_(previous), inner_(options.contact) {}
+
+  FrictionalReport run();
+
+ private:
+  void start_thresholds(double s_extrapolate);
+  void solve(double threshold_change);
+  void first_solve();
+  bool stops(int k, const std::vector<Eigen::VectorXd>& r);
+
+  const EnergyTerm& energy_;
+  const FixedDofs& fixed_;
+  const ContactSet& contacts_;
+  const DofMap& dofs_;
+  VectorXd& u_;
+  const FrictionalOptions& options_;
+  const Logger& log_;
+  const FrictionState* previous_;
+  FrictionalReport rep_;
+  bool any_friction_ = false, any_coulomb_ = false;
+  bool warm_ = false;        ///< the step starts from the previous step's thresholds
+  VectorXd u_step_start_;
+  bool inexact_ = false;     ///< inexact inner solves (FrictionalOptions::inner_tolerance_factor)
+  ContactSolveOptions inner_;  ///< tightened when the fixed point stagnates
+  bool same_loads_ = false;
+  std::vector<Eigen::VectorXd> r_prev_;  ///< r_{k−1}, per pair (empty before the first Tresca solve)
+  double omega_ = 1.0;
+  double scale_ = 1.0;       ///< of the next solve's loose geometry tolerance: the last ‖r_k‖∞ / ‖τ_k‖∞ (1 before)
+  FixedPointMonitor monitor_;
+  int tightenings_ = 0;      ///< inner accuracy raised this many times (at most kMaxTightenings)
+  bool confirming_ = false;  ///< the last solve confirmed, to full tolerance, a change met on an inexact one
+};
+
+/// The thresholds the step starts from. Tresca: the given τ; Coulomb: the previous step's (extrapolated by
+/// s_extrapolate > 0: FrictionalOptions::extrapolate), or 0 for a frictionless first solve.
+void CoulombFixedPoint::start_thresholds(double s_extrapolate) {
+  const int np = static_cast<int>(contacts_.pairs.size());
+  rep_.friction.nodal_tau.assign(np, Eigen::VectorXd());
+  for (int p = 0; p < np; ++p) {
+    const ContactPair& pair = contacts_.pairs[p];
+    if (pair.friction == FrictionLaw::kNone) continue;
+    any_friction_ = true;
+    const ContactSurface& s = contacts_.surfaces[contacts_.families()[contacts_.friction_family(p)].slave];
+    rep_.friction.nodal_tau[p] =
+        Eigen::VectorXd::Constant(s.num_nodes(), pair.friction == FrictionLaw::kTresca ? pair.tau : 0.0);
+    if (pair.friction != FrictionLaw::kCoulomb) continue;
+    any_coulomb_ = true;
+    const FrictionState* prev = previous_;
+    if (prev && p < static_cast<int>(prev->nodal_tau.size()) && prev->nodal_tau[p].size() == s.num_nodes() &&
+        prev->nodal_tau[p].maxCoeff() > 0.0) {
+      rep_.friction.nodal_tau[p] = prev->nodal_tau[p];
+      warm_ = true;
+      if (s_extrapolate > 0.0 && p < static_cast<int>(prev->previous_tau.size()) &&
+          prev->previous_tau[p].size() == s.num_nodes())
+        rep_.friction.nodal_tau[p] =
+            (prev->nodal_tau[p] + s_extrapolate * (prev->nodal_tau[p] - prev->previous_tau[p])).cwiseMax(0.0);
+    }
+  }
+}
+
+/// One regularised-Tresca solve with the current thresholds; inexact (its geometry fixed point stopped at
+/// inner_tolerance_factor × threshold_change) while inexact_ holds.
+void CoulombFixedPoint::solve(double threshold_change) {
+  ContactSolveOptions o = inner_;
+  if (inexact_) o.loose_geometry_tolerance = options_.inner_tolerance_factor * threshold_change;
+  o.same_loads = same_loads_;
+  o.lazy_interior = options_.lazy_interior;  // solve_contact applies it where it condenses (workspace, linear elasticity)
+  ContactSolveReport r =
+      solve_contact(energy_, fixed_, contacts_, dofs_, u_, o, log_, any_friction_ ? &rep_.friction : nullptr);
+  same_loads_ = true;  // the later solves of this call: the same load step, whose load part is now known
+  rep_.geometry_iterations += r.geometry_iterations;
+  rep_.ipopt_iterations += r.ipopt_iterations;
+  rep_.times.merge(r.times);
+  rep_.last = std::move(r);
+}
+
+/// The first solve. A warm start the solve cannot take (IPOPT failing from a start the moved boundary made
+/// far infeasible, with the friction already on) falls back to the frictionless start.
+void CoulombFixedPoint::first_solve() {
+  if (!warm_) {
+    solve(1.0);
+    return;
+  }
+  try {
+    solve(1.0);
+  } catch (const SolveError& e) {
+    log_.detail(std::string("  warm-started Coulomb solve failed (") + e.what() + "); starting frictionless");
+    u_ = u_step_start_;
+    warm_ = false;
+    for (std::size_t p = 0; p < contacts_.pairs.size(); ++p)
+      if (contacts_.pairs[p].friction == FrictionLaw::kCoulomb) rep_.friction.nodal_tau[p].setZero();
+    solve(1.0);
+  }
+}
+
+/// Whether the loop ends after the solve of iteration k, whose residuals are r: converged on a solve to the
+/// geometry tolerance, or stagnated and accepted at the noise floor. Tightens the inner solves of a stagnated
+/// fixed point; throws SolveError when it cannot converge.
+bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
+  const int iteration = k - (warm_ ? 0 : 1);
+  const double change = relative_change(r, rep_.friction.nodal_tau);
+  scale_ = change;
+  rep_.coulomb_change.push_back(change);
+  monitor_.record(change);
+  omega_ = aitken_relaxation(r, r_prev_, omega_);
+  rep_.coulomb_relaxation.push_back(omega_);
+  std::ostringstream s;
+  s << "  Coulomb iteration " << iteration << ": threshold change " << change << ", relaxation " << omega_;
+  log_.detail(s.str());
+  if (change < options_.coulomb_tolerance) {
+    // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an inexact
+    // one, one more solve at full tolerance (its τ moves by less than the tolerance).
+    if (rep_.last.converged) return true;
+    log_.detail("  thresholds settled on an inexact solve; one more solve to the geometry tolerance");
+    scale_ = 0.0;
+  } else if (confirming_ && inexact_) {
+    // The exact solve moved the thresholds back above the tolerance: the inexact solves' error was larger
+    // than their change showed. The rest of the step solves to full tolerance, so that this cannot repeat.
+    inexact_ = false;
+    log_.detail("  the solve to full tolerance undid the inexact solves' convergence; inner solves exact from now on");
+  }
+  confirming_ = scale_ == 0.0;
+  if (monitor_.stagnated()) {
+    if (tightenings_ < kMaxTightenings) {
+      ++tightenings_;
+      inexact_ = false;
+      tighten(inner_);
+      std::ostringstream m;
+      m << "  the Coulomb fixed point stagnated (no new low below " << monitor_.best()
+        << "); inner solves tightened to IPOPT tol " << inner_.ipopt.tolerance << ", geometry tolerance "
+        << inner_.geometry_tolerance;
+      log_.detail(m.str());
+      monitor_.restart();
+    } else if (rep_.last.converged && change <= options_.stagnation_acceptance) {
+      rep_.accepted_at_noise_floor = change;
+      std::ostringstream m;
+      m << "Coulomb fixed point: the thresholds stopped changing at " << change << " of their size (tolerance "
+        << options_.coulomb_tolerance << "), the noise floor of the inner solves; accepted: the friction law holds to "
+        << change << " (acceptance " << options_.stagnation_acceptance << ")";
+      log_.warning(m.str());
+      return true;
+    } else {
+      throw SolveError(coulomb_failure("stagnated", iteration, change, options_, tightenings_, inner_, monitor_));
+    }
+  }
+  if (iteration >= options_.max_coulomb_iterations)
+    throw SolveError(coulomb_failure("did not converge", iteration, change, options_, tightenings_, inner_, monitor_));
+  return false;
+}
+
+FrictionalReport CoulombFixedPoint::run() {
+  rep_.friction.u_start = u_;
+  if (previous_) rep_.friction.previous_tau = previous_->nodal_tau;
+  // The predictor (FrictionalOptions::extrapolate): this step repeats the previous one's increment, scaled.
+  const double s_extrapolate = options_.extrapolate && previous_ && energy_.hessian_is_constant()
+                                   ? proportional_increment(fixed_, u_, previous_->u_start)
+                                   : 0.0;
+  start_thresholds(s_extrapolate);
+  u_step_start_ = u_;
+  if (warm_ && s_extrapolate > 0.0) {
+    u_ += s_extrapolate * (u_ - previous_->u_start);
+    std::ostringstream m;
+    m << "  predictor: the previous step's increment extrapolated (scale " << s_extrapolate << ")";
+    log_.detail(m.str());
+  }
+  // Inexact inner solves (FrictionalOptions::inner_tolerance_factor): the geometry fixed point of a solve
+  // stops at factor × the threshold change that set its τ (1 before any is known: the frictionless start,
+  // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
+  inexact_ = any_coulomb_ && energy_.hessian_is_constant() && options_.inner_tolerance_factor > 0.0;
+  // Between two solves only the surfaces are read (pressures, slips, the next search): with a condensed
+  // workspace each solve leaves the interior out of date (ContactSolveOptions::lazy_interior) and u is made
+  // whole once, when this load step ends — also when it throws (the last iterate is kept for inspection).
+  CompleteOnExit complete_on_exit{energy_, fixed_, u_, options_.contact.workspace.get()};
+  first_solve();
+  if (!any_coulomb_) {
+    complete_on_exit.now();
+    return rep_;
+  }
+  for (int k = 1;; ++k) {
+    // r_k = μ p_k − τ_k for every Coulomb pair (τ_0 = 0: the frictionless solve).
+    const std::vector<Eigen::VectorXd> r = coulomb_residuals(contacts_, dofs_, u_, rep_, log_);
+    if ((k > 1 || warm_) && stops(k, r)) break;
+    for (std::size_t p = 0; p < r.size(); ++p)
+      if (r[p].size() > 0)
+        rep_.friction.nodal_tau[p] = (rep_.friction.nodal_tau[p] + (k > 1 || warm_ ? omega_ : 1.0) * r[p]).cwiseMax(0.0);
+    r_prev_ = r;
+    rep_.coulomb_iterations = k;
+    solve(scale_);
+  }
+  complete_on_exit.now();
+  return rep_;
+}
+
 }  // namespace
 
 FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                           const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
                                           const Logger& log, const FrictionState* previous) {
-  FrictionalReport rep;
-  const int np = static_cast<int>(contacts.pairs.size());
-  rep.friction.u_start = u;
-  rep.friction.nodal_tau.assign(np, Eigen::VectorXd());
-  if (previous) rep.friction.previous_tau = previous->nodal_tau;
-  // The predictor (FrictionalOptions::extrapolate): this step repeats the previous one's increment, scaled.
-  const double s_extrapolate = options.extrapolate && previous && energy.hessian_is_constant()
-                                   ? proportional_increment(fixed, u, previous->u_start)
-                                   : 0.0;
-  bool any_friction = false, any_coulomb = false, warm = false;
-  for (int p = 0; p < np; ++p) {
-    const ContactPair& pair = contacts.pairs[p];
-    if (pair.friction == FrictionLaw::kNone) continue;
-    any_friction = true;
-    const ContactSurface& s = contacts.surfaces[contacts.families()[contacts.friction_family(p)].slave];
-    // Tresca: the given threshold; Coulomb: the previous step's, or 0 for a frictionless first solve.
-    rep.friction.nodal_tau[p] =
-        Eigen::VectorXd::Constant(s.num_nodes(), pair.friction == FrictionLaw::kTresca ? pair.tau : 0.0);
-    if (pair.friction == FrictionLaw::kCoulomb) {
-      any_coulomb = true;
-      if (previous && p < static_cast<int>(previous->nodal_tau.size()) &&
-          previous->nodal_tau[p].size() == s.num_nodes() && previous->nodal_tau[p].maxCoeff() > 0.0) {
-        rep.friction.nodal_tau[p] = previous->nodal_tau[p];
-        warm = true;
-        if (s_extrapolate > 0.0 && p < static_cast<int>(previous->previous_tau.size()) &&
-            previous->previous_tau[p].size() == s.num_nodes())
-          rep.friction.nodal_tau[p] =
-              (previous->nodal_tau[p] + s_extrapolate * (previous->nodal_tau[p] - previous->previous_tau[p]))
-                  .cwiseMax(0.0);
-      }
-    }
-  }
-  const VectorXd u_step_start = u;
-  if (warm && s_extrapolate > 0.0) {
-    u += s_extrapolate * (u - previous->u_start);
-    std::ostringstream m;
-    m << "  predictor: the previous step's increment extrapolated (scale " << s_extrapolate << ")";
-    log.detail(m.str());
-  }
-  // Inexact inner solves (FrictionalOptions::inner_tolerance_factor): the geometry fixed point of a solve
-  // stops at factor × the threshold change that set its τ (1 before any is known: the frictionless start,
-  // or the previous step's thresholds); without a Coulomb pair the one solve is the answer, to full tolerance.
-  bool inexact = any_coulomb && energy.hessian_is_constant() && options.inner_tolerance_factor > 0.0;
-  ContactSolveOptions inner = options.contact;  ///< tightened when the fixed point stagnates (InnerAccuracy)
-  bool same_loads = false;
-  // Between two solves only the surfaces are read (pressures, slips, the next search): with a condensed
-  // workspace each solve leaves the interior out of date (ContactSolveOptions::lazy_interior) and u is made
-  // whole once, when this load step ends — also when it throws (the last iterate is kept for inspection).
-  const std::shared_ptr<ContactWorkspace> workspace = options.contact.workspace;
-  struct CompleteOnExit {
-    const EnergyTerm& energy;
-    const FixedDofs& fixed;
-    VectorXd& u;
-    ContactWorkspace* ws;
-    void now() {
-      if (ws) complete_interior(energy, fixed, u, *ws);
-    }
-    ~CompleteOnExit() {  // a throw in flight: complete what can be, never throw from here
-      try {
-        now();
-      } catch (...) {
-      }
-    }
-  } complete_on_exit{energy, fixed, u, workspace.get()};
-  auto solve = [&](double threshold_change) {
-    ContactSolveOptions o = inner;
-    if (inexact) o.loose_geometry_tolerance = options.inner_tolerance_factor * threshold_change;
-    o.same_loads = same_loads;
-    o.lazy_interior = options.lazy_interior;  // solve_contact applies it where it condenses (workspace, linear elasticity)
-    ContactSolveReport r = solve_contact(energy, fixed, contacts, dofs, u, o, log, any_friction ? &rep.friction : nullptr);
-    same_loads = true;  // the later solves of this call: the same load step, whose load part is now known
-    rep.geometry_iterations += r.geometry_iterations;
-    rep.ipopt_iterations += r.ipopt_iterations;
-    rep.times.merge(r.times);
-    rep.last = std::move(r);
-  };
-  if (warm) {
-    // A warm start the solve cannot take (IPOPT failing from a start the moved boundary made far
-    // infeasible, with the friction already on) falls back to the frictionless start.
-    try {
-      solve(1.0);
-    } catch (const SolveError& e) {
-      log.detail(std::string("  warm-started Coulomb solve failed (") + e.what() + "); starting frictionless");
-      u = u_step_start;
-      warm = false;
-      for (int p = 0; p < np; ++p)
-        if (contacts.pairs[p].friction == FrictionLaw::kCoulomb) rep.friction.nodal_tau[p].setZero();
-      solve(1.0);
-    }
-  } else {
-    solve(1.0);
-  }
-  if (!any_coulomb) {
-    complete_on_exit.now();
-    return rep;
-  }
-  std::vector<Eigen::VectorXd> r_prev;  // r_{k−1}, per pair (empty before the first Tresca solve)
-  double omega = 1.0;
-  double scale = 1.0;  ///< of the next solve's loose geometry tolerance: the last ‖r_k‖∞ / ‖τ_k‖∞ (1 before)
-  FixedPointMonitor monitor;
-  int tightenings = 0;         ///< inner accuracy raised this many times (at most kMaxTightenings)
-  bool confirming = false;     ///< the last solve confirmed, to full tolerance, a change met on an inexact one
-  for (int k = 1;; ++k) {
-    // r_k = μ p_k − τ_k for every Coulomb pair (τ_0 = 0: the frictionless solve).
-    const std::vector<Eigen::VectorXd> r = coulomb_residuals(contacts, dofs, u, rep, log);
-    if (k > 1 || warm) {
-      const int iteration = k - (warm ? 0 : 1);
-      const double change = relative_change(r, rep.friction.nodal_tau);
-      scale = change;
-      rep.coulomb_change.push_back(change);
-      monitor.record(change);
-      omega = aitken_relaxation(r, r_prev, omega);
-      rep.coulomb_relaxation.push_back(omega);
-      std::ostringstream s;
-      s << "  Coulomb iteration " << iteration << ": threshold change " << change << ", relaxation " << omega;
-      log.detail(s.str());
-      if (change < options.coulomb_tolerance) {
-        // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an
-        // inexact one, one more solve at full tolerance (its τ moves by less than the tolerance).
-        if (rep.last.converged) break;
-        log.detail("  thresholds settled on an inexact solve; one more solve to the geometry tolerance");
-        scale = 0.0;
-      } else if (confirming && inexact) {
-        // The exact solve moved the thresholds back above the tolerance: the inexact solves' error was larger
-        // than their change showed. The rest of the step solves to full tolerance, so that this cannot repeat.
-        inexact = false;
-        log.detail("  the solve to full tolerance undid the inexact solves' convergence; inner solves exact from now on");
-      }
-      confirming = scale == 0.0;
-      if (monitor.stagnated()) {
-        if (tightenings < kMaxTightenings) {
-          ++tightenings;
-          inexact = false;
-          tighten(inner);
-          std::ostringstream m;
-          m << "  the Coulomb fixed point stagnated (no new low below " << monitor.best()
-            << "); inner solves tightened to IPOPT tol " << inner.ipopt.tolerance << ", geometry tolerance "
-            << inner.geometry_tolerance;
-          log.detail(m.str());
-          monitor.restart();
-        } else if (rep.last.converged && change <= options.stagnation_acceptance) {
-          rep.accepted_at_noise_floor = change;
-          std::ostringstream m;
-          m << "Coulomb fixed point: the thresholds stopped changing at " << change << " of their size (tolerance "
-            << options.coulomb_tolerance << "), the noise floor of the inner solves; accepted: the friction law holds to "
-            << change << " (acceptance " << options.stagnation_acceptance << ")";
-          log.warning(m.str());
-          break;
-        } else {
-          throw SolveError(coulomb_failure("stagnated", iteration, change, options, tightenings, inner, monitor));
-        }
-      }
-      if (iteration >= options.max_coulomb_iterations)
-        throw SolveError(coulomb_failure("did not converge", iteration, change, options, tightenings, inner, monitor));
-    }
-    for (int p = 0; p < np; ++p)
-      if (r[p].size() > 0)
-        rep.friction.nodal_tau[p] = (rep.friction.nodal_tau[p] + (k > 1 || warm ? omega : 1.0) * r[p]).cwiseMax(0.0);
-    r_prev = r;
-    rep.coulomb_iterations = k;
-    solve(scale);
-  }
-  complete_on_exit.now();
-  return rep;
+  return CoulombFixedPoint(energy, fixed, contacts, dofs, u, options, log, previous).run();
 }
 
 }  // namespace symcontact

@@ -69,6 +69,9 @@ struct StaticCondensation::Impl {
     if (factor) cholmod_l_free_factor(&factor, &common);
     factor = nullptr;
   }
+  std::vector<Index> interior_ordering(const SparseMatrix& lower, Index ni);
+  VectorXd factorise_augmented(const SparseMatrix& lower);
+  void extract_schur(const SparseMatrix& lower, const VectorXd& d, Index ni);
   /// x ← solution of `sys` (CHOLMOD_L or CHOLMOD_Lt, no permutation) with right-hand side x.
   void triangular_solve(int sys, VectorXd& x) {
     cholmod_dense b = view_vector(x);
@@ -106,13 +109,27 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
   const Index ni = n - nb;
   if (nb == 0 || ni == 0) throw SolveError("static condensation needs a non-empty interior and boundary");
 
-  // 1. CHOLMOD's fill-reducing ordering of K_II (its default choice among AMD and METIS).
+  // 1. CHOLMOD's fill-reducing ordering of K_II, then B last.
+  const std::vector<Index> interior = m.interior_ordering(lower, ni);
+  m.perm.resize(n);
+  for (Index k = 0; k < ni; ++k) m.perm[k] = interior[k];
+  for (Index k = 0; k < nb; ++k) m.perm[ni + k] = boundary[k];
+  // 2. K̃ = K + diag(0, D), D = diag(K_BB), factorised in that ordering (no postordering, so that B stays last).
+  const VectorXd d = m.factorise_augmented(lower);
+  // 3. S = L_BB L_BBᵀ − D from the factor.
+  m.extract_schur(lower, d, ni);
+  m.k = lower;
+}
+
+/// The interior DOFs in CHOLMOD's fill-reducing ordering of K_II (its default choice among AMD and METIS).
+std::vector<Index> StaticCondensation::Impl::interior_ordering(const SparseMatrix& lower, Index ni) {
+  Impl& m = *this;
   std::vector<Index> interior_index(n, -1), interior;
   interior.reserve(ni);
-  for (Index k = 0; k < n; ++k)
-    if (m.position[k] < 0) {
-      interior_index[k] = static_cast<Index>(interior.size());
-      interior.push_back(k);
+  for (Index q = 0; q < n; ++q)
+    if (m.position[q] < 0) {
+      interior_index[q] = static_cast<Index>(interior.size());
+      interior.push_back(q);
     }
   std::vector<CholmodIndex> ordering_ii;
   {
@@ -140,20 +157,25 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
     ordering_ii.assign(p, p + ni);
     cholmod_l_free_factor(&symbolic, &m.common);
   }
-  m.perm.resize(n);
-  for (Index k = 0; k < ni; ++k) m.perm[k] = interior[ordering_ii[k]];
-  for (Index k = 0; k < nb; ++k) m.perm[ni + k] = boundary[k];
+  std::vector<Index> ordered(ni);
+  for (Index q = 0; q < ni; ++q) ordered[q] = interior[ordering_ii[q]];
+  return ordered;
+}
 
-  // 2. K̃ = K + diag(0, D), D = diag(K_BB), factorised in that ordering (no postordering, so that B stays last).
+/// Factorises K̃ = K + diag(0, D), D = diag(K_BB), in the ordering perm (no postordering, so that B stays
+/// last, as supernodes at the end of the factor). Returns D.
+VectorXd StaticCondensation::Impl::factorise_augmented(const SparseMatrix& lower) {
+  Impl& m = *this;
+  const Index nb = static_cast<Index>(m.boundary.size());
   CholmodSparseMatrix kt = to_cholmod_long(lower);
   VectorXd d = VectorXd::Zero(nb);
-  for (Index k = 0; k < nb; ++k) {
-    const Index j = boundary[k];
+  for (Index q = 0; q < nb; ++q) {
+    const Index j = boundary[q];
     bool found = false;
     for (CholmodSparseMatrix::InnerIterator it(kt, j); it; ++it)
       if (it.row() == j) {
-        d[k] = std::abs(it.value()) > 0 ? std::abs(it.value()) : 1.0;
-        it.valueRef() += d[k];
+        d[q] = std::abs(it.value()) > 0 ? std::abs(it.value()) : 1.0;
+        it.valueRef() += d[q];
         found = true;
         break;
       }
@@ -174,8 +196,8 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
                      std::to_string(m.common.status) + "): the factor probably does not fit in the memory");
   }
   const auto* fperm = static_cast<const CholmodIndex*>(m.factor->Perm);
-  for (Index k = 0; k < n; ++k)
-    if (fperm[k] != m.perm[k]) {
+  for (Index q = 0; q < n; ++q)
+    if (fperm[q] != m.perm[q]) {
       m.release();
       throw SolveError("static condensation: CHOLMOD did not keep the given ordering");
     }
@@ -191,9 +213,16 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
     throw SolveError("static condensation: CHOLMOD returned a simplicial factor");
   }
 
-  // 3. L_BB from the supernodes holding the last nb columns; S = L_BB L_BBᵀ − D. On the way, the interior
-  // pivots: a body that floats once B is held gives a pivot L_jj² at round-off level of K_jj rather than
-  // a negative one (CHOLMOD then "succeeds"), so a relative pivot below kSingularPivot is a failure too.
+  return d;
+}
+
+/// S = L_BB L_BBᵀ − D, with L_BB from the supernodes holding the last nb columns of the factor. On the way, the
+/// interior pivots are checked: a body that floats once B is held gives a pivot L_jj² at round-off level of
+/// K_jj rather than a negative one (CHOLMOD then "succeeds"), so a relative pivot below kSingularPivot is a
+/// failure too.
+void StaticCondensation::Impl::extract_schur(const SparseMatrix& lower, const VectorXd& d, Index ni) {
+  Impl& m = *this;
+  const Index nb = static_cast<Index>(m.boundary.size());
   constexpr double kSingularPivot = 1e-11;
   VectorXd kdiag = VectorXd::Zero(n);
   for (int j = 0; j < lower.outerSize(); ++j)
@@ -205,11 +234,11 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
   const auto* px = static_cast<const CholmodIndex*>(m.factor->px);
   const auto* s = static_cast<const CholmodIndex*>(m.factor->s);
   const double* lx = static_cast<const double*>(m.factor->x);
-  for (size_t k = 0; k < m.factor->nsuper; ++k) {
-    const Index k1 = super[k], k2 = super[k + 1];
-    const Index nsrow = pi[k + 1] - pi[k];
-    const CholmodIndex* rows = s + pi[k];
-    const double* x = lx + px[k];
+  for (size_t q = 0; q < m.factor->nsuper; ++q) {
+    const Index k1 = super[q], k2 = super[q + 1];
+    const Index nsrow = pi[q + 1] - pi[q];
+    const CholmodIndex* rows = s + pi[q];
+    const double* x = lx + px[q];
     for (Index jj = 0; jj < k2 - k1; ++jj) {
       const Index col = k1 + jj;
       if (col < ni) {
@@ -244,7 +273,6 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
     for (Index i = j; i < nb; ++i)
       if (sd(i, j) != 0.0 || i == j) m.schur.insert(i, j) = sd(i, j);
   m.schur.makeCompressed();
-  m.k = lower;
 }
 
 VectorXd StaticCondensation::solve_interior(const VectorXd& r) const {
