@@ -120,7 +120,7 @@ struct ContactSolverSpec {
   /// The dual's optimiser: the dense interior point (true, "interior_point") or IPOPT (false, "ipopt").
   bool dual_interior_point = true;
   /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
-  /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
+  /// halvings (solvers/load_step.hpp); 0: no cutting, a failed step ends the run.
   int max_step_cuts = 0;
   /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
   std::map<std::string, std::string> ipopt_string;

@@ -1,4 +1,4 @@
-// The automatic step-cutting schedule (model/load_step.hpp), with attempts that fail by rule; the solve
+// The automatic step-cutting schedule (solvers/load_step.hpp), with attempts that fail by rule; the solve
 // itself is exercised by tests/validation/test_step_cutting.cpp and the frictional ironing test.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "symcontact/core/error.hpp"
-#include "symcontact/model/load_step.hpp"
+#include "symcontact/solvers/load_step.hpp"
 
 using namespace symcontact;
 
