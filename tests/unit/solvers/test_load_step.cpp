@@ -85,12 +85,3 @@ TEST(StepCutting, WithoutCutsTheErrorIsPassedOnUnchanged) {
   }
   EXPECT_EQ(f.tried.size(), 1u);
 }
-
-TEST(StepCutting, StepFactorsAreInterpolatedBetweenSteps) {
-  const std::vector<double> global = {0.5, 1.0}, own = {0.2, 0.6};
-  EXPECT_EQ(step_factor({}, global, 0, 0.5), 0.25);  // from the unloaded start
-  EXPECT_EQ(step_factor({}, global, 1, 0.5), 0.75);
-  EXPECT_DOUBLE_EQ(step_factor(own, global, 1, 0.25), 0.3);
-  EXPECT_EQ(step_factor(own, global, 1, 1.0), 0.6);
-  EXPECT_EQ(step_factor(own, global, 1), 0.6);
-}
