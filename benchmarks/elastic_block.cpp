@@ -7,6 +7,7 @@
 #include <string>
 #include <limits>
 
+#include "symcontact/core/error.hpp"
 #include "symcontact/energy/external_load.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/materials/linear_elastic.hpp"

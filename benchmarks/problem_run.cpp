@@ -6,6 +6,7 @@
 
 #include "bench_support.hpp"
 #include "symcontact/app/run.hpp"
+#include "symcontact/core/error.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/model/problem_reader.hpp"

@@ -1,4 +1,4 @@
-// Automatic step cutting ([contact_solver] max_step_cuts, model/load_step.hpp) on a real solve: a
+// Automatic step cutting ([contact_solver] max_step_cuts, solvers/load_step.hpp) on a real solve: a
 // Neo-Hookean block (2 × 1, E = 1, ν = 0.3) whose top is pushed down 0.25 onto a rigid cylinder
 // (radius 0.5) under its bottom. In one step the geometry fixed point needs 12 iterations; in two, 7 and
 // 11. With max_geometry_iterations = 11 the whole step therefore fails, and with one cut allowed the run

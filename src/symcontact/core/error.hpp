@@ -6,6 +6,8 @@
 /// - Problems a user can cause (a malformed file, a missing physical group, nu >= 0.5, an inverted
 ///   element) throw InputError, always on, with the file, the key or entity, and what was expected.
 /// - A solve that does not converge throws SolveError; the CLI maps the two to distinct exit codes.
+/// - A state at which a function of the unknowns cannot be evaluated (det F ≤ 0) throws
+///   EvaluationError: an optimiser catches it and backs away; it is never shown to the user as such.
 
 #include <cassert>
 #include <stdexcept>
@@ -37,6 +39,13 @@ class InputError : public std::runtime_error {
 
  private:
   std::string file_, key_, message_;
+};
+
+/// A state at which an energy cannot be evaluated (e.g. det F ≤ 0): the optimiser should back away.
+/// Thrown by materials and energy terms, caught by the optimisers and the solvers (optim/, solvers/).
+class EvaluationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 /// A solve that failed (did not converge, diverged, or met an evaluation failure).

@@ -7,21 +7,15 @@
 /// Contract: u is the global DOF vector (DofMap layout). add_gradient() adds ∂E/∂u into g (same size
 /// as u); add_hessian() adds ∂²E/∂u² as dense element blocks into a MatrixSink. All three are
 /// evaluated at the same u and are consistent (checked by finite differences in the tests).
-/// An evaluation that is impossible at u (an inverted element) throws EvaluationError.
+/// An evaluation that is impossible at u (an inverted element) throws EvaluationError (core/error.hpp).
 
-#include <stdexcept>
 #include <string>
 
+#include "symcontact/core/error.hpp"
 #include "symcontact/core/types.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
 
 namespace symcontact {
-
-/// A state at which an energy cannot be evaluated (e.g. det F ≤ 0): the optimiser should back away.
-class EvaluationError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class EnergyTerm {
  public:

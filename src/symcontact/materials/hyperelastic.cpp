@@ -6,7 +6,6 @@
 #include <Eigen/Dense>
 
 #include "symcontact/core/error.hpp"
-#include "symcontact/energy/energy_term.hpp"  // EvaluationError
 
 namespace symcontact {
 

@@ -1,83 +1,17 @@
 #include "symcontact/model/load_step.hpp"
 
-#include <cmath>
-#include <sstream>
-
-#include "symcontact/core/error.hpp"
-
 namespace symcontact {
-
-std::vector<double> solve_in_substeps(
-    int max_cuts, const std::function<void(double from, double to)>& attempt,
-    const std::function<void(double from, double to, const std::string& error, int cuts)>& on_cut) {
-  std::vector<double> ends;
-  double done = 0.0;  // fraction of the step reached
-  int cuts = 0;
-  while (done < 1.0) {
-    // The last sub-step ends at exactly 1, so that the step's own loads are met without round-off.
-    const double next = done + std::ldexp(1.0, -cuts);
-    const double target = next >= 1.0 - 1e-12 ? 1.0 : next;
-    try {
-      attempt(done, target);
-    } catch (const SolveError& e) {
-      if (cuts >= max_cuts) {
-        if (max_cuts == 0) throw;
-        std::ostringstream s;
-        s << e.what() << " (sub-step from " << done << " to " << target << " of the load step, after " << cuts
-          << " halving" << (cuts == 1 ? "" : "s") << " of the increment, the most allowed: max_step_cuts)";
-        throw SolveError(s.str());
-      }
-      ++cuts;
-      if (on_cut) on_cut(done, target, e.what(), cuts);
-      continue;
-    }
-    ends.push_back(target);
-    done = target;
-  }
-  return ends;
-}
 
 LoadStepReport solve_load_step(Model& model, int step, VectorXd& u, FrictionState& friction,
                                const FrictionalOptions& options, int max_cuts, const Logger& log) {
-  LoadStepReport rep;
-  auto attempt = [&](double, double to) {
-    const VectorXd u0 = u;
-    const FrictionState friction0 = friction;
-    model.set_step(step, to);
-    const FixedDofs fixed = model.fixed_dofs(step, to);
-    FrictionalReport fr;
-    try {
-      fr = solve_frictional_contact(model.energy(), fixed, model.contacts(), model.dofs(), u, options, log,
-                                    friction.nodal_tau.empty() ? nullptr : &friction);
-    } catch (const SolveError&) {
-      if (rep.cuts < max_cuts) {  // to be retried: back to the start of the increment
-        u = u0;
-        friction = friction0;
-      }
-      throw;
-    }
-    rep.geometry_iterations += fr.geometry_iterations;
-    rep.ipopt_iterations += fr.ipopt_iterations;
-    rep.coulomb_iterations += fr.coulomb_iterations;
-    rep.times.merge(fr.times);
-    friction = fr.friction;
-    rep.last = std::move(fr);
-    if (to < 1.0 || rep.cuts > 0) {
-      std::ostringstream s;
-      s << "  load step " << step + 1 << ": sub-step to " << to << " converged";
-      log.detail(s.str());
-    }
+  const auto move_to = [&model, step](double fraction) {
+    model.set_step(step, fraction);
+    return model.fixed_dofs(step, fraction);
   };
-  auto on_cut = [&](double from, double to, const std::string& error, int cuts) {
-    rep.cuts = cuts;
-    std::ostringstream s;
-    s << "  load step " << step + 1 << ": the increment from " << from << " to " << to << " failed (" << error
-      << "); halving it (cut " << cuts << " of at most " << max_cuts << ")";
-    log.detail(s.str());
-  };
-  rep.substeps = solve_in_substeps(max_cuts, attempt, on_cut);
+  const LoadStepProblem problem{model.energy(), model.contacts(), model.dofs(), move_to, step};
+  LoadStepReport report = solve_load_step(problem, u, friction, options, max_cuts, log);
   model.set_step(step);
-  return rep;
+  return report;
 }
 
 }  // namespace symcontact

@@ -1,47 +1,14 @@
 #pragma once
 /// \file load_step.hpp
-/// One load step of a model's contact problem, with automatic step cutting.
-///
-/// The step goes from the state u (the previous step's solution) to the loads and imposed displacements
-/// of step `step`. When its solve fails (SolveError: IPOPT failing, the geometry or the Coulomb fixed
-/// point not converging, an inverted element), u and the friction state are put back to the start of the
-/// failed increment and the increment is halved, up to `max_cuts` times: after c cuts the increment is
-/// 1/2^c of the step. The sub-steps then go on at that size to the end of the step (no growing back
-/// within a step; the next step starts whole again). Within a step every load and imposed displacement
-/// is interpolated linearly between its factors at step − 1 and step (Model::set_step), which is the
-/// load curve itself between its whole-numbered points. Each sub-step is a load step of its own for
-/// friction: its slip increments are measured from its start, and its Coulomb iteration starts from the
-/// thresholds the previous sub-step converged to.
-/// With max_cuts = 0 (the default) this is one solve, as without cutting.
-
-#include <functional>
-#include <vector>
+/// One load step of a model's contact problem: solvers/load_step.hpp (automatic step cutting around the
+/// frictional contact solve) on the model's energy, contact pairs and DOF numbering, its loads moved
+/// through the step by Model::set_step and its Dirichlet conditions by Model::fixed_dofs.
 
 #include "symcontact/core/log.hpp"
 #include "symcontact/model/model.hpp"
-#include "symcontact/solvers/frictional_contact.hpp"
+#include "symcontact/solvers/load_step.hpp"
 
 namespace symcontact {
-
-/// The cutting schedule alone. Calls attempt(from, to) on increments of the step [0, 1] in order, from
-/// (0, 1); an attempt that throws SolveError must leave the state as it was at `from`: the increment is
-/// then halved (at most max_cuts times in all) and tried again. Returns the end fraction of every
-/// converged sub-step (the last is 1). Rethrows the SolveError of an attempt made after max_cuts cuts —
-/// as it is when max_cuts = 0, else with the sub-step and the number of cuts appended to its message.
-/// `on_cut(from, to, error, cuts)` (optional) is told of every failed attempt that is cut.
-std::vector<double> solve_in_substeps(
-    int max_cuts, const std::function<void(double from, double to)>& attempt,
-    const std::function<void(double from, double to, const std::string& error, int cuts)>& on_cut = nullptr);
-
-struct LoadStepReport {
-  FrictionalReport last;         ///< the final (sub-)step's solve
-  int cuts = 0;                  ///< halvings of the increment (0: solved whole)
-  std::vector<double> substeps;  ///< end fraction of every converged sub-step ({1} when solved whole)
-  int geometry_iterations = 0;   ///< over the converged sub-steps
-  int ipopt_iterations = 0;      ///< over the converged sub-steps
-  int coulomb_iterations = 0;    ///< over the converged sub-steps
-  PhaseTimes times;              ///< over the converged sub-steps
-};
 
 /// Solves load step `step` (0-based) of `model` from u (on exit the solution; on a SolveError, the last
 /// iterate of the final failed attempt). `friction` holds the friction state the previous step ended with

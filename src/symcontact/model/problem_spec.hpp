@@ -123,7 +123,7 @@ struct ContactSolverSpec {
   /// The dual's optimiser (dual_optimizer = "interior_point" or "ipopt"; SubproblemSolver).
   DualOptimizer dual_optimizer = DualOptimizer::kInteriorPoint;
   /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
-  /// halvings (model/load_step.hpp); 0: no cutting, a failed step ends the run.
+  /// halvings (solvers/load_step.hpp); 0: no cutting, a failed step ends the run.
   int max_step_cuts = 0;
   /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
   std::map<std::string, std::string> ipopt_string;

@@ -20,7 +20,7 @@ class ConstrainedProblem {
  public:
   virtual ~ConstrainedProblem() = default;
   virtual Index num_variables() const = 0;
-  /// f(x). May throw EvaluationError (energy/energy_term.hpp) when f cannot be evaluated at x.
+  /// f(x). May throw EvaluationError (core/error.hpp) when f cannot be evaluated at x.
   virtual double objective(const VectorXd& x) = 0;
   /// g = ∇f(x) (g is resized by the callee).
   virtual void gradient(const VectorXd& x, VectorXd& g) = 0;

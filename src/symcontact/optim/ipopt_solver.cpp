@@ -21,7 +21,6 @@
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/interrupt.hpp"
 #include "symcontact/core/timer.hpp"
-#include "symcontact/energy/energy_term.hpp"
 
 namespace symcontact {
 namespace {

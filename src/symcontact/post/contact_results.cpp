@@ -87,28 +87,28 @@ std::vector<int> dof_owners(const ContactSet& cs, const ContactLinearization& li
   return owner;
 }
 
-PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactSolveReport& report,
+PairForce pair_force(const ContactSet& cs, const VectorXd& u, const ContactState& state,
                      const std::vector<int>& owner, int pi) {
-  const ContactLinearization& lin = report.linearization;
+  const ContactLinearization& lin = state.linearization;
   PairForce f;
   f.normal = VectorXd::Zero(u.size());
   f.defect = VectorXd::Zero(u.size());
   f.tangential = VectorXd::Zero(u.size());
-  if (report.multipliers.size() == lin.A.rows() && lin.A.cols() == u.size()) {
-    VectorXd mu = VectorXd::Zero(report.multipliers.size());
+  if (state.multipliers.size() == lin.A.rows() && lin.A.cols() == u.size()) {
+    VectorXd mu = VectorXd::Zero(state.multipliers.size());
     for (Index r = 0; r < mu.size(); ++r)
       if (cs.families()[lin.row_family[r]].pair == pi) {
-        mu[r] = report.multipliers[r];
+        mu[r] = state.multipliers[r];
         f.normal_load += mu[r] * lin.row_support[r];
       }
     f.normal = lin.A.transpose() * mu;
   }
   // The solve's equilibrium defect goes to the normal part of the pair that alone touches the DOF.
-  if (report.force_defect.size() == u.size())
+  if (state.force_defect.size() == u.size())
     for (Index d = 0; d < u.size(); ++d)
-      if (owner[d] == pi) f.defect[d] = report.force_defect[d];
-  if (pi < static_cast<int>(report.friction.size()) && report.friction[pi]) {
-    report.friction[pi]->add_gradient(u, f.tangential);
+      if (owner[d] == pi) f.defect[d] = state.force_defect[d];
+  if (pi < static_cast<int>(state.friction.size()) && state.friction[pi]) {
+    state.friction[pi]->add_gradient(u, f.tangential);
     f.tangential = -f.tangential;
   }
   return f;
@@ -127,7 +127,7 @@ Eigen::MatrixXd nodal_values(const ContactSurface& s, const DofMap& dofs, const 
 /// traction per lumped reference area (in the test basis, surface_tractions.hpp), gaps, slips.
 /// `multiplier_pressure`: the pressure of Aᵀμ_p alone (for the status: exactly zero where no active row reaches).
 ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofMap& dofs, const VectorXd& u,
-                              const PairForce& pf, const ContactSolveReport& report,
+                              const PairForce& pf, const ContactState& state,
                               Eigen::VectorXd& multiplier_pressure) {
   const ContactPair& pair = cs.pairs[pi];
   const int si = side == 0 ? pair.surface_a : pair.surface_b;
@@ -160,9 +160,9 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
     sr.tangential.col(k) = ft.col(k) / s.nodal_area[k];
     if (current_area[k] > 0) sr.current_pressure[k] = sr.pressure[k] * s.nodal_area[k] / current_area[k];
   }
-  const bool has_friction = pi < static_cast<int>(report.friction.size()) && report.friction[pi];
+  const bool has_friction = pi < static_cast<int>(state.friction.size()) && state.friction[pi];
   const bool friction_side = has_friction && si == cs.families()[cs.friction_family(pi)].slave;
-  sr.slip = friction_side ? nodal_slips(s, *report.friction[pi], u)
+  sr.slip = friction_side ? nodal_slips(s, *state.friction[pi], u)
                           : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
   return sr;
 }
@@ -182,21 +182,21 @@ void set_status(ContactSideResult& sr, const Eigen::VectorXd& multiplier_pressur
 }  // namespace
 
 std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMap& dofs, const VectorXd& u,
-                                               const ContactSolveReport& report) {
+                                               const ContactState& state) {
   std::vector<ContactPairResult> out;
-  const std::vector<int> owner = dof_owners(cs, report.linearization, u.size());
+  const std::vector<int> owner = dof_owners(cs, state.linearization, u.size());
   for (int pi = 0; pi < static_cast<int>(cs.pairs.size()); ++pi) {
     const ContactPair& pair = cs.pairs[pi];
     ContactPairResult r;
     r.name = pair.name;
-    const PairForce pf = pair_force(cs, u, report, owner, pi);
+    const PairForce pf = pair_force(cs, u, state, owner, pi);
     r.normal_load = pf.normal_load;
     // One side for an obstacle and for self-contact (the surface is both sides), two otherwise.
     const int nsides = pair.obstacle >= 0 || pair.surface_a == pair.surface_b ? 1 : 2;
     std::vector<Eigen::VectorXd> multiplier_pressure(nsides);
     double max_multiplier_pressure = 0.0;
     for (int side = 0; side < nsides; ++side) {
-      r.sides.push_back(side_result(cs, pi, side, dofs, u, pf, report, multiplier_pressure[side]));
+      r.sides.push_back(side_result(cs, pi, side, dofs, u, pf, state, multiplier_pressure[side]));
       r.max_pressure = std::max(r.max_pressure, r.sides.back().pressure.maxCoeff());
       max_multiplier_pressure = std::max(max_multiplier_pressure, multiplier_pressure[side].maxCoeff());
     }

@@ -1,7 +1,7 @@
 #pragma once
 /// \file contact_results.hpp
 /// Contact quantities of every pair, from the final solve's multipliers μ and friction terms
-/// (ContactSolveReport::linearization, multipliers, friction). Each pair's force is its own:
+/// (ContactState::linearization, multipliers, friction; contact/contact_state.hpp). Each pair's force is its own:
 ///
 ///   F_p = A_pᵀ μ_p − ∇j_p(u),   normal part A_pᵀ μ_p,   tangential part −∇j_p,
 ///
@@ -9,7 +9,7 @@
 /// term (friction_term.hpp). The normal part is, row by row, along the row's own normals (those of the
 /// frozen gaps θ_q), so a frictionless pair has a tangential part of exactly zero; nothing is projected on
 /// nodal normals. At the KKT point Aᵀμ − Σ_p ∇j_p = ∇E(u) on the free DOFs, to the optimiser's tolerance
-/// (round-off where the polish or the dual closed the solve); that defect (ContactSolveReport::force_defect)
+/// (round-off where the polish or the dual closed the solve); that defect (ContactState::force_defect)
 /// is added to the normal part of the pair whose rows alone reach the DOF, so that the reported forces
 /// balance the loads as the residual does (the frictional patch tests: 1e-6 of p otherwise). Per side and
 /// per pair, total = normal + tangential as vectors; Σ over the pairs of the forces on a body's surface is
@@ -52,7 +52,8 @@
 #include <vector>
 
 #include "symcontact/contact/contact_set.hpp"
-#include "symcontact/solvers/contact_solver.hpp"
+#include "symcontact/contact/contact_state.hpp"
+#include "symcontact/fem/dof_map.hpp"
 
 namespace symcontact {
 
@@ -91,8 +92,9 @@ struct ContactPairResult {
   double contact_measure = 0.0;          ///< length (2D) or area (3D)
 };
 
-/// From the report of the final contact solve (linearization, multipliers, friction).
+/// From the contact state of the final contact solve (linearization, multipliers, friction); a
+/// ContactSolveReport is one (solvers/contact_solver.hpp).
 std::vector<ContactPairResult> contact_results(const ContactSet& contacts, const DofMap& dofs, const VectorXd& u,
-                                               const ContactSolveReport& report);
+                                               const ContactState& state);
 
 }  // namespace symcontact

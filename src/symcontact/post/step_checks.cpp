@@ -12,7 +12,7 @@ namespace symcontact {
 namespace {
 
 void check_finite(const Model& model, const VectorXd& u, const VectorXd& g,
-                  const ContactSolveReport* contact) {
+                  const ContactState* contact) {
   const DofMap& dofs = model.dofs();
   for (Index d = 0; d < u.size(); ++d) {
     if (std::isfinite(u[d]) && std::isfinite(g[d])) continue;
@@ -61,7 +61,7 @@ double check_penetration(const Model& model, const VectorXd& u) {
 
 /// Largest ‖r_b‖ / F over the bodies (step_checks.hpp); throws when above the tolerance.
 double check_equilibrium(const Model& model, const VectorXd& u, const VectorXd& g, const FixedDofs& fixed,
-                         const ContactSolveReport* contact) {
+                         const ContactState* contact) {
   const DofMap& dofs = model.dofs();
   VectorXd r = g;
   double contact_scale = 0.0;
@@ -105,7 +105,7 @@ double check_equilibrium(const Model& model, const VectorXd& u, const VectorXd& 
 }  // namespace
 
 StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDofs& fixed,
-                            const ContactSolveReport* contact) {
+                            const ContactState* contact) {
   VectorXd g = VectorXd::Zero(u.size());
   try {
     if (u.allFinite()) model.energy().add_gradient(u, g);

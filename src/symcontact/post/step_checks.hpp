@@ -20,8 +20,8 @@
 
 #include <string>
 
+#include "symcontact/contact/contact_state.hpp"
 #include "symcontact/model/model.hpp"
-#include "symcontact/solvers/contact_solver.hpp"
 
 namespace symcontact {
 
@@ -37,9 +37,10 @@ struct StepCheckFigures {
 };
 
 /// Runs the checks on a load step's solution u, with the Dirichlet conditions `fixed` of the step
-/// and, with contact, the report of its last contact solve (null without contact). Throws SolveError when one
-/// fails (the run prefixes the step); returns the figures otherwise.
+/// and, with contact, the contact state of its last contact solve (null without contact; a
+/// ContactSolveReport is one). Throws SolveError when one fails (the run prefixes the step); returns the
+/// figures otherwise.
 StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDofs& fixed,
-                            const ContactSolveReport* contact);
+                            const ContactState* contact);
 
 }  // namespace symcontact

@@ -1,6 +1,6 @@
 #include "symcontact/post/stress_recovery.hpp"
 
-#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/core/error.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
 #include "symcontact/fem/element_geometry.hpp"
 #include "symcontact/fem/shape_functions.hpp"

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "symcontact/core/error.hpp"
-#include "symcontact/energy/energy_term.hpp"
 #include "symcontact/solvers/cholesky.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
 

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "symcontact/contact/contact_set.hpp"
+#include "symcontact/contact/contact_state.hpp"
 #include "symcontact/contact/friction_term.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
@@ -117,7 +118,9 @@ constexpr int kMaxTightenings = 2;
 /// the dual reads the same tolerance.
 void tighten_optimiser(IpoptOptions& o);
 
-struct ContactSolveReport {
+/// The statistics of a solve and the contact state it ended with (contact/contact_state.hpp: linearization,
+/// multipliers, forces, friction terms), which is what the post-processing reads.
+struct ContactSolveReport : ContactState {
   int geometry_iterations = 0;
   int ipopt_iterations = 0;                 ///< summed over the geometry iterations
   std::vector<int> ipopt_per_iteration;
@@ -130,19 +133,9 @@ struct ContactSolveReport {
   Index num_constraints = 0;                ///< of the last linearisation
   Index num_condensed = 0;                  ///< DOFs IPOPT worked on when condensed (0: not condensed)
   int condensation_factorisations = 0;      ///< factorisations for the condensation in this call
-  int dual_solves = 0;                      ///< geometry iterations solved through the dual (ContactSolveOptions::dual)
+  int dual_solves = 0;                      ///< geometry iterations solved through the dual (SubproblemSolver)
   bool interior_deferred = false;           ///< u's interior was left out of date (ContactSolveOptions::lazy_interior)
   PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
-  ContactLinearization linearization;       ///< at the last geometry iterate
-  VectorXd multipliers;                     ///< μ of the last solve (one per row)
-  VectorXd contact_force;                   ///< F_c = Aᵀ μ (∇E(u) on free DOFs, see the .cpp), full DOF vector
-  VectorXd multiplier_force;                ///< Aᵀ μ alone (zero exactly where no constraint is active)
-  /// ∇E(u) − (Aᵀμ − ∇j) on the free DOFs of the contact surfaces where contact_force is the residual, 0
-  /// elsewhere: the optimiser's error in the multipliers' balance (round-off where the polish or the dual
-  /// closed the solve). j: the friction terms below.
-  VectorXd force_defect;
-  /// The friction terms of the last geometry iterate, per pair (null without friction).
-  std::vector<std::shared_ptr<const FrictionTerm>> friction;
 };
 
 /// On entry u is the starting point (previous load step); on exit the solution. `energy` is the bodies'

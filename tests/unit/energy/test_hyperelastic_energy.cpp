@@ -9,6 +9,7 @@
 #include <string>
 
 #include "support/finite_difference.hpp"
+#include "symcontact/core/error.hpp"
 #include "symcontact/energy/hyperelastic_energy.hpp"
 #include "symcontact/energy/linear_elastic_energy.hpp"
 #include "symcontact/mesh/structured.hpp"

@@ -12,7 +12,7 @@
 
 #include <Eigen/Dense>
 
-#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/core/error.hpp"
 #include "symcontact/materials/hyperelastic.hpp"
 
 using namespace symcontact;

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "symcontact/energy/energy_term.hpp"
+#include "symcontact/core/error.hpp"
 
 using namespace symcontact;
 

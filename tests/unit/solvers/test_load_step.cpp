@@ -1,4 +1,4 @@
-// The automatic step-cutting schedule (model/load_step.hpp), with attempts that fail by rule; the solve
+// The automatic step-cutting schedule (solvers/load_step.hpp), with attempts that fail by rule; the solve
 // itself is exercised by tests/validation/test_step_cutting.cpp and the frictional ironing test.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "symcontact/core/error.hpp"
-#include "symcontact/model/load_step.hpp"
+#include "symcontact/solvers/load_step.hpp"
 
 using namespace symcontact;
 
@@ -84,13 +84,4 @@ TEST(StepCutting, WithoutCutsTheErrorIsPassedOnUnchanged) {
     EXPECT_EQ(std::string(e.what()), "too long");
   }
   EXPECT_EQ(f.tried.size(), 1u);
-}
-
-TEST(StepCutting, StepFactorsAreInterpolatedBetweenSteps) {
-  const std::vector<double> global = {0.5, 1.0}, own = {0.2, 0.6};
-  EXPECT_EQ(step_factor({}, global, 0, 0.5), 0.25);  // from the unloaded start
-  EXPECT_EQ(step_factor({}, global, 1, 0.5), 0.75);
-  EXPECT_DOUBLE_EQ(step_factor(own, global, 1, 0.25), 0.3);
-  EXPECT_EQ(step_factor(own, global, 1, 1.0), 0.6);
-  EXPECT_EQ(step_factor(own, global, 1), 0.6);
 }
