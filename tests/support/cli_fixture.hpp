@@ -68,7 +68,7 @@ class CliTest : public ::testing::Test {
   /// Runs `check CASE` and `run CASE --out out`: each must exit 2 with every string of `expected` in its
   /// output; no output folder afterwards.
   void expect_refused_by_check_and_run(const std::string& case_file, std::initializer_list<std::string> expected) const {
-    for (const std::string cmd : {"check " + case_file, "run " + case_file + " --out out"}) {
+    for (const std::string& cmd : {"check " + case_file, "run " + case_file + " --out out"}) {
       const CliResult r = run(cmd);
       EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
       expect_all_in(r.output, expected);

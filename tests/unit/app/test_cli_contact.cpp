@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_fixture.hpp"
+#include "support/problem_snippet.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,6 +29,7 @@ namespace fs = std::filesystem;
 
 using symcontact::testing::CliResult;
 using symcontact::testing::read_text;
+using symcontact::testing::replaced;
 using symcontact::testing::shell_quote;
 
 const fs::path kHertzDir = fs::path(SYMCONTACT_EXAMPLES) / "hertz_2d";
@@ -75,15 +77,10 @@ class CliContact : public symcontact::testing::CliTest {
   /// as `name` in the test's folder.
   template <class Edit>
   fs::path write_hertz_case(const std::string& name, Edit edit) const {
-    std::string toml = read_text(kHertzCase);
     const std::string geo = "cylinder_on_plane.geo";
-    const std::size_t at = toml.find("\"" + geo + "\"");
-    EXPECT_NE(at, std::string::npos);
-    toml.replace(at, geo.size() + 2, "\"" + (kHertzDir / geo).string() + "\"");
+    std::string toml = replaced(read_text(kHertzCase), "\"" + geo + "\"", "\"" + (kHertzDir / geo).string() + "\"");
     edit(toml);
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << toml;
-    return p;
+    return write(name, toml);
   }
 
 };
@@ -194,16 +191,9 @@ TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
 
 TEST_F(CliContact, ContactOnAMissingBoundaryGroupIsAnInputError) {
   const fs::path f = write_hertz_case("missing_group.toml", [](std::string& t) {
-    const std::string a = "a = \"cylinder.contact\"";
-    t.replace(t.find(a), a.size(), "a = \"cylinder.nowhere\"");
+    t = replaced(t, "a = \"cylinder.contact\"", "a = \"cylinder.nowhere\"");
   });
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
-  EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
-  for (const std::string s : {"missing_group.toml", "contact[0].a", "nowhere"})
-    EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
-  EXPECT_FALSE(fs::exists(out)) << "an input error must not create the output folder";
+  expect_input_error(f, {"missing_group.toml", "contact[0].a", "nowhere"});
 }
 
 }  // namespace

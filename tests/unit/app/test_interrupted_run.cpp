@@ -22,16 +22,16 @@
 #include <thread>
 #include <vector>
 
+#include "support/temp_folder.hpp"
+
 extern char** environ;
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using symcontact::testing::read_text;
+using symcontact::testing::TempFolder;
 
 /// True when s, without trailing white space, ends with `tail`.
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -81,8 +81,8 @@ std::vector<std::string> temporaries(const fs::path& dir) {
 /// mark summary.json "interrupted" with its finished steps, name complete files only, and leave no
 /// temporary file.
 void expect_clean_stop(int signal, const std::string& signal_name) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_signal_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const TempFolder folder("symcontact_signal_");
+  const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
   const pid_t pid = start_friction_block_until_step_3(out);
   ASSERT_NE(pid, 0);
@@ -98,7 +98,6 @@ void expect_clean_stop(int signal, const std::string& signal_name) {
   EXPECT_NE(summary.find("\"step\": 3"), std::string::npos) << summary;
   EXPECT_TRUE(ends_with(read_text(out / "results.pvd"), "</VTKFile>"));
   EXPECT_TRUE(temporaries(out).empty()) << temporaries(out).front();
-  fs::remove_all(dir);
 }
 
 }  // namespace
@@ -108,8 +107,8 @@ TEST(InterruptedRun, SigtermStopsCleanlyWithExit143) { expect_clean_stop(SIGTERM
 TEST(InterruptedRun, SigintStopsCleanlyWithExit130) { expect_clean_stop(SIGINT, "SIGINT"); }
 
 TEST(InterruptedRun, TemporariesOfAKilledRunAreRemovedByTheNextRun) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_stale_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const TempFolder folder("symcontact_stale_");
+  const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
   fs::create_directories(out);
   // A process that has ended: its id names the temporaries of a "killed" run.
@@ -127,13 +126,11 @@ TEST(InterruptedRun, TemporariesOfAKilledRunAreRemovedByTheNextRun) {
   EXPECT_FALSE(fs::exists(out / stale));
   EXPECT_TRUE(fs::exists(out / "notes.tmp-draft"));
   EXPECT_TRUE(fs::is_regular_file(out / "summary.json"));
-  fs::remove_all(dir);
 }
 
 TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_killed_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const TempFolder folder("symcontact_killed_");
+  const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
   const pid_t pid = start_friction_block_until_step_3(out);
   ASSERT_NE(pid, 0);
@@ -166,5 +163,4 @@ TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
   EXPECT_TRUE(ends_with(summary, "}")) << summary;
   EXPECT_NE(summary.find("\"status\": \"running\""), std::string::npos);
   EXPECT_NE(summary.find("\"step\": 2"), std::string::npos);
-  fs::remove_all(dir);
 }
