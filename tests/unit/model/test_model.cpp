@@ -9,14 +9,13 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <sstream>
 #include <string>
 
+#include "support/model_case.hpp"
 #include "support/problem_snippet.hpp"
 #include "support/rectangle_msh.hpp"
 #include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
-#include "symcontact/model/problem_reader.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
 namespace symcontact {
@@ -55,11 +54,8 @@ class ModelTest : public ::testing::Test {
   void build(const std::string& text) {
     testing::write_rectangle_msh(folder_ / "block.msh", 2.0, 1.0, 2, 1);
     testing::write_rectangle_msh(folder_ / "lid.msh", 1.0, 1.0, 1, 1);
-    spec_ = parse_problem(text, "case.toml", folder_.path().string());
-    std::ostringstream quiet;
-    const Logger log(quiet, Verbosity::kQuiet);
-    PhaseTimes times;
-    model_ = Model::build(spec_, log, times);
+    case_ = testing::build_model(text, folder_.path());
+    model_ = case_->model.get();
   }
   /// The global DOF of component `comp` of the node of body `body` at (x, y).
   Index dof_at(int body, double x, double y, int comp) const {
@@ -85,8 +81,8 @@ class ModelTest : public ::testing::Test {
   }
 
   const testing::TempFolder folder_;
-  ProblemSpec spec_;
-  std::unique_ptr<Model> model_;
+  std::unique_ptr<testing::ModelCase> case_;
+  Model* model_ = nullptr;
 };
 
 TEST_F(ModelTest, DofNumberingOfTwoBodies) {
