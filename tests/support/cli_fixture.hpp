@@ -31,7 +31,7 @@ inline void expect_all_in(const std::string& output, std::initializer_list<std::
   }
 }
 
-/// A test with its own folder `dir_` (named after the test) and `run(args)`.
+/// A test with its own folder `dir_` (named after the test), `run(args)` and `run_case(file)`.
 class CliTest : public ::testing::Test {
  protected:
   explicit CliTest(const std::string& prefix) : folder_(prefix), dir_(folder_.path()) {}
@@ -48,6 +48,11 @@ class CliTest : public ::testing::Test {
     return r;
   }
 
+  /// Runs `symcontact run CASE --out <folder>/out EXTRA`: the results land in out_.
+  CliResult run_case(const std::filesystem::path& case_file, const std::string& extra = "") const {
+    return run("run " + shell_quote(case_file) + " --out " + shell_quote(out_) + " " + extra);
+  }
+
   /// Writes `text` as `name` in the test's folder and returns its path.
   std::filesystem::path write(const std::string& name, const std::string& text) const {
     return folder_.write(name, text);
@@ -57,12 +62,11 @@ class CliTest : public ::testing::Test {
   /// in `expected`, and no output folder.
   void expect_input_error(const std::filesystem::path& case_file, std::initializer_list<std::string> expected,
                           const std::string& extra = "") const {
-    const std::filesystem::path out = dir_ / "out";
-    const CliResult r = run("run " + shell_quote(case_file) + " --out " + shell_quote(out) + " " + extra);
+    const CliResult r = run_case(case_file, extra);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
     expect_all_in(r.output, expected);
-    EXPECT_FALSE(std::filesystem::exists(out)) << "an input error must not create the output folder";
+    EXPECT_FALSE(std::filesystem::exists(out_)) << "an input error must not create the output folder";
   }
 
   /// Runs `check CASE` and `run CASE --out out`: each must exit 2 with every string of `expected` in its
@@ -73,11 +77,12 @@ class CliTest : public ::testing::Test {
       EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
       expect_all_in(r.output, expected);
     }
-    EXPECT_FALSE(std::filesystem::exists(dir_ / "out"));
+    EXPECT_FALSE(std::filesystem::exists(out_));
   }
 
   TempFolder folder_;
   const std::filesystem::path& dir_;
+  const std::filesystem::path out_ = dir_ / "out";  ///< run_case()'s output folder
 };
 
 }  // namespace symcontact::testing

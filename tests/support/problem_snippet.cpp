@@ -35,6 +35,12 @@ std::string dirichlet_toml(const std::string& boundary, const std::string& compo
   return "[[body.dirichlet]]\nboundary = \"" + boundary + "\"\n" + components;
 }
 
+ProblemSnippet clamped_block(const std::string& material) {
+  return ProblemSnippet("[problem]\ndimension = 2\n[steps]\nload_factors = [0.5, 1.0]\n" +
+                        body_toml("block", "block.msh", "block", material,
+                                  dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n")));
+}
+
 std::optional<InputError> input_error_of(const std::function<void()>& read) {
   try {
     read();

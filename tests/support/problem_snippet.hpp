@@ -4,7 +4,7 @@
 /// bad one must raise.
 ///  - replaced(), ProblemSnippet: a problem file (or a mesh file) as text, and edited copies of it — a text
 ///    replaced, lines added after a given line, the 2D base turned 3D;
-///  - body_toml(), dirichlet_toml(): the [[body]] and [[body.dirichlet]] tables end-to-end cases repeat;
+///  - body_toml(), dirichlet_toml(), clamped_block(): the [[body]] and [[body.dirichlet]] tables cases repeat;
 ///  - InputErrorCase, expect_input_error_case(): a table of bad inputs, each with the key its InputError must
 ///    name and a part of its message (the problem reader's and the .msh check's tables);
 ///  - write_placeholders(): empty files for the meshes a problem refers to (the reader checks existence
@@ -56,6 +56,10 @@ std::string body_toml(const std::string& name, const std::string& mesh, const st
                       const std::string& material, const std::string& tables = "");
 /// A [[body.dirichlet]] table on `boundary` with `components` ("ux = 0.0\nuy = 0.0\n").
 std::string dirichlet_toml(const std::string& boundary, const std::string& components);
+
+/// A 2D problem over the load steps 0.5 and 1 with one body "block" (mesh "block.msh", group "block",
+/// material `material`) clamped at its bottom; tests add its further tables.
+ProblemSnippet clamped_block(const std::string& material = "E = 1.0, nu = 0.3");
 
 /// A bad input and what its InputError must say.
 struct InputErrorCase {

@@ -30,7 +30,6 @@ namespace fs = std::filesystem;
 using symcontact::testing::CliResult;
 using symcontact::testing::read_text;
 using symcontact::testing::replaced;
-using symcontact::testing::shell_quote;
 
 const fs::path kHertzDir = fs::path(SYMCONTACT_EXAMPLES) / "hertz_2d";
 const fs::path kHertzCase = kHertzDir / "cylinder_on_plane.toml";
@@ -86,8 +85,8 @@ class CliContact : public symcontact::testing::CliTest {
 };
 
 TEST_F(CliContact, HertzExampleWritesContactResults) {
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(kHertzCase) + " --out " + shell_quote(out));
+  const fs::path& out = out_;
+  const CliResult r = run_case(kHertzCase);
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   // summary.json: one "contact" entry per pair and step, the force of the floor on the half cylinder
@@ -171,8 +170,8 @@ TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
   const fs::path f = write_hertz_case("one_iteration.toml", [](std::string& t) {
     t += "\n[contact_solver]\ndual_optimizer = \"ipopt\"\n[ipopt]\nmax_iter = 1\n";
   });
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  const fs::path& out = out_;
+  const CliResult r = run_case(f);
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("solve failed"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Maximum_Iterations_Exceeded"), std::string::npos) << r.output;
@@ -200,9 +199,8 @@ TEST_F(CliContact, ContactOnAMissingBoundaryGroupIsAnInputError) {
 
 TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
   // The V4 friction block (Coulomb μ = 0.3): the last step is in gross slip.
-  const fs::path out = dir_ / "out";
-  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/friction_block/block.toml";
-  const CliResult r = run("run " + shell_quote(example) + " --out " + shell_quote(out) + " -q");
+  const fs::path& out = out_;
+  const CliResult r = run_case(std::string(SYMCONTACT_EXAMPLES) + "/friction_block/block.toml", "-q");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string csv = read_text(out / "contact_floor_0011.csv");
   const std::string header = csv.substr(0, csv.find('\n'));
@@ -219,9 +217,8 @@ TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
 
 TEST_F(CliContact, Hertz3DExampleWritesContactResults) {
   // examples/hertz_3d/sphere_on_plane.toml (quarter sphere on a rigid plane, P1, ~3 s): 3D contact output.
-  const fs::path out = dir_ / "out";
-  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/hertz_3d/sphere_on_plane.toml";
-  const CliResult r = run("run " + shell_quote(example) + " --out " + shell_quote(out) + " -q");
+  const fs::path& out = out_;
+  const CliResult r = run_case(std::string(SYMCONTACT_EXAMPLES) + "/hertz_3d/sphere_on_plane.toml", "-q");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string summary = read_text(out / "summary.json");
   const std::vector<double> force = json_array(summary, "total_force");

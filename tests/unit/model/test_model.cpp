@@ -26,26 +26,8 @@ using testing::ProblemSnippet;
 
 /// A 2 × 1 block (block.msh: 2 × 1 squares, 6 nodes) clamped at its bottom, its left side moved by ux = 0.1
 /// and its top by uy = −0.3, over two load steps at factors 0.5 and 1.
-const ProblemSnippet kBlock(R"([problem]
-dimension = 2
-[steps]
-load_factors = [0.5, 1.0]
-[[body]]
-name = "block"
-mesh = "block.msh"
-group = "block"
-material = { E = 1.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "bottom"
-ux = 0.0
-uy = 0.0
-[[body.dirichlet]]
-boundary = "left"
-ux = 0.1
-[[body.dirichlet]]
-boundary = "top"
-uy = -0.3
-)");
+const ProblemSnippet kBlock =
+    testing::clamped_block() + testing::dirichlet_toml("left", "ux = 0.1\n") + testing::dirichlet_toml("top", "uy = -0.3\n");
 
 /// A problem and its model (the model refers to the spec, so both live here), built from `text` with the
 /// meshes block.msh (2 × 1, 2 × 1 squares) and lid.msh (1 × 1, one square) in a temporary folder.
@@ -86,8 +68,8 @@ class ModelTest : public ::testing::Test {
 };
 
 TEST_F(ModelTest, DofNumberingOfTwoBodies) {
-  build(kBlock + "[[body]]\nname = \"lid\"\nmesh = \"lid.msh\"\ngroup = \"block\"\n"
-                 "material = { E = 2.0, nu = 0.25 }\n[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n");
+  build(kBlock + testing::body_toml("lid", "lid.msh", "block", "E = 2.0, nu = 0.25",
+                                    testing::dirichlet_toml("bottom", "uy = 0.0\n")));
   EXPECT_EQ(model_->dim(), 2);
   EXPECT_EQ(model_->num_steps(), 2);
   ASSERT_EQ(model_->bodies().size(), 2u);

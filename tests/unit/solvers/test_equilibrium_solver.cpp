@@ -94,24 +94,8 @@ TEST(EquilibriumSolver, PredictorOfAQuadraticEnergyOnlyImposesTheValues) {
 
 /// A unit square of Neo-Hookean material (E = 1, ν = 0.3; 4 × 4 squares), clamped at its bottom, its top
 /// moved down by `down` (times the load factors 0.5, 1) with ux = 0.
-const ProblemSnippet kSquare(R"([problem]
-dimension = 2
-[steps]
-load_factors = [0.5, 1.0]
-[[body]]
-name = "block"
-mesh = "block.msh"
-group = "block"
-material = { model = "neo_hookean", E = 1.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "bottom"
-ux = 0.0
-uy = 0.0
-[[body.dirichlet]]
-boundary = "top"
-ux = 0.0
-uy = -0.2
-)");
+const ProblemSnippet kSquare = testing::clamped_block("model = \"neo_hookean\", E = 1.0, nu = 0.3") +
+                               testing::dirichlet_toml("top", "ux = 0.0\nuy = -0.2\n");
 
 class EquilibriumSolverModel : public ::testing::Test {
  protected:
