@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <regex>
 #include <string>
 #include <thread>
@@ -69,6 +70,20 @@ pid_t start_friction_block_until_step_3(const fs::path& out) {
   return 0;
 }
 
+/// Starts the friction block into `out` (start_friction_block_until_step_3()), sends it `signal` and waits
+/// for it: its wait status, or nothing (after a test failure) when it could not be started or signalled.
+std::optional<int> interrupted_status(const fs::path& out, int signal) {
+  const pid_t pid = start_friction_block_until_step_3(out);
+  if (pid == 0) return std::nullopt;
+  if (kill(pid, signal) != 0) {
+    ADD_FAILURE() << "cannot send signal " << signal;
+    return std::nullopt;
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
 /// The names of the files in `dir` holding ".tmp-" (temporaries of io/atomic_file.hpp).
 std::vector<std::string> temporaries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -84,11 +99,9 @@ void expect_clean_stop(int signal, const std::string& signal_name) {
   const TempFolder folder("symcontact_signal_");
   const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
-  const pid_t pid = start_friction_block_until_step_3(out);
-  ASSERT_NE(pid, 0);
-  ASSERT_EQ(kill(pid, signal), 0);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  const std::optional<int> stopped = interrupted_status(out, signal);
+  ASSERT_TRUE(stopped.has_value());
+  const int status = *stopped;
   ASSERT_TRUE(WIFEXITED(status)) << "the signal was not handled";
   EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
   const std::string summary = read_text(out / "summary.json");
@@ -132,12 +145,9 @@ TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
   const TempFolder folder("symcontact_killed_");
   const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
-  const pid_t pid = start_friction_block_until_step_3(out);
-  ASSERT_NE(pid, 0);
-  ASSERT_EQ(kill(pid, SIGKILL), 0);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
+  const std::optional<int> killed = interrupted_status(out, SIGKILL);
+  ASSERT_TRUE(killed.has_value());
+  ASSERT_TRUE(WIFSIGNALED(*killed));
 
   // The collection names only complete files.
   const std::string pvd = read_text(out / "results.pvd");
