@@ -1,7 +1,7 @@
 #pragma once
 /// \file cli_fixture.hpp
 /// Shared pieces of the end-to-end tests of the command-line program: each test works in its own
-/// temporary folder (CTest runs them in parallel; the folder is kept when the test fails) and runs the
+/// temporary folder (support/temp_folder.hpp) and runs the
 /// binary SYMCONTACT_CLI through the shell, capturing stdout and stderr together.
 
 #include <gtest/gtest.h>
@@ -10,10 +10,10 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
-#include <iterator>
 #include <string>
+
+#include "support/temp_folder.hpp"
 
 namespace symcontact::testing {
 
@@ -22,34 +22,19 @@ struct CliResult {
   std::string output;  ///< stdout and stderr, interleaved
 };
 
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 inline std::string shell_quote(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
-inline void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  ASSERT_TRUE(out.good()) << "cannot write " << path;
+/// Expects every string of `expected` in `output` (each failure names the missing string).
+inline void expect_all_in(const std::string& output, std::initializer_list<std::string> expected) {
+  for (const std::string& s : expected) {
+    EXPECT_NE(output.find(s), std::string::npos) << "'" << s << "' not in: " << output;
+  }
 }
 
-/// A test with its own folder `dir_` (named after the test) and `run(args)`.
+/// A test with its own folder `dir_` (named after the test), `run(args)` and `run_case(file)`.
 class CliTest : public ::testing::Test {
  protected:
-  explicit CliTest(std::string prefix) : prefix_(std::move(prefix)) {}
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           (prefix_ + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    if (!HasFailure()) std::filesystem::remove_all(dir_, ec);  // kept on failure, for a look
-  }
+  explicit CliTest(const std::string& prefix) : folder_(prefix), dir_(folder_.path()) {}
 
   /// Runs `symcontact ARGS` in the test's folder.
   CliResult run(const std::string& args) const {
@@ -63,31 +48,41 @@ class CliTest : public ::testing::Test {
     return r;
   }
 
+  /// Runs `symcontact run CASE --out <folder>/out EXTRA`: the results land in out_.
+  CliResult run_case(const std::filesystem::path& case_file, const std::string& extra = "") const {
+    return run("run " + shell_quote(case_file) + " --out " + shell_quote(out_) + " " + extra);
+  }
+
   /// Writes `text` as `name` in the test's folder and returns its path.
   std::filesystem::path write(const std::string& name, const std::string& text) const {
-    const std::filesystem::path p = dir_ / name;
-    write_text(p, text);
-    return p;
+    return folder_.write(name, text);
   }
 
   /// Runs `run CASE --out out EXTRA`, expects an input error (exit 2) whose message holds every string
   /// in `expected`, and no output folder.
   void expect_input_error(const std::filesystem::path& case_file, std::initializer_list<std::string> expected,
                           const std::string& extra = "") const {
-    const std::filesystem::path out = dir_ / "out";
-    const CliResult r = run("run " + shell_quote(case_file) + " --out " + shell_quote(out) + " " + extra);
+    const CliResult r = run_case(case_file, extra);
     EXPECT_EQ(r.exit_code, 2) << r.output;
     EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
-    for (const std::string& s : expected) {
-      EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
-    }
-    EXPECT_FALSE(std::filesystem::exists(out)) << "an input error must not create the output folder";
+    expect_all_in(r.output, expected);
+    EXPECT_FALSE(std::filesystem::exists(out_)) << "an input error must not create the output folder";
   }
 
-  std::filesystem::path dir_;
+  /// Runs `check CASE` and `run CASE --out out`: each must exit 2 with every string of `expected` in its
+  /// output; no output folder afterwards.
+  void expect_refused_by_check_and_run(const std::string& case_file, std::initializer_list<std::string> expected) const {
+    for (const std::string& cmd : {"check " + case_file, "run " + case_file + " --out out"}) {
+      const CliResult r = run(cmd);
+      EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
+      expect_all_in(r.output, expected);
+    }
+    EXPECT_FALSE(std::filesystem::exists(out_));
+  }
 
- private:
-  std::string prefix_;
+  TempFolder folder_;
+  const std::filesystem::path& dir_;
+  const std::filesystem::path out_ = dir_ / "out";  ///< run_case()'s output folder
 };
 
 }  // namespace symcontact::testing

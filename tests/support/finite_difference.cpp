@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <random>
 
+#include "symcontact/mesh/structured.hpp"
+
 namespace symcontact::testing {
 
 FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h, int directions, int max_dofs,
@@ -44,6 +46,12 @@ FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h, 
     r.hessian_error = std::max(r.hessian_error, (fd - Hd).cwiseAbs().maxCoeff() / scale);
   }
   return r;
+}
+
+Mesh distorted_mesh(int dim, int order) {
+  Mesh m = dim == 2 ? rectangle_mesh(0, 0, 2, 1, 4, 3, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 2), 2, 2, 3, order);
+  perturb_interior_nodes(m, 0.25, 0.2, 7);
+  return m;
 }
 
 }  // namespace symcontact::testing

@@ -5,6 +5,7 @@
 /// differences of the gradient. Used for every energy term.
 
 #include "symcontact/energy/energy_term.hpp"
+#include "symcontact/mesh/mesh.hpp"
 
 namespace symcontact::testing {
 
@@ -17,5 +18,10 @@ struct FdResult {
 /// else on a random subset of max_dofs; the Hessian on `directions` random unit directions.
 FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h = 1e-6, int directions = 5,
                            int max_dofs = 400, unsigned seed = 1);
+
+/// The mesh the derivative checks run on: the rectangle [0, 2] × [0, 1] (4 × 3 squares) or the box
+/// [0, 1] × [0, 1] × [0, 2] (2 × 2 × 3 cubes) of structured.hpp, of `order` 1 or 2, its interior nodes moved
+/// by up to 20 % of the spacing (so that no element is a right-angled copy of another).
+Mesh distorted_mesh(int dim, int order);
 
 }  // namespace symcontact::testing

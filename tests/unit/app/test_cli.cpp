@@ -119,8 +119,8 @@ TEST_F(Cli, HandWrittenMshRuns) {
   // The control for the two broken meshes below: the same file format, well formed, solves.
   const fs::path f = write("square.toml", problem_toml(test_mesh("unit_square.msh"), "square", "0.3",
                                                        kClampBottom + kPressTop));
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  const fs::path& out = out_;
+  const CliResult r = run_case(f);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(read_text(out / "summary.json").find("\"status\": \"ok\""), std::string::npos);
 }

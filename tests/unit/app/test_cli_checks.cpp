@@ -7,16 +7,19 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "support/cli_fixture.hpp"
+#include "support/problem_snippet.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
 using symcontact::testing::CliResult;
+using symcontact::testing::body_toml;
+using symcontact::testing::dirichlet_toml;
+using symcontact::testing::expect_all_in;
 using symcontact::testing::read_text;
 
 const std::string kGeo = std::string(SYMCONTACT_TEST_DATA) + "/geo/";
@@ -26,44 +29,26 @@ class CliChecks : public symcontact::testing::CliTest {
  protected:
   CliChecks() : CliTest("symcontact_cli_checks_") {}
 
-  fs::path write_case(const std::string& toml) const {
-    const fs::path p = dir_ / "case.toml";
-    std::ofstream(p) << toml;
-    return p;
-  }
+  fs::path write_case(const std::string& toml) const { return write("case.toml", toml); }
   std::string summary() const { return read_text(dir_ / "out" / "summary.json"); }
 };
 
-/// two_blocks.geo: "lower" [0,1]² held at its bottom, "upper" [0,1]×[1,2] driven down by `down` at its top,
-/// one symmetric frictionless pair on the shared line.
-std::string driven_blocks(double down, const std::string& material = "", const std::string& contact_extra = "") {
+const std::string kProblem2d = "[problem]\ndimension = 2\n";
+const std::string kClamped = "ux = 0.0\nuy = 0.0\n";
+
+/// two_blocks.geo: "lower" [0,1]² held at its bottom, "upper" [0,1]×[1,2] (material `law`, tables
+/// `upper_tables`), one symmetric frictionless pair "interface" on the shared line (plus `contact_extra`).
+std::string two_blocks(const std::string& law, const std::string& upper_tables, const std::string& contact_extra) {
   const std::string geo = kGeo + "two_blocks.geo";
-  return R"(
-[problem]
-dimension = 2
-[[body]]
-name = "lower"
-mesh = ")" + geo + R"("
-group = "lower"
-material = { E = 10.0, nu = 0.3 )" + material + R"( }
-[[body.dirichlet]]
-boundary = "bottom"
-ux = 0.0
-uy = 0.0
-[[body]]
-name = "upper"
-mesh = ")" + geo + R"("
-group = "upper"
-material = { E = 10.0, nu = 0.3 )" + material + R"( }
-[[body.dirichlet]]
-boundary = "top"
-ux = 0.0
-uy = )" + std::to_string(-down) + R"(
-[[contact]]
-name = "interface"
-a = "lower.interface"
-b = "upper.interface"
-)" + contact_extra;
+  return kProblem2d + body_toml("lower", geo, "lower", law, dirichlet_toml("bottom", kClamped)) +
+         body_toml("upper", geo, "upper", law, upper_tables) +
+         "[[contact]]\nname = \"interface\"\na = \"lower.interface\"\nb = \"upper.interface\"\n" + contact_extra;
+}
+
+/// two_blocks() with "upper" driven down by `down` at its top.
+std::string driven_blocks(double down, const std::string& material = "", const std::string& contact_extra = "") {
+  return two_blocks("E = 10.0, nu = 0.3" + material,
+                    dirichlet_toml("top", "ux = 0.0\nuy = " + std::to_string(-down) + "\n"), contact_extra);
 }
 
 TEST_F(CliChecks, BlockDrivenThroughTheOtherFailsTheStepCheck) {
@@ -71,9 +56,7 @@ TEST_F(CliChecks, BlockDrivenThroughTheOtherFailsTheStepCheck) {
     write_case(driven_blocks(5.0, material));
     const CliResult r = run("run case.toml --out out");
     EXPECT_EQ(r.exit_code, 3) << material << "\n" << r.output;
-    EXPECT_NE(r.output.find("load step 1: check of the answer"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("contact 'interface'"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("went through each other"), std::string::npos) << r.output;
+    expect_all_in(r.output, {"load step 1: check of the answer", "contact 'interface'", "went through each other"});
     EXPECT_NE(summary().find("\"status\": \"solve_failed\""), std::string::npos);
     EXPECT_EQ(summary().find("\"status\": \"ok\""), std::string::npos);
     fs::remove_all(dir_ / "out");
@@ -84,8 +67,7 @@ TEST_F(CliChecks, MotionBeyondTheSearchDistanceFailsTheStepCheck) {
   write_case(driven_blocks(0.7, "", "search_distance = 0.6\n"));
   const CliResult r = run("run case.toml --out out");
   EXPECT_EQ(r.exit_code, 3) << r.output;
-  EXPECT_NE(r.output.find("contact 'interface'"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("% of the element size"), std::string::npos) << r.output;
+  expect_all_in(r.output, {"contact 'interface'", "% of the element size"});
   EXPECT_NE(summary().find("\"status\": \"solve_failed\""), std::string::npos);
 }
 
@@ -112,41 +94,20 @@ TEST_F(CliChecks, ContactThatHoldsPassesTheStepChecks) {
   EXPECT_NE(summary().find("\"equilibrium_residual\""), std::string::npos);
 }
 
+const std::string kPressTop = "[[body.pressure]]\nboundary = \"top\"\npressure = ";
+
 /// square.geo pushed down by a pressure onto the meshed floor of `floor_geo`, held in x on its left side.
 std::string block_on_meshed_floor(const std::string& floor_geo) {
-  return R"(
-[problem]
-dimension = 2
-[[body]]
-name = "block"
-mesh = ")" + kGeo + R"(square.geo"
-group = "square"
-material = { E = 100.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "left"
-ux = 0.0
-[[body.pressure]]
-boundary = "top"
-pressure = 1.0
-[[contact]]
-name = "floor"
-a = "block.bottom"
-[contact.obstacle]
-type = "mesh"
-mesh = ")" + kGeo + floor_geo + R"("
-boundary = "floor"
-)";
+  return kProblem2d +
+         body_toml("block", kGeo + "square.geo", "square", "E = 100.0, nu = 0.3",
+                   dirichlet_toml("left", "ux = 0.0\n") + kPressTop + "1.0\n") +
+         "[[contact]]\nname = \"floor\"\na = \"block.bottom\"\n[contact.obstacle]\ntype = \"mesh\"\nmesh = \"" + kGeo +
+         floor_geo + "\"\nboundary = \"floor\"\n";
 }
 
 TEST_F(CliChecks, MeshedObstacleFacingAwayIsRefused) {
   write_case(block_on_meshed_floor("floor_facing_away.geo"));
-  for (const std::string cmd : {"check case.toml", "run case.toml --out out"}) {
-    const CliResult r = run(cmd);
-    EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
-    EXPECT_NE(r.output.find("contact[0].obstacle"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("face away from body 'block'"), std::string::npos) << r.output;
-  }
-  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  expect_refused_by_check_and_run("case.toml", {"contact[0].obstacle", "face away from body 'block'"});
 }
 
 TEST_F(CliChecks, MeshedObstacleFacingTheBodyIsAccepted) {
@@ -156,73 +117,21 @@ TEST_F(CliChecks, MeshedObstacleFacingTheBodyIsAccepted) {
 }
 
 TEST_F(CliChecks, FoldedTriangleIsRefusedBeforeAnyReorientation) {
-  write_case(R"(
-[problem]
-dimension = 2
-[[body]]
-name = "block"
-mesh = ")" + kMeshes + R"(folded_triangle.msh"
-material = { E = 1.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "bottom"
-ux = 0.0
-uy = 0.0
-[[body.dirichlet]]
-boundary = "top"
-uy = 0.1
-)");
-  for (const std::string cmd : {"check case.toml", "run case.toml --out out"}) {
-    const CliResult r = run(cmd);
-    EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
-    EXPECT_NE(r.output.find("body[0].mesh"), std::string::npos) << r.output;
-    // Element 5 = (3, 4, 5) is the one turned over by node 5 above the top edge.
-    EXPECT_NE(r.output.find("element 5: folded element"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("element 4"), std::string::npos) << r.output;
-  }
-  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  write_case(kProblem2d + body_toml("block", kMeshes + "folded_triangle.msh", "", "E = 1.0, nu = 0.3",
+                                    dirichlet_toml("bottom", kClamped) + dirichlet_toml("top", "uy = 0.1\n")));
+  // Element 5 = (3, 4, 5) is the one turned over by node 5 above the top edge.
+  expect_refused_by_check_and_run("case.toml", {"body[0].mesh", "element 5: folded element", "element 4"});
 }
 
 /// The upper block of two_blocks.geo under a pressure, held only through its contact with the lower block.
 std::string upper_held_by_contact(const std::string& contact_extra) {
-  const std::string geo = kGeo + "two_blocks.geo";
-  return R"(
-[problem]
-dimension = 2
-[[body]]
-name = "lower"
-mesh = ")" + geo + R"("
-group = "lower"
-material = { E = 10.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "bottom"
-ux = 0.0
-uy = 0.0
-[[body]]
-name = "upper"
-mesh = ")" + geo + R"("
-group = "upper"
-material = { E = 10.0, nu = 0.3 }
-[[body.pressure]]
-boundary = "top"
-pressure = 0.1
-[[contact]]
-name = "interface"
-a = "lower.interface"
-b = "upper.interface"
-)" + contact_extra;
+  return two_blocks("E = 10.0, nu = 0.3", kPressTop + "0.1\n", contact_extra);
 }
 
 TEST_F(CliChecks, BodyHeldOnlyByFrictionlessContactIsRefused) {
   write_case(upper_held_by_contact(""));
-  for (const std::string cmd : {"check case.toml", "run case.toml --out out"}) {
-    const CliResult r = run(cmd);
-    EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
-    EXPECT_NE(r.output.find("body[1]: body 'upper': rigid motion left free: translation in x."),
-              std::string::npos)
-        << r.output;
-    EXPECT_NE(r.output.find("'interface'"), std::string::npos) << r.output;
-  }
-  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  expect_refused_by_check_and_run("case.toml",
+                                  {"body[1]: body 'upper': rigid motion left free: translation in x.", "'interface'"});
 }
 
 TEST_F(CliChecks, BodyHeldThroughFrictionPassesTheSetupCheck) {
@@ -232,76 +141,29 @@ TEST_F(CliChecks, BodyHeldThroughFrictionPassesTheSetupCheck) {
 }
 
 TEST_F(CliChecks, BlockOnAFrictionlessPlaneUnderAVerticalLoadIsRefused) {
-  const std::string toml = R"(
-[problem]
-dimension = 2
-[[body]]
-name = "block"
-mesh = ")" + kGeo + R"(square.geo"
-group = "square"
-material = { E = 1.0, nu = 0.3 }
-[[body.pressure]]
-boundary = "top"
-pressure = 0.1
-[[contact]]
-name = "floor"
-a = "block.bottom"
-[contact.obstacle]
-type = "plane"
-point = [0.0, 0.0]
-normal = [0.0, 1.0]
-)";
+  const std::string toml =
+      kProblem2d + body_toml("block", kGeo + "square.geo", "square", "E = 1.0, nu = 0.3", kPressTop + "0.1\n") +
+      "[[contact]]\nname = \"floor\"\na = \"block.bottom\"\n[contact.obstacle]\ntype = \"plane\"\n"
+      "point = [0.0, 0.0]\nnormal = [0.0, 1.0]\n";
   write_case(toml);
   CliResult r = run("check case.toml");
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("body[0]: body 'block': rigid motion left free: translation in x."), std::string::npos)
       << r.output;
   // Held in x at one side: accepted (the floor's normal holds y and the rotation).
-  write_case(toml + R"(
-[[body.dirichlet]]
-boundary = "left"
-ux = 0.0
-)");
+  write_case(toml + dirichlet_toml("left", "ux = 0.0\n"));
   r = run("check case.toml");
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
 TEST_F(CliChecks, BodiesOverlappingAtTheStartAreRefused) {
   const std::string geo = kGeo + "overlapping_blocks.geo";
-  write_case(R"(
-[problem]
-dimension = 2
-[[body]]
-name = "lower"
-mesh = ")" + geo + R"("
-group = "lower"
-material = { E = 1.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "lower_bottom"
-ux = 0.0
-uy = 0.0
-[[body]]
-name = "upper"
-mesh = ")" + geo + R"("
-group = "upper"
-material = { E = 1.0, nu = 0.3 }
-[[body.dirichlet]]
-boundary = "upper_top"
-ux = 0.0
-uy = 0.0
-[[contact]]
-name = "stack"
-a = "lower.lower_top"
-b = "upper.upper_bottom"
-)");
-  for (const std::string cmd : {"check case.toml", "run case.toml --out out"}) {
-    const CliResult r = run(cmd);
-    EXPECT_EQ(r.exit_code, 2) << cmd << "\n" << r.output;
-    EXPECT_NE(r.output.find("contact[0]: contact 'stack': the bodies overlap at the start"), std::string::npos)
-        << r.output;
-    EXPECT_NE(r.output.find(" lies 0.5 inside"), std::string::npos) << r.output;
-  }
-  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  write_case(kProblem2d +
+             body_toml("lower", geo, "lower", "E = 1.0, nu = 0.3", dirichlet_toml("lower_bottom", kClamped)) +
+             body_toml("upper", geo, "upper", "E = 1.0, nu = 0.3", dirichlet_toml("upper_top", kClamped)) +
+             "[[contact]]\nname = \"stack\"\na = \"lower.lower_top\"\nb = \"upper.upper_bottom\"\n");
+  expect_refused_by_check_and_run(
+      "case.toml", {"contact[0]: contact 'stack': the bodies overlap at the start", " lies 0.5 inside"});
 }
 
 }  // namespace

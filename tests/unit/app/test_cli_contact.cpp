@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_fixture.hpp"
+#include "support/problem_snippet.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -28,7 +29,7 @@ namespace fs = std::filesystem;
 
 using symcontact::testing::CliResult;
 using symcontact::testing::read_text;
-using symcontact::testing::shell_quote;
+using symcontact::testing::replaced;
 
 const fs::path kHertzDir = fs::path(SYMCONTACT_EXAMPLES) / "hertz_2d";
 const fs::path kHertzCase = kHertzDir / "cylinder_on_plane.toml";
@@ -75,22 +76,17 @@ class CliContact : public symcontact::testing::CliTest {
   /// as `name` in the test's folder.
   template <class Edit>
   fs::path write_hertz_case(const std::string& name, Edit edit) const {
-    std::string toml = read_text(kHertzCase);
     const std::string geo = "cylinder_on_plane.geo";
-    const std::size_t at = toml.find("\"" + geo + "\"");
-    EXPECT_NE(at, std::string::npos);
-    toml.replace(at, geo.size() + 2, "\"" + (kHertzDir / geo).string() + "\"");
+    std::string toml = replaced(read_text(kHertzCase), "\"" + geo + "\"", "\"" + (kHertzDir / geo).string() + "\"");
     edit(toml);
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << toml;
-    return p;
+    return write(name, toml);
   }
 
 };
 
 TEST_F(CliContact, HertzExampleWritesContactResults) {
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(kHertzCase) + " --out " + shell_quote(out));
+  const fs::path& out = out_;
+  const CliResult r = run_case(kHertzCase);
   ASSERT_EQ(r.exit_code, 0) << r.output;
 
   // summary.json: one "contact" entry per pair and step, the force of the floor on the half cylinder
@@ -174,8 +170,8 @@ TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
   const fs::path f = write_hertz_case("one_iteration.toml", [](std::string& t) {
     t += "\n[contact_solver]\ndual_optimizer = \"ipopt\"\n[ipopt]\nmax_iter = 1\n";
   });
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
+  const fs::path& out = out_;
+  const CliResult r = run_case(f);
   EXPECT_EQ(r.exit_code, 3) << r.output;
   EXPECT_NE(r.output.find("solve failed"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Maximum_Iterations_Exceeded"), std::string::npos) << r.output;
@@ -194,25 +190,17 @@ TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
 
 TEST_F(CliContact, ContactOnAMissingBoundaryGroupIsAnInputError) {
   const fs::path f = write_hertz_case("missing_group.toml", [](std::string& t) {
-    const std::string a = "a = \"cylinder.contact\"";
-    t.replace(t.find(a), a.size(), "a = \"cylinder.nowhere\"");
+    t = replaced(t, "a = \"cylinder.contact\"", "a = \"cylinder.nowhere\"");
   });
-  const fs::path out = dir_ / "out";
-  const CliResult r = run("run " + shell_quote(f) + " --out " + shell_quote(out));
-  EXPECT_EQ(r.exit_code, 2) << r.output;
-  EXPECT_NE(r.output.find("input error"), std::string::npos) << r.output;
-  for (const std::string s : {"missing_group.toml", "contact[0].a", "nowhere"})
-    EXPECT_NE(r.output.find(s), std::string::npos) << "'" << s << "' not in: " << r.output;
-  EXPECT_FALSE(fs::exists(out)) << "an input error must not create the output folder";
+  expect_input_error(f, {"missing_group.toml", "contact[0].a", "nowhere"});
 }
 
 }  // namespace
 
 TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
   // The V4 friction block (Coulomb μ = 0.3): the last step is in gross slip.
-  const fs::path out = dir_ / "out";
-  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/friction_block/block.toml";
-  const CliResult r = run("run " + shell_quote(example) + " --out " + shell_quote(out) + " -q");
+  const fs::path& out = out_;
+  const CliResult r = run_case(std::string(SYMCONTACT_EXAMPLES) + "/friction_block/block.toml", "-q");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string csv = read_text(out / "contact_floor_0011.csv");
   const std::string header = csv.substr(0, csv.find('\n'));
@@ -229,9 +217,8 @@ TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
 
 TEST_F(CliContact, Hertz3DExampleWritesContactResults) {
   // examples/hertz_3d/sphere_on_plane.toml (quarter sphere on a rigid plane, P1, ~3 s): 3D contact output.
-  const fs::path out = dir_ / "out";
-  const std::string example = std::string(SYMCONTACT_EXAMPLES) + "/hertz_3d/sphere_on_plane.toml";
-  const CliResult r = run("run " + shell_quote(example) + " --out " + shell_quote(out) + " -q");
+  const fs::path& out = out_;
+  const CliResult r = run_case(std::string(SYMCONTACT_EXAMPLES) + "/hertz_3d/sphere_on_plane.toml", "-q");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string summary = read_text(out / "summary.json");
   const std::vector<double> force = json_array(summary, "total_force");

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "support/cli_fixture.hpp"
+#include "support/problem_snippet.hpp"
 
 namespace {
 
@@ -38,11 +39,7 @@ std::string block_toml(const std::string& mesh, const std::string& E = "1000.0",
 
 /// block.geo with `from` replaced by `to`.
 std::string block_geo_with(const std::string& from, const std::string& to) {
-  std::string geo = read_text(kBlockGeo);
-  const std::size_t at = geo.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) geo.replace(at, from.size(), to);
-  return geo;
+  return symcontact::testing::replaced(read_text(kBlockGeo), from, to);
 }
 
 class CliInputErrors : public symcontact::testing::CliTest {

@@ -11,14 +11,14 @@
 #include <sstream>
 #include <string>
 
+#include "support/temp_folder.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using symcontact::testing::read_text;
+using symcontact::testing::TempFolder;
 
 /// summary.json without its "timings" objects and "wall_time" entries.
 std::string without_timings(const std::string& json) {
@@ -50,8 +50,8 @@ int run(const fs::path& out) {
 }  // namespace
 
 TEST(Determinism, SameInputTwiceGivesIdenticalNumbers) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_determinism_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const TempFolder folder("symcontact_determinism_");
+  const fs::path& dir = folder.path();
   ASSERT_EQ(run(dir / "a"), 0);
   ASSERT_EQ(run(dir / "b"), 0);
   const std::string a = without_timings(read_text(dir / "a" / "summary.json"));
@@ -60,5 +60,4 @@ TEST(Determinism, SameInputTwiceGivesIdenticalNumbers) {
   EXPECT_EQ(a, b);
   for (const char* csv : {"contact_floor_0001.csv", "contact_floor_0011.csv"})
     EXPECT_EQ(read_text(dir / "a" / csv), read_text(dir / "b" / csv)) << csv;
-  fs::remove_all(dir);
 }

@@ -17,10 +17,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <regex>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "support/temp_folder.hpp"
 
 extern char** environ;
 
@@ -28,10 +31,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using symcontact::testing::read_text;
+using symcontact::testing::TempFolder;
 
 /// True when s, without trailing white space, ends with `tail`.
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -69,6 +70,20 @@ pid_t start_friction_block_until_step_3(const fs::path& out) {
   return 0;
 }
 
+/// Starts the friction block into `out` (start_friction_block_until_step_3()), sends it `signal` and waits
+/// for it: its wait status, or nothing (after a test failure) when it could not be started or signalled.
+std::optional<int> interrupted_status(const fs::path& out, int signal) {
+  const pid_t pid = start_friction_block_until_step_3(out);
+  if (pid == 0) return std::nullopt;
+  if (kill(pid, signal) != 0) {
+    ADD_FAILURE() << "cannot send signal " << signal;
+    return std::nullopt;
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
 /// The names of the files in `dir` holding ".tmp-" (temporaries of io/atomic_file.hpp).
 std::vector<std::string> temporaries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -81,14 +96,12 @@ std::vector<std::string> temporaries(const fs::path& dir) {
 /// mark summary.json "interrupted" with its finished steps, name complete files only, and leave no
 /// temporary file.
 void expect_clean_stop(int signal, const std::string& signal_name) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_signal_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const TempFolder folder("symcontact_signal_");
+  const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
-  const pid_t pid = start_friction_block_until_step_3(out);
-  ASSERT_NE(pid, 0);
-  ASSERT_EQ(kill(pid, signal), 0);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  const std::optional<int> stopped = interrupted_status(out, signal);
+  ASSERT_TRUE(stopped.has_value());
+  const int status = *stopped;
   ASSERT_TRUE(WIFEXITED(status)) << "the signal was not handled";
   EXPECT_EQ(WEXITSTATUS(status), 128 + signal);
   const std::string summary = read_text(out / "summary.json");
@@ -98,7 +111,6 @@ void expect_clean_stop(int signal, const std::string& signal_name) {
   EXPECT_NE(summary.find("\"step\": 3"), std::string::npos) << summary;
   EXPECT_TRUE(ends_with(read_text(out / "results.pvd"), "</VTKFile>"));
   EXPECT_TRUE(temporaries(out).empty()) << temporaries(out).front();
-  fs::remove_all(dir);
 }
 
 }  // namespace
@@ -108,8 +120,8 @@ TEST(InterruptedRun, SigtermStopsCleanlyWithExit143) { expect_clean_stop(SIGTERM
 TEST(InterruptedRun, SigintStopsCleanlyWithExit130) { expect_clean_stop(SIGINT, "SIGINT"); }
 
 TEST(InterruptedRun, TemporariesOfAKilledRunAreRemovedByTheNextRun) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_stale_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const TempFolder folder("symcontact_stale_");
+  const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
   fs::create_directories(out);
   // A process that has ended: its id names the temporaries of a "killed" run.
@@ -127,20 +139,15 @@ TEST(InterruptedRun, TemporariesOfAKilledRunAreRemovedByTheNextRun) {
   EXPECT_FALSE(fs::exists(out / stale));
   EXPECT_TRUE(fs::exists(out / "notes.tmp-draft"));
   EXPECT_TRUE(fs::is_regular_file(out / "summary.json"));
-  fs::remove_all(dir);
 }
 
 TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
-  const fs::path dir = fs::temp_directory_path() / ("symcontact_killed_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const TempFolder folder("symcontact_killed_");
+  const fs::path& dir = folder.path();
   const fs::path out = dir / "out";
-  const pid_t pid = start_friction_block_until_step_3(out);
-  ASSERT_NE(pid, 0);
-  ASSERT_EQ(kill(pid, SIGKILL), 0);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status));
+  const std::optional<int> killed = interrupted_status(out, SIGKILL);
+  ASSERT_TRUE(killed.has_value());
+  ASSERT_TRUE(WIFSIGNALED(*killed));
 
   // The collection names only complete files.
   const std::string pvd = read_text(out / "results.pvd");
@@ -166,5 +173,4 @@ TEST(InterruptedRun, KilledMidRunLeavesEveryFinishedStepValid) {
   EXPECT_TRUE(ends_with(summary, "}")) << summary;
   EXPECT_NE(summary.find("\"status\": \"running\""), std::string::npos);
   EXPECT_NE(summary.find("\"step\": 2"), std::string::npos);
-  fs::remove_all(dir);
 }

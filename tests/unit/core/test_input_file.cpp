@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "support/temp_folder.hpp"
+
 using namespace symcontact;
 
 namespace {
@@ -15,13 +17,8 @@ namespace fs = std::filesystem;
 
 class InputFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("symcontact_input_file_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const symcontact::testing::TempFolder folder_;
+  const fs::path& dir_ = folder_.path();
 };
 
 TEST_F(InputFile, RegularFilesPassAlsoThroughALink) {

@@ -11,14 +11,9 @@
 
 using namespace symcontact;
 using symcontact::testing::check_derivatives;
+using symcontact::testing::distorted_mesh;
 
 namespace {
-Mesh distorted_mesh(int dim, int order) {
-  Mesh m = dim == 2 ? rectangle_mesh(0, 0, 2, 1, 4, 3, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 2), 2, 2, 3, order);
-  perturb_interior_nodes(m, 0.25, 0.2, 7);
-  return m;
-}
-
 VectorXd random_vector(Index n, unsigned seed, double scale = 1.0) {
   std::mt19937 rng(seed);
   std::normal_distribution<double> N01;

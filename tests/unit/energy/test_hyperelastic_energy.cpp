@@ -16,14 +16,9 @@
 
 using namespace symcontact;
 using symcontact::testing::check_derivatives;
+using symcontact::testing::distorted_mesh;
 
 namespace {
-
-Mesh distorted_mesh(int dim, int order) {
-  Mesh m = dim == 2 ? rectangle_mesh(0, 0, 2, 1, 4, 3, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 2), 2, 2, 3, order);
-  perturb_interior_nodes(m, 0.25, 0.2, 7);
-  return m;
-}
 
 /// A smooth displacement of amplitude `scale` (a rotation-free stretch-and-bend field) plus small noise,
 /// moderate enough that no element inverts.

@@ -8,27 +8,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "support/temp_folder.hpp"
+
 namespace symcontact {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// A fresh empty folder under the GoogleTest temporary folder, named after the running test.
-fs::path fresh_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) / (std::string("symcontact_") + info->test_suite_name() +
-                                                          "_" + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 std::size_t count_entries(const fs::path& dir) {
   std::size_t n = 0;
@@ -37,19 +22,21 @@ std::size_t count_entries(const fs::path& dir) {
 }
 
 TEST(AtomicFile, WritesContentAndLeavesNoTemporary) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   const std::string path = (dir / "out.txt").string();
   write_file_atomically(path, [](std::ostream& os) { os << "hello\n" << 42 << '\n'; });
-  EXPECT_EQ(read_all(path), "hello\n42\n");
+  EXPECT_EQ(testing::read_text(path), "hello\n42\n");
   EXPECT_EQ(count_entries(dir), 1u);
 
   write_file_atomically(path, [](std::ostream& os) { os << "second"; });  // replaces
-  EXPECT_EQ(read_all(path), "second");
+  EXPECT_EQ(testing::read_text(path), "second");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
 TEST(AtomicFile, ThrowingWriterKeepsPreviousFile) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   const std::string path = (dir / "out.txt").string();
   write_file_atomically(path, [](std::ostream& os) { os << "good"; });
   EXPECT_THROW(write_file_atomically(path,
@@ -58,12 +45,13 @@ TEST(AtomicFile, ThrowingWriterKeepsPreviousFile) {
                                        throw std::logic_error("writer failed");
                                      }),
                std::logic_error);
-  EXPECT_EQ(read_all(path), "good");
+  EXPECT_EQ(testing::read_text(path), "good");
   EXPECT_EQ(count_entries(dir), 1u);
 }
 
 TEST(AtomicFile, BadStreamThrowsNamingPath) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   const std::string path = (dir / "out.txt").string();
   try {
     write_file_atomically(path, [](std::ostream& os) { os.setstate(std::ios::badbit); });
@@ -75,7 +63,8 @@ TEST(AtomicFile, BadStreamThrowsNamingPath) {
 }
 
 TEST(AtomicFile, MissingFolderThrowsNamingPath) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   const std::string path = (dir / "no_such_folder" / "out.txt").string();
   try {
     write_file_atomically(path, [](std::ostream& os) { os << "x"; });
@@ -86,7 +75,8 @@ TEST(AtomicFile, MissingFolderThrowsNamingPath) {
 }
 
 TEST(AtomicFile, EnsureDirectory) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   const std::string nested = (dir / "a" / "b" / "c").string();
   ensure_directory(nested);
   EXPECT_TRUE(fs::is_directory(nested));

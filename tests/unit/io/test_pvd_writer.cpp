@@ -8,34 +8,21 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "support/temp_folder.hpp"
+
 namespace symcontact {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) / (std::string("symcontact_") + info->test_suite_name() +
-                                                          "_" + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 TEST(PvdWriter, ContentAfterSeveralAdds) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   PvdCollection pvd((dir / "run.pvd").string());
   pvd.add(0.0, 0, "run/body0_000000.vtu", "block");
   pvd.add(0.0, 1, "run/body1_000000.vtu", "punch");
   pvd.write();
-  EXPECT_EQ(read_all(pvd.path()),
+  EXPECT_EQ(testing::read_text(pvd.path()),
             "<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"Collection\" version=\"0.1\">\n"
             "  <Collection>\n"
@@ -48,7 +35,7 @@ TEST(PvdWriter, ContentAfterSeveralAdds) {
   pvd.add(0.25, 1, "run/body1_000001.vtu");  // no name
   pvd.write();                               // rewrites the whole file
   EXPECT_EQ(pvd.size(), 4u);
-  EXPECT_EQ(read_all(pvd.path()),
+  EXPECT_EQ(testing::read_text(pvd.path()),
             "<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"Collection\" version=\"0.1\">\n"
             "  <Collection>\n"
@@ -64,15 +51,16 @@ TEST(PvdWriter, ContentAfterSeveralAdds) {
 }
 
 TEST(PvdWriter, EmptyCollectionAndEscaping) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   PvdCollection pvd((dir / "empty.pvd").string());
   pvd.write();
-  EXPECT_EQ(read_all(pvd.path()),
+  EXPECT_EQ(testing::read_text(pvd.path()),
             "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n"
             "  </Collection>\n</VTKFile>\n");
   pvd.add(1e-3, 2, "a&b.vtu", "\"quoted\" <name>");
   pvd.write();
-  EXPECT_NE(read_all(pvd.path()).find("timestep=\"0.001\" group=\"\" part=\"2\" file=\"a&amp;b.vtu\" "
+  EXPECT_NE(testing::read_text(pvd.path()).find("timestep=\"0.001\" group=\"\" part=\"2\" file=\"a&amp;b.vtu\" "
                                       "name=\"&quot;quoted&quot; &lt;name&gt;\"/>"),
             std::string::npos);
 }

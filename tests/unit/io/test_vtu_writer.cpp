@@ -11,27 +11,12 @@
 #include <stdexcept>
 
 #include "symcontact/mesh/mesh.hpp"
+#include "support/temp_folder.hpp"
 
 namespace symcontact {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::path(::testing::TempDir()) / (std::string("symcontact_") + info->test_suite_name() +
-                                                          "_" + info->name());
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -48,7 +33,8 @@ Mesh two_triangles() {
 }
 
 TEST(VtuWriter, TwoTrianglesAscii) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   const Mesh m = two_triangles();
   VtuWriter w(m);
   EXPECT_EQ(w.num_points(), 4);
@@ -65,7 +51,7 @@ TEST(VtuWriter, TwoTrianglesAscii) {
   const std::string path = (dir / "two.vtu").string();
   w.write(path);
 
-  const std::string s = read_all(path);
+  const std::string s = testing::read_text(path);
   EXPECT_TRUE(contains(s, "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\""));
   EXPECT_TRUE(contains(s, "<Piece NumberOfPoints=\"4\" NumberOfCells=\"2\">"));
   EXPECT_TRUE(contains(s, "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" "
@@ -89,7 +75,8 @@ TEST(VtuWriter, TwoTrianglesAscii) {
 }
 
 TEST(VtuWriter, Tet10SwapsLastEdgeNodes) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   Mesh m;
   m.dim = 3;
   m.cell_type = CellType::kTet10;
@@ -103,7 +90,7 @@ TEST(VtuWriter, Tet10SwapsLastEdgeNodes) {
   VtuWriter w(m);
   const std::string path = (dir / "tet10.vtu").string();
   w.write(path);
-  const std::string s = read_all(path);
+  const std::string s = testing::read_text(path);
   EXPECT_TRUE(contains(s, "<Piece NumberOfPoints=\"10\" NumberOfCells=\"1\">"));
   // VTK order m01 m12 m20 m30 m31 m32: our nodes 8 (m32) and 9 (m31) swap.
   EXPECT_TRUE(contains(s, "Name=\"connectivity\" format=\"ascii\">\n          0 1 2 3 4 5 6 7 9 8\n"));
@@ -112,7 +99,8 @@ TEST(VtuWriter, Tet10SwapsLastEdgeNodes) {
 }
 
 TEST(VtuWriter, RawFacetsAndEmptySurface) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   Eigen::MatrixXd p(3, 3);
   p << 0, 1, 2,  //
       0, 0, 0,   //
@@ -121,7 +109,7 @@ TEST(VtuWriter, RawFacetsAndEmptySurface) {
   w.add_cell_data("normal_stress", Eigen::VectorXd::Constant(2, -4.0));
   const std::string path = (dir / "surface.vtu").string();
   w.write(path);
-  const std::string s = read_all(path);
+  const std::string s = testing::read_text(path);
   EXPECT_TRUE(contains(s, "Name=\"connectivity\" format=\"ascii\">\n          0 1\n          1 2\n"));
   EXPECT_TRUE(contains(s, "Name=\"types\" format=\"ascii\">\n          3 3\n"));
   EXPECT_TRUE(contains(s, "          2 0 1\n"));
@@ -129,17 +117,18 @@ TEST(VtuWriter, RawFacetsAndEmptySurface) {
   VtuWriter empty(p, CellType::kTri3, {});
   EXPECT_EQ(empty.num_cells(), 0);
   empty.write((dir / "empty.vtu").string());
-  EXPECT_TRUE(contains(read_all(dir / "empty.vtu"), "NumberOfCells=\"0\""));
+  EXPECT_TRUE(contains(testing::read_text(dir / "empty.vtu"), "NumberOfCells=\"0\""));
 }
 
 TEST(VtuWriter, ManyCellsWrapOffsetLines) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   Eigen::MatrixXd p = Eigen::MatrixXd::Zero(1, 12);
   std::vector<Index> conn;
   for (Index c = 0; c < 11; ++c) conn.insert(conn.end(), {c, c + 1});
   VtuWriter w(p, CellType::kLine2, conn);
   w.write((dir / "line.vtu").string());
-  EXPECT_TRUE(contains(read_all(dir / "line.vtu"),
+  EXPECT_TRUE(contains(testing::read_text(dir / "line.vtu"),
                        "Name=\"offsets\" format=\"ascii\">\n          2 4 6 8 10 12 14 16 18 20\n          22\n"));
 }
 
@@ -172,7 +161,8 @@ TEST(VtuWriter, ValidatesSizesNamingTheArray) {
 }
 
 TEST(VtuWriter, AsciiRejectsNonFinite) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   VtuWriter w(two_triangles());
   Eigen::VectorXd p = Eigen::VectorXd::Zero(4);
   p(2) = std::numeric_limits<double>::quiet_NaN();
@@ -199,7 +189,8 @@ std::string appended_block(const std::string& s, std::uint64_t offset) {
 }
 
 TEST(VtuWriter, BinaryAppendedRoundTrips) {
-  const fs::path dir = fresh_dir();
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
   VtuWriter w(two_triangles());
   w.set_encoding(VtuEncoding::kBinaryAppended);
   Eigen::MatrixXd u = Eigen::MatrixXd::Random(3, 4);
@@ -208,7 +199,7 @@ TEST(VtuWriter, BinaryAppendedRoundTrips) {
   w.add_cell_data("id", Eigen::Vector2d(7.0, 8.0));
   const std::string path = (dir / "bin.vtu").string();
   w.write(path);
-  const std::string s = read_all(path);
+  const std::string s = testing::read_text(path);
   EXPECT_TRUE(contains(s, "header_type=\"UInt64\""));
   // Offsets: each block is an 8-byte header then the data.
   const std::uint64_t off_u = 0, off_id = off_u + 8 + 12 * 8, off_pts = off_id + 8 + 2 * 8;

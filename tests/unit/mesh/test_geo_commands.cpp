@@ -1,11 +1,11 @@
 #include "symcontact/mesh/geo_commands.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 
+#include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
 
 using namespace symcontact;
@@ -16,16 +16,7 @@ namespace fs = std::filesystem;
 
 class GeoCommands : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("symcontact_geo_commands_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return (dir_ / name).string();
-  }
+  std::string write(const std::string& name, const std::string& text) const { return folder_.write(name, text).string(); }
   /// The key ("line L") of the error check_geo_commands() throws for `path`, or "none".
   static std::string refused_at(const std::string& path) {
     try {
@@ -35,7 +26,8 @@ class GeoCommands : public ::testing::Test {
     }
     return "none";
   }
-  fs::path dir_;
+  const symcontact::testing::TempFolder folder_;
+  const fs::path& dir_ = folder_.path();
 };
 
 TEST_F(GeoCommands, CommandsOutsideCommentsAndStringsAreRefusedWithTheirLine) {

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
 
+#include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/external_load.hpp"
 
@@ -85,19 +85,18 @@ TEST(GmshIo, MissingGroupNamesTheKeyAndTheKnownGroups) {
 }
 
 TEST(GmshIo, MalformedFilesAreInputErrors) {
-  const std::string dir = ::testing::TempDir();
-  {
-    std::ofstream(dir + "bad.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\ngarbage\n";
-    std::ofstream(dir + "bad.geo") << "Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n";
-    std::ofstream(dir + "mesh.stl") << "solid\n";
-  }
+  const symcontact::testing::TempFolder folder;
+  folder.write("bad.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 2 1 2\ngarbage\n");
+  folder.write("bad.geo", "Point(1) = {0, 0, 0};\nLine(1) = {1, 2};\n");
+  folder.write("mesh.stl", "solid\n");
   MeshReadOptions opt;
   for (const std::string name : {"bad.msh", "bad.geo", "mesh.stl", "absent.msh"}) {
+    const std::string path = (folder / name).string();
     try {
-      read_mesh_file(dir + name, opt);
+      read_mesh_file(path, opt);
       FAIL() << name;
     } catch (const InputError& e) {
-      EXPECT_EQ(e.file(), dir + name);
+      EXPECT_EQ(e.file(), path);
       EXPECT_FALSE(e.message().empty());
     }
   }

@@ -8,9 +8,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <string>
 
+#include "support/problem_snippet.hpp"
+#include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/mesh/gmsh_io.hpp"
 
@@ -83,22 +84,8 @@ $Elements
 $EndElements
 )";
 
-std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
-  std::string s = text;
-  const std::size_t at = s.find(from);
-  if (at == std::string::npos) ADD_FAILURE() << "test bug: \"" << from << "\" is not in the base file";
-  else s.replace(at, from.size(), to);
-  return s;
-}
-
-std::optional<InputError> error_of(const std::string& text) {
-  try {
-    validate_msh_text(text, "mesh.msh");
-  } catch (const InputError& e) {
-    return e;
-  }
-  return std::nullopt;
-}
+using testing::InputErrorCase;
+using testing::replaced;
 
 TEST(MshValidation, FilesAsGmshWritesThemPass) {
   EXPECT_NO_THROW(validate_msh_text(kMsh4, "mesh.msh"));
@@ -109,110 +96,98 @@ TEST(MshValidation, FilesAsGmshWritesThemPass) {
   }
 }
 
-struct BadMsh {
-  std::string name;
-  std::string text;
-  std::string line;      ///< expected key: "line L"
-  std::string fragment;  ///< expected in the message
-};
-
-class MshValidationBadInput : public ::testing::TestWithParam<BadMsh> {};
+class MshValidationBadInput : public ::testing::TestWithParam<InputErrorCase> {};
 
 TEST_P(MshValidationBadInput, IsAnInputErrorNamingTheFileAndLine) {
-  const BadMsh& c = GetParam();
-  const std::optional<InputError> e = error_of(c.text);
-  ASSERT_TRUE(e.has_value()) << "no error for:\n" << c.text;
-  EXPECT_EQ(e->file(), "mesh.msh");
-  EXPECT_EQ(e->key(), c.line) << e->what();
-  EXPECT_NE(e->message().find(c.fragment), std::string::npos)
-      << "message: " << e->message() << "\nexpected to contain: " << c.fragment;
+  const InputErrorCase& c = GetParam();
+  testing::expect_input_error_case([&] { validate_msh_text(c.text, "mesh.msh"); }, c, "mesh.msh");
 }
 
 INSTANTIATE_TEST_SUITE_P(
     MshValidation, MshValidationBadInput,
     ::testing::Values(
         // the format line
-        BadMsh{"Empty", "", "line 1", "the file is empty"},
-        BadMsh{"NotMsh", "solid cube\nfacet normal 0 0 1\n", "line 1", "expected $MeshFormat on the first line"},
-        BadMsh{"Binary", replaced(kMsh4, "4.1 0 8", "4.1 1 8"), "line 2", "binary .msh files are not supported"},
-        BadMsh{"Version40", replaced(kMsh4, "4.1 0 8", "4 0 8"), "line 2", "MSH version 4 is not supported"},
-        BadMsh{"Version3", replaced(kMsh2, "2.2 0 8", "3.0 0 8"), "line 2", "MSH version 3.0 is not supported"},
-        BadMsh{"FormatLineShort", replaced(kMsh4, "4.1 0 8", "4.1 0"), "line 2", "expected version file-type data-size"},
-        BadMsh{"NulByte", replaced(kMsh4, "4.1 0 8", std::string("4.1 0\0 8", 8)), "line 2", "a NUL byte"},
+        InputErrorCase{"Empty", "", "line 1", "the file is empty"},
+        InputErrorCase{"NotMsh", "solid cube\nfacet normal 0 0 1\n", "line 1", "expected $MeshFormat on the first line"},
+        InputErrorCase{"Binary", replaced(kMsh4, "4.1 0 8", "4.1 1 8"), "line 2", "binary .msh files are not supported"},
+        InputErrorCase{"Version40", replaced(kMsh4, "4.1 0 8", "4 0 8"), "line 2", "MSH version 4 is not supported"},
+        InputErrorCase{"Version3", replaced(kMsh2, "2.2 0 8", "3.0 0 8"), "line 2", "MSH version 3.0 is not supported"},
+        InputErrorCase{"FormatLineShort", replaced(kMsh4, "4.1 0 8", "4.1 0"), "line 2", "expected version file-type data-size"},
+        InputErrorCase{"NulByte", replaced(kMsh4, "4.1 0 8", std::string("4.1 0\0 8", 8)), "line 2", "a NUL byte"},
         // sections
-        BadMsh{"UnknownSection", replaced(kMsh4, "$Nodes\n", "$NodeData\n1\n$EndNodeData\n$Nodes\n"), "line 16",
+        InputErrorCase{"UnknownSection", replaced(kMsh4, "$Nodes\n", "$NodeData\n1\n$EndNodeData\n$Nodes\n"), "line 16",
                "section $NodeData is not supported"},
-        BadMsh{"PrefixOfAKnownSection", replaced(kMsh4, "$Nodes\n", "$NodesX\n$EndNodesX\n$Nodes\n"), "line 16",
+        InputErrorCase{"PrefixOfAKnownSection", replaced(kMsh4, "$Nodes\n", "$NodesX\n$EndNodesX\n$Nodes\n"), "line 16",
                "section $NodesX is not supported"},
-        BadMsh{"TwoNodeSections", replaced(kMsh2, "$Elements\n", "$Nodes\n0\n$EndNodes\n$Elements\n"), "line 17",
+        InputErrorCase{"TwoNodeSections", replaced(kMsh2, "$Elements\n", "$Nodes\n0\n$EndNodes\n$Elements\n"), "line 17",
                "a second $Nodes section (the first is on line 10)"},
-        BadMsh{"ElementsBeforeNodes", replaced(kMsh2, "$Nodes\n", "$Elements\n0\n$EndElements\n$Nodes\n"), "line 10",
+        InputErrorCase{"ElementsBeforeNodes", replaced(kMsh2, "$Nodes\n", "$Elements\n0\n$EndElements\n$Nodes\n"), "line 10",
                "$Elements before $Nodes"},
-        BadMsh{"StrayLine", replaced(kMsh2, "$Nodes\n", "hello\n$Nodes\n"), "line 10",
+        InputErrorCase{"StrayLine", replaced(kMsh2, "$Nodes\n", "hello\n$Nodes\n"), "line 10",
                "expected a section header ($Name alone on its line), got \"hello\""},
-        BadMsh{"EndWithoutStart", replaced(kMsh2, "$Nodes\n", "$EndComments\n$Nodes\n"), "line 10",
+        InputErrorCase{"EndWithoutStart", replaced(kMsh2, "$Nodes\n", "$EndComments\n$Nodes\n"), "line 10",
                "$EndComments without an opening $Comments"},
-        BadMsh{"TruncatedInNodes", kMsh4.substr(0, kMsh4.find("\n1 1 0\n") + 1), "line 24",
+        InputErrorCase{"TruncatedInNodes", kMsh4.substr(0, kMsh4.find("\n1 1 0\n") + 1), "line 24",
                "the file ends inside $Nodes (expected the coordinates of node 3): is it truncated?"},
-        BadMsh{"MissingEnd", kMsh2.substr(0, kMsh2.find("$EndElements")), "line 22",
+        InputErrorCase{"MissingEnd", kMsh2.substr(0, kMsh2.find("$EndElements")), "line 22",
                "the file ends inside $Elements (expected $EndElements): is it truncated?"},
-        BadMsh{"CountTooSmall", replaced(kMsh2, "$Nodes\n4\n", "$Nodes\n3\n"), "line 15",
+        InputErrorCase{"CountTooSmall", replaced(kMsh2, "$Nodes\n4\n", "$Nodes\n3\n"), "line 15",
                "expected $EndNodes (the end of the section: is a count too small?), got \"4 0 1 0\""},
-        BadMsh{"LongHeaderLine", replaced(kMsh2, "$Nodes\n", "$Nodes" + std::string(300, ' ') + "\n"), "line 10",
+        InputErrorCase{"LongHeaderLine", replaced(kMsh2, "$Nodes\n", "$Nodes" + std::string(300, ' ') + "\n"), "line 10",
                "a line longer than 255 characters"},
         // physical names
-        BadMsh{"UnquotedName", replaced(kMsh4, "\"top\"", "top"), "line 7", "expected the physical name in double quotes"},
-        BadMsh{"NameDimension", replaced(kMsh4, "2 3 \"square\"", "4 3 \"square\""), "line 8",
+        InputErrorCase{"UnquotedName", replaced(kMsh4, "\"top\"", "top"), "line 7", "expected the physical name in double quotes"},
+        InputErrorCase{"NameDimension", replaced(kMsh4, "2 3 \"square\"", "4 3 \"square\""), "line 8",
                "expected the dimension of a physical group in [0, 3], got 4"},
         // entities
-        BadMsh{"UndeclaredBoundingPoint", replaced(kMsh4, "1 0 0 0 1 0 0 1 1 0", "1 0 0 0 1 0 0 1 1 2 7 8"), "line 12",
+        InputErrorCase{"UndeclaredBoundingPoint", replaced(kMsh4, "1 0 0 0 1 0 0 1 1 0", "1 0 0 0 1 0 0 1 1 2 7 8"), "line 12",
                "bounding point 7 of curve 1 is not declared"},
-        BadMsh{"BoundingListShort", replaced(kMsh4, "1 0 0 0 1 0 0 1 1 0", "1 0 0 0 1 0 0 1 1 3 7 8"), "line 12",
+        InputErrorCase{"BoundingListShort", replaced(kMsh4, "1 0 0 0 1 0 0 1 1 0", "1 0 0 0 1 0 0 1 1 3 7 8"), "line 12",
                "expected the bounding points (13 values), got 12"},
-        BadMsh{"BoundingCurveNotDeclared", replaced(kMsh4, "1 0 0 0 1 1 0 1 3 0", "1 0 0 0 1 1 0 1 3 1 5"),
+        InputErrorCase{"BoundingCurveNotDeclared", replaced(kMsh4, "1 0 0 0 1 1 0 1 3 0", "1 0 0 0 1 1 0 1 3 1 5"),
                "line 14", "bounding curve 5 of surface 1 is not declared"},
-        BadMsh{"EntityBoxNotANumber", replaced(kMsh4, "1 0 0 0 1 1 0 1 3 0", "1 0 0 0 x 1 0 1 3 0"), "line 14",
+        InputErrorCase{"EntityBoxNotANumber", replaced(kMsh4, "1 0 0 0 1 1 0 1 3 0", "1 0 0 0 x 1 0 1 3 0"), "line 14",
                "expected a coordinate (a number), got \"x\""},
         // nodes
-        BadMsh{"NodeBlocksDoNotAddUp", replaced(kMsh4, "1 4 1 4\n2 1 0 4", "1 5 1 5\n2 1 0 4"), "line 17",
+        InputErrorCase{"NodeBlocksDoNotAddUp", replaced(kMsh4, "1 4 1 4\n2 1 0 4", "1 5 1 5\n2 1 0 4"), "line 17",
                "the node blocks hold 4 nodes, the $Nodes header announced 5"},
-        BadMsh{"ElementBlocksDoNotAddUp", replaced(kMsh4, "3 4 1 4\n", "3 5 1 5\n"), "line 29",
+        InputErrorCase{"ElementBlocksDoNotAddUp", replaced(kMsh4, "3 4 1 4\n", "3 5 1 5\n"), "line 29",
                "the element blocks hold 4 elements, the $Elements header announced 5"},
-        BadMsh{"NodeBlockTooLarge", replaced(kMsh4, "2 1 0 4", "2 1 0 9"), "line 18",
+        InputErrorCase{"NodeBlockTooLarge", replaced(kMsh4, "2 1 0 4", "2 1 0 9"), "line 18",
                "expected the number of nodes in the block in [0, 4], got 9"},
-        BadMsh{"NodeTagOutsideRange", replaced(kMsh4, "1\n2\n3\n4\n", "1\n2\n3\n5\n"), "line 22",
+        InputErrorCase{"NodeTagOutsideRange", replaced(kMsh4, "1\n2\n3\n4\n", "1\n2\n3\n5\n"), "line 22",
                "expected a node tag in [1, 4], got 5"},
-        BadMsh{"NodeTagTwice", replaced(kMsh2, "4 0 1 0", "3 0 1 0"), "line 15", "node 3 is defined twice"},
-        BadMsh{"NodeTagZero", replaced(kMsh2, "1 0 0 0\n", "0 0 0 0\n"), "line 12",
+        InputErrorCase{"NodeTagTwice", replaced(kMsh2, "4 0 1 0", "3 0 1 0"), "line 15", "node 3 is defined twice"},
+        InputErrorCase{"NodeTagZero", replaced(kMsh2, "1 0 0 0\n", "0 0 0 0\n"), "line 12",
                "expected a node tag in [1, 2147483647], got 0"},
-        BadMsh{"NanCoordinate", replaced(kMsh4, "\n1 1 0\n", "\n1 nan 0\n"), "line 25",
+        InputErrorCase{"NanCoordinate", replaced(kMsh4, "\n1 1 0\n", "\n1 nan 0\n"), "line 25",
                "node 3: the y coordinate is not a finite number (got \"nan\")"},
-        BadMsh{"InfCoordinate", replaced(kMsh2, "2 1 0 0", "2 inf 0 0"), "line 13",
+        InputErrorCase{"InfCoordinate", replaced(kMsh2, "2 1 0 0", "2 inf 0 0"), "line 13",
                "node 2: the x coordinate is not a finite number (got \"inf\")"},
-        BadMsh{"CoordinateMissing", replaced(kMsh2, "2 1 0 0", "2 1 0"), "line 13", "expected node tag x y z (4 values), got 3"},
-        BadMsh{"NodeOfUndeclaredEntity", replaced(kMsh4, "2 1 0 4", "2 9 0 4"), "line 18",
+        InputErrorCase{"CoordinateMissing", replaced(kMsh2, "2 1 0 0", "2 1 0"), "line 13", "expected node tag x y z (4 values), got 3"},
+        InputErrorCase{"NodeOfUndeclaredEntity", replaced(kMsh4, "2 1 0 4", "2 9 0 4"), "line 18",
                "entity (dimension 2, tag 9) is not declared in $Entities"},
-        BadMsh{"HugeCount", replaced(kMsh2, "$Nodes\n4\n", "$Nodes\n99999999999\n"), "line 11",
+        InputErrorCase{"HugeCount", replaced(kMsh2, "$Nodes\n4\n", "$Nodes\n99999999999\n"), "line 11",
                "expected the number of nodes in [0, 2147483647], got 99999999999"},
         // elements
-        BadMsh{"UnknownElementType", replaced(kMsh2, "3 2 2 3 1 1 2 3", "3 77 2 3 1 1 2 3"), "line 21",
+        InputErrorCase{"UnknownElementType", replaced(kMsh2, "3 2 2 3 1 1 2 3", "3 77 2 3 1 1 2 3"), "line 21",
                "element 3: unknown element type 77"},
-        BadMsh{"ElementNodeUndefined", replaced(kMsh2, "4 2 2 3 1 1 3 4", "4 2 2 3 1 1 3 9"), "line 22",
+        InputErrorCase{"ElementNodeUndefined", replaced(kMsh2, "4 2 2 3 1 1 3 4", "4 2 2 3 1 1 3 9"), "line 22",
                "element 4 refers to node 9, which $Nodes does not define"},
-        BadMsh{"ElementTooFewNodes", replaced(kMsh4, "4 1 3 4", "4 1 3"), "line 36",
+        InputErrorCase{"ElementTooFewNodes", replaced(kMsh4, "4 1 3 4", "4 1 3"), "line 36",
                "expected an element tag and 3 node tags (4 values), got 3"},
-        BadMsh{"ElementTypeOfTheWrongDimension", replaced(kMsh4, "2 1 2 2", "2 1 4 2"), "line 34",
+        InputErrorCase{"ElementTypeOfTheWrongDimension", replaced(kMsh4, "2 1 2 2", "2 1 4 2"), "line 34",
                "element type 4 has dimension 3, but the block's entity has dimension 2"},
-        BadMsh{"PartitionCountBeyondTags", replaced(kMsh2, "3 2 2 3 1 1 2 3", "3 2 3 3 1 5 1 2 3"), "line 21",
+        InputErrorCase{"PartitionCountBeyondTags", replaced(kMsh2, "3 2 2 3 1 1 2 3", "3 2 3 3 1 5 1 2 3"), "line 21",
                "expected the number of partitions in [0, 0], got 5"},
-        BadMsh{"NegativeTagCount", replaced(kMsh2, "3 2 2 3 1 1 2 3", "3 2 -2 3 1 1 2 3"), "line 21",
+        InputErrorCase{"NegativeTagCount", replaced(kMsh2, "3 2 2 3 1 1 2 3", "3 2 -2 3 1 1 2 3"), "line 21",
                "expected the number of tags in [0, 64], got -2"}),
-    [](const ::testing::TestParamInfo<BadMsh>& case_info) { return case_info.param.name; });
+    [](const ::testing::TestParamInfo<InputErrorCase>& case_info) { return case_info.param.name; });
 
 TEST(MshValidation, ReadMeshFileRejectsBeforeGmshReads) {
   // The same fault through read_mesh_file(): an InputError naming the file and the line.
-  const std::string path = ::testing::TempDir() + "symcontact_nan_node.msh";
-  std::ofstream(path) << replaced(kMsh4, "\n1 1 0\n", "\n1 nan 0\n");
+  const testing::TempFolder folder;
+  const std::string path = folder.write("nan_node.msh", replaced(kMsh4, "\n1 1 0\n", "\n1 nan 0\n")).string();
   MeshReadOptions opt;
   try {
     read_mesh_file(path, opt);

@@ -1,13 +1,197 @@
-// The load factors of the model (model/model.hpp, step_factor): a step's own factors or the global ones,
-// and within a step (the sub-steps of an automatic step cut) linear between step − 1 and step.
-#include <gtest/gtest.h>
-
-#include <vector>
+// Tests of the discrete model (src/symcontact/model/model.hpp) on small structured meshes: the DOF numbering
+// of several bodies, the Dirichlet values and loads of each load step and of fractions of a step
+// (fixed_dofs(), set_step()), and the reactions of a solved problem.
 
 #include "symcontact/model/model.hpp"
 
-using namespace symcontact;
+#include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "support/model_case.hpp"
+#include "support/problem_snippet.hpp"
+#include "support/rectangle_msh.hpp"
+#include "support/temp_folder.hpp"
+#include "symcontact/core/error.hpp"
+#include "symcontact/solvers/equilibrium_solver.hpp"
+
+namespace symcontact {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::ProblemSnippet;
+
+/// A 2 × 1 block (block.msh: 2 × 1 squares, 6 nodes) clamped at its bottom, its left side moved by ux = 0.1
+/// and its top by uy = −0.3, over two load steps at factors 0.5 and 1.
+const ProblemSnippet kBlock =
+    testing::clamped_block() + testing::dirichlet_toml("left", "ux = 0.1\n") + testing::dirichlet_toml("top", "uy = -0.3\n");
+
+/// A problem and its model (the model refers to the spec, so both live here), built from `text` with the
+/// meshes block.msh (2 × 1, 2 × 1 squares) and lid.msh (1 × 1, one square) in a temporary folder.
+class ModelTest : public ::testing::Test {
+ protected:
+  void build(const std::string& text) {
+    testing::write_rectangle_msh(folder_ / "block.msh", 2.0, 1.0, 2, 1);
+    testing::write_rectangle_msh(folder_ / "lid.msh", 1.0, 1.0, 1, 1);
+    case_ = testing::build_model(text, folder_.path());
+    model_ = case_->model.get();
+  }
+  /// The global DOF of component `comp` of the node of body `body` at (x, y).
+  Index dof_at(int body, double x, double y, int comp) const {
+    const Mesh& mesh = model_->bodies()[body]->mesh;
+    for (Index a = 0; a < mesh.num_nodes(); ++a)
+      if (std::abs(mesh.x(0, a) - x) < 1e-12 && std::abs(mesh.x(1, a) - y) < 1e-12)
+        return model_->dofs().dof(body, a, comp);
+    ADD_FAILURE() << "no node at (" << x << ", " << y << ")";
+    return 0;
+  }
+  /// The Dirichlet values of `fixed` as a full vector (zero on free DOFs).
+  VectorXd imposed(const FixedDofs& fixed) const {
+    VectorXd u = VectorXd::Zero(model_->dofs().num_dofs());
+    fixed.impose(u);
+    return u;
+  }
+  /// Σ of component `comp` of the external load vector.
+  double total_load(int comp) const {
+    const VectorXd f = model_->external_load();
+    double s = 0.0;
+    for (Index d = comp; d < f.size(); d += model_->dim()) s += f[d];
+    return s;
+  }
+
+  const testing::TempFolder folder_;
+  std::unique_ptr<testing::ModelCase> case_;
+  Model* model_ = nullptr;
+};
+
+TEST_F(ModelTest, DofNumberingOfTwoBodies) {
+  build(kBlock + testing::body_toml("lid", "lid.msh", "block", "E = 2.0, nu = 0.25",
+                                    testing::dirichlet_toml("bottom", "uy = 0.0\n")));
+  EXPECT_EQ(model_->dim(), 2);
+  EXPECT_EQ(model_->num_steps(), 2);
+  ASSERT_EQ(model_->bodies().size(), 2u);
+  EXPECT_EQ(model_->bodies()[0]->mesh.num_nodes(), 6);
+  EXPECT_EQ(model_->bodies()[1]->mesh.num_nodes(), 4);
+  EXPECT_EQ(model_->dofs().num_dofs(), 2 * (6 + 4));
+  EXPECT_EQ(model_->dofs().dof(1, 0, 0), 12);  // the lid's DOFs follow the block's
+  EXPECT_EQ(model_->dofs().dof(1, 3, 1), 19);
+  EXPECT_EQ(model_->body_index("lid"), 1);
+  EXPECT_EQ(model_->body_index("block"), 0);
+  EXPECT_EQ(model_->body_index("nobody"), -1);
+  // One Dirichlet boundary per condition, in problem-file order, with its body and nodes.
+  const std::vector<DirichletBoundary>& b = model_->dirichlet_boundaries();
+  ASSERT_EQ(b.size(), 4u);
+  EXPECT_EQ(b[0].name, "bottom");
+  EXPECT_EQ(b[0].nodes.size(), 3u);
+  EXPECT_EQ(b[1].name, "left");
+  EXPECT_EQ(b[1].nodes.size(), 2u);
+  EXPECT_EQ(b[3].body, 1);
+  EXPECT_EQ(b[3].nodes.size(), 2u);
+  // The lid's bottom holds its uy only, at the lid's own DOFs.
+  const std::vector<int> owner = model_->fixed_dofs(1).owner_of(model_->dofs().num_dofs());
+  EXPECT_EQ(owner[dof_at(1, 0.0, 0.0, 1)], 3);
+  EXPECT_EQ(owner[dof_at(1, 0.0, 0.0, 0)], -1);
+}
+
+TEST_F(ModelTest, DirichletValuesAtEachStepAndBetweenSteps) {
+  build(kBlock);
+  const Index corner_x = dof_at(0, 0.0, 0.0, 0), corner_y = dof_at(0, 0.0, 0.0, 1);
+  const Index top_left_x = dof_at(0, 0.0, 1.0, 0), top_right_y = dof_at(0, 2.0, 1.0, 1);
+  const Index top_mid_x = dof_at(0, 1.0, 1.0, 0);
+  // (step, fraction) → the factor: the step's own, or linear from the previous step (0 before step 0).
+  const struct {
+    int step;
+    double fraction, factor;
+  } cases[] = {{0, 1.0, 0.5}, {1, 1.0, 1.0}, {1, 0.5, 0.75}, {0, 0.5, 0.25}, {0, 0.0, 0.0}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE("step " + std::to_string(c.step) + ", fraction " + std::to_string(c.fraction));
+    const FixedDofs fixed = model_->fixed_dofs(c.step, c.fraction);
+    const VectorXd u = imposed(fixed);
+    EXPECT_DOUBLE_EQ(u[corner_x], 0.1 * c.factor);  // named by bottom, then left: the last one holds
+    EXPECT_EQ(u[corner_y], 0.0);
+    EXPECT_DOUBLE_EQ(u[top_left_x], 0.1 * c.factor);
+    EXPECT_DOUBLE_EQ(u[top_right_y], -0.3 * c.factor);
+    std::vector<Index> free_index;
+    // 12 DOFs; fixed: bottom 3 × 2, left adds the top-left ux, top 3 × uy: the top ux of x = 1, 2 stay free.
+    EXPECT_EQ(fixed.free_numbering(model_->dofs().num_dofs(), free_index), 2);
+    EXPECT_GE(free_index[top_mid_x], 0);
+  }
+  const std::vector<int> owner = model_->fixed_dofs(1).owner_of(model_->dofs().num_dofs());
+  EXPECT_EQ(owner[corner_x], 1);  // left, given after bottom
+  EXPECT_EQ(owner[corner_y], 0);
+  EXPECT_EQ(owner[top_right_y], 2);
+}
+
+TEST_F(ModelTest, OwnDirichletFactorsReplaceTheGlobalOnes) {
+  build(kBlock.after("uy = -0.3\n", "factors = [1.0, 0.0]\n"));
+  const Index top_right_y = dof_at(0, 2.0, 1.0, 1), corner_x = dof_at(0, 0.0, 0.0, 0);
+  EXPECT_DOUBLE_EQ(imposed(model_->fixed_dofs(0))[top_right_y], -0.3);
+  EXPECT_DOUBLE_EQ(imposed(model_->fixed_dofs(1))[top_right_y], 0.0);
+  EXPECT_DOUBLE_EQ(imposed(model_->fixed_dofs(1, 0.25))[top_right_y], -0.3 * 0.75);
+  EXPECT_DOUBLE_EQ(imposed(model_->fixed_dofs(0, 0.5))[top_right_y], -0.15);
+  EXPECT_DOUBLE_EQ(imposed(model_->fixed_dofs(1, 0.25))[corner_x], 0.1 * 0.625);  // the others: global
+}
+
+TEST_F(ModelTest, LoadsFollowTheirFactorsThroughSetStep) {
+  // A traction on the right side (length 1) with the global factors, a body force over the area 2 with its
+  // own, a pressure on the top (length 2, outward normal +y) with its own.
+  build(kBlock.after("group = \"block\"\n", "body_force = [0.0, -1.0]\nbody_force_factors = [0.0, 1.0]\n") +
+        "[[body.traction]]\nboundary = \"right\"\ntraction = [2.0, 0.0]\n"
+        "[[body.pressure]]\nboundary = \"top\"\npressure = 3.0\nfactors = [1.0, 1.0]\n");
+  const struct {
+    int step;
+    double fraction, fx, fy;
+  } cases[] = {{0, 1.0, 2.0 * 0.5, -6.0},
+               {1, 1.0, 2.0, -2.0 - 6.0},
+               {1, 0.5, 2.0 * 0.75, -2.0 * 0.5 - 6.0},
+               {0, 0.5, 2.0 * 0.25, -6.0 * 0.5}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE("step " + std::to_string(c.step) + ", fraction " + std::to_string(c.fraction));
+    model_->set_step(c.step, c.fraction);
+    EXPECT_NEAR(total_load(0), c.fx, 1e-12);
+    EXPECT_NEAR(total_load(1), c.fy, 1e-12);
+    // The energy sees the same loads: ∇E(0) = −f (the elastic part vanishes at u = 0).
+    VectorXd g = VectorXd::Zero(model_->dofs().num_dofs());
+    model_->energy().add_gradient(VectorXd::Zero(g.size()), g);
+    EXPECT_LT((g + model_->external_load()).lpNorm<Eigen::Infinity>(), 1e-12);
+  }
+}
+
+TEST_F(ModelTest, ReactionsBalanceTheAppliedLoad) {
+  // Clamped at the bottom only, pulled up and sideways on the top: the support carries the whole load.
+  build(kBlock.replaced("[[body.dirichlet]]\nboundary = \"left\"\nux = 0.1\n", "")
+            .replaced("[[body.dirichlet]]\nboundary = \"top\"\nuy = -0.3\n",
+                      "[[body.traction]]\nboundary = \"top\"\ntraction = [0.25, 1.0]\n"));
+  model_->set_step(1);
+  const FixedDofs fixed = model_->fixed_dofs(1);
+  VectorXd u = VectorXd::Zero(model_->dofs().num_dofs());
+  solve_equilibrium(model_->energy(), fixed, u);
+  VectorXd g = VectorXd::Zero(u.size());
+  model_->energy().add_gradient(u, g);
+  const std::vector<Eigen::VectorXd> r = model_->reactions(fixed, g);
+  ASSERT_EQ(r.size(), 1u);
+  // The support's force on the body balances the traction's resultant 2 × (0.25, 1).
+  EXPECT_NEAR(r[0][0], -0.5, 1e-10);
+  EXPECT_NEAR(r[0][1], -2.0, 1e-10);
+}
+
+TEST_F(ModelTest, MissingDirichletGroupIsAnInputError) {
+  try {
+    build(kBlock.replaced("boundary = \"left\"", "boundary = \"nowhere\""));
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "case.toml");
+    EXPECT_EQ(e.key(), "body[0].dirichlet[1].boundary");
+    EXPECT_NE(e.message().find("has no group 'nowhere'"), std::string::npos) << e.what();
+  }
+}
+
+// The load factors (step_factor): a step's own factors or the global ones, and within a step (the sub-steps
+// of an automatic step cut) linear between step − 1 and step.
 TEST(ModelLoads, StepFactorsAreInterpolatedBetweenSteps) {
   const std::vector<double> global = {0.5, 1.0}, own = {0.2, 0.6};
   EXPECT_EQ(step_factor({}, global, 0, 0.5), 0.25);  // from the unloaded start
@@ -16,3 +200,6 @@ TEST(ModelLoads, StepFactorsAreInterpolatedBetweenSteps) {
   EXPECT_EQ(step_factor(own, global, 1, 1.0), 0.6);
   EXPECT_EQ(step_factor(own, global, 1), 0.6);
 }
+
+}  // namespace
+}  // namespace symcontact

@@ -14,22 +14,22 @@
 #include <string>
 #include <vector>
 
+#include "support/problem_snippet.hpp"
+#include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
 
 namespace symcontact {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::ProblemSnippet;
 
 /// A folder holding the (empty) mesh files the problems refer to: the reader only checks existence.
 const std::string& mesh_dir() {
   static const std::string dir = [] {
     const fs::path d = fs::path(::testing::TempDir()) / "symcontact_problem_reader";
-    fs::create_directories(d / "meshes");
-    for (const char* name : {"block.geo", "block.msh", "block.stl", "meshes/foundation.msh", "upper.geo", "lower.geo",
-                             "die.geo"}) {
-      std::ofstream(d / name) << "// placeholder\n";
-    }
+    testing::write_placeholders(d, {"block.geo", "block.msh", "block.stl", "meshes/foundation.msh", "upper.geo",
+                                    "lower.geo", "die.geo"});
     return d.string();
   }();
   return dir;
@@ -41,18 +41,8 @@ std::string resolved(const std::string& relative) {
 
 ProblemSpec parse(const std::string& text) { return parse_problem(text, "case.toml", mesh_dir()); }
 
-/// Parses `text` and returns the InputError it must throw.
-std::optional<InputError> error_of(const std::string& text) {
-  try {
-    parse(text);
-  } catch (const InputError& e) {
-    return e;
-  }
-  return std::nullopt;
-}
-
 /// A valid 2D file with one body; bad cases are one edit away from it.
-const std::string kBase = R"(title = "base"
+const ProblemSnippet kBase(R"(title = "base"
 [problem]
 dimension = 2
 [steps]
@@ -66,32 +56,14 @@ nu = 0.3
 [[body.dirichlet]]
 boundary = "bottom"
 uy = 0.0
-)";
-
-/// `text` with the first occurrence of `from` replaced by `to`.
-std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
-  std::string s = text;
-  const std::size_t at = s.find(from);
-  if (at == std::string::npos) ADD_FAILURE() << "test bug: \"" << from << "\" is not in the base file";
-  else s.replace(at, from.size(), to);
-  return s;
-}
-
-/// kBase with the first occurrence of `from` replaced by `to`.
-std::string edit(const std::string& from, const std::string& to) { return replaced(kBase, from, to); }
-
-std::string with_dimension_3(const std::string& text) {
-  std::string s = text;
-  s.replace(s.find("dimension = 2"), 13, "dimension = 3");
-  return s;
-}
+)");
 
 TEST(ProblemReader, BaseFileIsValid) { EXPECT_NO_THROW(parse(kBase)); }
 
 TEST(ProblemReader, NonAsciiInStringsAndCommentsIsValid) {
   // Non-ASCII text in comments, basic, literal and multi-line strings, quoted keys; a byte order mark.
   const std::string text = "\xEF\xBB\xBF# \u03bd = 0.3, in a comment\n" +
-                           edit("title = \"base\"", "title = \"Bloc d'\u00e9t\u00e9 \\\" \u03bd\"") +
+                           kBase.replaced("title = \"base\"", "title = \"Bloc d'\u00e9t\u00e9 \\\" \u03bd\"") +
                            "[ipopt]\n\"\u03bd\" = \"\"\"\u0436\n\u013e\"\"\"\nother = '''\n\u013e'''\nlit = '\u00e9'\n"
                            // a line-ending backslash, then a non-ASCII character (toml++ 3.3 alone: undefined
                            // behaviour), a character beyond the BMP, an escape next to the raw character
@@ -227,12 +199,12 @@ b = "foundation-2.top"
 
 // steps.count alone is a linear ramp; a load curve { at, values } is piecewise linear in the step number.
 TEST(ProblemReader, StepCountAndLoadCurves) {
-  const ProblemSpec ramp = parse(edit("load_factors = [0.5, 1.0]", "count = 4"));
+  const ProblemSpec ramp = parse(kBase.replaced("load_factors = [0.5, 1.0]", "count = 4"));
   EXPECT_EQ(ramp.load_factors, (std::vector<double>{0.25, 0.5, 0.75, 1.0}));
   const ProblemSpec curve = parse(
-      edit("load_factors = [0.5, 1.0]", "count = 5\nload_factors = { at = [0, 2, 6], values = [0, 1, 3] }"));
+      kBase.replaced("load_factors = [0.5, 1.0]", "count = 5\nload_factors = { at = [0, 2, 6], values = [0, 1, 3] }"));
   EXPECT_EQ(curve.load_factors, (std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5}));
-  const ProblemSpec own = parse(replaced(edit("load_factors = [0.5, 1.0]", "count = 4"), "uy = 0.0",
+  const ProblemSpec own = parse(kBase.replaced("load_factors = [0.5, 1.0]", "count = 4").replaced("uy = 0.0",
                                          "uy = 0.0\nfactors = { at = [0, 1, 4], values = [0, 1, -2] }"));
   EXPECT_EQ(own.bodies[0].dirichlet[0].factors, (std::vector<double>{1.0, 0.0, -1.0, -2.0}));
 }
@@ -274,7 +246,7 @@ traction = [1, 2, 3]
 
 TEST(ProblemReader, HyperelasticMaterialsFromYoungAndPoisson) {
   for (const char* model : {"neo_hookean", "mooney_rivlin"}) {
-    const ProblemSpec spec = parse(edit("E = 1.0", std::string("model = \"") + model + "\"\nE = 1.0"));
+    const ProblemSpec spec = parse(kBase.replaced("E = 1.0", std::string("model = \"") + model + "\"\nE = 1.0"));
     const MaterialSpec& m = spec.bodies[0].material;
     EXPECT_EQ(m.model, model);
     EXPECT_FALSE(m.own_constants);
@@ -284,7 +256,7 @@ TEST(ProblemReader, HyperelasticMaterialsFromYoungAndPoisson) {
 }
 
 TEST(ProblemReader, NeoHookeanOwnConstants) {
-  const ProblemSpec spec = parse(edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0.5\nlambda = 1.5"));
+  const ProblemSpec spec = parse(kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0.5\nlambda = 1.5"));
   const MaterialSpec& m = spec.bodies[0].material;
   EXPECT_EQ(m.model, "neo_hookean");
   EXPECT_TRUE(m.own_constants);
@@ -297,7 +269,7 @@ TEST(ProblemReader, NeoHookeanOwnConstants) {
 
 TEST(ProblemReader, MooneyRivlinOwnConstantsIn3D) {
   const ProblemSpec spec =
-      parse(with_dimension_3(edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0.3\nc2 = 0\nkappa = 2")));
+      parse(kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0.3\nc2 = 0\nkappa = 2").in_3d());
   const MaterialSpec& m = spec.bodies[0].material;
   EXPECT_EQ(m.model, "mooney_rivlin");
   EXPECT_TRUE(m.own_constants);
@@ -312,7 +284,7 @@ TEST(ProblemReader, MooneyRivlinOwnConstantsIn3D) {
 // ---- contact ----
 
 /// kBase plus a second body "lower" and one contact between them; bad contact cases edit it.
-const std::string kTwoBodies = kBase + R"(
+const ProblemSnippet kTwoBodies = kBase + R"(
 [[body]]
 name = "lower"
 mesh = "block.msh"
@@ -324,7 +296,7 @@ b = "lower.top"
 )";
 
 /// kBase plus one contact of block.bottom against a rigid plane.
-const std::string kPlane = kBase + R"(
+const ProblemSnippet kPlane = kBase + R"(
 [[contact]]
 a = "block.bottom"
 [contact.obstacle]
@@ -334,7 +306,7 @@ normal = [0.0, 1.0]
 )";
 
 /// kBase plus one contact of block.bottom against a rigid circle.
-const std::string kCircle = kBase + R"(
+const ProblemSnippet kCircle = kBase + R"(
 [[contact]]
 a = "block.bottom"
 [contact.obstacle]
@@ -344,7 +316,7 @@ radius = 1.0
 )";
 
 /// kBase plus one contact of block.bottom against the group "surface" of the rigid mesh die.geo.
-const std::string kMeshObstacle = kBase + R"(
+const ProblemSnippet kMeshObstacle = kBase + R"(
 [[contact]]
 a = "block.bottom"
 [contact.obstacle]
@@ -439,11 +411,10 @@ TEST(ProblemReader, ContactDefaults) {
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
 }
 
-/// `text` with `keys` (lines "key = value\n") added to its first [[contact]] table, after `b` or `a`.
-std::string with_contact_keys(const std::string& text, const std::string& keys) {
-  const std::string after = text.find("b = \"lower.top\"\n") != std::string::npos ? "b = \"lower.top\"\n"
-                                                                                     : "a = \"block.bottom\"\n";
-  return replaced(text, after, after + keys);
+/// `base` with `keys` (lines "key = value\n") added to its first [[contact]] table, after `b` or `a`.
+ProblemSnippet with_contact_keys(const ProblemSnippet& base, const std::string& keys) {
+  const std::string b = "b = \"lower.top\"\n";
+  return base.after(base.text().find(b) != std::string::npos ? b : "a = \"block.bottom\"\n", keys);
 }
 
 TEST(ProblemReader, TrescaFriction) {
@@ -492,8 +463,8 @@ TEST(ProblemReader, FrictionAgainstAnObstacle) {
 TEST(ProblemReader, BodyHeldOnlyByAContactIsValid) {
   // No Dirichlet condition, but a contact with an obstacle or another body that can hold it.
   const std::string no_support = "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n";
-  EXPECT_NO_THROW(parse(replaced(kPlane, no_support, "")));
-  EXPECT_NO_THROW(parse(replaced(kTwoBodies, no_support, "") + "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n"));
+  EXPECT_NO_THROW(parse(kPlane.replaced(no_support, "")));
+  EXPECT_NO_THROW(parse(kTwoBodies.replaced(no_support, "") + "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n"));
 }
 
 TEST(ProblemReader, SelfContactIsAllowed) {
@@ -506,7 +477,7 @@ TEST(ProblemReader, SelfContactIsAllowed) {
 }
 
 TEST(ProblemReader, PlaneObstacle) {
-  const ProblemSpec spec = parse(replaced(kPlane, "normal = [0.0, 1.0]", "normal = [0, 2]"));
+  const ProblemSpec spec = parse(kPlane.replaced("normal = [0.0, 1.0]", "normal = [0, 2]"));
   ASSERT_EQ(spec.contacts.size(), 1u);
   const ContactSpec& c = spec.contacts[0];
   EXPECT_EQ(c.body_a, "block");
@@ -523,7 +494,7 @@ TEST(ProblemReader, PlaneObstacle) {
 }
 
 TEST(ProblemReader, CircleObstacleIn2D) {
-  const ProblemSpec spec = parse(replaced(kCircle, "radius = 1.0", "radius = 1.0\ninside = true"));
+  const ProblemSpec spec = parse(kCircle.after("radius = 1.0\n", "inside = true\n"));
   const ObstacleSpec& o = spec.contacts.at(0).obstacle.value();
   EXPECT_EQ(o.type, "circle");
   EXPECT_EQ(o.center, (std::vector<double>{0.0, -1.0}));
@@ -533,7 +504,7 @@ TEST(ProblemReader, CircleObstacleIn2D) {
 }
 
 TEST(ProblemReader, SphereObstacleIn3D) {
-  const ProblemSpec spec = parse(with_dimension_3(kBase) + R"(
+  const ProblemSpec spec = parse(kBase.in_3d() + R"(
 [[contact]]
 name = "ball"
 a = "block.bottom"
@@ -635,7 +606,7 @@ TEST(ProblemReader, DefaultModelIn2DIsPlaneStrain) { EXPECT_EQ(parse(kBase).mode
 
 TEST(ProblemReader, ReadsFileAndResolvesMeshAgainstItsFolder) {
   const fs::path problem = fs::path(mesh_dir()) / "meshes" / "problem.toml";
-  std::ofstream(problem) << edit("mesh = \"block.geo\"", "mesh = \"../block.geo\"");
+  testing::write_text(problem, kBase.replaced("mesh = \"block.geo\"", "mesh = \"../block.geo\""));
   const ProblemSpec spec = read_problem_file(problem.string());
   EXPECT_EQ(spec.file, problem.string());
   ASSERT_EQ(spec.bodies.size(), 1u);
@@ -657,7 +628,7 @@ TEST(ProblemReader, FileThatCannotBeOpened) {
 
 TEST(ProblemReader, ErrorsFromAFileNameTheFile) {
   const fs::path problem = fs::path(mesh_dir()) / "bad.toml";
-  std::ofstream(problem) << edit("nu = 0.3", "nu = 0.7");
+  testing::write_text(problem, kBase.replaced("nu = 0.3", "nu = 0.7"));
   try {
     read_problem_file(problem.string());
     FAIL() << "expected an InputError";
@@ -670,25 +641,13 @@ TEST(ProblemReader, ErrorsFromAFileNameTheFile) {
 
 // ---- bad input: each case is one edit of kBase ----
 
-struct BadCase {
-  const char* name;       ///< test name suffix
-  std::string text;       ///< the problem file
-  std::string key;        ///< expected InputError::key()
-  std::string fragment;   ///< expected part of InputError::message()
-};
+using testing::InputErrorCase;
 
-void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
-
-class ProblemReaderBadInput : public ::testing::TestWithParam<BadCase> {};
+class ProblemReaderBadInput : public ::testing::TestWithParam<InputErrorCase> {};
 
 TEST_P(ProblemReaderBadInput, ThrowsInputErrorWithKeyAndMessage) {
-  const BadCase& c = GetParam();
-  const std::optional<InputError> e = error_of(c.text);
-  ASSERT_TRUE(e.has_value()) << "no error for:\n" << c.text;
-  EXPECT_EQ(e->file(), "case.toml");
-  EXPECT_EQ(e->key(), c.key) << e->what();
-  EXPECT_NE(e->message().find(c.fragment), std::string::npos)
-      << "message: " << e->message() << "\nexpected to contain: " << c.fragment;
+  const InputErrorCase& c = GetParam();
+  testing::expect_input_error_case([&] { parse(c.text); }, c, "case.toml");
 }
 
 const std::string kSecondBody = R"(
@@ -704,394 +663,394 @@ INSTANTIATE_TEST_SUITE_P(
     ProblemReader, ProblemReaderBadInput,
     ::testing::Values(
         // syntax
-        BadCase{"MalformedToml", edit("dimension = 2", "dimension = = 2"), "", "line 3, column "},
-        BadCase{"UnterminatedTableHeader", edit("[steps]", "[steps"), "", "line 4, column "},
+        InputErrorCase{"MalformedToml", kBase.replaced("dimension = 2", "dimension = = 2"), "", "line 3, column "},
+        InputErrorCase{"UnterminatedTableHeader", kBase.replaced("[steps]", "[steps"), "", "line 4, column "},
         // non-ASCII characters outside strings (toml++ 3.3 alone reaches undefined behaviour on them, found by
         // fuzzing; see toml_parse.hpp) and text that is not UTF-8
-        BadCase{"NonAsciiKey", edit("nu = 0.3", "\u03bd = 0.3"), "",
+        InputErrorCase{"NonAsciiKey", kBase.replaced("nu = 0.3", "\u03bd = 0.3"), "",
                 "line 11, column 1: Error while parsing root table: expected keys, tables, whitespace or comments, "
                 "saw '\u03bd' (the character '\u03bd', U+03BD: outside strings and comments TOML allows ASCII only"},
-        BadCase{"NonAsciiAfterAKey", edit("nu = 0.3", "nu\u013e = 0.3"), "",
+        InputErrorCase{"NonAsciiAfterAKey", kBase.replaced("nu = 0.3", "nu\u013e = 0.3"), "",
                 "line 11, column 3: Error while parsing key-value pair: expected '=', saw '\u013e' (the character "
                 "'\u013e', U+013E: outside strings"},
-        BadCase{"NonAsciiInsideAnInvalidValueWithQuotes", edit("nu = 0.3", "nu = 1'''x\"\ufee2"), "",
+        InputErrorCase{"NonAsciiInsideAnInvalidValueWithQuotes", kBase.replaced("nu = 0.3", "nu = 1'''x\"\ufee2"), "",
                 "line 11, column 7: Error while parsing decimal integer: expected digit, saw '''"},
-        BadCase{"NonAsciiAfterAFloatAndAQuote", edit("nu = 0.3", "nu = [0.'!!\ufe7f."), "",
+        InputErrorCase{"NonAsciiAfterAFloatAndAQuote", kBase.replaced("nu = 0.3", "nu = [0.'!!\ufe7f."), "",
                 "line 11, column 9: Error while parsing floating-point: expected decimal digit"},
-        BadCase{"InvalidUtf8Byte", edit("nu = 0.3", "nu = 0.3 # caf\xE9"), "",
+        InputErrorCase{"InvalidUtf8Byte", kBase.replaced("nu = 0.3", "nu = 0.3 # caf\xE9"), "",
                 "line 11, column 15: the byte 0xE9 is not valid UTF-8 (the problem file must be UTF-8 encoded)"},
-        BadCase{"OverlongUtf8", edit("title = \"base\"", "title = \"\xC0\xAF\""), "",
+        InputErrorCase{"OverlongUtf8", kBase.replaced("title = \"base\"", "title = \"\xC0\xAF\""), "",
                 "line 1, column 10: the byte 0xC0 is not valid UTF-8"},
-        BadCase{"Utf8Surrogate", edit("title = \"base\"", "title = \"\xED\xA0\x80\""), "",
+        InputErrorCase{"Utf8Surrogate", kBase.replaced("title = \"base\"", "title = \"\xED\xA0\x80\""), "",
                 "line 1, column 10: the byte 0xED is not valid UTF-8"},
-        BadCase{"TruncatedUtf8AtTheEnd", kBase + "# \xE2\x82", "", "the byte 0xE2 is not valid UTF-8"},
-        BadCase{"PlaneFifteenCharacter", edit("title = \"base\"", "title = \"\U000F03BD\""), "",
+        InputErrorCase{"TruncatedUtf8AtTheEnd", kBase + "# \xE2\x82", "", "the byte 0xE2 is not valid UTF-8"},
+        InputErrorCase{"PlaneFifteenCharacter", kBase.replaced("title = \"base\"", "title = \"\U000F03BD\""), "",
                 "line 1, column 10: the private-use character U+F03BD (plane 15) is not supported"},
-        BadCase{"SameKeyRawAndEscaped", kBase + "[ipopt]\n\"\u00e9\" = 1\n\"\\u00e9\" = 2\n", "",
+        InputErrorCase{"SameKeyRawAndEscaped", kBase + "[ipopt]\n\"\u00e9\" = 1\n\"\\u00e9\" = 2\n", "",
                 "the key \"\u00e9\" is defined twice in one table"},
         // unknown keys
-        BadCase{"UnknownTopLevelKey", "solver = \"ipopt\"\n" + kBase, "solver",
+        InputErrorCase{"UnknownTopLevelKey", "solver = \"ipopt\"\n" + kBase, "solver",
                 "unknown key \"solver\"; allowed keys at the top level: title, problem, steps, output, body, contact, "
                 "contact_solver, ipopt"},
-        BadCase{"UnknownProblemKey", edit("dimension = 2", "dimension = 2\nodrer = 1"), "problem.odrer",
+        InputErrorCase{"UnknownProblemKey", kBase.after("dimension = 2\n", "odrer = 1\n"), "problem.odrer",
                 "unknown key \"odrer\" (did you mean \"order\"?)"},
-        BadCase{"UnknownBodyKey", edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\ncolour = \"red\""),
+        InputErrorCase{"UnknownBodyKey", kBase.after("mesh = \"block.geo\"\n", "colour = \"red\"\n"),
                 "body[0].colour", "allowed keys in body[0]: name, mesh, group, body_force"},
-        BadCase{"UnknownMaterialKey", edit("nu = 0.3", "nu = 0.3\nNu = 0.3"), "body[0].material.Nu",
+        InputErrorCase{"UnknownMaterialKey", kBase.after("nu = 0.3\n", "Nu = 0.3\n"), "body[0].material.Nu",
                 "unknown key \"Nu\" (did you mean \"nu\"?); allowed keys in body[0].material: model, E, nu"},
-        BadCase{"UnknownDirichletKey", edit("uy = 0.0", "uy = 0.0\nvalue = 1.0"), "body[0].dirichlet[0].value",
+        InputErrorCase{"UnknownDirichletKey", kBase.after("uy = 0.0\n", "value = 1.0\n"), "body[0].dirichlet[0].value",
                 "allowed keys in body[0].dirichlet[0]: boundary, ux, uy, uz, factors"},
-        BadCase{"UnknownKeyInSecondBody", kBase + kSecondBody + "density = 7.8\n", "body[1].material.density",
+        InputErrorCase{"UnknownKeyInSecondBody", kBase + kSecondBody + "density = 7.8\n", "body[1].material.density",
                 "unknown key \"density\""},
         // types
-        BadCase{"StringForNumber", edit("E = 1.0", "E = \"1.0\""), "body[0].material.E",
+        InputErrorCase{"StringForNumber", kBase.replaced("E = 1.0", "E = \"1.0\""), "body[0].material.E",
                 "expected a number, got a string (\"1.0\")"},
-        BadCase{"FloatForInteger", edit("dimension = 2", "dimension = 2.0"), "problem.dimension",
+        InputErrorCase{"FloatForInteger", kBase.replaced("dimension = 2", "dimension = 2.0"), "problem.dimension",
                 "expected an integer, got a floating-point number (2.0)"},
-        BadCase{"StringForBoolean", kBase + "[output]\nvtu = \"yes\"\n", "output.vtu",
+        InputErrorCase{"StringForBoolean", kBase + "[output]\nvtu = \"yes\"\n", "output.vtu",
                 "expected a boolean (true or false), got a string"},
-        BadCase{"NumberForVectorEntry", kBase + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, true]\n",
+        InputErrorCase{"NumberForVectorEntry", kBase + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, true]\n",
                 "body[0].traction[0].traction[1]", "expected a number, got a boolean"},
-        BadCase{"BodyAsTable", edit("[[body]]", "[body]"), "body",
+        InputErrorCase{"BodyAsTable", kBase.replaced("[[body]]", "[body]"), "body",
                 "expected an array of tables ([[body]]), got a table"},
         // missing keys
-        BadCase{"MissingProblemTable", edit("[problem]\ndimension = 2\n", ""), "problem",
+        InputErrorCase{"MissingProblemTable", kBase.replaced("[problem]\ndimension = 2\n", ""), "problem",
                 "missing required table [problem]"},
-        BadCase{"MissingDimension", edit("dimension = 2", "order = 1"), "problem.dimension",
+        InputErrorCase{"MissingDimension", kBase.replaced("dimension = 2", "order = 1"), "problem.dimension",
                 "missing required key (expected 2 or 3)"},
-        BadCase{"MissingNu", edit("nu = 0.3\n", ""), "body[0].material.nu", "missing required key"},
-        BadCase{"MissingMesh", edit("mesh = \"block.geo\"\n", ""), "body[0].mesh", "missing required key"},
-        BadCase{"MissingMaterial", edit("[body.material]\nE = 1.0\nnu = 0.3\n", ""), "body[0].material",
+        InputErrorCase{"MissingNu", kBase.replaced("nu = 0.3\n", ""), "body[0].material.nu", "missing required key"},
+        InputErrorCase{"MissingMesh", kBase.replaced("mesh = \"block.geo\"\n", ""), "body[0].mesh", "missing required key"},
+        InputErrorCase{"MissingMaterial", kBase.replaced("[body.material]\nE = 1.0\nnu = 0.3\n", ""), "body[0].material",
                 "missing required key"},
-        BadCase{"MissingPressureValue", kBase + "[[body.pressure]]\nboundary = \"top\"\n",
+        InputErrorCase{"MissingPressureValue", kBase + "[[body.pressure]]\nboundary = \"top\"\n",
                 "body[0].pressure[0].pressure",
                 "missing required key (expected a number)"},
-        BadCase{"NoBody", "[problem]\ndimension = 2\n", "body", "at least one body"},
+        InputErrorCase{"NoBody", "[problem]\ndimension = 2\n", "body", "at least one body"},
         // bodies that nothing holds (no Dirichlet condition, no contact with another body or an obstacle)
-        BadCase{"BodyHeldByNothing", edit("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
+        InputErrorCase{"BodyHeldByNothing", kBase.replaced("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
                 "body \"block\" has no [[body.dirichlet]] and is in no [[contact]] with another body or an obstacle: "
                 "nothing holds it against rigid motion"},
-        BadCase{"BodyInSelfContactOnly",
-                edit("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", "") +
+        InputErrorCase{"BodyInSelfContactOnly",
+                kBase.replaced("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", "") +
                     "[[contact]]\na = \"block.top\"\nb = \"block.bottom\"\n",
                 "body[0]", "body \"block\" has no [[body.dirichlet]] and is in no [[contact]]"},
-        BadCase{"TwoBodiesHoldingOnlyEachOther",
-                replaced(kTwoBodies, "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
+        InputErrorCase{"TwoBodiesHoldingOnlyEachOther",
+                kTwoBodies.replaced("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
                 "body \"block\" has no [[body.dirichlet]] and its [[contact]] pairs link it only to bodies that "
                 "nothing holds either"},
-        BadCase{"SecondBodyHeldByNothing", kBase + "[[body]]\nname = \"lid\"\nmesh = \"block.msh\"\n"
+        InputErrorCase{"SecondBodyHeldByNothing", kBase + "[[body]]\nname = \"lid\"\nmesh = \"block.msh\"\n"
                                                    "material = { E = 2.0, nu = 0.25 }\n",
                 "body[1]", "body \"lid\" has no [[body.dirichlet]]"},
         // values
-        BadCase{"YoungZero", edit("E = 1.0", "E = 0"), "body[0].material.E", "expected a number > 0, got 0"},
-        BadCase{"YoungNegative", edit("E = 1.0", "E = -3.5"), "body[0].material.E", "expected a number > 0, got -3.5"},
-        BadCase{"PoissonHalf", edit("nu = 0.3", "nu = 0.5"), "body[0].material.nu",
+        InputErrorCase{"YoungZero", kBase.replaced("E = 1.0", "E = 0"), "body[0].material.E", "expected a number > 0, got 0"},
+        InputErrorCase{"YoungNegative", kBase.replaced("E = 1.0", "E = -3.5"), "body[0].material.E", "expected a number > 0, got -3.5"},
+        InputErrorCase{"PoissonHalf", kBase.replaced("nu = 0.3", "nu = 0.5"), "body[0].material.nu",
                 "expected a number in (-1, 0.5), got 0.5"},
-        BadCase{"PoissonMinusOne", edit("nu = 0.3", "nu = -1"), "body[0].material.nu",
+        InputErrorCase{"PoissonMinusOne", kBase.replaced("nu = 0.3", "nu = -1"), "body[0].material.nu",
                 "expected a number in (-1, 0.5), got -1"},
-        BadCase{"PoissonNan", edit("nu = 0.3", "nu = nan"), "body[0].material.nu", "expected a finite number, got nan"},
-        BadCase{"InfiniteLoadFactor", edit("[0.5, 1.0]", "[0.5, inf]"), "steps.load_factors[1]",
+        InputErrorCase{"PoissonNan", kBase.replaced("nu = 0.3", "nu = nan"), "body[0].material.nu", "expected a finite number, got nan"},
+        InputErrorCase{"InfiniteLoadFactor", kBase.replaced("[0.5, 1.0]", "[0.5, inf]"), "steps.load_factors[1]",
                 "expected a finite number, got inf"},
-        BadCase{"UnknownMaterialModel", edit("E = 1.0", "model = \"saint_venant\"\nE = 1.0"), "body[0].material.model",
+        InputErrorCase{"UnknownMaterialModel", kBase.replaced("E = 1.0", "model = \"saint_venant\"\nE = 1.0"), "body[0].material.model",
                 "expected \"linear_elastic\", \"neo_hookean\" or \"mooney_rivlin\", got \"saint_venant\""},
         // hyperelastic materials
-        BadCase{"NeoHookeanConstantsForLinearElastic", edit("nu = 0.3", "nu = 0.3\nmu = 1.0"), "body[0].material.mu",
+        InputErrorCase{"NeoHookeanConstantsForLinearElastic", kBase.after("nu = 0.3\n", "mu = 1.0\n"), "body[0].material.mu",
                 "unknown key \"mu\" for model \"linear_elastic\" (mu, lambda are constants of model = \"neo_hookean\"); "
                 "allowed keys in body[0].material: model, E, nu"},
-        BadCase{"MooneyRivlinConstantsForLinearElastic", edit("nu = 0.3", "nu = 0.3\nkappa = 1.0"),
+        InputErrorCase{"MooneyRivlinConstantsForLinearElastic", kBase.after("nu = 0.3\n", "kappa = 1.0\n"),
                 "body[0].material.kappa", "c1, c2, kappa are constants of model = \"mooney_rivlin\""},
-        BadCase{"MooneyRivlinKeyForNeoHookean", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nc1 = 1.0"),
+        InputErrorCase{"MooneyRivlinKeyForNeoHookean", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nc1 = 1.0"),
                 "body[0].material.c1", "allowed keys in body[0].material: model, E, nu, mu, lambda"},
-        BadCase{"NeoHookeanMixedParameterSets", edit("E = 1.0", "model = \"neo_hookean\"\nmu = 1.0\nE = 1.0"),
+        InputErrorCase{"NeoHookeanMixedParameterSets", kBase.replaced("E = 1.0", "model = \"neo_hookean\"\nmu = 1.0\nE = 1.0"),
                 "body[0].material.mu", "give either E, nu or mu, lambda for \"neo_hookean\", not both (E is also given)"},
-        BadCase{"MooneyRivlinMixedParameterSets",
-                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nnu = 0.3\nc1 = 1\nc2 = 1\nkappa = 1"),
+        InputErrorCase{"MooneyRivlinMixedParameterSets",
+                kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nnu = 0.3\nc1 = 1\nc2 = 1\nkappa = 1"),
                 "body[0].material.c1", "give either E, nu or c1, c2, kappa for \"mooney_rivlin\", not both (nu is also given)"},
-        BadCase{"HyperelasticNoParameters", edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\""), "body[0].material",
+        InputErrorCase{"HyperelasticNoParameters", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\""), "body[0].material",
                 "missing material parameters (expected E, nu or c1, c2, kappa for \"mooney_rivlin\")"},
-        BadCase{"NeoHookeanMissingLambda", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 1.0"),
+        InputErrorCase{"NeoHookeanMissingLambda", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 1.0"),
                 "body[0].material.lambda", "missing required key"},
-        BadCase{"MooneyRivlinMissingKappa", edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = 0"),
+        InputErrorCase{"MooneyRivlinMissingKappa", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = 0"),
                 "body[0].material.kappa", "missing required key (expected the bulk modulus, a number > 0)"},
-        BadCase{"NeoHookeanMissingNu", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nE = 1.0"),
+        InputErrorCase{"NeoHookeanMissingNu", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nE = 1.0"),
                 "body[0].material.nu", "missing required key"},
-        BadCase{"NeoHookeanPoissonHalf", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nE = 1.0\nnu = 0.5"),
+        InputErrorCase{"NeoHookeanPoissonHalf", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nE = 1.0\nnu = 0.5"),
                 "body[0].material.nu", "expected a number in (-1, 0.5), got 0.5"},
-        BadCase{"MooneyRivlinYoungNegative", edit("E = 1.0", "model = \"mooney_rivlin\"\nE = -2"),
+        InputErrorCase{"MooneyRivlinYoungNegative", kBase.replaced("E = 1.0", "model = \"mooney_rivlin\"\nE = -2"),
                 "body[0].material.E", "expected a number > 0, got -2"},
-        BadCase{"NeoHookeanMuZero", edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0\nlambda = 1"),
+        InputErrorCase{"NeoHookeanMuZero", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0\nlambda = 1"),
                 "body[0].material.mu", "expected a number > 0, got 0"},
-        BadCase{"NeoHookeanLambdaTooNegative",
-                edit("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 3\nlambda = -2"), "body[0].material.lambda",
+        InputErrorCase{"NeoHookeanLambdaTooNegative",
+                kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 3\nlambda = -2"), "body[0].material.lambda",
                 "expected a number > -2 mu / 3 = -2 (a positive bulk modulus lambda + 2 mu / 3), got -2"},
-        BadCase{"MooneyRivlinNegativeC2",
-                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = -0.5\nkappa = 1"),
+        InputErrorCase{"MooneyRivlinNegativeC2",
+                kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = -0.5\nkappa = 1"),
                 "body[0].material.c2", "expected a number >= 0, got -0.5"},
-        BadCase{"MooneyRivlinZeroShear",
-                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0\nc2 = 0\nkappa = 1"),
+        InputErrorCase{"MooneyRivlinZeroShear",
+                kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0\nc2 = 0\nkappa = 1"),
                 "body[0].material.c2", "expected c1 + c2 > 0"},
-        BadCase{"MooneyRivlinZeroKappa",
-                edit("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = 0\nkappa = 0"),
+        InputErrorCase{"MooneyRivlinZeroKappa",
+                kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 1\nc2 = 0\nkappa = 0"),
                 "body[0].material.kappa", "expected a number > 0, got 0"},
-        BadCase{"HyperelasticPlaneStress",
-                replaced(edit("dimension = 2", "dimension = 2\nmodel = \"plane_stress\""), "E = 1.0",
+        InputErrorCase{"HyperelasticPlaneStress",
+                kBase.after("dimension = 2\n", "model = \"plane_stress\"\n").replaced("E = 1.0",
                          "model = \"neo_hookean\"\nE = 1.0"),
                 "body[0].material.model", "needs problem.model = \"plane_strain\" (or dimension = 3)"},
-        BadCase{"DimensionFour", edit("dimension = 2", "dimension = 4"), "problem.dimension", "expected 2 or 3, got 4"},
-        BadCase{"OrderThree", edit("dimension = 2", "dimension = 2\norder = 3"), "problem.order",
+        InputErrorCase{"DimensionFour", kBase.replaced("dimension = 2", "dimension = 4"), "problem.dimension", "expected 2 or 3, got 4"},
+        InputErrorCase{"OrderThree", kBase.after("dimension = 2\n", "order = 3\n"), "problem.order",
                 "expected 1 or 2, got 3"},
-        BadCase{"PlaneStressIn3D", with_dimension_3(edit("dimension = 2", "dimension = 2\nmodel = \"plane_stress\"")),
+        InputErrorCase{"PlaneStressIn3D", kBase.after("dimension = 2\n", "model = \"plane_stress\"\n").in_3d(),
                 "problem.model", "expected \"3d\" (problem.dimension = 3), got \"plane_stress\""},
-        BadCase{"ThreeDModelIn2D", edit("dimension = 2", "dimension = 2\nmodel = \"3d\""), "problem.model",
+        InputErrorCase{"ThreeDModelIn2D", kBase.after("dimension = 2\n", "model = \"3d\"\n"), "problem.model",
                 "expected \"plane_strain\" or \"plane_stress\""},
-        BadCase{"NonPositiveMeshSize", edit("dimension = 2", "dimension = 2\nmesh_size = -0.1"), "problem.mesh_size",
+        InputErrorCase{"NonPositiveMeshSize", kBase.after("dimension = 2\n", "mesh_size = -0.1\n"), "problem.mesh_size",
                 "expected a number > 0, got -0.1"},
-        BadCase{"EmptyLoadFactors", edit("[0.5, 1.0]", "[]"), "steps.load_factors",
+        InputErrorCase{"EmptyLoadFactors", kBase.replaced("[0.5, 1.0]", "[]"), "steps.load_factors",
                 "expected at least one load factor, got an empty array"},
         // vectors and factors
-        BadCase{"BodyForceWrongLength", edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\nbody_force = [0, -1, 0]"),
+        InputErrorCase{"BodyForceWrongLength", kBase.after("mesh = \"block.geo\"\n", "body_force = [0, -1, 0]\n"),
                 "body[0].body_force", "expected 2 components (problem.dimension = 2), got 3"},
-        BadCase{"TractionWrongLengthIn3D",
-                with_dimension_3(kBase) + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, 0.0]\n",
+        InputErrorCase{"TractionWrongLengthIn3D",
+                kBase.in_3d() + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, 0.0]\n",
                 "body[0].traction[0].traction", "expected 3 components (problem.dimension = 3), got 2"},
-        BadCase{"DirichletFactorsLength", edit("uy = 0.0", "uy = 0.0\nfactors = [1.0, 1.0, 1.0]"),
+        InputErrorCase{"DirichletFactorsLength", kBase.after("uy = 0.0\n", "factors = [1.0, 1.0, 1.0]\n"),
                 "body[0].dirichlet[0].factors",
                 "expected 2 entries (one per load step, as in steps.load_factors), got 3"},
-        BadCase{"BodyForceFactorsLength",
-                edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\nbody_force = [0, -1]\nbody_force_factors = [1]"),
+        InputErrorCase{"BodyForceFactorsLength",
+                kBase.after("mesh = \"block.geo\"\n", "body_force = [0, -1]\nbody_force_factors = [1]\n"),
                 "body[0].body_force_factors", "expected 2 entries"},
         // load curves (steps.count, { at, values })
-        BadCase{"CurveWithoutCount", edit("load_factors = [0.5, 1.0]", "load_factors = { at = [0, 2], values = [0, 1] }"),
+        InputErrorCase{"CurveWithoutCount", kBase.replaced("load_factors = [0.5, 1.0]", "load_factors = { at = [0, 2], values = [0, 1] }"),
                 "steps.load_factors", "a load curve needs steps.count"},
-        BadCase{"CountNotPositive", edit("load_factors = [0.5, 1.0]", "count = 0"), "steps.count",
+        InputErrorCase{"CountNotPositive", kBase.replaced("load_factors = [0.5, 1.0]", "count = 0"), "steps.count",
                 "expected a number of load steps in [1, 1000000], got 0"},
-        BadCase{"CurveTooShort", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 1], values = [0, 1] }"),
+        InputErrorCase{"CurveTooShort", kBase.after("uy = 0.0\n", "factors = { at = [0, 1], values = [0, 1] }\n"),
                 "body[0].dirichlet[0].factors.at", "the curve ends at step 1, before the last load step 2"},
-        BadCase{"CurveNotIncreasing", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2, 2], values = [0, 1, 1] }"),
+        InputErrorCase{"CurveNotIncreasing", kBase.after("uy = 0.0\n", "factors = { at = [0, 2, 2], values = [0, 1, 1] }\n"),
                 "body[0].dirichlet[0].factors.at[2]", "strictly increasing from 0, got 2"},
-        BadCase{"CurveNotFromZero", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [1, 2], values = [0, 1] }"),
+        InputErrorCase{"CurveNotFromZero", kBase.after("uy = 0.0\n", "factors = { at = [1, 2], values = [0, 1] }\n"),
                 "body[0].dirichlet[0].factors.at[0]", "strictly increasing from 0, got 1"},
-        BadCase{"CurveFractionalStep", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 1.5, 2], values = [0, 1, 1] }"),
+        InputErrorCase{"CurveFractionalStep", kBase.after("uy = 0.0\n", "factors = { at = [0, 1.5, 2], values = [0, 1, 1] }\n"),
                 "body[0].dirichlet[0].factors.at[1]", "expected whole step numbers"},
-        BadCase{"CurveLengthsDiffer", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2], values = [0, 1, 1] }"),
+        InputErrorCase{"CurveLengthsDiffer", kBase.after("uy = 0.0\n", "factors = { at = [0, 2], values = [0, 1, 1] }\n"),
                 "body[0].dirichlet[0].factors", "expected 'at' and 'values' of the same length"},
-        BadCase{"CurveUnknownKey", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2], values = [0, 1], kind = 1 }"),
+        InputErrorCase{"CurveUnknownKey", kBase.after("uy = 0.0\n", "factors = { at = [0, 2], values = [0, 1], kind = 1 }\n"),
                 "body[0].dirichlet[0].factors.kind", ""},
-        BadCase{"CurveMissingValues", edit("uy = 0.0", "uy = 0.0\nfactors = { at = [0, 2] }"),
+        InputErrorCase{"CurveMissingValues", kBase.after("uy = 0.0\n", "factors = { at = [0, 2] }\n"),
                 "body[0].dirichlet[0].factors", "needs both 'at'"},
-        BadCase{"BodyForceFactorsWithoutBodyForce",
-                edit("mesh = \"block.geo\"", "mesh = \"block.geo\"\nbody_force_factors = [1, 1]"),
+        InputErrorCase{"BodyForceFactorsWithoutBodyForce",
+                kBase.after("mesh = \"block.geo\"\n", "body_force_factors = [1, 1]\n"),
                 "body[0].body_force_factors", "given without body_force"},
         // bodies and meshes
-        BadCase{"DuplicateBodyName", kBase + kSecondBody, "body[1].name",
+        InputErrorCase{"DuplicateBodyName", kBase + kSecondBody, "body[1].name",
                 "duplicate body name \"block\" (already used by body[0])"},
-        BadCase{"InvalidBodyName", edit("name = \"block\"", "name = \"my block\""), "body[0].name",
+        InputErrorCase{"InvalidBodyName", kBase.replaced("name = \"block\"", "name = \"my block\""), "body[0].name",
                 "expected a non-empty name of letters, digits, '_' and '-', got \"my block\""},
-        BadCase{"MissingMeshFile", edit("block.geo", "missing.geo"), "body[0].mesh",
+        InputErrorCase{"MissingMeshFile", kBase.replaced("block.geo", "missing.geo"), "body[0].mesh",
                 "mesh file \"" + resolved("missing.geo") + "\" does not exist"},
-        BadCase{"UnsupportedMeshExtension", edit("block.geo", "block.stl"), "body[0].mesh",
+        InputErrorCase{"UnsupportedMeshExtension", kBase.replaced("block.geo", "block.stl"), "body[0].mesh",
                 "expected a Gmsh .geo or .msh file, got \"block.stl\" (extension \".stl\")"},
-        BadCase{"MeshWithoutExtension", edit("block.geo", "meshes"), "body[0].mesh", "(extension missing)"},
+        InputErrorCase{"MeshWithoutExtension", kBase.replaced("block.geo", "meshes"), "body[0].mesh", "(extension missing)"},
         // boundary conditions
-        BadCase{"DirichletWithoutComponent", edit("uy = 0.0\n", ""), "body[0].dirichlet[0]",
+        InputErrorCase{"DirichletWithoutComponent", kBase.replaced("uy = 0.0\n", ""), "body[0].dirichlet[0]",
                 "expected at least one imposed component (ux, uy), got none"},
-        BadCase{"UzIn2D", edit("uy = 0.0", "uz = 0.0"), "body[0].dirichlet[0].uz", "uz is only allowed in 3D"},
-        BadCase{"EmptyBoundaryName", edit("boundary = \"bottom\"", "boundary = \"\""), "body[0].dirichlet[0].boundary",
+        InputErrorCase{"UzIn2D", kBase.replaced("uy = 0.0", "uz = 0.0"), "body[0].dirichlet[0].uz", "uz is only allowed in 3D"},
+        InputErrorCase{"EmptyBoundaryName", kBase.replaced("boundary = \"bottom\"", "boundary = \"\""), "body[0].dirichlet[0].boundary",
                 "expected a non-empty string"},
-        BadCase{"DirichletNotAnArray", edit("[[body.dirichlet]]", "[body.dirichlet]"), "body[0].dirichlet",
+        InputErrorCase{"DirichletNotAnArray", kBase.replaced("[[body.dirichlet]]", "[body.dirichlet]"), "body[0].dirichlet",
                 "expected an array of tables ([[body.dirichlet]]), got a table"},
         // contact: structure and surfaces
-        BadCase{"ContactNotAnArray", replaced(kTwoBodies, "[[contact]]", "[contact]"), "contact",
+        InputErrorCase{"ContactNotAnArray", kTwoBodies.replaced("[[contact]]", "[contact]"), "contact",
                 "expected an array of tables ([[contact]]), got a table"},
-        BadCase{"UnknownContactKey", replaced(kTwoBodies, "b = ", "master = \"a\"\nb = "), "contact[0].master",
+        InputErrorCase{"UnknownContactKey", kTwoBodies.replaced("b = ", "master = \"a\"\nb = "), "contact[0].master",
                 "unknown key \"master\"; allowed keys in contact[0]: name, a, b, obstacle, mode, slave, "
                 "search_distance, friction, mu, tau, alpha"},
-        BadCase{"MissingContactA", replaced(kTwoBodies, "a = \"block.bottom\"\n", ""), "contact[0].a",
+        InputErrorCase{"MissingContactA", kTwoBodies.replaced("a = \"block.bottom\"\n", ""), "contact[0].a",
                 "missing required key (expected a surface \"<body>.<boundary>\")"},
-        BadCase{"ContactANotAString", replaced(kTwoBodies, "a = \"block.bottom\"", "a = 1"), "contact[0].a",
+        InputErrorCase{"ContactANotAString", kTwoBodies.replaced("a = \"block.bottom\"", "a = 1"), "contact[0].a",
                 "expected a string, got an integer (1)"},
-        BadCase{"ContactAWithoutDot", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \"block\""), "contact[0].a",
+        InputErrorCase{"ContactAWithoutDot", kTwoBodies.replaced("a = \"block.bottom\"", "a = \"block\""), "contact[0].a",
                 "expected \"<body>.<boundary>\" (a body name, a dot, a physical group of its boundary), got \"block\""},
-        BadCase{"ContactAWithEmptyGroup", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \"block.\""),
+        InputErrorCase{"ContactAWithEmptyGroup", kTwoBodies.replaced("a = \"block.bottom\"", "a = \"block.\""),
                 "contact[0].a", "expected \"<body>.<boundary>\""},
-        BadCase{"ContactAWithEmptyBody", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \".bottom\""),
+        InputErrorCase{"ContactAWithEmptyBody", kTwoBodies.replaced("a = \"block.bottom\"", "a = \".bottom\""),
                 "contact[0].a", "expected \"<body>.<boundary>\""},
-        BadCase{"UnknownBodyInA", replaced(kTwoBodies, "a = \"block.bottom\"", "a = \"blok.bottom\""), "contact[0].a",
+        InputErrorCase{"UnknownBodyInA", kTwoBodies.replaced("a = \"block.bottom\"", "a = \"blok.bottom\""), "contact[0].a",
                 "unknown body \"blok\" in \"blok.bottom\"; declared bodies: block, lower"},
-        BadCase{"UnknownBodyInB", replaced(kTwoBodies, "b = \"lower.top\"", "b = \"upper.top\""), "contact[0].b",
+        InputErrorCase{"UnknownBodyInB", kTwoBodies.replaced("b = \"lower.top\"", "b = \"upper.top\""), "contact[0].b",
                 "unknown body \"upper\" in \"upper.top\"; declared bodies: block, lower"},
-        BadCase{"BothBAndObstacle", kTwoBodies + "[contact.obstacle]\ntype = \"plane\"\n", "contact[0]",
+        InputErrorCase{"BothBAndObstacle", kTwoBodies + "[contact.obstacle]\ntype = \"plane\"\n", "contact[0]",
                 "expected either b (another surface) or [contact.obstacle] (a rigid obstacle), got both"},
-        BadCase{"NeitherBNorObstacle", replaced(kTwoBodies, "b = \"lower.top\"\n", ""), "contact[0]",
+        InputErrorCase{"NeitherBNorObstacle", kTwoBodies.replaced("b = \"lower.top\"\n", ""), "contact[0]",
                 "missing the opposite surface (expected b = \"<body>.<boundary>\" or a table [contact.obstacle])"},
-        BadCase{"InvalidContactName", replaced(kTwoBodies, "[[contact]]", "[[contact]]\nname = \"my contact\""),
+        InputErrorCase{"InvalidContactName", kTwoBodies.after("[[contact]]\n", "name = \"my contact\"\n"),
                 "contact[0].name", "expected a non-empty name of letters, digits, '_' and '-', got \"my contact\""},
-        BadCase{"DuplicateContactNames",
-                replaced(kTwoBodies, "[[contact]]", "[[contact]]\nname = \"x\"") +
+        InputErrorCase{"DuplicateContactNames",
+                kTwoBodies.after("[[contact]]\n", "name = \"x\"\n") +
                     "[[contact]]\nname = \"x\"\na = \"lower.top\"\nb = \"block.bottom\"\n",
                 "contact[1].name", "duplicate contact name \"x\" (already used by contact[0])"},
-        BadCase{"ContactNameClashesWithADefaultName",
-                replaced(kTwoBodies, "[[contact]]", "[[contact]]\nname = \"contact1\"") +
+        InputErrorCase{"ContactNameClashesWithADefaultName",
+                kTwoBodies.after("[[contact]]\n", "name = \"contact1\"\n") +
                     "[[contact]]\na = \"lower.top\"\nb = \"block.bottom\"\n",
                 "contact[1].name", "duplicate contact name \"contact1\" (already used by contact[0])"},
         // contact: mode, slave, search distance
-        BadCase{"BadContactMode", replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nmode = \"two-pass\""),
+        InputErrorCase{"BadContactMode", with_contact_keys(kTwoBodies, "mode = \"two-pass\"\n"),
                 "contact[0].mode", "expected \"symmetric\" or \"one-pass\", got \"two-pass\""},
-        BadCase{"SlaveWithDefaultSymmetricMode", replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nslave = \"b\""),
+        InputErrorCase{"SlaveWithDefaultSymmetricMode", with_contact_keys(kTwoBodies, "slave = \"b\"\n"),
                 "contact[0].slave",
                 "slave is only used with mode = \"one-pass\", got mode = \"symmetric\" (the symmetric mode writes the "
                 "constraints from both surfaces in turn, so there is no slave to choose)"},
-        BadCase{"SlaveWithExplicitSymmetricMode",
-                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nslave = \"a\"\nmode = \"symmetric\""),
+        InputErrorCase{"SlaveWithExplicitSymmetricMode",
+                with_contact_keys(kTwoBodies, "slave = \"a\"\nmode = \"symmetric\"\n"),
                 "contact[0].slave", "slave is only used with mode = \"one-pass\""},
-        BadCase{"BadSlaveValue",
-                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nmode = \"one-pass\"\nslave = \"c\""),
+        InputErrorCase{"BadSlaveValue",
+                with_contact_keys(kTwoBodies, "mode = \"one-pass\"\nslave = \"c\"\n"),
                 "contact[0].slave", "expected \"a\" or \"b\", got \"c\""},
-        BadCase{"SlaveBWithObstacle",
-                replaced(kPlane, "a = \"block.bottom\"", "a = \"block.bottom\"\nmode = \"one-pass\"\nslave = \"b\""),
+        InputErrorCase{"SlaveBWithObstacle",
+                with_contact_keys(kPlane, "mode = \"one-pass\"\nslave = \"b\"\n"),
                 "contact[0].slave", "expected \"a\" with an obstacle"},
-        BadCase{"SearchDistanceZero",
-                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nsearch_distance = 0"),
+        InputErrorCase{"SearchDistanceZero",
+                with_contact_keys(kTwoBodies, "search_distance = 0\n"),
                 "contact[0].search_distance", "expected a number > 0, got 0"},
-        BadCase{"SearchDistanceNegative",
-                replaced(kTwoBodies, "b = \"lower.top\"", "b = \"lower.top\"\nsearch_distance = -0.5"),
+        InputErrorCase{"SearchDistanceNegative",
+                with_contact_keys(kTwoBodies, "search_distance = -0.5\n"),
                 "contact[0].search_distance", "expected a number > 0, got -0.5"},
         // contact: friction
-        BadCase{"UnknownFrictionLaw", with_contact_keys(kTwoBodies, "friction = \"stick\"\n"), "contact[0].friction",
+        InputErrorCase{"UnknownFrictionLaw", with_contact_keys(kTwoBodies, "friction = \"stick\"\n"), "contact[0].friction",
                 "expected \"none\", \"tresca\" or \"coulomb\", got \"stick\""},
-        BadCase{"FrictionNotAString", with_contact_keys(kTwoBodies, "friction = true\n"), "contact[0].friction",
+        InputErrorCase{"FrictionNotAString", with_contact_keys(kTwoBodies, "friction = true\n"), "contact[0].friction",
                 "expected a string, got a boolean (true)"},
-        BadCase{"MisspeltFrictionKey", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmuu = 0.3\n"),
+        InputErrorCase{"MisspeltFrictionKey", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmuu = 0.3\n"),
                 "contact[0].muu", "unknown key \"muu\" (did you mean \"mu\"?)"},
-        BadCase{"MuWithoutFriction", with_contact_keys(kTwoBodies, "mu = 0.3\n"), "contact[0].mu",
+        InputErrorCase{"MuWithoutFriction", with_contact_keys(kTwoBodies, "mu = 0.3\n"), "contact[0].mu",
                 "mu (the friction coefficient) is only used with friction = \"coulomb\", got friction = \"none\" (the "
                 "default)"},
-        BadCase{"MuWithTresca", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nmu = 0.3\n"),
+        InputErrorCase{"MuWithTresca", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nmu = 0.3\n"),
                 "contact[0].mu",
                 "mu (the friction coefficient) is only used with friction = \"coulomb\", got friction = \"tresca\""},
-        BadCase{"TauWithCoulomb", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\ntau = 0.002\n"),
+        InputErrorCase{"TauWithCoulomb", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\ntau = 0.002\n"),
                 "contact[0].tau",
                 "tau (the sliding threshold) is only used with friction = \"tresca\", got friction = \"coulomb\""},
-        BadCase{"AlphaWithExplicitNone", with_contact_keys(kTwoBodies, "friction = \"none\"\nalpha = 1e-6\n"),
+        InputErrorCase{"AlphaWithExplicitNone", with_contact_keys(kTwoBodies, "friction = \"none\"\nalpha = 1e-6\n"),
                 "contact[0].alpha",
                 "alpha (the regularisation of the slip) is only used with friction = \"tresca\" or \"coulomb\", got "
                 "friction = \"none\""},
-        BadCase{"AlphaWithDefaultNone", with_contact_keys(kPlane, "alpha = 1e-6\n"), "contact[0].alpha",
+        InputErrorCase{"AlphaWithDefaultNone", with_contact_keys(kPlane, "alpha = 1e-6\n"), "contact[0].alpha",
                 "got friction = \"none\" (the default)"},
-        BadCase{"MissingMu", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\n"), "contact[0].mu",
+        InputErrorCase{"MissingMu", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\n"), "contact[0].mu",
                 "missing required key (expected the friction coefficient, a number >= 0, with friction = "
                 "\"coulomb\")"},
-        BadCase{"MissingTau", with_contact_keys(kPlane, "friction = \"tresca\"\nalpha = 1e-6\n"), "contact[0].tau",
+        InputErrorCase{"MissingTau", with_contact_keys(kPlane, "friction = \"tresca\"\nalpha = 1e-6\n"), "contact[0].tau",
                 "missing required key (expected the sliding threshold, a number >= 0, with friction = \"tresca\")"},
-        BadCase{"NegativeMu", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = -0.1\n"), "contact[0].mu",
+        InputErrorCase{"NegativeMu", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = -0.1\n"), "contact[0].mu",
                 "expected a number >= 0, got -0.1"},
-        BadCase{"MuNotANumber", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = \"0.3\"\n"),
+        InputErrorCase{"MuNotANumber", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = \"0.3\"\n"),
                 "contact[0].mu", "expected a number, got a string (\"0.3\")"},
-        BadCase{"MuInfinite", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = inf\n"), "contact[0].mu",
+        InputErrorCase{"MuInfinite", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = inf\n"), "contact[0].mu",
                 "expected a finite number, got inf"},
-        BadCase{"NegativeTau", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = -2\n"), "contact[0].tau",
+        InputErrorCase{"NegativeTau", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = -2\n"), "contact[0].tau",
                 "expected a number >= 0, got -2"},
-        BadCase{"AlphaZero", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nalpha = 0\n"),
+        InputErrorCase{"AlphaZero", with_contact_keys(kTwoBodies, "friction = \"tresca\"\ntau = 0.002\nalpha = 0\n"),
                 "contact[0].alpha", "expected a number > 0, got 0"},
-        BadCase{"AlphaNegative", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = -1e-6\n"),
+        InputErrorCase{"AlphaNegative", with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = -1e-6\n"),
                 "contact[0].alpha", "expected a number > 0, got -1e-06"},
         // contact: obstacles
-        BadCase{"ObstacleNotATable", replaced(kTwoBodies, "b = \"lower.top\"", "obstacle = \"plane\""),
+        InputErrorCase{"ObstacleNotATable", kTwoBodies.replaced("b = \"lower.top\"", "obstacle = \"plane\""),
                 "contact[0].obstacle", "expected a table, got a string (\"plane\")"},
-        BadCase{"MissingObstacleType", replaced(kPlane, "type = \"plane\"\n", ""), "contact[0].obstacle.type",
+        InputErrorCase{"MissingObstacleType", kPlane.replaced("type = \"plane\"\n", ""), "contact[0].obstacle.type",
                 "missing required key (expected \"plane\", \"circle\", \"sphere\" or \"mesh\")"},
-        BadCase{"UnknownObstacleType", replaced(kPlane, "type = \"plane\"", "type = \"cone\""),
+        InputErrorCase{"UnknownObstacleType", kPlane.replaced("type = \"plane\"", "type = \"cone\""),
                 "contact[0].obstacle.type",
                 "expected \"plane\", \"circle\" (2D), \"sphere\" (3D) or \"mesh\", got \"cone\""},
-        BadCase{"UnknownObstacleKey", replaced(kCircle, "radius = 1.0", "radious = 1.0"), "contact[0].obstacle.radious",
+        InputErrorCase{"UnknownObstacleKey", kCircle.replaced("radius = 1.0", "radious = 1.0"), "contact[0].obstacle.radious",
                 "unknown key \"radious\" (did you mean \"radius\"?)"},
-        BadCase{"CircleIn3D", with_dimension_3(replaced(kCircle, "[0.0, -1.0]", "[0.0, 0.0, -1.0]")),
+        InputErrorCase{"CircleIn3D", kCircle.replaced("[0.0, -1.0]", "[0.0, 0.0, -1.0]").in_3d(),
                 "contact[0].obstacle.type",
                 "\"circle\" is only allowed in 2D (problem.dimension = 2), got problem.dimension = 3; use \"sphere\" in "
                 "3D"},
-        BadCase{"SphereIn2D", replaced(kCircle, "type = \"circle\"", "type = \"sphere\""), "contact[0].obstacle.type",
+        InputErrorCase{"SphereIn2D", kCircle.replaced("type = \"circle\"", "type = \"sphere\""), "contact[0].obstacle.type",
                 "\"sphere\" is only allowed in 3D (problem.dimension = 3), got problem.dimension = 2; use \"circle\" in "
                 "2D"},
-        BadCase{"MissingRadius", replaced(kCircle, "radius = 1.0\n", ""), "contact[0].obstacle.radius",
+        InputErrorCase{"MissingRadius", kCircle.replaced("radius = 1.0\n", ""), "contact[0].obstacle.radius",
                 "missing required key (expected a number > 0)"},
-        BadCase{"RadiusZero", replaced(kCircle, "radius = 1.0", "radius = 0"), "contact[0].obstacle.radius",
+        InputErrorCase{"RadiusZero", kCircle.replaced("radius = 1.0", "radius = 0"), "contact[0].obstacle.radius",
                 "expected a number > 0, got 0"},
-        BadCase{"RadiusNegative", replaced(kCircle, "radius = 1.0", "radius = -2.5"), "contact[0].obstacle.radius",
+        InputErrorCase{"RadiusNegative", kCircle.replaced("radius = 1.0", "radius = -2.5"), "contact[0].obstacle.radius",
                 "expected a number > 0, got -2.5"},
-        BadCase{"MissingCenter", replaced(kCircle, "center = [0.0, -1.0]\n", ""), "contact[0].obstacle.center",
+        InputErrorCase{"MissingCenter", kCircle.replaced("center = [0.0, -1.0]\n", ""), "contact[0].obstacle.center",
                 "missing required key (expected 2 numbers)"},
-        BadCase{"InsideNotABoolean", replaced(kCircle, "radius = 1.0", "radius = 1.0\ninside = 1"),
+        InputErrorCase{"InsideNotABoolean", kCircle.after("radius = 1.0\n", "inside = 1\n"),
                 "contact[0].obstacle.inside", "expected a boolean (true or false), got an integer (1)"},
-        BadCase{"ZeroNormal", replaced(kPlane, "normal = [0.0, 1.0]", "normal = [0.0, 0]"), "contact[0].obstacle.normal",
+        InputErrorCase{"ZeroNormal", kPlane.replaced("normal = [0.0, 1.0]", "normal = [0.0, 0]"), "contact[0].obstacle.normal",
                 "expected a nonzero vector, got the zero vector"},
-        BadCase{"MissingNormal", replaced(kPlane, "normal = [0.0, 1.0]\n", ""), "contact[0].obstacle.normal",
+        InputErrorCase{"MissingNormal", kPlane.replaced("normal = [0.0, 1.0]\n", ""), "contact[0].obstacle.normal",
                 "missing required key (expected 2 numbers, nonzero)"},
-        BadCase{"PlanePointWrongLength", replaced(kPlane, "point = [0.0, 0.0]", "point = [0.0, 0.0, 0.0]"),
+        InputErrorCase{"PlanePointWrongLength", kPlane.replaced("point = [0.0, 0.0]", "point = [0.0, 0.0, 0.0]"),
                 "contact[0].obstacle.point", "expected 2 components (problem.dimension = 2), got 3"},
-        BadCase{"RadiusWithPlane", replaced(kPlane, "normal = [0.0, 1.0]", "normal = [0.0, 1.0]\nradius = 1.0"),
+        InputErrorCase{"RadiusWithPlane", kPlane.after("normal = [0.0, 1.0]\n", "radius = 1.0\n"),
                 "contact[0].obstacle.radius",
                 "key \"radius\" does not belong to an obstacle of type \"plane\"; keys of this type: type, point, normal"},
-        BadCase{"NormalWithCircle", replaced(kCircle, "radius = 1.0", "radius = 1.0\nnormal = [0.0, 1.0]"),
+        InputErrorCase{"NormalWithCircle", kCircle.after("radius = 1.0\n", "normal = [0.0, 1.0]\n"),
                 "contact[0].obstacle.normal",
                 "key \"normal\" does not belong to an obstacle of type \"circle\"; keys of this type: type, center, "
                 "radius, inside"},
-        BadCase{"BoundaryWithSphere",
-                with_dimension_3(replaced(replaced(kCircle, "circle", "sphere"), "[0.0, -1.0]", "[0.0, 0.0, -1.0]")) +
+        InputErrorCase{"BoundaryWithSphere",
+                kCircle.replaced("circle", "sphere").replaced("[0.0, -1.0]", "[0.0, 0.0, -1.0]").in_3d() +
                     "boundary = \"surface\"\n",
                 "contact[0].obstacle.boundary", "does not belong to an obstacle of type \"sphere\""},
-        BadCase{"MeshObstacleMissingBoundary", replaced(kMeshObstacle, "boundary = \"surface\"\n", ""),
+        InputErrorCase{"MeshObstacleMissingBoundary", kMeshObstacle.replaced("boundary = \"surface\"\n", ""),
                 "contact[0].obstacle.boundary", "missing required key (expected the name of a physical group)"},
-        BadCase{"MeshObstacleMissingMeshKey", replaced(kMeshObstacle, "mesh = \"die.geo\"\n", ""),
+        InputErrorCase{"MeshObstacleMissingMeshKey", kMeshObstacle.replaced("mesh = \"die.geo\"\n", ""),
                 "contact[0].obstacle.mesh", "missing required key (expected the path of a .geo or .msh file)"},
-        BadCase{"MeshObstacleMissingFile", replaced(kMeshObstacle, "die.geo", "dye.geo"), "contact[0].obstacle.mesh",
+        InputErrorCase{"MeshObstacleMissingFile", kMeshObstacle.replaced("die.geo", "dye.geo"), "contact[0].obstacle.mesh",
                 "mesh file \"" + resolved("dye.geo") + "\" does not exist"},
-        BadCase{"MeshObstacleWrongExtension", replaced(kMeshObstacle, "die.geo", "block.stl"),
+        InputErrorCase{"MeshObstacleWrongExtension", kMeshObstacle.replaced("die.geo", "block.stl"),
                 "contact[0].obstacle.mesh", "expected a Gmsh .geo or .msh file, got \"block.stl\""},
-        BadCase{"RadiusWithMeshObstacle", replaced(kMeshObstacle, "boundary = \"surface\"", "radius = 1.0\nboundary = \"surface\""),
+        InputErrorCase{"RadiusWithMeshObstacle", kMeshObstacle.replaced("boundary = \"surface\"", "radius = 1.0\nboundary = \"surface\""),
                 "contact[0].obstacle.radius", "keys of this type: type, mesh, boundary"},
         // contact solver and IPOPT options
-        BadCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
+        InputErrorCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
                 "coulomb_tolerance, max_coulomb_iterations, static_condensation, dual_solve, dual_optimizer, max_step_cuts"},
-        BadCase{"DualOptimizerUnknown", kTwoBodies + "[contact_solver]\ndual_optimizer = \"mumps\"\n",
+        InputErrorCase{"DualOptimizerUnknown", kTwoBodies + "[contact_solver]\ndual_optimizer = \"mumps\"\n",
                 "contact_solver.dual_optimizer", "expected \"interior_point\" or \"ipopt\", got \"mumps\""},
-        BadCase{"DualOptimizerNotAString", kTwoBodies + "[contact_solver]\ndual_optimizer = 1\n",
+        InputErrorCase{"DualOptimizerNotAString", kTwoBodies + "[contact_solver]\ndual_optimizer = 1\n",
                 "contact_solver.dual_optimizer", "expected a string"},
-        BadCase{"MaxStepCutsNegative", kTwoBodies + "[contact_solver]\nmax_step_cuts = -1\n",
+        InputErrorCase{"MaxStepCutsNegative", kTwoBodies + "[contact_solver]\nmax_step_cuts = -1\n",
                 "contact_solver.max_step_cuts", "expected an integer in [0, 20], got -1"},
-        BadCase{"MaxStepCutsTooMany", kTwoBodies + "[contact_solver]\nmax_step_cuts = 21\n",
+        InputErrorCase{"MaxStepCutsTooMany", kTwoBodies + "[contact_solver]\nmax_step_cuts = 21\n",
                 "contact_solver.max_step_cuts", "expected an integer in [0, 20], got 21"},
-        BadCase{"MaxStepCutsFloat", kTwoBodies + "[contact_solver]\nmax_step_cuts = 2.0\n",
+        InputErrorCase{"MaxStepCutsFloat", kTwoBodies + "[contact_solver]\nmax_step_cuts = 2.0\n",
                 "contact_solver.max_step_cuts", "expected an integer, got a floating-point number (2.0)"},
-        BadCase{"GeometryToleranceZero", kTwoBodies + "[contact_solver]\ngeometry_tolerance = 0.0\n",
+        InputErrorCase{"GeometryToleranceZero", kTwoBodies + "[contact_solver]\ngeometry_tolerance = 0.0\n",
                 "contact_solver.geometry_tolerance", "expected a number > 0, got 0"},
-        BadCase{"MaxGeometryIterationsZero", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 0\n",
+        InputErrorCase{"MaxGeometryIterationsZero", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 0\n",
                 "contact_solver.max_geometry_iterations", "expected an integer in [1, 2147483647], got 0"},
-        BadCase{"MaxGeometryIterationsFloat", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 10.0\n",
+        InputErrorCase{"MaxGeometryIterationsFloat", kTwoBodies + "[contact_solver]\nmax_geometry_iterations = 10.0\n",
                 "contact_solver.max_geometry_iterations", "expected an integer, got a floating-point number (10.0)"},
-        BadCase{"CoulombToleranceZero", kTwoBodies + "[contact_solver]\ncoulomb_tolerance = 0\n",
+        InputErrorCase{"CoulombToleranceZero", kTwoBodies + "[contact_solver]\ncoulomb_tolerance = 0\n",
                 "contact_solver.coulomb_tolerance", "expected a number > 0, got 0"},
-        BadCase{"CoulombToleranceNegative", kTwoBodies + "[contact_solver]\ncoulomb_tolerance = -1e-6\n",
+        InputErrorCase{"CoulombToleranceNegative", kTwoBodies + "[contact_solver]\ncoulomb_tolerance = -1e-6\n",
                 "contact_solver.coulomb_tolerance", "expected a number > 0, got -1e-06"},
-        BadCase{"MaxCoulombIterationsZero", kTwoBodies + "[contact_solver]\nmax_coulomb_iterations = 0\n",
+        InputErrorCase{"MaxCoulombIterationsZero", kTwoBodies + "[contact_solver]\nmax_coulomb_iterations = 0\n",
                 "contact_solver.max_coulomb_iterations", "expected an integer in [1, 2147483647], got 0"},
-        BadCase{"MaxCoulombIterationsFloat", kTwoBodies + "[contact_solver]\nmax_coulomb_iterations = 5.5\n",
+        InputErrorCase{"MaxCoulombIterationsFloat", kTwoBodies + "[contact_solver]\nmax_coulomb_iterations = 5.5\n",
                 "contact_solver.max_coulomb_iterations", "expected an integer, got a floating-point number (5.5)"},
-        BadCase{"ContactSolverNotATable", "contact_solver = 3\n" + kTwoBodies, "contact_solver",
+        InputErrorCase{"ContactSolverNotATable", "contact_solver = 3\n" + kTwoBodies, "contact_solver",
                 "expected a table, got an integer (3)"},
-        BadCase{"IpoptBoolean", kTwoBodies + "[ipopt]\ntol = 1e-8\nwarm_start_init_point = true\n",
+        InputErrorCase{"IpoptBoolean", kTwoBodies + "[ipopt]\ntol = 1e-8\nwarm_start_init_point = true\n",
                 "ipopt.warm_start_init_point",
                 "expected a string, an integer or a floating-point number (an IPOPT option value), got a boolean (true)"},
-        BadCase{"IpoptArray", kTwoBodies + "[ipopt]\ntol = [1e-8, 1e-6]\n", "ipopt.tol",
+        InputErrorCase{"IpoptArray", kTwoBodies + "[ipopt]\ntol = [1e-8, 1e-6]\n", "ipopt.tol",
                 "expected a string, an integer or a floating-point number (an IPOPT option value), got an array"},
-        BadCase{"IpoptTable", kTwoBodies + "[ipopt.tol]\nvalue = 1e-8\n", "ipopt.tol", "got a table"},
-        BadCase{"IpoptNan", kTwoBodies + "[ipopt]\ntol = nan\n", "ipopt.tol", "expected a finite number, got nan"},
-        BadCase{"IpoptIntegerTooLarge", kTwoBodies + "[ipopt]\nmax_iter = 3000000000\n", "ipopt.max_iter",
+        InputErrorCase{"IpoptTable", kTwoBodies + "[ipopt.tol]\nvalue = 1e-8\n", "ipopt.tol", "got a table"},
+        InputErrorCase{"IpoptNan", kTwoBodies + "[ipopt]\ntol = nan\n", "ipopt.tol", "expected a finite number, got nan"},
+        InputErrorCase{"IpoptIntegerTooLarge", kTwoBodies + "[ipopt]\nmax_iter = 3000000000\n", "ipopt.max_iter",
                 "expected an integer that fits in an int (IPOPT integer option), got 3000000000"},
-        BadCase{"IpoptNotATable", "ipopt = \"tol=1e-8\"\n" + kTwoBodies, "ipopt",
+        InputErrorCase{"IpoptNotATable", "ipopt = \"tol=1e-8\"\n" + kTwoBodies, "ipopt",
                 "expected a table, got a string (\"tol=1e-8\")"}),
-    [](const ::testing::TestParamInfo<BadCase>& case_info) { return std::string(case_info.param.name); });
+    [](const ::testing::TestParamInfo<InputErrorCase>& case_info) { return case_info.param.name; });
 
 }  // namespace
 }  // namespace symcontact

@@ -10,35 +10,16 @@
 #include <random>
 
 #include "support/finite_difference.hpp"
+#include "support/quadratic_energy.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
 #include "symcontact/solvers/static_condensation.hpp"
 
 using namespace symcontact;
+using symcontact::testing::grid_laplacian;
+using symcontact::testing::QuadraticEnergy;
 
 namespace {
-
-/// The 5-point Laplacian of an m × m grid (Neumann: singular, constants in its kernel) plus shift·I.
-SparseMatrix grid_laplacian(int m, double shift) {
-  std::vector<Triplet> t;
-  auto id = [m](int i, int j) { return i * m + j; };
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) {
-      t.emplace_back(id(i, j), id(i, j), shift);
-      const int nb[2][2] = {{i + 1, j}, {i, j + 1}};
-      for (const auto& q : nb) {
-        if (q[0] >= m || q[1] >= m) continue;
-        const int a = id(i, j), b = id(q[0], q[1]);
-        t.emplace_back(a, a, 1.0);
-        t.emplace_back(b, b, 1.0);
-        t.emplace_back(std::max(a, b), std::min(a, b), -1.0);
-      }
-    }
-  SparseMatrix k(m * m, m * m);
-  k.setFromTriplets(t.begin(), t.end());
-  k.makeCompressed();
-  return k;  // lower triangle only
-}
 
 std::vector<Index> some_indices(Index n, int count, unsigned seed) {
   std::mt19937 rng(seed);
@@ -127,39 +108,6 @@ TEST(StaticCondensation, FailsClearlyWhenTheInteriorIsSingular) {
 }
 
 namespace {
-
-/// E(u) = ½ uᵀK u − fᵀu over all DOFs (a stand-in for linear elasticity).
-class QuadraticEnergy : public EnergyTerm {
- public:
-  QuadraticEnergy(SparseMatrix lower, VectorXd f) : k_(std::move(lower)), f_(std::move(f)) {}
-  std::string name() const override { return "quadratic"; }
-  double value(const VectorXd& u) const override {
-    return 0.5 * u.dot(k_.selfadjointView<Eigen::Lower>() * u) - f_.dot(u);
-  }
-  void add_gradient(const VectorXd& u, VectorXd& g) const override {
-    g += k_.selfadjointView<Eigen::Lower>() * u - f_;
-  }
-  void add_hessian(const VectorXd&, MatrixSink& sink) const override {
-    const SparseMatrix full = k_.selfadjointView<Eigen::Lower>();
-    for (int j = 0; j < full.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(full, j); it; ++it) {
-        const Index d[2] = {it.row(), j};
-        if (d[0] == d[1]) {
-          const double v = it.value();
-          sink.add(d, 1, &v);
-        } else {
-          // a 2 × 2 block holding only this off-diagonal entry (once per ordered pair: halves)
-          const double blk[4] = {0.0, 0.5 * it.value(), 0.5 * it.value(), 0.0};
-          sink.add(d, 2, blk);
-        }
-      }
-  }
-  bool hessian_is_constant() const override { return true; }
-
- private:
-  SparseMatrix k_;
-  VectorXd f_;
-};
 
 /// Φ(u) = Σ_d w_d sqrt(u_d² + α²): a smooth, non-quadratic surface-like term on a few DOFs.
 class SurfaceTerm : public EnergyTerm {
