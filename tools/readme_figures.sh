@@ -5,7 +5,8 @@
 #   <!-- BEGIN readme_figures: demo -->   ...   <!-- END readme_figures: demo -->
 #   <!-- BEGIN readme_figures: block -->  ...   <!-- END readme_figures: block -->
 # and the problem file of that example itself (marker name block_file).
-# The README quotes no other measured figure. The repository's path is written as /path/to/symcontact.
+# It also copies the demo's results/demo/inclined.png to docs/img/inclined.png, the README's picture. The
+# README quotes no other measured figure. The repository's path is written as /path/to/symcontact.
 #   tools/readme_figures.sh            build in build/ (as scripts/demo does), results in results/demo
 #   BUILD_DIR=dir tools/readme_figures.sh
 set -euo pipefail
@@ -17,8 +18,10 @@ readme="$root/README.md"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# The demo, as a terminal shows it (its own lines on stdout, the solver's progress on stderr).
+# The demo, as a terminal shows it (its own lines on stdout, the solver's progress on stderr), and its
+# picture of the three inclined-interface cases, which README.md shows as docs/img/inclined.png.
 { echo '$ scripts/demo'; BUILD_DIR="$build" OUT_DIR=results/demo scripts/demo 2>&1; } >"$tmp/demo.txt"
+cp results/demo/inclined.png docs/img/inclined.png
 
 # The first example, into a fresh folder.
 rm -rf results/block
