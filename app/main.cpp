@@ -50,7 +50,7 @@ struct MeshingFlags {
     command.add_option("--mesh-size", mesh_size, "maximum element size for .geo meshes (overrides the file)")
         ->check(finite_positive_size());
     command.add_flag("--allow-large-mesh", allow_large_mesh,
-                     "mesh even when the predicted cell count is above the limit (docs/input.md)");
+                     "mesh even when the predicted cell count is above the limit (docs/checks.md)");
     command.add_flag("--allow-geo-commands", allow_geo_commands,
                      "let .geo files run programs (SystemCall, ...): only for files you trust");
   }

@@ -32,9 +32,9 @@ struct ContactBenchOptions {
 /// The default ladder of h of each case:
 ///  - hertz2d: 0.003, 0.0015, 0.00085, 0.0006, 0.0004, 0.00027: 9.8e3, 3.5e4, 1.0e5, 2.0e5, 4.5e5, 9.7e5 DOFs;
 ///  - hertz2d-cylinders: the same without the last, about 2e4 … 9e5 DOFs (two bodies);
-///  - hertz3d: 0.04, 0.02, 0.01, 0.007, 0.005: 1.3e3, 4.4e3, 2.3e4, 5.9e4, 1.5e5 DOFs (about 10 min on
-///    2 shared cores); with `large` (--large) instead 0.0045, 0.0035, 0.0028, 0.0025: 2.0e5, 4.1e5, 7.8e5,
-///    1.1e6 DOFs (the large sweep of issues #6 and #8: hours). Each size is checked against the memory
+///  - hertz3d: 0.04, 0.02, 0.01, 0.007, 0.005: 1.3e3, 4.4e3, 2.3e4, 5.9e4, 1.5e5 DOFs; with `large`
+///    (--large) instead 0.0045, 0.0035, 0.0028, 0.0025: 2.0e5, 4.1e5, 7.8e5, 1.1e6 DOFs (hours on two
+///    cores). Each size is checked against the memory
 ///    available before it is solved (check_hertz_fits()) and the sweep stops at the first that does not
 ///    fit: on 23.5 GiB, 1.1e6 never does (18.2 GiB of factor alone), 7.8e5 only on an idle machine;
 ///  - hertz3d-spheres: 0.04, 0.02, 0.014 (two bodies).

@@ -28,7 +28,7 @@
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz3d --h 0.04 0.02 0.01 --csv h3d.csv
 ///
 /// `inclined` solves the inclined interface with Coulomb friction mu = 0.2 (examples/inclined_2d,
-/// VALIDATION.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
+/// docs/validation.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
 /// 0.025 0.0125 0.00625 0.003125 0.0015625: 5.6e3 to 1.3e6 DOFs) against the same floor (bench_inclined.hpp):
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
@@ -54,8 +54,8 @@
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case suite --csv results/suite-
 ///
 /// `--case hertz3d --large` is the large 3D sweep instead of the default ladder: h = 0.0045 0.0035 0.0028
-/// 0.0025, 2.0e5, 4.1e5, 7.8e5 and 1.1e6 DOFs (hours on 2 cores; 4.1e5 needs 9 GiB, 7.8e5 more than the
-/// 21 GiB it reached before it was stopped, 1.1e6 more than 24 GiB). Before each size is
+/// 0.0025, 2.0e5, 4.1e5, 7.8e5 and 1.1e6 DOFs (hours on 2 cores; memory: docs/performance.md and
+/// check_hertz_fits()). Before each size is
 /// solved, CHOLMOD's analysis predicts its factor, and the sweep stops at the first size that would not fit
 /// in the memory available (check_hertz_fits(), hertz.hpp); --check-only does only that (meshing and
 /// CHOLMOD's analysis, minutes), for every size, and solves none:
@@ -97,9 +97,9 @@ using namespace symcontact::bench;
 using Kind = ResultTable::Kind;
 
 constexpr double kDefaultMaxDofs2d = 1.1e6;
-/// 3D P1 up to 3e5 DOFs takes about a minute and 4 GiB with one BLAS thread (docs/performance.md); 6e5
-/// takes minutes and 10 GiB, 1e6 (CHOLMOD's 64-bit interface, cholmod_long.hpp) about 16 GiB of factor,
-/// so the ladder stops at 3e5 by default (--dofs for more; a size whose factor does not fit is refused).
+/// The factor of the 3D P1 stiffness grows faster than the DOFs (docs/performance.md: about 4 GiB at 3e5 DOFs,
+/// 16 GiB at 1e6 through CHOLMOD's 64-bit interface, cholmod_long.hpp), so the ladder stops at 3e5 by
+/// default (--dofs for more; a size whose factor does not fit is refused).
 constexpr double kDefaultMaxDofs3d = 3.1e5;
 
 std::vector<ResultTable::Column> columns() {

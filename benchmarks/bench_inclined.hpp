@@ -22,7 +22,7 @@ struct InclinedBenchOptions {
   bool keep_work = false;      ///< keep the temporary directory with the wrapper .geo and .toml
 };
 
-/// The default ladder of h: about 5.6e3, 2.2e4, 8.4e4 and 3.3e5 DOFs (about 2 min of CPU in all).
+/// The default ladder of h: about 5.6e3, 2.2e4, 8.4e4 and 3.3e5 DOFs.
 std::vector<double> default_inclined_sizes();
 
 /// Runs the sweep, printing the table as rows finish. Throws what solve_inclined() throws.

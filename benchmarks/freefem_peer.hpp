@@ -1,7 +1,7 @@
 #pragma once
 /// \file freefem_peer.hpp
-/// symcontact side by side with FreeFEM + ff-Ipopt on the same 2D Hertz mesh (issue #8, ratio (b);
-/// `symcontact-bench --case hertz2d-freefem`).
+/// symcontact side by side with FreeFEM + ff-Ipopt on the same 2D Hertz mesh
+/// (`symcontact-bench --case hertz2d-freefem`).
 ///
 /// The problem is the peers' benchmark (../shared/peers/README.md, section 2), not our example: the
 /// quarter model x ≥ 0 of the lower half of a disk R = 1 centred at (0, 1) on the rigid plane y = 0,

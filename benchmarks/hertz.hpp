@@ -110,7 +110,7 @@ void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& b
 
 /// Throws FactorTooLarge (elastic_block.hpp) when the contact solve of `run` would not fit in the memory
 /// available now, before it starts: CHOLMOD's analysis of the floor's K_ff predicts nnz(L) (assembly and
-/// analysis only, about 2 s at 2e5 DOFs). The solve's peak is modelled as
+/// symbolic analysis only, a small part of the solve's cost). The solve's peak is modelled as
 ///     kFactorStorage · 8 · nnz(L) + kBytesPerDof · DOFs + kDenseBytesPerEntry · m²,
 /// the factor of the static condensation (the same matrix with B ordered last, whose nnz(L) is within a few
 /// per cent of the floor's) in CHOLMOD's supernodal storage, the mesh, model and sparse matrices, and the dense
@@ -122,7 +122,7 @@ void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& b
 /// predicted nnz(L).
 double check_hertz_fits(const HertzRun& run);
 /// CHOLMOD's supernodal factor stores more than nnz(L) entries: the zeros of relaxed supernode amalgamation
-/// and the upper triangles of the diagonal blocks. Measured L->xsize / nnz(L) on the 3D Hertz K_ff: 1.235 at
+/// and the upper triangles of the diagonal blocks. L->xsize / nnz(L) on the 3D Hertz K_ff: 1.235 at
 /// 2.0e5 DOFs, 1.218 at 1.07e6 (docs/performance.md).
 inline constexpr double kFactorStorage = 1.25;
 /// Mesh, model, K and its copies, vectors: fitted (see check_hertz_fits()).

@@ -99,7 +99,7 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// δ of x − x̄(η) moves the foot along the facet too, and δθ = δ·n_f/(n_f·m), n_f the master facet's own
 /// unit normal at x̄ (differentiate x − θ m = x_m(η) in θ and η). Freezing η and dotting with m instead
 /// would miss the gap's first-order change under a slide along a facet tilted against m (the fixed
-/// point then wanders along that slide: measured on the crushed ring, whose contact zone ends where the
+/// point then wanders along that slide, as on the crushed ring, whose contact zone ends where the
 /// walls part at 20°); for the closest point the same term vanishes up to the smoothing of n̄.
 /// solved as a fixed point from the closest point (m depends on x̄ through n̄; it settles in a few passes,
 /// the change of n̄ along the surface being the curvature times the gap). m is the bisector of the
@@ -160,7 +160,7 @@ std::vector<ContactPoint> nodal_contact_points(const ContactSurface& slave, cons
 ///    discrete n_s and −n̄ differ where the facets are tilted (the edge of a curved contact zone), and
 ///    the bisector treats the sides alike: on a mirror-symmetric interface it is the symmetry plane's
 ///    normal, along which the nodal force points, while −n̄ or n_s alone are tilted by the local slope t
-///    and report cos t of the force (V7, docs/validation.md: 2.0e-5 → 1.0e-5 of p_max in 3D). Where n_s
+///    and report cos t of the force (V7 in docs/validation.md compares them with the half model). Where n_s
 ///    and −n̄ agree (a closed, conforming contact) the choices coincide.
 ///  - self-contact pairs project along the bisector already (ContactPair::bisector_ray()): their n̄ is the
 ///    projection's m, and the caller passes two_sided = false, so that −m is returned.

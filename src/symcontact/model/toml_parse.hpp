@@ -7,8 +7,8 @@
 /// Extended, Greek, Cyrillic: "ν = 0.3" is enough) and from U+FC06 to U+FEFE, wherever the parser asks
 /// "is this white space?" — outside strings, inside a value it is recording for a message, after a
 /// line-ending backslash in a multi-line string (upstream marzer/tomlplusplus issues #190 and #295,
-/// fixed after 3.3 by pull request #305). Predicting where the parser asks proved fragile (the fuzzer
-/// kept finding new places), so this parser never shows toml++ such a character:
+/// fixed after 3.3 by pull request #305). Where the parser asks cannot be predicted reliably from outside
+/// (fuzzing finds such places all over the grammar), so this parser never shows toml++ such a character:
 ///
 /// 1. **shield**: the text is checked to be UTF-8 (RFC 3629: no overlong forms, no surrogates, nothing
 ///    above U+10FFFF) and every code point c in U+0080 … U+FFFF is written as c + U+F0000 (plane 15,

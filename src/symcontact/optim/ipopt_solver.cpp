@@ -547,9 +547,9 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   if (problem.hessian_is_dense()) {
     // A full Hessian block (the condensed problem, the dual on symmetric pairs): no fill to reduce and nothing
     // for MUMPS's maximum-transversal permutation and scaling to find, yet its analysis runs them at every
-    // IPOPT call on the (n + m)-row KKT pattern. Without them and with plain AMD, measured on the inclined
-    // interface with Coulomb friction (52 IPOPT calls, 133 iterations): optimizer CPU −18 % at 8.4e4 DOFs
-    // (2.66 → 2.13 s), −21 % at 3.3e5 (11.8 → 9.5 s), the same iterations and |R_x/R_y| to 9 digits.
+    // IPOPT call on the (n + m)-row KKT pattern. They are turned off and the ordering is plain AMD: a cheaper
+    // analysis, with the same iterates (on the inclined interface with Coulomb friction: the same IPOPT
+    // iterations and |R_x/R_y| to 9 digits).
     set_default(*app, "mumps_permuting_scaling", 0);
     set_default(*app, "mumps_scaling", 0);
     set_default(*app, "mumps_pivot_order", 0);

@@ -30,9 +30,9 @@ constexpr Index kDirectLimit = 3000;
 
 /// Projected CG of a later Newton step (dense_kkt.hpp) stops once its update is below kCgTolerance × max |x|
 /// (1e-3 of the Newton loop's own stopping step, 1e-10 × max |x|: the steps it takes are those of the direct
-/// solve to far below what ends the loop); after kCgMaxIterations the step refactorises instead. Measured on
-/// the inclined interface with Coulomb friction (2e4 DOFs, |B| = 382, |S| = 191): 1–2 iterations per step,
-/// each O(|B|²) against a factorisation's O(|B|³).
+/// solve to far below what ends the loop); after kCgMaxIterations the step refactorises instead. On the
+/// inclined interface with Coulomb friction (2e4 DOFs, |B| = 382, |S| = 191) it takes 1–2 iterations per
+/// step, each O(|B|²) against a factorisation's O(|B|³).
 constexpr double kCgTolerance = 1e-13;
 constexpr int kCgMaxIterations = 50;
 /// Newton steps of the polish below this (relative to max|x|) that no longer fall tenfold are round-off.
@@ -116,9 +116,9 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
   SparseMatrix AtA;  // lower triangle of A_Sᵀ A_S
   double adiag = 0.0;
   // Newton's steps fall quadratically until they reach the round-off of these augmented systems (1e-10 to
-  // 3e-10 of max|x| measured on the inclined interface, where IPOPT's point is already there: its force
-  // balancing polish then took 12–20 steps of noise). A step at that level that is not a tenth of the one
-  // before is taken as round-off, and ends the loop.
+  // 3e-10 of max|x| on the inclined interface, where IPOPT's point is already there: without this test its
+  // force-balancing polish takes 12–20 steps of noise). A step at that level that is not a tenth of the
+  // one before is taken as round-off, and ends the loop.
   double previous_step = std::numeric_limits<double>::infinity();
   auto at_round_off = [&](double step) {
     const bool stop = step <= kRoundOffStep * xscale0 && step > 0.1 * previous_step;
@@ -191,8 +191,8 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       const VectorXd ghat = g + rho * (AS.transpose() * cS);
       if (chol.dense()) {
         // With M = L Lᵀ dense: DenseRangeSpace, one multi-column triangular solve for W = L⁻¹ A_Sᵀ instead
-        // of |S| + 2 pairs of single-column solves (measured on the two elastic cylinders: see
-        // docs/performance.md). It is kept to precondition the next Newton steps (above).
+        // of |S| + 2 pairs of single-column solves (BLAS-3 work instead of BLAS-2). It is kept to
+        // precondition the next Newton steps (above).
         reference = std::make_unique<DenseRangeSpace>(chol.dense_factor(), AS, rho);
         VectorXd dx, lambda;
         reference->solve(g, cS, dx, lambda);
@@ -323,11 +323,11 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
       // Kunisch, SIAM J. Optim. 13, 2003, eq. 2.4): constraints outside S that the solve on S violates were
       // active too, and join S. A constraint that became active between two geometry iterations is left
       // by a warm-started IPOPT solve (often a single iteration) with the tiny multiplier of the warm
-      // start, below the threshold above; without this step the closing polish was rejected and the
-      // whole solve fell back to balancing forces only, which keeps the barrier offsets (measured on the
-      // V7 3D hairpin: pressures off the half model's by 3.6e-5 of the maximum). For a quadratic f only,
+      // start, below the threshold above; without this step the closing polish is rejected and the
+      // whole solve falls back to balancing forces only, which keeps the barrier offsets (on the V7 3D
+      // hairpin: pressures off the half model's by 3.6e-5 of the maximum). For a quadratic f only,
       // where the solve on S is exact and this is the strategy of the reference (for a finite-strain
-      // energy it made the geometry fixed point of the crushed ring's last step cycle).
+      // energy it makes the geometry fixed point of the crushed ring's last step cycle).
       const double xscale = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
       const VectorXd c = A * xs + b;
       for (Index i = 0; i < A.rows(); ++i)

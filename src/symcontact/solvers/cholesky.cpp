@@ -19,13 +19,12 @@ CholeskySolver::CholeskySolver() : impl_(std::make_unique<Impl>()) {
   // the polish) expect failures.
   impl_->llt.cholmod().print = 0;
   // Where CHOLMOD picks a simplicial factor (small or very sparse matrices) it computes LDLᵀ, which
-  // factorises a nonsingular indefinite matrix without complaint (see the header). Forcing LLᵀ there
-  // (final_asis = 0, final_ll = 1) was tried and made the frictional ironing test fail (a sub-step's
-  // geometry fixed point stopped converging). Isolated by forcing it in one caller at a time: the
-  // equilibrium solver's factorisations (equilibrium_solver.cpp: the Dirichlet predictor of every load
-  // step goes through factorize_descent(), which shifts K when it is not definite) fail the test; the
-  // polish's alone pass it. So the predictor takes the exact tangent step on small problems and a
-  // shifted one on large ones (supernodal LLᵀ throws, then K + τI): not consistent, left as it is.
+  // factorises a nonsingular indefinite matrix without complaint (see the header). LLᵀ is not forced there
+  // (final_asis = 0, final_ll = 1): the equilibrium solver's Dirichlet predictor (equilibrium_solver.cpp,
+  // factorize_descent(), which shifts K when it is not definite) would then take a shifted step on small
+  // problems, with which a sub-step's geometry fixed point of the frictional ironing test does not converge;
+  // the polish's factorisations are indifferent to it. So the predictor takes the exact tangent step on
+  // small problems and a shifted one on large ones (supernodal LLᵀ throws, then K + τI): not consistent.
 }
 CholeskySolver::~CholeskySolver() = default;
 

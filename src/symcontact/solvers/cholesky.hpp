@@ -24,13 +24,13 @@ class CholeskySolver {
   void analyze(const SparseMatrix& lower);
   /// Numeric factorisation. Throws SolveError when A is not positive definite (for an elastic
   /// stiffness: a body free to move rigidly, i.e. too few Dirichlet conditions) — with a supernodal
-  /// factor. With a simplicial one (CHOLMOD's choice for small or very sparse matrices: measured, a
+  /// factor. With a simplicial one (CHOLMOD's choice for small or very sparse matrices, e.g. a
   /// 3D grid Laplacian of 6³ unknowns) the factor is LDLᵀ, and a nonsingular indefinite A is factorised
-  /// and solved exactly instead; only a zero pivot throws. Forcing LLᵀ there made the frictional
-  /// ironing test fail (a sub-step's geometry fixed point no longer converged): its Dirichlet predictor
-  /// (equilibrium_solver.cpp, factorize_descent()) then takes a shifted step instead of the exact
-  /// tangent one (see the .cpp). Callers that need definiteness on small problems must not infer it
-  /// from success.
+  /// and solved exactly instead; only a zero pivot throws. LLᵀ is not forced there: with it the
+  /// Dirichlet predictor (equilibrium_solver.cpp, factorize_descent()) takes a shifted step instead of
+  /// the exact tangent one, and a sub-step's geometry fixed point in the frictional ironing test does not
+  /// converge (see the .cpp). Callers that need definiteness on small problems must not infer it from
+  /// success.
   void factorize(const SparseMatrix& lower);
   /// analyze() when needed (first call or new size), then factorize().
   void compute(const SparseMatrix& lower);

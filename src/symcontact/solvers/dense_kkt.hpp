@@ -34,7 +34,7 @@
 namespace symcontact {
 
 /// A dense column-major matrix in 64-byte aligned storage, for BLAS/LAPACK calls. OpenBLAS's kernels round
-/// differently with the alignment of their operands (measured with OpenBLAS 0.3.21: dpotrf, dtrsm and dsyrk
+/// differently with the alignment of their operands (OpenBLAS 0.3.21: dpotrf, dtrsm and dsyrk
 /// on the same data placed 16, 24 or 32 bytes past a 64-byte boundary give other last digits), so every
 /// operand handed to them lives in one of these: the same input gives the same digits.
 class AlignedMatrix {

@@ -91,8 +91,8 @@ DenseQpResult solve_dense_qp(const AlignedMatrix& W, const VectorXd& d, const Ma
     return r;
   }
   // Scales of the residuals: relative, not floored at 1 (a small load gives a small d, and a floor of 1 would
-  // loosen the test by the load's size: measured 1e-3 on the inclined interface, where the geometry fixed
-  // point then stalled at a change of 2e-6).
+  // loosen the test by the load's size: 1e-3 on the inclined interface, where the geometry fixed point
+  // then stalls at a change of 2e-6).
   const double w_max = W.map().diagonal().cwiseAbs().maxCoeff();
   const double d_max = d.lpNorm<Eigen::Infinity>(), e_max = k > 0 ? e.lpNorm<Eigen::Infinity>() : 0.0;
   const double s_d = d_max > 0 ? d_max : (w_max > 0 ? w_max : 1.0);
@@ -117,8 +117,8 @@ DenseQpResult solve_dense_qp(const AlignedMatrix& W, const VectorXd& d, const Ma
     VectorXd w1 = -d;
     symmetric_multiply_add(W, x, w1);
     // z on the scale of the problem (the method is invariant under a scaling of W, d and z together, provided
-    // z starts on that scale: with z = 1 on a problem whose d is 2e-9, measured on the inclined interface,
-    // it spent its iterations bringing z down and met x = 0 in round-off).
+    // z starts on that scale: with z = 1 on a problem whose d is 2e-9, as on the inclined interface, it
+    // spends its iterations bringing z down and meets x = 0 in round-off).
     const double z_scale = w1.lpNorm<Eigen::Infinity>();
     z = VectorXd::Constant(m, z_scale > 0 ? z_scale : s_d);
   }

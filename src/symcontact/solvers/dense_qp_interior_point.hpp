@@ -7,10 +7,10 @@
 ///
 /// W m × m symmetric positive SEMIdefinite (its lower triangle is read), G k × m with k small (k ≪ m). This is
 /// the dual of the frictionless condensed contact problem (dual_condensed_problem.hpp), which IPOPT solves as
-/// a sparse problem with a dense Hessian: MUMPS then factorises the m × m matrix as if it were sparse, at about
-/// three times the time of LAPACK's dense Cholesky and with a workspace of ~10 m² doubles (measured: 990 MB at
-/// m = 3,276). Here each iteration is one dense Cholesky factorisation (dpotrf, m³/3) and four triangular
-/// solves; the memory is W and one m × m factor.
+/// a sparse problem with a dense Hessian: MUMPS then factorises the m × m matrix as if it were sparse, more
+/// slowly than LAPACK's dense Cholesky and with a workspace of ~10 m² doubles. Here each iteration is one
+/// dense Cholesky factorisation (dpotrf, m³/3) and four triangular solves; the memory is W and one m × m
+/// factor.
 ///
 /// Optimality (KKT): r_d = W x − d − Gᵀβ − z = 0, r_p = G x − e = 0, x ∘ z = 0, x ≥ 0, z ≥ 0.
 /// Newton on the perturbed conditions x ∘ z = σμ, with X = diag(x), Z = diag(z), eliminates Δz:
@@ -41,11 +41,11 @@ struct DenseQpOptions {
   double tolerance = 1e-10;                  ///< of the residuals r_d and r_p
   /// Of μ. Far below `tolerance` because the contact solver reads the active set off the point (the closing
   /// of DualCondensedProblem): a closed row with a small λ_i — the two families of a symmetric pair share
-  /// the load — stays open by μ / λ_i. Measured on the inclined interface (symmetric pair, h = 0.1): at
-  /// μ ≤ 1e-10 and 1e-14 the closing starts from 22 rows, cycles and is dropped, and the geometry fixed point
-  /// then stalls at a change of 4e-6; at 1e-16 it starts from IPOPT's 18 rows, closes in one round and the
+  /// the load — stays open by μ / λ_i. On the inclined interface (symmetric pair, h = 0.1), with μ stopped
+  /// at 1e-10 or 1e-14 the closing starts from 22 rows, cycles and is dropped, and the geometry fixed point
+  /// stalls at a change of 4e-6; at 1e-16 it starts from IPOPT's 18 rows, closes in one round and the
   /// fixed point converges as with IPOPT. Mehrotra's method converges superlinearly, so this costs 2 to 4
-  /// iterations (3D Hertz, 5.9e4 DOFs: 22 instead of 14, and the closing's rounds fall from 0.65 s to 0.12 s).
+  /// iterations per solve, and the closing that follows needs fewer rounds.
   double complementarity_tolerance = 1e-16;
   int max_iterations = 100;
 };

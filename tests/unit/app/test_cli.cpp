@@ -140,7 +140,7 @@ TEST_F(Cli, DegenerateTriangleIsAnInputErrorNamingTheCell) {
 }
 
 TEST_F(Cli, BodyHeldByNothingIsAnInputError) {
-  // No Dirichlet condition and no contact: nothing can hold the body, whatever the loads (docs/input.md).
+  // No Dirichlet condition and no contact: nothing can hold the body, whatever the loads (docs/checks.md).
   const fs::path f = write("rigid.toml", problem_toml(example_geo(), "block", "0.3", kPressTop));
   expect_input_error(f, {"rigid.toml", "body[0]", "body \"block\"", "no [[body.dirichlet]]", "no [[contact]]",
                          "rigid motion"});
