@@ -93,6 +93,7 @@
 namespace {
 
 using symcontact::Index;
+using symcontact::SubproblemSolver;
 using namespace symcontact::bench;
 using Kind = ResultTable::Kind;
 

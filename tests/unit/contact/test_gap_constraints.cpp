@@ -288,7 +288,9 @@ TEST_P(GapConstraintsFlat, AFacetPartlyWithinTheSearchDistanceCountsWhole) {
     const Index k = lin.row_node[row];
     EXPECT_GT(lin.b[row], 0.0) << "node at x = " << it.slave.X(0, k);
     // Nodes inside the selected facets: the whole support is integrated.
-    if (it.slave.X(0, k) < 0.53 - 1e-9) EXPECT_NEAR(lin.b[row], whole[k], 1e-13) << "node at x = " << it.slave.X(0, k);
+    if (it.slave.X(0, k) < 0.53 - 1e-9) {
+      EXPECT_NEAR(lin.b[row], whole[k], 1e-13) << "node at x = " << it.slave.X(0, k);
+    }
   }
 }
 
