@@ -73,7 +73,7 @@ struct ContactSolveOptions {
   int geometry_acceleration = 5;
   /// IPOPT settings. An interior point leaves every active constraint open by about μ_barrier/μ_i; with
   /// the nearly dependent families of the symmetric formulation some μ_i are small and the interface
-  /// stays open by ~1e5·tol (relative, measured on the V3 patch test) — hence the polish below.
+  /// stays open by ~1e5·tol (relative; the V3 patch test) — hence the polish below.
   IpoptOptions ipopt;
   /// Remove that offset after each IPOPT solve (active_set_polish.hpp); quadratic energies only.
   bool polish = true;
@@ -88,10 +88,9 @@ struct ContactSolveOptions {
   /// S itself (static_condensation.hpp), its pivoted Cholesky factor, W = A S⁺ Aᵀ of the dual and the
   /// interior point's factor of it (or, on the primal path, IPOPT's KKT factorisation, dense in effect):
   /// about 25 bytes per entry of the |B| × |B| matrix with the dual's dense interior point, 73–84 with IPOPT
-  /// on the dual (peak RSS of the 3D Hertz solve beyond the factor and the model, at |B| = 3,282 and 5,224;
-  /// docs/performance.md), i.e. about 3.4 GiB at 12,000, and O(|B|³) time per optimiser iteration. The 3D
-  /// Hertz sphere on its plane has |B| = 5,224 at 4e5 DOFs (the limit was 4,000 until that size was run) and
-  /// about 9,500 at 1e6.
+  /// on the dual (docs/performance.md: peak memory of the 3D Hertz solve beyond the factor and the model),
+  /// i.e. about 3.4 GiB at 12,000, and O(|B|³) time per optimiser iteration. The 3D Hertz sphere on its plane
+  /// has |B| = 5,224 at 4e5 DOFs and about 9,500 at 1e6.
   Index max_condensed_dofs = 12000;
   /// How each geometry iteration's subproblem is solved (SubproblemSolver).
   SubproblemSolver subproblem_solver = SubproblemSolver::kDualInteriorPoint;

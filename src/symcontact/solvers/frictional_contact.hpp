@@ -6,8 +6,8 @@
 ///  - Coulomb pairs (Raous 1999, eq. 17): σ_{n,0} from the frictionless problem, τ_0 = μ p_0 — or, from
 ///    the second load step on (`previous` given), τ_0 = the thresholds the previous step converged to,
 ///    without a frictionless solve: under large sliding the frictionless solve lets everything friction
-///    held spring back (a dragged flexible die: 40 % of the solution's size), and dragging it back
-///    defeated the geometry fixed point (2D ironing, step 40); it also saves one contact solve per step. Then
+///    held spring back (a dragged flexible die: 40 % of the solution's size), and dragging it back is a
+///    large step for the geometry fixed point (2D ironing); it also saves one contact solve per step. Then
 ///      solve regularised Tresca with τ_k → pressure p_k → residual r_k = μ p_k − τ_k,
 ///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that stagnates (a cycle, or the noise floor of its
 ///    inner solves) has its inner solves tightened; one that still stagnates is accepted only where the
@@ -44,9 +44,9 @@ struct FrictionalOptions {
   /// ends only on a solve to geometry_tolerance, with c below coulomb_tolerance (one more solve when τ
   /// settles on an inexact one): the same fixed point to the same tolerances. 0: every solve to
   /// geometry_tolerance. Quadratic energies (linear elasticity) only: with finite-strain bodies every
-  /// solve goes to geometry_tolerance (tried: on the frictional ironing test, finite strain with step cuts,
-  /// the inexact solves changed the answer of the load path, its deepest penetration −0.0220 against the
-  /// bound −0.0208).
+  /// solve goes to geometry_tolerance, because there the intermediate answers of inexact solves steer the
+  /// load path itself (on the frictional ironing test they change its deepest penetration beyond the
+  /// bound the test holds).
   double inner_tolerance_factor = 0.1;
   /// Predictor of a warm-started step (quadratic energies: linear elasticity): when this step's Dirichlet
   /// increment is s times the previous step's (proportional loading), the Coulomb fixed point starts from
