@@ -130,18 +130,22 @@ void report_edge(int e, double t, FacetProjection& r) {
   else r.clamped_edge = e;
 }
 
+/// The projection of p at the point η inside the facet (snapped onto it against round-off).
+FacetProjection interior_projection(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, double eta[2]) {
+  FacetProjection r;
+  snap_into_triangle(eta);
+  r.eta[0] = eta[0];
+  r.eta[1] = eta[1];
+  r.point = triangle_point(type, xf, eta, nullptr);
+  r.distance2 = (r.point - p).squaredNorm();
+  return r;
+}
+
 FacetProjection project_on_tri3(const Eigen::MatrixXd& xf, const Eigen::Vector3d& p) {
   FacetProjection r;
   const Eigen::Vector2d e = plane_coordinates(xf, p);
   double eta[2] = {e[0], e[1]};
-  if (inside_triangle(eta)) {
-    snap_into_triangle(eta);
-    r.eta[0] = eta[0];
-    r.eta[1] = eta[1];
-    r.point = triangle_point(CellType::kTri3, xf, eta, nullptr);
-    r.distance2 = (r.point - p).squaredNorm();
-    return r;
-  }
+  if (inside_triangle(eta)) return interior_projection(CellType::kTri3, xf, p, eta);
   r.distance2 = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d a = xf.col(triangle_edge(k)[0]).head<3>(), b = xf.col(triangle_edge(k)[1]).head<3>();
@@ -203,12 +207,7 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   if (inside && local_min) {
     // A local minimum inside the facet: on a facet whose curvature radius exceeds its size (any
     // sensible mesh), the squared distance is convex over the facet and this is the closest point.
-    snap_into_triangle(e);
-    r.eta[0] = e[0];
-    r.eta[1] = e[1];
-    r.point = triangle_point(CellType::kTri6, xf, e, nullptr);
-    r.distance2 = (r.point - p).squaredNorm();
-    return r;
+    return interior_projection(CellType::kTri6, xf, p, e);
   }
   // Boundary: the three edges are Line3 curves (vertex a, vertex b, edge node).
   Eigen::MatrixXd xe(xf.rows(), 3);

@@ -31,6 +31,18 @@ int ContactSet::friction_family(int pair) const {
   return -1;
 }
 
+OppositeSide ContactSet::opposite_side(int f, const DofMap& dofs, const VectorXd& u) const {
+  const ContactFamily& fam = families_[f];
+  OppositeSide side;
+  if (fam.master >= 0) {
+    const ContactSurface& ms = surfaces[fam.master];
+    side.master_geometry = prepare_master(ms, current_positions(ms, dofs, u));
+  } else {
+    side.obstacle = &obstacles[pairs[fam.pair].obstacle];
+  }
+  return side;
+}
+
 ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u) const {
   ContactLinearization lin;
   std::vector<Eigen::MatrixXd> x(surfaces.size());

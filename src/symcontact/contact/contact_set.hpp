@@ -14,6 +14,7 @@
 ///    (n_s·n̄ ≥ 0), and only facing facets (n_s·n̄ < 0) are candidates (contact_points.hpp).
 /// Stacking the families' rows gives g(u) = A u + b ≥ 0.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,14 @@ struct ContactPair {
   bool bisector_ray() const { return obstacle < 0 && surface_a == surface_b; }
 };
 
+/// The opposite side of a family at a displacement: the master surface's geometry there, or the pair's
+/// obstacle (exactly one of the two), as nodal_contact_points() and interface_normals() take them.
+struct OppositeSide {
+  std::optional<MasterGeometry> master_geometry;
+  const Obstacle* obstacle = nullptr;
+  const MasterGeometry* master() const { return master_geometry ? &*master_geometry : nullptr; }
+};
+
 struct ContactFamily {
   int pair = -1;
   int slave = -1;    ///< surface index
@@ -73,6 +82,8 @@ class ContactSet {
   const std::vector<ContactFamily>& families() const { return families_; }
   /// The family that carries the pair's friction (its first: slave a, or the one-pass slave).
   int friction_family(int pair) const;
+  /// The opposite side of family f at the configuration X + u.
+  OppositeSide opposite_side(int f, const DofMap& dofs, const VectorXd& u) const;
   bool empty() const { return pairs.empty(); }
 
   /// Projections, normals and gap constraints from the configuration X + u.

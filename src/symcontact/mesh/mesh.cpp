@@ -107,14 +107,13 @@ void Mesh::check() const {
   }
 }
 
+std::size_t FacetKeyHash::operator()(const std::array<Index, 3>& k) const {
+  std::size_t h = 1469598103934665603ull;  // FNV-1a
+  for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+  return h;
+}
+
 namespace {
-struct KeyHash {
-  std::size_t operator()(const std::array<Index, 3>& k) const {
-    std::size_t h = 1469598103934665603ull;
-    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
-    return h;
-  }
-};
 }  // namespace
 
 void Mesh::locate_facets() {
@@ -129,7 +128,7 @@ void Mesh::locate_facets() {
     int facet;
     Index second;
   };
-  std::unordered_map<std::array<Index, 3>, Where, KeyHash> where;
+  std::unordered_map<std::array<Index, 3>, Where, FacetKeyHash> where;
   auto key_of = [&](const Index* v) {
     std::array<Index, 3> k{-1, -1, -1};
     for (int i = 0; i < nfv; ++i) k[i] = v[i];

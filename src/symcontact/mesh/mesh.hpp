@@ -8,6 +8,7 @@
 /// facets of type facet_type(cell_type) the same way. Every cell is positively oriented (det J > 0
 /// at its vertices); mesh builders reorient cells read with the other orientation.
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -18,6 +19,11 @@
 namespace symcontact {
 
 /// A named set of boundary facets (a Gmsh physical curve in 2D, surface in 3D).
+/// Hash of a facet's sorted vertex indices (k[2] = −1 for a segment), for unordered maps keyed by facets.
+struct FacetKeyHash {
+  std::size_t operator()(const std::array<Index, 3>& k) const;
+};
+
 struct FacetGroup {
   std::vector<Index> facets;  ///< num_facets × nodes-per-facet node indices
   std::vector<Index> tags;    ///< element tag of each facet in its mesh file (empty: built in code)

@@ -157,14 +157,6 @@ namespace symcontact {
 
 namespace {
 
-struct FacetKeyHash {
-  std::size_t operator()(const std::array<Index, 3>& k) const {
-    std::size_t h = 1469598103934665603ull;
-    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
-    return h;
-  }
-};
-
 /// Side of the hyperplane through facet vertices k (sorted indices; k[2] = −1 in 2D) on which point r lies:
 /// the sign of det[q − p, (s − p,) r − p].
 int side_of(const Mesh& m, const std::array<Index, 3>& k, const Eigen::VectorXd& r) {

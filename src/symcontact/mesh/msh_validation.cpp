@@ -337,21 +337,44 @@ class MshValidator {
     }
   }
 
-  void nodes4() {
-    in_.expect_line("$Nodes", "numEntityBlocks numNodes minNodeTag maxNodeTag");
+  /// The header of a MSH 4 $Nodes or $Elements section (`section` "Nodes" or "Elements", `item` "node" or
+  /// "element"): numEntityBlocks numItems minItemTag maxItemTag, each in range.
+  struct SectionCounts {
+    long line = 0;
+    std::int64_t blocks = 0, n = 0, lo = 0, hi = 0;
+  };
+  SectionCounts section_counts(const std::string& section, const std::string& item) {
+    std::string Item = item;
+    Item[0] = static_cast<char>(Item[0] - 'a' + 'A');
+    const std::string names = "numEntityBlocks num" + Item + "s min" + Item + "Tag max" + Item + "Tag";
+    in_.expect_line("$" + section, names);
     short_line();
-    in_.expect_tokens(4, "numEntityBlocks numNodes minNodeTag maxNodeTag");
-    const long header = in_.line();
-    const std::int64_t blocks = in_.integer(0, "the number of entity blocks", 0, kMaxTag);
-    const std::int64_t n = in_.integer(1, "the number of nodes", 0, kMaxTag);
-    const std::int64_t lo = in_.integer(2, "the smallest node tag", n == 0 ? 0 : 1, kMaxTag);
-    const std::int64_t hi = in_.integer(3, "the largest node tag", n == 0 ? 0 : lo, kMaxTag);
+    in_.expect_tokens(4, names);
+    SectionCounts c;
+    c.line = in_.line();
+    c.blocks = in_.integer(0, "the number of entity blocks", 0, kMaxTag);
+    c.n = in_.integer(1, "the number of " + item + "s", 0, kMaxTag);
+    c.lo = in_.integer(2, "the smallest " + item + " tag", c.n == 0 ? 0 : 1, kMaxTag);
+    c.hi = in_.integer(3, "the largest " + item + " tag", c.n == 0 ? 0 : c.lo, kMaxTag);
+    return c;
+  }
+
+  /// The next block header line of `section` (`names`: its four fields), its entity dimension and tag read.
+  void block_entity(const std::string& section, const std::string& names, int& dim, std::int64_t& entity) {
+    in_.expect_line(section, names);
+    in_.expect_tokens(4, names);
+    dim = static_cast<int>(in_.integer(0, "the entity dimension", 0, 3));
+    entity = in_.integer(1, "the entity tag", 1, kMaxTag);
+  }
+
+  void nodes4() {
+    const SectionCounts c = section_counts("Nodes", "node");
+    const std::int64_t n = c.n, lo = c.lo, hi = c.hi;
     std::int64_t total = 0;
-    for (std::int64_t b = 0; b < blocks; ++b) {
-      in_.expect_line("$Nodes", "entityDim entityTag parametric numNodesInBlock");
-      in_.expect_tokens(4, "entityDim entityTag parametric numNodesInBlock");
-      const int dim = static_cast<int>(in_.integer(0, "the entity dimension", 0, 3));
-      const std::int64_t entity = in_.integer(1, "the entity tag", 1, kMaxTag);
+    for (std::int64_t b = 0; b < c.blocks; ++b) {
+      int dim = 0;
+      std::int64_t entity = 0;
+      block_entity("$Nodes", "entityDim entityTag parametric numNodesInBlock", dim, entity);
       const std::int64_t parametric = in_.integer(2, "the parametric flag", 0, dim == 3 ? 0 : 1);
       const std::int64_t m = in_.integer(3, "the number of nodes in the block", 0, n - total);
       known_entity(dim, entity);
@@ -374,7 +397,7 @@ class MshValidator {
       }
     }
     if (total != n) {
-      in_.fail(header, "the node blocks hold " + std::to_string(total) + " nodes, the $Nodes header announced " +
+      in_.fail(c.line, "the node blocks hold " + std::to_string(total) + " nodes, the $Nodes header announced " +
                std::to_string(n));
     }
   }
@@ -423,20 +446,13 @@ class MshValidator {
   }
 
   void elements4() {
-    in_.expect_line("$Elements", "numEntityBlocks numElements minElementTag maxElementTag");
-    short_line();
-    in_.expect_tokens(4, "numEntityBlocks numElements minElementTag maxElementTag");
-    const long header = in_.line();
-    const std::int64_t blocks = in_.integer(0, "the number of entity blocks", 0, kMaxTag);
-    const std::int64_t n = in_.integer(1, "the number of elements", 0, kMaxTag);
-    const std::int64_t lo = in_.integer(2, "the smallest element tag", n == 0 ? 0 : 1, kMaxTag);
-    const std::int64_t hi = in_.integer(3, "the largest element tag", n == 0 ? 0 : lo, kMaxTag);
+    const SectionCounts c = section_counts("Elements", "element");
+    const std::int64_t n = c.n, lo = c.lo, hi = c.hi;
     std::int64_t total = 0;
-    for (std::int64_t b = 0; b < blocks; ++b) {
-      in_.expect_line("$Elements", "entityDim entityTag elementType numElementsInBlock");
-      in_.expect_tokens(4, "entityDim entityTag elementType numElementsInBlock");
-      const int dim = static_cast<int>(in_.integer(0, "the entity dimension", 0, 3));
-      const std::int64_t entity = in_.integer(1, "the entity tag", 1, kMaxTag);
+    for (std::int64_t b = 0; b < c.blocks; ++b) {
+      int dim = 0;
+      std::int64_t entity = 0;
+      block_entity("$Elements", "entityDim entityTag elementType numElementsInBlock", dim, entity);
       const std::int64_t type = in_.integer(2, "the element type", 1, kMaxTag);
       const std::int64_t m = in_.integer(3, "the number of elements in the block", 0, n - total);
       int nn = 0, type_dim = 0;
@@ -455,7 +471,7 @@ class MshValidator {
       }
     }
     if (total != n) {
-      in_.fail(header, "the element blocks hold " + std::to_string(total) + " elements, the $Elements header announced " +
+      in_.fail(c.line, "the element blocks hold " + std::to_string(total) + " elements, the $Elements header announced " +
                std::to_string(n));
     }
   }

@@ -10,19 +10,12 @@ namespace {
 /// The nodal friction points of pair p's friction family at the displacement u.
 std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int p, const DofMap& dofs,
                                                 const VectorXd& u) {
-  const ContactFamily& fam = contacts.families()[contacts.friction_family(p)];
-  const ContactSurface& slave = contacts.surfaces[fam.slave];
+  const int f = contacts.friction_family(p);
+  const ContactSurface& slave = contacts.surfaces[contacts.families()[f].slave];
   const ContactPair& pair = contacts.pairs[p];
-  std::vector<ContactPoint> nodal;
-  if (fam.master >= 0) {
-    const ContactSurface& ms = contacts.surfaces[fam.master];
-    const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, u));
-    nodal = nodal_contact_points(slave, current_positions(slave, dofs, u), &mg, nullptr, pair.search_distance,
-                                 pair.bisector_ray());
-  } else {
-    nodal = nodal_contact_points(slave, current_positions(slave, dofs, u), nullptr, &contacts.obstacles[pair.obstacle],
-                                 pair.search_distance);
-  }
+  const OppositeSide other = contacts.opposite_side(f, dofs, u);
+  std::vector<ContactPoint> nodal = nodal_contact_points(slave, current_positions(slave, dofs, u), other.master(),
+                                                         other.obstacle, pair.search_distance, pair.bisector_ray());
   if (pair.surface_a == pair.surface_b)  // self-contact: each side carries half of the interface's j_τ
     for (ContactPoint& q : nodal) q.weight *= 0.5;
   return nodal;

@@ -15,17 +15,12 @@ namespace {
 Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap& dofs, const VectorXd& u,
                                        const VectorXd& force) {
   // Along the interface normal, as the friction term and the contact results decompose.
-  const ContactFamily& fam = cs.families()[cs.friction_family(p)];
-  const ContactSurface& s = cs.surfaces[fam.slave];
+  const int f = cs.friction_family(p);
+  const ContactSurface& s = cs.surfaces[cs.families()[f].slave];
   const Eigen::MatrixXd xs = current_positions(s, dofs, u);
-  Eigen::MatrixXd normals;
-  if (fam.master >= 0) {
-    const ContactSurface& ms = cs.surfaces[fam.master];
-    const MasterGeometry mg = prepare_master(ms, current_positions(ms, dofs, u));
-    normals = interface_normals(s, xs, &mg, nullptr, cs.pairs[p].search_distance, cs.pairs[p].bisector_ray());
-  } else {
-    normals = interface_normals(s, xs, nullptr, &cs.obstacles[cs.pairs[p].obstacle], cs.pairs[p].search_distance);
-  }
+  const OppositeSide other = cs.opposite_side(f, dofs, u);
+  const Eigen::MatrixXd normals =
+      interface_normals(s, xs, other.master(), other.obstacle, cs.pairs[p].search_distance, cs.pairs[p].bisector_ray());
   return surface_tractions(s, dofs, u, force, &normals).pressure.cwiseMax(0.0);
 }
 
