@@ -240,10 +240,7 @@ class MshValidator {
   }
 
   void physical_names() {
-    in_.expect_line("$PhysicalNames", "the number of physical names");
-    short_line();
-    in_.expect_tokens(1, "the number of physical names");
-    const std::int64_t n = in_.integer(0, "the number of physical names", 0, kMaxTag);
+    const std::int64_t n = section_count("$PhysicalNames", "the number of physical names");
     for (std::int64_t k = 0; k < n; ++k) {
       in_.expect_line("$PhysicalNames", "dim tag \"name\" (" + std::to_string(n) + " names announced)");
       in_.expect_tokens(3, "dim tag \"name\"", true);
@@ -324,10 +321,7 @@ class MshValidator {
   }
 
   void nodes2() {
-    in_.expect_line("$Nodes", "the number of nodes");
-    short_line();
-    in_.expect_tokens(1, "the number of nodes");
-    const std::int64_t n = in_.integer(0, "the number of nodes", 0, kMaxTag);
+    const std::int64_t n = section_count("$Nodes", "the number of nodes");
     for (std::int64_t k = 0; k < n; ++k) {
       in_.expect_line("$Nodes", "node tag x y z (" + std::to_string(n) + " nodes announced)");
       in_.expect_tokens(4, "node tag x y z");
@@ -335,6 +329,14 @@ class MshValidator {
       coordinates(1, tag);
       add_node(tag);
     }
+  }
+
+  /// The first line of a section that holds one count (`what`: its name in messages), in [0, kMaxTag].
+  std::int64_t section_count(const std::string& section, const std::string& what) {
+    in_.expect_line(section, what);
+    short_line();
+    in_.expect_tokens(1, what);
+    return in_.integer(0, what, 0, kMaxTag);
   }
 
   /// The header of a MSH 4 $Nodes or $Elements section (`section` "Nodes" or "Elements", `item` "node" or
@@ -359,12 +361,12 @@ class MshValidator {
     return c;
   }
 
-  /// The next block header line of `section` (`names`: its four fields), its entity dimension and tag read.
-  void block_entity(const std::string& section, const std::string& names, int& dim, std::int64_t& entity) {
+  /// The next block header line of `section` (`names`: its four fields): its entity dimension and tag.
+  std::pair<int, std::int64_t> block_entity(const std::string& section, const std::string& names) {
     in_.expect_line(section, names);
     in_.expect_tokens(4, names);
-    dim = static_cast<int>(in_.integer(0, "the entity dimension", 0, 3));
-    entity = in_.integer(1, "the entity tag", 1, kMaxTag);
+    const int dim = static_cast<int>(in_.integer(0, "the entity dimension", 0, 3));
+    return {dim, in_.integer(1, "the entity tag", 1, kMaxTag)};
   }
 
   void nodes4() {
@@ -372,9 +374,7 @@ class MshValidator {
     const std::int64_t n = c.n, lo = c.lo, hi = c.hi;
     std::int64_t total = 0;
     for (std::int64_t b = 0; b < c.blocks; ++b) {
-      int dim = 0;
-      std::int64_t entity = 0;
-      block_entity("$Nodes", "entityDim entityTag parametric numNodesInBlock", dim, entity);
+      const auto [dim, entity] = block_entity("$Nodes", "entityDim entityTag parametric numNodesInBlock");
       const std::int64_t parametric = in_.integer(2, "the parametric flag", 0, dim == 3 ? 0 : 1);
       const std::int64_t m = in_.integer(3, "the number of nodes in the block", 0, n - total);
       known_entity(dim, entity);
@@ -422,10 +422,7 @@ class MshValidator {
   }
 
   void elements2() {
-    in_.expect_line("$Elements", "the number of elements");
-    short_line();
-    in_.expect_tokens(1, "the number of elements");
-    const std::int64_t n = in_.integer(0, "the number of elements", 0, kMaxTag);
+    const std::int64_t n = section_count("$Elements", "the number of elements");
     for (std::int64_t k = 0; k < n; ++k) {
       in_.expect_line("$Elements", "tag type numTags tags... nodes... (" + std::to_string(n) + " elements announced)");
       in_.expect_tokens(3, "element tag, type, number of tags", true);
@@ -450,9 +447,7 @@ class MshValidator {
     const std::int64_t n = c.n, lo = c.lo, hi = c.hi;
     std::int64_t total = 0;
     for (std::int64_t b = 0; b < c.blocks; ++b) {
-      int dim = 0;
-      std::int64_t entity = 0;
-      block_entity("$Elements", "entityDim entityTag elementType numElementsInBlock", dim, entity);
+      const auto [dim, entity] = block_entity("$Elements", "entityDim entityTag elementType numElementsInBlock");
       const std::int64_t type = in_.integer(2, "the element type", 1, kMaxTag);
       const std::int64_t m = in_.integer(3, "the number of elements in the block", 0, n - total);
       int nn = 0, type_dim = 0;
