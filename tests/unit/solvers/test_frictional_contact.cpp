@@ -1,0 +1,89 @@
+// The Coulomb fixed point of a load step (solvers/frictional_contact.hpp) on the 2D contact patch of V3 with
+// Coulomb friction μ = 0.3: identical materials, so nothing slips and the answer is the frictionless one; the
+// loop converges on a solve to the geometry tolerance, with the thresholds' change below its tolerance and
+// the workspace's interior made whole; a loop that cannot converge in its iterations fails, naming them.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <sstream>
+
+#include "support/contact_patch_case.hpp"
+#include "support/model_case.hpp"
+#include "support/temp_folder.hpp"
+#include "symcontact/core/error.hpp"
+#include "symcontact/solvers/frictional_contact.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+class FrictionalContactTest : public ::testing::Test {
+ protected:
+  void build(double mu) {
+    folder_.write("blocks.geo", symcontact::testing::contact_patch_geo(4, 5));
+    symcontact::testing::ContactPatchCase c;
+    c.mu = mu;
+    case_ = symcontact::testing::build_model(symcontact::testing::contact_patch_toml(c), folder_.path());
+    case_->model->set_step(0);
+    fixed_ = case_->model->fixed_dofs(0);
+  }
+  FrictionalReport solve(const FrictionalOptions& options, VectorXd& u) {
+    const Model& m = *case_->model;
+    u = VectorXd::Zero(m.dofs().num_dofs());
+    return solve_frictional_contact(m.energy(), fixed_, m.contacts(), m.dofs(), u, options, log_);
+  }
+  static FrictionalOptions options() {
+    FrictionalOptions o;
+    o.contact.workspace = std::make_shared<ContactWorkspace>();
+    return o;
+  }
+
+  symcontact::testing::TempFolder folder_{"frictional_contact"};
+  std::unique_ptr<symcontact::testing::ModelCase> case_;
+  FixedDofs fixed_;
+  std::ostringstream sink_;
+  Logger log_{sink_, Verbosity::kQuiet};
+};
+
+}  // namespace
+
+TEST_F(FrictionalContactTest, CoulombConvergesToTheFrictionlessAnswerWhenNothingSlips) {
+  build(-1.0);
+  VectorXd u_frictionless;
+  const FrictionalReport none = solve(options(), u_frictionless);
+  EXPECT_EQ(none.coulomb_iterations, 0) << "no Coulomb pair: one solve";
+  build(0.3);
+  const FrictionalOptions o = options();
+  VectorXd u;
+  const FrictionalReport r = solve(o, u);
+  EXPECT_GE(r.coulomb_iterations, 1);
+  ASSERT_FALSE(r.coulomb_change.empty());
+  EXPECT_LT(r.coulomb_change.back(), o.coulomb_tolerance);
+  EXPECT_TRUE(r.last.converged) << "the loop ends on a solve to the geometry tolerance";
+  EXPECT_EQ(r.accepted_at_noise_floor, 0.0);
+  EXPECT_EQ(r.coulomb_relaxation.size(), r.coulomb_change.size());
+  EXPECT_FALSE(o.contact.workspace->interior_pending) << "u is whole when the step ends";
+  EXPECT_LT((u - u_frictionless).lpNorm<Eigen::Infinity>(), 1e-6 * u_frictionless.lpNorm<Eigen::Infinity>());
+  // The thresholds the step ends with: μ times a pressure close to the patch's p = 0.01 at every node.
+  ASSERT_EQ(r.friction.nodal_tau.size(), 1u);
+  EXPECT_NEAR(r.friction.nodal_tau[0].maxCoeff(), 0.3 * 0.01, 0.3 * 0.01 * 0.05);
+  EXPECT_GT(r.friction.nodal_tau[0].minCoeff(), 0.0);
+}
+
+TEST_F(FrictionalContactTest, ALoopOutOfIterationsFailsNamingThemAndLeavesUWhole) {
+  build(0.3);
+  FrictionalOptions o = options();
+  o.coulomb_tolerance = 1e-300;  // unreachable
+  o.max_coulomb_iterations = 2;
+  VectorXd u;
+  try {
+    solve(o, u);
+    FAIL() << "no SolveError";
+  } catch (const SolveError& e) {
+    EXPECT_NE(std::string(e.what()).find("the Coulomb fixed point did not converge after 2 iterations"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(o.contact.workspace->interior_pending) << "a failed step leaves u whole too";
+  EXPECT_GT(u.lpNorm<Eigen::Infinity>(), 0.0);
+}
