@@ -3,6 +3,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <sstream>
 
@@ -309,6 +310,17 @@ Json summary_header(const ProblemSpec& spec, const Model& model) {
 
 }  // namespace
 
+SummaryOnError::~SummaryOnError() {
+  if (std::uncaught_exceptions() <= uncaught_) return;
+  try {
+    summary_["status"] = "internal_error";
+    summary_["message"] = "an internal error stopped the run during load step " + std::to_string(steps_done_ + 1) +
+                          " (the program's message names it)";
+    write_();
+  } catch (...) {
+  }
+}
+
 RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log) {
   namespace fs = std::filesystem;
   PhaseTimes times;
@@ -336,6 +348,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   write_summary();
 
   RunResult result;
+  const SummaryOnError on_error(summary, write_summary, result.steps_done);
   VectorXd u = VectorXd::Zero(dofs.num_dofs());
   std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
   const int nsteps = model->num_steps();

@@ -20,9 +20,12 @@
 /// load step or IPOPT iteration: the file being written is finished, summary.json says "interrupted",
 /// and the result carries the signal.
 
+#include <exception>
+#include <functional>
 #include <string>
 
 #include "symcontact/core/log.hpp"
+#include "symcontact/io/json_writer.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/problem_spec.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
@@ -48,6 +51,26 @@ struct RunResult {
   std::string message;
   int steps_done = 0;
   int signal = 0;  ///< kInterrupted: the signal received (SIGINT, SIGTERM)
+};
+
+/// summary.json's last word when an exception other than a failed solve leaves the run (an internal error:
+/// the program exits 4 with its message): on destruction during that exception's unwinding, "status":
+/// "internal_error" and a message naming the load step it stopped at (steps_done + 1), written by `write`,
+/// instead of a summary that still says "running". A failure to write is ignored (the exception in flight is
+/// the one to report); on a normal exit it does nothing.
+class SummaryOnError {
+ public:
+  SummaryOnError(Json& summary, std::function<void()> write, const int& steps_done)
+      : summary_(summary), write_(std::move(write)), steps_done_(steps_done), uncaught_(std::uncaught_exceptions()) {}
+  SummaryOnError(const SummaryOnError&) = delete;
+  SummaryOnError& operator=(const SummaryOnError&) = delete;
+  ~SummaryOnError();
+
+ private:
+  Json& summary_;
+  std::function<void()> write_;
+  const int& steps_done_;
+  int uncaught_;
 };
 
 /// The contact-solver settings of a problem (its [contact_solver] and [ipopt] tables).
