@@ -58,7 +58,7 @@ struct Case {
   double geometry_tolerance;  ///< 0: the example's own solver tolerances
   double agreement;          ///< bound on the relative differences
   bool frictionless = true;  ///< the last solve of the run has no friction term (so it is a dual one)
-  bool two_sided = false;    ///< a symmetric pair: the dual is left to IPOPT (ContactSolveOptions::dual_interior_point)
+  bool two_sided = false;    ///< a symmetric pair: the dual is left to IPOPT (SubproblemSolver::kDualInteriorPoint)
 };
 
 class CondensationChangesNothing : public ::testing::TestWithParam<Case> {};

@@ -257,7 +257,8 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
   return true;
 }
 
-PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, bool hold_values) {
+PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, PolishMode mode) {
+  const bool hold_values = mode == PolishMode::kBalanceForces;
   PolishResult r;
   const SparseMatrix& A = problem.constraint_matrix();
   const VectorXd& b = problem.constraint_offset();
@@ -382,11 +383,10 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
 }  // namespace
 
 PolishResult polish_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, PolishMode mode) {
-  const bool hold_values = mode == PolishMode::kBalanceForces;
   // x and mu change only when the polish is applied; a full Newton step of a finite-strain energy may
   // reach a state it cannot be evaluated at (an inverted cell): then the IPOPT point is kept.
   try {
-    return polish_on_active_set(problem, x, mu, hold_values);
+    return polish_on_active_set(problem, x, mu, mode);
   } catch (const EvaluationError& e) {
     PolishResult r;
     r.reason = std::string("a Newton step reached a state the energy cannot be evaluated at (") + e.what() + ")";
