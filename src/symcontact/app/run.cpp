@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/progress_clock.hpp"
 #include "symcontact/core/interrupt.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/io/atomic_file.hpp"
@@ -381,6 +382,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     return std::string("interrupted by ") + (interrupt_signal() == SIGINT ? "SIGINT" : "SIGTERM") + " before load step " +
            std::to_string(step + 1) + " finished";
   };
+  const ProgressClock clock;  // elapsed and time left on the progress lines of long runs
   for (int step = 0; step < nsteps; ++step) {
     if (interrupt_requested()) return stop_run(step, RunStatus::kInterrupted, interrupted_message(step));
     PhaseTimes st;
@@ -459,7 +461,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
         << (lrep.cuts ? ", " + std::to_string(lrep.substeps.size()) + " sub-steps" : std::string());
     else
       s << "iterations " << rep.iterations << ", residual " << rep.residual;
-    log.progress("load step", step + 1, nsteps, s.str());
+    log.progress("load step", step + 1, nsteps, s.str() + clock.suffix(step + 1, nsteps));
   }
   summary["status"] = "ok";
   write_summary();

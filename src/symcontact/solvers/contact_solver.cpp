@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/progress_clock.hpp"
 #include "symcontact/solvers/anderson_acceleration.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
 #include "symcontact/solvers/contact_forces.hpp"
@@ -156,6 +157,7 @@ class GeometryFixedPoint {
   VectorXd residual_b_;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
   std::vector<std::shared_ptr<const FrictionTerm>> friction_terms_;  ///< per pair, for the reported slips
   bool lazy_ = false;  ///< the iterate's interior is out of date (ContactSolveOptions::lazy_interior)
+  ProgressClock clock_;  ///< since the solve started
 };
 
 /// The dual method of a solve: the dense interior point only where the constraint rows are independent
@@ -347,7 +349,11 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
     std::ostringstream m;
     m << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, IPOPT " << res.iterations << " iterations ("
       << res.status_text << "), change " << change;
-    log_.detail(m.str());
+    // At the default verbosity once the solve has run for 5 s: a long solve shows it is alive.
+    if (clock_.elapsed() > 5.0)
+      log_.info(m.str() + " (elapsed " + format_duration(clock_.elapsed()) + ")");
+    else
+      log_.detail(m.str());
   }
   if (change < stop_tolerance_) {
     accept(condensed.get(), res, change);

@@ -5,6 +5,7 @@
 
 #include "symcontact/contact/surface_tractions.hpp"
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/progress_clock.hpp"
 #include "symcontact/solvers/contact_solver.hpp"
 #include "symcontact/solvers/fixed_point_monitor.hpp"
 
@@ -169,6 +170,15 @@ class CoulombFixedPoint {
   FixedPointMonitor monitor_;
   int tightenings_ = 0;      ///< inner accuracy raised this many times (at most kMaxTightenings)
   bool confirming_ = false;  ///< the last solve confirmed, to full tolerance, a change met on an inexact one
+  ProgressClock clock_;      ///< since the step started
+  /// An iteration's line: at the default verbosity once the step has run for 5 s (a long step shows it is
+  /// alive, with its elapsed time), else with -v only.
+  void log_long_step(const std::string& line) const {
+    if (clock_.elapsed() > 5.0)
+      log_.info(line + " (elapsed " + format_duration(clock_.elapsed()) + ")");
+    else
+      log_.detail(line);
+  }
 };
 
 /// The thresholds the step starts from. Tresca: the given τ; Coulomb: the previous step's (extrapolated by
@@ -246,7 +256,7 @@ bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
   rep_.coulomb_relaxation.push_back(omega_);
   std::ostringstream s;
   s << "  Coulomb iteration " << iteration << ": threshold change " << change << ", relaxation " << omega_;
-  log_.detail(s.str());
+  log_long_step(s.str());
   if (change < options_.coulomb_tolerance) {
     // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an inexact
     // one, one more solve at full tolerance (its τ moves by less than the tolerance).
