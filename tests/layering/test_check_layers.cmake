@@ -28,8 +28,12 @@ function(run_check name expected_rc)
   if(NOT rc EQUAL expected_rc)
     message(FATAL_ERROR "tree '${name}': the check exited with ${rc}, expected ${expected_rc}; it said:\n${all}")
   endif()
+  # CMake wraps a long FATAL_ERROR message at spaces, where depends on the length of the paths in it: the
+  # texts are looked for with every run of white space made one space.
+  string(REGEX REPLACE "[ \t\r\n]+" " " flat "${all}")
   foreach(text IN LISTS ARGN)
-    string(FIND "${all}" "${text}" at)
+    string(REGEX REPLACE "[ \t\r\n]+" " " text "${text}")
+    string(FIND "${flat}" "${text}" at)
     if(at EQUAL -1)
       message(FATAL_ERROR "tree '${name}': the check's output lacks '${text}'; it said:\n${all}")
     endif()
