@@ -1,5 +1,7 @@
 #include "support/contact_patch_case.hpp"
 
+#include "support/temp_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -120,6 +122,15 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
   for (std::size_t k = 0; k < nb; ++k) t += body(c.swap ? nb - 1 - k : k);
   for (std::size_t k = 0; k + 1 < nb; ++k) t += pair(c.swap ? nb - 2 - k : k);
   return t;
+}
+
+std::unique_ptr<ModelCase> contact_patch_model(const ContactPatchCase& c, const std::filesystem::path& folder,
+                                               FixedDofs& fixed) {
+  write_text(folder / "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3));
+  std::unique_ptr<ModelCase> m = build_model(contact_patch_toml(c), folder);
+  m->model->set_step(0);
+  fixed = m->model->fixed_dofs(0);
+  return m;
 }
 
 std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c) {

@@ -22,6 +22,7 @@
 #include <memory>
 #include <string>
 
+#include "support/model_case.hpp"
 #include "support/solve_case.hpp"
 
 namespace symcontact::testing {
@@ -58,6 +59,11 @@ std::string contact_patch_geo(int n1, int n2, int dim = 2, int n3 = 0);
 
 /// The problem file (mesh "blocks.geo" in the same folder).
 std::string contact_patch_toml(const ContactPatchCase& c);
+
+/// The patch's model at its one load step, for tests of the solver stages: both files written into `folder`,
+/// the model built (quietly) and set to step 0; `fixed` gets that step's Dirichlet conditions.
+std::unique_ptr<ModelCase> contact_patch_model(const ContactPatchCase& c, const std::filesystem::path& folder,
+                                               FixedDofs& fixed);
 
 /// Writes both files into a temporary folder and solves.
 std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c);

@@ -27,12 +27,9 @@ class ContactSolverTest : public ::testing::Test {
  protected:
   /// The patch in `mode` ("symmetric": two-sided rows; "one-pass": independent rows), at its one load step.
   void build(const std::string& mode) {
-    folder_.write("blocks.geo", symcontact::testing::contact_patch_geo(4, 5));
     symcontact::testing::ContactPatchCase c;
     c.mode = mode;
-    case_ = symcontact::testing::build_model(symcontact::testing::contact_patch_toml(c), folder_.path());
-    case_->model->set_step(0);
-    fixed_ = case_->model->fixed_dofs(0);
+    case_ = symcontact::testing::contact_patch_model(c, folder_.path(), fixed_);
   }
   Solved solve(const ContactSolveOptions& options) {
     const Model& m = *case_->model;

@@ -20,12 +20,9 @@ namespace {
 class FrictionalContactTest : public ::testing::Test {
  protected:
   void build(double mu) {
-    folder_.write("blocks.geo", symcontact::testing::contact_patch_geo(4, 5));
     symcontact::testing::ContactPatchCase c;
     c.mu = mu;
-    case_ = symcontact::testing::build_model(symcontact::testing::contact_patch_toml(c), folder_.path());
-    case_->model->set_step(0);
-    fixed_ = case_->model->fixed_dofs(0);
+    case_ = symcontact::testing::contact_patch_model(c, folder_.path(), fixed_);
   }
   FrictionalReport solve(const FrictionalOptions& options, VectorXd& u) {
     const Model& m = *case_->model;
