@@ -20,6 +20,14 @@ std::string ProgressClock::suffix(long done, long total) const {
   return s;
 }
 
+void log_iteration(const Logger& log, const ProgressClock& clock, const std::string& line, double after_seconds) {
+  const double t = clock.elapsed();
+  if (t > after_seconds)
+    log.info(line + " (elapsed " + format_duration(t) + ")");
+  else
+    log.detail(line);
+}
+
 std::string format_duration(double seconds) {
   const long s = std::lround(std::max(0.0, seconds));
   char buf[32];

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include "symcontact/core/log.hpp"
+
 namespace symcontact {
 
 /// The time a loop of `total` items has run and an estimate of the time left: suffix(done, total) is
@@ -19,6 +21,10 @@ class ProgressClock {
   double start_;
   double quiet_;
 };
+
+/// An iteration's line of a loop timed by `clock`: at the default verbosity, with the elapsed time, once the
+/// loop has run `after_seconds` (a long loop shows it is alive), else at -v only.
+void log_iteration(const Logger& log, const ProgressClock& clock, const std::string& line, double after_seconds = 5.0);
 
 /// "45 s", "3 min 20 s", "2 h 05 min": a duration in seconds, rounded to what a reader needs.
 std::string format_duration(double seconds);

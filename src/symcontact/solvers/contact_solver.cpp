@@ -349,11 +349,7 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
     std::ostringstream m;
     m << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, IPOPT " << res.iterations << " iterations ("
       << res.status_text << "), change " << change;
-    // At the default verbosity once the solve has run for 5 s: a long solve shows it is alive.
-    if (clock_.elapsed() > 5.0)
-      log_.info(m.str() + " (elapsed " + format_duration(clock_.elapsed()) + ")");
-    else
-      log_.detail(m.str());
+    log_iteration(log_, clock_, m.str());
   }
   if (change < stop_tolerance_) {
     accept(condensed.get(), res, change);

@@ -171,14 +171,6 @@ class CoulombFixedPoint {
   int tightenings_ = 0;      ///< inner accuracy raised this many times (at most kMaxTightenings)
   bool confirming_ = false;  ///< the last solve confirmed, to full tolerance, a change met on an inexact one
   ProgressClock clock_;      ///< since the step started
-  /// An iteration's line: at the default verbosity once the step has run for 5 s (a long step shows it is
-  /// alive, with its elapsed time), else with -v only.
-  void log_long_step(const std::string& line) const {
-    if (clock_.elapsed() > 5.0)
-      log_.info(line + " (elapsed " + format_duration(clock_.elapsed()) + ")");
-    else
-      log_.detail(line);
-  }
 };
 
 /// The thresholds the step starts from. Tresca: the given τ; Coulomb: the previous step's (extrapolated by
@@ -256,7 +248,7 @@ bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
   rep_.coulomb_relaxation.push_back(omega_);
   std::ostringstream s;
   s << "  Coulomb iteration " << iteration << ": threshold change " << change << ", relaxation " << omega_;
-  log_long_step(s.str());
+  log_iteration(log_, clock_, s.str());
   if (change < options_.coulomb_tolerance) {
     // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an inexact
     // one, one more solve at full tolerance (its τ moves by less than the tolerance).

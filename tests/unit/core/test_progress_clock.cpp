@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <sstream>
 #include <thread>
 
 #include "symcontact/core/progress_clock.hpp"
@@ -31,4 +32,14 @@ TEST(ProgressTimes, ALongLoopPrintsElapsedAndTimeLeftFromTheMeanPerItem) {
   EXPECT_NE(s.find(" left"), std::string::npos) << s;
   EXPECT_EQ(clock.suffix(4, 4).find("left"), std::string::npos) << "nothing left at the end";
   EXPECT_GT(clock.elapsed(), 0.015);
+}
+
+TEST(ProgressTimes, AnIterationLineShowsAtTheDefaultVerbosityOnlyOnceTheLoopIsLong) {
+  std::ostringstream out;
+  const Logger log(out, Verbosity::kNormal);
+  const ProgressClock clock;
+  log_iteration(log, clock, "  iteration 1", 1e9);
+  EXPECT_EQ(out.str(), "") << "a short loop: -v only";
+  log_iteration(log, clock, "  iteration 2", -1.0);
+  EXPECT_EQ(out.str().rfind("  iteration 2 (elapsed ", 0), 0u) << out.str();
 }
