@@ -114,8 +114,8 @@ class GeometryFixedPoint {
 
  private:
   bool iterate(int it, VectorXd& u);
-  void assemble();
-  std::unique_ptr<CondensedProblem> condense();
+  void assemble(const VectorXd& u_it);
+  std::unique_ptr<CondensedProblem> condense(const VectorXd& u_it);
   bool rows_match_previous(int it);
   SubproblemSolution solve_subproblem(int it, ConstrainedProblem& target, const CondensedProblem* condensed,
                                       bool same_rows, bool& dual);
@@ -220,22 +220,22 @@ ContactSolveReport GeometryFixedPoint::solve(VectorXd& u) {
 /// The constraints of the current linearisation and the friction terms of the current iterate. A zero
 /// threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out of
 /// it, so that the problem stays quadratic, and kept for the slips it reports.
-void GeometryFixedPoint::assemble() {
+void GeometryFixedPoint::assemble(const VectorXd& u_it) {
   ScopedPhase t(rep_.times, "assembly");
   const ContactLinearization& lin = rep_.linearization;
   problem_.set_constraints(lin.A, lin.b);
   total_.extra.assign(contacts_.pairs.size(), nullptr);
   friction_terms_.assign(contacts_.pairs.size(), nullptr);
   if (!friction_) return;
-  friction_terms_ = friction_terms(*friction_, contacts_, dofs_, problem_.expand(x_));
+  friction_terms_ = friction_terms(*friction_, contacts_, dofs_, u_it);
   for (std::size_t p = 0; p < friction_terms_.size(); ++p)
     if (friction_terms_[p] && friction_->nodal_tau[p].maxCoeff() > 0.0) total_.extra[p] = friction_terms_[p];
 }
 
-std::unique_ptr<CondensedProblem> GeometryFixedPoint::condense() {
+std::unique_ptr<CondensedProblem> GeometryFixedPoint::condense(const VectorXd& u_it) {
   if (!condense_) return nullptr;
   ScopedPhase t(rep_.times, "condensation");
-  return condense_problem(bulk_, problem_, contacts_, dofs_, total_.extra, problem_.expand(x_), x_, energy_,
+  return condense_problem(bulk_, problem_, contacts_, dofs_, total_.extra, u_it, x_, energy_,
                           *workspace_, {options_.max_condensed_dofs, options_.same_loads}, log_, condensed_load_);
 }
 
@@ -289,15 +289,16 @@ SubproblemSolution GeometryFixedPoint::solve_subproblem(int it, ConstrainedProbl
 
 /// One geometry iteration; true when the fixed point has converged (the solution is then in x_).
 bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
+  const VectorXd u_it = problem_.expand(x_);  ///< the iterate with its fixed DOFs
   {
     ScopedPhase t(rep_.times, "search");
-    rep_.linearization = contacts_.linearize(dofs_, problem_.expand(x_));
+    rep_.linearization = contacts_.linearize(dofs_, u_it);
   }
   const ContactLinearization& lin = rep_.linearization;
   if (it == 1) warn_pairs_without_points(contacts_, lin, log_);
-  assemble();
+  assemble(u_it);
   rep_.num_constraints = lin.A.rows();
-  std::unique_ptr<CondensedProblem> condensed = condense();
+  std::unique_ptr<CondensedProblem> condensed = condense(u_it);
   rep_.num_condensed = condensed ? condensed->num_variables() : 0;
   // ContactSolveOptions::lazy_interior: this iteration updates B only.
   lazy_ = options_.lazy_interior && options_.workspace && condensed &&
@@ -338,7 +339,7 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   polish_.record_change(change, closed, rep_.change_history, log_);
   rep_.change_history.push_back(change);
   if (log_.level() >= Verbosity::kDebug)
-    log_geometry_change(problem_.expand(res.x) - problem_.expand(x_), dofs_, lin, rows_prev_family_, rows_prev_node_,
+    log_geometry_change(problem_.expand(res.x) - u_it, dofs_, lin, rows_prev_family_, rows_prev_node_,
                         log_);
   const VectorXd x_in = x_;
   x_ = res.x;
