@@ -146,3 +146,67 @@ TEST(ActiveSetPolish, DenseAndSparseFactorisationsAgree) {
     EXPECT_LT((fs - fd).lpNorm<Eigen::Infinity>(), tol * fs.lpNorm<Eigen::Infinity>()) << "balance forces " << (mode == PolishMode::kBalanceForces);
   }
 }
+
+namespace {
+
+/// A non-quadratic f with a sticking friction term: ½ xᵀH x − tᵀx + w Σ_{k=2,3} sqrt(x_k² + α²), α = 1e-6,
+/// subject to x_0 ≥ 0. The unconstrained minimiser pulls x_0 below zero, and the quadratic part's force on
+/// x_2, x_3 stays below w: they stick, x_k = O(α), where the term's curvature w/α is 1e6 times H's.
+class StickingFriction : public ConstrainedProblem {
+ public:
+  StickingFriction() {
+    H_.resize(4, 4);
+    H_ << 2.0, 0.5, 0.3, 0.0, 0.5, 2.0, 0.0, 0.3, 0.3, 0.0, 2.0, 0.5, 0.0, 0.3, 0.5, 2.0;
+    VectorXd pull(4);
+    pull << -1.0, 0.5, 0.05, -0.05;
+    t_ = H_ * pull;
+    A_.resize(1, 4);
+    A_.insert(0, 0) = 1.0;
+    b_ = VectorXd::Zero(1);
+  }
+  Index num_variables() const override { return 4; }
+  double objective(const VectorXd& x) override {
+    return 0.5 * x.dot(H_ * x) - t_.dot(x) + kW * (std::hypot(x[2], kAlpha) + std::hypot(x[3], kAlpha));
+  }
+  void gradient(const VectorXd& x, VectorXd& g) override {
+    g = H_ * x - t_;
+    for (int k = 2; k < 4; ++k) g[k] += kW * x[k] / std::hypot(x[k], kAlpha);
+  }
+  void hessian_lower(const VectorXd& x, SparseMatrix& H) override {
+    MatrixXd h = H_;
+    for (int k = 2; k < 4; ++k) h(k, k) += kW * kAlpha * kAlpha / std::pow(std::hypot(x[k], kAlpha), 3);
+    H = SparseMatrix(h.sparseView()).triangularView<Eigen::Lower>();
+  }
+  bool hessian_is_constant() const override { return false; }
+  const SparseMatrix& constraint_matrix() const override { return A_; }
+  const VectorXd& constraint_offset() const override { return b_; }
+
+ private:
+  static constexpr double kW = 1.0, kAlpha = 1e-6;
+  MatrixXd H_;
+  VectorXd t_, b_;
+  SparseMatrix A_;
+};
+
+}  // namespace
+
+// Closing the active set of a non-quadratic f whose friction term sticks: the polished point is closed and
+// stationary to round-off (‖∇f − Aᵀμ‖∞ at the level of ε times the forces), not only to the accuracy of the
+// method of multipliers, whose ρ scales with the friction curvature.
+TEST(ActiveSetPolish, ClosingWithAStickingFrictionTermBalancesForcesToRoundOff) {
+  StickingFriction p;
+  VectorXd x(4), mu(1);
+  x << 1e-8, 0.4, 1e-9, -1e-9;  // an interior point's kind of answer: x_0 open by a barrier offset
+  mu << 1.5;
+  const PolishResult r = polish_active_set(p, x, mu, PolishMode::kClose);
+  ASSERT_TRUE(r.applied) << r.reason;
+  EXPECT_EQ(r.active, 1);
+  EXPECT_LE(std::abs(x[0]), 1e-14);
+  VectorXd g;
+  p.gradient(x, g);
+  const double force = (p.constraint_matrix().transpose() * mu).lpNorm<Eigen::Infinity>();
+  ASSERT_GT(force, 0.1);
+  EXPECT_LE((g - p.constraint_matrix().transpose() * mu).lpNorm<Eigen::Infinity>(), 1e-13 * force);
+  EXPECT_LT(std::abs(x[2]), 1e-6);  // sticks
+  EXPECT_LT(std::abs(x[3]), 1e-6);
+}
