@@ -128,7 +128,7 @@ std::vector<VariantCase> variants() {
       {"hertz_2d/cylinder_on_plane.toml", 0.0}, {"hertz_2d/two_cylinders.toml", 0.0},
       {"hertz_3d/sphere_on_plane.toml", 0.0},   {"rings_2d/rings.toml", 0.0},
       {"friction_block/block.toml", 0.0},       {"inclined_2d/inclined.toml", 0.0},
-      {"inclined_3d/inclined.toml", 0.0}};
+      {"inclined_3d/inclined.toml", 0.0},       {"crushed_ring_2d/ring.toml", 0.0}};
   std::vector<VariantCase> out;
   for (const Example& e : examples) {
     ProblemVariant base;
@@ -143,6 +143,14 @@ std::vector<VariantCase> variants() {
     // lumped weights of 6-node triangles vanish at their vertices), and the sphere on its plane at order 2 with
     // Coulomb friction, which had not finished after 20 minutes.
     const bool p2_friction_3d = e.file == "inclined_3d/inclined.toml";
+    // Nor the crushed ring at order 2 (finite strain, self-contact): IPOPT reaches its iteration limit at load
+    // step 26, with or without friction.
+    const bool p2_ring = e.file == "crushed_ring_2d/ring.toml";
+    if (p2_ring) {
+      out.push_back({e.file, "coulomb", mu, {}});
+      out.push_back({e.file, "mm", base, {1e3, 1.0}});
+      continue;
+    }
     if (!p2_friction_3d) out.push_back({e.file, "order2", p2, {}});
     out.push_back({e.file, "coulomb", mu, {}});
     if (!p2_friction_3d && e.file != "hertz_3d/sphere_on_plane.toml")

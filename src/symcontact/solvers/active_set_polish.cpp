@@ -40,6 +40,10 @@ constexpr double kRoundOffStep = 1e-9;
 
 /// A constraint is violated when its scaled value is below −kViolationTolerance × max |x|.
 constexpr double kViolationTolerance = 1e-10;
+/// A constraint is open when its scaled value is above kOpenGap × max |x|: far above the barrier offsets an
+/// interior point leaves at closed rows (up to about 1e-5 of max |x| on the nearly dependent families of a
+/// symmetric pair).
+constexpr double kOpenGap = 1e-3;
 
 /// M = L Lᵀ for the polish. A sparse M goes to CHOLMOD. A dense one — the condensed problem, whose Schur
 /// complement fills its |B| × |B| Hessian (ConstrainedProblem::hessian_is_dense()) — goes to LAPACK's dpotrf
@@ -281,7 +285,13 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
   const double mu_max = A.rows() > 0 ? mu.maxCoeff() : 0.0;
   const VectorXd c0 = A * x + b;
   std::vector<char> in_set(A.rows(), 0);
-  for (Index i = 0; i < A.rows(); ++i) in_set[i] = mu_max > 0 && mu[i] > 1e-6 * mu_max && row_scale[i] > 0;
+  // Holding values, a row the optimiser left open by more than kOpenGap of the displacements is open: its
+  // multiplier is the barrier's μ_b / c_i alone, however it compares with the others (all of them do when no
+  // gap is closed at all: a surface approaching its opposite side).
+  const double open_gap = kOpenGap * std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
+  for (Index i = 0; i < A.rows(); ++i)
+    in_set[i] = mu_max > 0 && mu[i] > 1e-6 * mu_max && row_scale[i] > 0 &&
+                !(hold_values && c0[i] / row_scale[i] > open_gap);
   // Rounds: constraints that the equality solve wants to pull (negative multiplier) were not really
   // active; drop them and solve again. After a warm-started IPOPT solve the multipliers of inactive
   // constraints can stay above the threshold, so the first set may hold ten times the active ones and

@@ -51,14 +51,29 @@ void tighten(ContactSolveOptions& o) {
   o.geometry_tolerance *= 0.1;
 }
 
-/// r_k = μ p_k − τ_k per Coulomb pair (empty for the others), p_k from the last solve's contact forces.
+/// The contact force F_c at the nodes where the multipliers act (Aᵀμ ≠ 0 on some DOF of the node: every
+/// node's `dim` DOFs are consecutive), zero at the others. F_c is ∇E(u) on the free DOFs of the surfaces
+/// (contact_forces.hpp); where no multiplier acts it is the solve's equilibrium error alone, and a pressure
+/// read from it would be noise: with no contact anywhere (a surface not yet within its search distance, or
+/// every gap open) the thresholds would be that noise, and their relative change O(1) at every iteration.
+VectorXd active_contact_force(const ContactState& state, int dim) {
+  VectorXd f = VectorXd::Zero(state.contact_force.size());
+  for (Index d = 0; d + dim <= f.size(); d += dim)
+    if (state.multiplier_force.segment(d, dim).cwiseAbs().maxCoeff() > 0.0)
+      f.segment(d, dim) = state.contact_force.segment(d, dim);
+  return f;
+}
+
+/// r_k = μ p_k − τ_k per Coulomb pair (empty for the others), p_k from the last solve's contact forces at the
+/// nodes its multipliers act on.
 std::vector<Eigen::VectorXd> coulomb_residuals(const ContactSet& contacts, const DofMap& dofs, const VectorXd& u,
                                                const FrictionalReport& rep, const Logger& log) {
   const int np = static_cast<int>(contacts.pairs.size());
+  const VectorXd force = active_contact_force(rep.last, dofs.dim());
   std::vector<Eigen::VectorXd> r(np);
   for (int p = 0; p < np; ++p) {
     if (contacts.pairs[p].friction != FrictionLaw::kCoulomb) continue;
-    r[p] = contacts.pairs[p].mu * friction_side_pressure(contacts, p, dofs, u, rep.last.contact_force) -
+    r[p] = contacts.pairs[p].mu * friction_side_pressure(contacts, p, dofs, u, force) -
            rep.friction.nodal_tau[p];
     if (log.level() >= Verbosity::kDebug && r[p].size() > 0) {
       Index at = 0;

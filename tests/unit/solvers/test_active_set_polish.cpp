@@ -16,8 +16,7 @@ namespace {
 
 class Projection : public ConstrainedProblem {
  public:
-  Projection() : t_(3), b_(VectorXd::Zero(3)) {
-    t_ << -1.0, -1.0, 1.0;
+  explicit Projection(const VectorXd& t = Eigen::Vector3d(-1.0, -1.0, 1.0)) : t_(t), b_(VectorXd::Zero(3)) {
     A_.resize(3, 3);
     A_.setIdentity();
   }
@@ -73,6 +72,22 @@ TEST(ActiveSetPolish, AConstraintThatWouldPullLeavesTheActiveSet) {
   ASSERT_TRUE(r.applied) << r.reason;
   EXPECT_EQ(r.active, 2);
   expect_exact_solution(x, mu);
+}
+
+// No constraint is closed (t = (1, 2, 1) is feasible), and the interior point left the barrier's multipliers
+// μ_i ≈ μ_b / c_i on all of them: compared with each other they all look active, but every gap is open by far
+// more than a barrier offset. Balancing forces holds none of them, and their multipliers become 0.
+TEST(ActiveSetPolish, BalancingForcesDropsTheBarrierMultipliersOfOpenRows) {
+  Projection p(Eigen::Vector3d(1.0, 2.0, 1.0));
+  VectorXd x(3), mu(3);
+  x << 1.0 + 1e-9, 2.0 - 1e-9, 1.0;
+  mu << 1e-9, 5e-10, 1e-9;
+  const PolishResult r = polish_active_set(p, x, mu, PolishMode::kBalanceForces);
+  ASSERT_TRUE(r.applied) << r.reason;
+  EXPECT_EQ(r.active, 0);
+  EXPECT_EQ(mu.lpNorm<Eigen::Infinity>(), 0.0);
+  EXPECT_NEAR(x[0], 1.0, 1e-14);
+  EXPECT_NEAR(x[1], 2.0, 1e-14);
 }
 
 namespace {
