@@ -64,7 +64,7 @@ struct HertzRun {
   PhaseTimes build_times;      ///< "meshing" (Gmsh), "setup" (DOFs, energy, contact surfaces)
   FixedDofs fixed;             ///< the problem's Dirichlet conditions
   VectorXd u;                  ///< solution, full DOF vector
-  ContactSolveReport report;
+  SolveReport report;
   double solve_wall = 0.0;     ///< wall time of solve_contact() as a whole, s
   double solve_cpu = 0.0;      ///< process CPU time of solve_contact() as a whole, s
 

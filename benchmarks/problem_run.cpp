@@ -52,17 +52,17 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
     const double t0 = wall_seconds();
     StepFigures f;
     if (contact) {
-      const FrictionalReport rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u,
-                                                            opt, log, step > 0 ? &previous : nullptr);
-      previous = rep.friction;
+      const SolveReport rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u,
+                                                       opt, log, step > 0 ? &previous : nullptr);
+      previous = rep.friction_state;
       run->times.merge(rep.times);
       f.contact_solves = 1 + rep.coulomb_iterations;
       f.geometry_iterations = rep.geometry_iterations;
       f.ipopt_iterations = rep.ipopt_iterations;
       run->coulomb_iterations += rep.coulomb_iterations;
-      run->num_free = rep.last.num_free;
-      run->num_constraints = rep.last.num_constraints;
-      run->ipopt_status = rep.last.ipopt_status;
+      run->num_free = rep.num_free;
+      run->num_constraints = rep.num_constraints;
+      run->ipopt_status = rep.ipopt_status;
     } else {
       const EquilibriumReport rep = solve_equilibrium(model.energy(), run->fixed, run->u);
       run->times.merge(rep.times);

@@ -143,9 +143,9 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c) { return cont
 
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedCase& s) {
   ContactPatchErrors e;
-  e.geometry_iterations = s.frictional.geometry_iterations;
-  e.ipopt_iterations = s.frictional.ipopt_iterations;
-  e.coulomb_iterations = s.frictional.coulomb_iterations;
+  e.geometry_iterations = s.report.geometry_iterations;
+  e.ipopt_iterations = s.report.ipopt_iterations;
+  e.coulomb_iterations = s.report.coulomb_iterations;
   double umax = 0;
   const Model& m = *s.model;
   const VectorXd load = m.external_load();

@@ -33,12 +33,9 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
       solve_equilibrium(c->model->energy(), fixed, c->u);
       c->checks.push_back(check_step(*c->model, c->u, fixed, nullptr));
     } else {
-      FrictionState friction = step > 0 ? c->frictional.friction : FrictionState();
-      const LoadStepReport lrep =
-          solve_load_step(*c->model, step, c->u, friction, opt, c->spec.contact_solver.max_step_cuts, log);
-      c->frictional = lrep.last;
-      c->step_cuts.push_back(lrep.cuts);
-      c->report = c->frictional.last;
+      FrictionState friction = step > 0 ? c->report.friction_state : FrictionState();
+      c->report = solve_load_step(*c->model, step, c->u, friction, opt, c->spec.contact_solver.max_step_cuts, log);
+      c->step_cuts.push_back(c->report.cuts);
       c->checks.push_back(check_step(*c->model, c->u, fixed, &c->report));
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
       c->history.push_back(c->contact);

@@ -11,6 +11,7 @@
 #include "symcontact/post/contact_results.hpp"
 #include "symcontact/post/step_checks.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
+#include "symcontact/solvers/solve_report.hpp"
 
 namespace symcontact::testing {
 
@@ -18,8 +19,7 @@ struct SolvedCase {
   ProblemSpec spec;
   std::unique_ptr<Model> model;
   VectorXd u;
-  ContactSolveReport report;                  ///< the last contact solve of the last step
-  FrictionalReport frictional;                ///< of the last step (Coulomb iterations, totals)
+  SolveReport report;                         ///< of the last step (its contact state: its last contact solve's)
   std::vector<std::vector<ContactPairResult>> history;  ///< contact results of every step
   std::vector<ContactPairResult> contact;     ///< of the last step
   VectorXd constraint_values;                 ///< A u + b at the last linearisation

@@ -62,7 +62,7 @@ normal = [0.0, 0.0, 1.0]
   const double cosine = -r.tangential_force.dot(d) / Ft;
   std::printf("  normal force %.10f (p A = %.4f), tangential %.10f: ratio %.8f (mu %.1f), direction cos %.10f, "
               "%d Coulomb iterations\n",
-              Fn, p * 4, Ft, Ft / Fn, mu, cosine, c->frictional.coulomb_iterations);
+              Fn, p * 4, Ft, Ft / Fn, mu, cosine, c->report.coulomb_iterations);
   EXPECT_NEAR(Fn, p * 4.0, 1e-8 * p * 4.0);
   EXPECT_NEAR(Ft / Fn, mu, 1e-4 * mu);
   EXPECT_GT(cosine, 1 - 1e-5);

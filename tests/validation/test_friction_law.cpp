@@ -380,14 +380,14 @@ TEST(V4FrictionLaw, TrescaWithTheCoulombThresholdReproducesCoulomb) {
   const DofMap& dofs = model->dofs();
   const FrictionalOptions opt = contact_options(spec, log);
   VectorXd u = VectorXd::Zero(dofs.num_dofs()), u_prev = u;
-  FrictionalReport rep;
+  SolveReport rep;
   for (int step = 0; step < model->num_steps(); ++step) {
     model->set_step(step);
     u_prev = u;
     rep = solve_frictional_contact(model->energy(), model->fixed_dofs(step), model->contacts(), dofs, u, opt, log,
-                                   step > 0 ? &rep.friction : nullptr);
+                                   step > 0 ? &rep.friction_state : nullptr);
   }
-  const std::vector<ContactPairResult> res = contact_results(model->contacts(), dofs, u, rep.last);
+  const std::vector<ContactPairResult> res = contact_results(model->contacts(), dofs, u, rep);
   const Eigen::VectorXd p = res[0].sides[0].pressure.cwiseMax(0.0);
   FrictionState tresca;
   tresca.nodal_tau = {kMu * p};

@@ -91,10 +91,10 @@ std::vector<StepResult> solve_inclined(const std::string& file, double h, const 
   for (int step = 0; step < model->num_steps(); ++step) {
     model->set_step(step);
     const FixedDofs fixed = model->fixed_dofs(step);
-    const FrictionalReport rep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, opt, log,
-                                                          step > 0 ? &previous : nullptr);
-    previous = rep.friction;
-    const std::vector<ContactPairResult> pairs = contact_results(model->contacts(), dofs, u, rep.last);
+    const SolveReport rep = solve_frictional_contact(model->energy(), fixed, model->contacts(), dofs, u, opt, log,
+                                                     step > 0 ? &previous : nullptr);
+    previous = rep.friction_state;
+    const std::vector<ContactPairResult> pairs = contact_results(model->contacts(), dofs, u, rep);
     StepResult s;
     VectorXd g = VectorXd::Zero(dofs.num_dofs());
     model->energy().add_gradient(u, g);
@@ -112,9 +112,9 @@ std::vector<StepResult> solve_inclined(const std::string& file, double h, const 
       }
     s.coulomb_iterations = rep.coulomb_iterations;
     s.geometry_iterations = rep.geometry_iterations;
-    s.tau = rep.friction.nodal_tau.at(0);
-    s.converged = rep.last.converged;
-    s.deferred = rep.last.interior_deferred;
+    s.tau = rep.friction_state.nodal_tau.at(0);
+    s.converged = rep.converged;
+    s.deferred = rep.interior_deferred;
     {
       // Equilibrium of the interior: ∇E = 0 on free DOFs that no contact surface holds (a u whose interior were
       // out of date would fail it).

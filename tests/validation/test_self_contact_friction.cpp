@@ -104,7 +104,7 @@ mu = %.17g
     }
     if (bounds[k].name == "base") out.base_drag = R[k][0];
   }
-  out.coulomb_iterations = c->frictional.coulomb_iterations;
+  out.coulomb_iterations = c->report.coulomb_iterations;
   return out;
 }
 

@@ -71,8 +71,8 @@ TEST_P(Units, RescaledProblemGivesTheSameDimensionlessAnswer) {
       diff = std::max(diff, (scaled->reactions[s][k] / force_unit - ref->reactions[s][k]).lpNorm<Eigen::Infinity>());
     EXPECT_LE(diff, 1e-8 * r_max) << "step " << s + 1;
   }
-  const auto& tau_ref = ref->frictional.friction.nodal_tau;
-  const auto& tau_scaled = scaled->frictional.friction.nodal_tau;
+  const auto& tau_ref = ref->report.friction_state.nodal_tau;
+  const auto& tau_scaled = scaled->report.friction_state.nodal_tau;
   ASSERT_EQ(tau_ref.size(), tau_scaled.size());
   for (std::size_t p = 0; p < tau_ref.size(); ++p) {
     if (tau_ref[p].size() == 0) continue;
@@ -81,9 +81,9 @@ TEST_P(Units, RescaledProblemGivesTheSameDimensionlessAnswer) {
         << "pair " << p;
   }
   // The same iterations, give or take a couple per step (round-off can tip a stopping test).
-  EXPECT_NEAR(scaled->frictional.coulomb_iterations, ref->frictional.coulomb_iterations, 2);
-  std::cout << c.example << ": |u| " << u_norm << ", relative difference " << (scaled->u / c.length - ref->u).norm() / u_norm << ", last step Coulomb iterations " << ref->frictional.coulomb_iterations
-            << " / " << scaled->frictional.coulomb_iterations << "\n";
+  EXPECT_NEAR(scaled->report.coulomb_iterations, ref->report.coulomb_iterations, 2);
+  std::cout << c.example << ": |u| " << u_norm << ", relative difference " << (scaled->u / c.length - ref->u).norm() / u_norm << ", last step Coulomb iterations " << ref->report.coulomb_iterations
+            << " / " << scaled->report.coulomb_iterations << "\n";
 }
 
 // m–N–Pa → mm–N–MPa (stresses × 1e-6), lengths × 1e3 with forces × 1e6 (stresses unchanged), and a

@@ -237,31 +237,29 @@ Json contact_step_json(const Model& model, const std::vector<ContactPairResult>&
 }
 
 /// The solver statistics of a step in summary.json: the contact solve's (`contact` not null) or Newton's.
-void add_solver_statistics(Json& js, const LoadStepReport* contact, const EquilibriumReport& newton) {
+void add_solver_statistics(Json& js, const SolveReport* contact, const EquilibriumReport& newton) {
   if (!contact) {
     js["newton_iterations"] = newton.iterations;
     js["residual"] = newton.residual;
     js["num_free_dofs"] = static_cast<double>(newton.num_free);
     return;
   }
-  const LoadStepReport& lrep = *contact;
-  const FrictionalReport& frep = lrep.last;
-  const ContactSolveReport& crep = frep.last;
-  js["geometry_iterations"] = lrep.geometry_iterations;
-  js["ipopt_iterations"] = lrep.ipopt_iterations;
-  js["coulomb_iterations"] = lrep.coulomb_iterations;
-  js["step_cuts"] = lrep.cuts;
-  js["substeps"] = lrep.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
-  js["coulomb_change_history"] = frep.coulomb_change;
-  js["coulomb_relaxation_history"] = frep.coulomb_relaxation;
+  const SolveReport& r = *contact;
+  js["geometry_iterations"] = r.geometry_iterations;
+  js["ipopt_iterations"] = r.ipopt_iterations;
+  js["coulomb_iterations"] = r.coulomb_iterations;
+  js["step_cuts"] = r.cuts;
+  js["substeps"] = r.substeps;  // end fraction of each converged sub-step ([1]: solved whole)
+  js["coulomb_change_history"] = r.coulomb_change;
+  js["coulomb_relaxation_history"] = r.coulomb_relaxation;
   // 0: converged to coulomb_tolerance; else the change a stagnated fixed point was accepted at.
-  js["coulomb_accepted_at_noise_floor"] = frep.accepted_at_noise_floor;
+  js["coulomb_accepted_at_noise_floor"] = r.accepted_at_noise_floor;
   js["last_solve_ipopt_iterations_per_geometry_iteration"] =
-      std::vector<double>(crep.ipopt_per_iteration.begin(), crep.ipopt_per_iteration.end());
-  js["last_solve_geometry_change_history"] = crep.change_history;
-  js["ipopt_status"] = crep.ipopt_status;
-  js["num_constraints"] = static_cast<double>(crep.num_constraints);
-  js["num_free_dofs"] = static_cast<double>(crep.num_free);
+      std::vector<double>(r.ipopt_per_iteration.begin(), r.ipopt_per_iteration.end());
+  js["last_solve_geometry_change_history"] = r.change_history;
+  js["ipopt_status"] = r.ipopt_status;
+  js["num_constraints"] = static_cast<double>(r.num_constraints);
+  js["num_free_dofs"] = static_cast<double>(r.num_free);
 }
 
 /// The reactions of summary.json: ∇E(u) at the Dirichlet boundaries' nodes, per boundary.
@@ -390,7 +388,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     const FixedDofs fixed = model->fixed_dofs(step);
     const bool has_contact = !model->contacts().empty();
     EquilibriumReport rep;
-    LoadStepReport lrep;
+    SolveReport lrep;
     StepCheckFigures checks;
     try {
       if (has_contact)
@@ -398,7 +396,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
                                spec.contact_solver.max_step_cuts, log);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
-      checks = check_step(*model, u, fixed, has_contact ? &lrep.last.last : nullptr);
+      checks = check_step(*model, u, fixed, has_contact ? &lrep : nullptr);
     } catch (const SolveError& e) {
       // A signal stops IPOPT (interrupt.hpp), which the solver reports as a failure.
       if (interrupt_requested()) return stop_run(step, RunStatus::kInterrupted, interrupted_message(step));
@@ -420,13 +418,12 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     js["load_factor"] = spec.load_factors[step];
     js["equilibrium_residual"] = checks.equilibrium;  // post/step_checks.hpp
     js["max_penetration_ratio"] = checks.penetration;
-    const ContactSolveReport& crep = lrep.last.last;
     st.merge(has_contact ? lrep.times : rep.times);
     add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);
     std::vector<ContactPairResult> cres;
     if (has_contact) {
       ScopedPhase t(st, "output");
-      cres = contact_results(model->contacts(), dofs, u, crep);
+      cres = contact_results(model->contacts(), dofs, u, lrep);
       js["contact"] = contact_step_json(*model, cres, step, options.out_dir, accumulated_slip);
     }
     js["reactions"] = reactions_json(*model, fixed, u);

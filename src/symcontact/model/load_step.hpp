@@ -14,7 +14,7 @@ namespace symcontact {
 /// iterate of the final failed attempt). `friction` holds the friction state the previous step ended with
 /// (empty nodal_tau for the first step) and is updated. Leaves the model's loads at the step. Contact
 /// models only. Throws SolveError when the step fails after max_cuts halvings.
-LoadStepReport solve_load_step(Model& model, int step, VectorXd& u, FrictionState& friction,
-                               const FrictionalOptions& options, int max_cuts, const Logger& log);
+SolveReport solve_load_step(Model& model, int step, VectorXd& u, FrictionState& friction,
+                            const FrictionalOptions& options, int max_cuts, const Logger& log);
 
 }  // namespace symcontact

@@ -93,7 +93,7 @@ struct ContactPairResult {
 };
 
 /// From the contact state of the final contact solve (linearization, multipliers, friction); a
-/// ContactSolveReport is one (solvers/contact_solver.hpp).
+/// SolveReport is one (solvers/solve_report.hpp).
 std::vector<ContactPairResult> contact_results(const ContactSet& contacts, const DofMap& dofs, const VectorXd& u,
                                                const ContactState& state);
 

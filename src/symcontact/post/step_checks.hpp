@@ -37,9 +37,9 @@ struct StepCheckFigures {
 };
 
 /// Runs the checks on a load step's solution u, with the Dirichlet conditions `fixed` of the step
-/// and, with contact, the contact state of its last contact solve (null without contact; a
-/// ContactSolveReport is one). Throws SolveError when one fails (the run prefixes the step); returns the
-/// figures otherwise.
+/// and, with contact, the contact state of its last contact solve (null without contact; a SolveReport is
+/// one: solvers/solve_report.hpp). Throws SolveError when one fails (the run prefixes the step); returns
+/// the figures otherwise.
 StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDofs& fixed,
                             const ContactState* contact);
 

@@ -110,7 +110,7 @@ class GeometryFixedPoint {
   GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                      const DofMap& dofs, const ContactSolveOptions& options, const Logger& log,
                      const FrictionState* friction);
-  ContactSolveReport solve(VectorXd& u);
+  SolveReport solve(VectorXd& u);
 
  private:
   bool iterate(int it, VectorXd& u);
@@ -130,7 +130,7 @@ class GeometryFixedPoint {
   const ContactSolveOptions& options_;
   const Logger& log_;
   const FrictionState* friction_;
-  ContactSolveReport rep_;
+  SolveReport rep_;
   CompositeEnergy total_;
   ReducedProblem problem_;  ///< the bodies' energy with the friction terms
   ReducedProblem bulk_;     ///< the bodies' energy alone (static condensation)
@@ -189,7 +189,7 @@ GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs
     anderson_ = std::make_unique<AndersonAcceleration>(options.geometry_acceleration);
 }
 
-ContactSolveReport GeometryFixedPoint::solve(VectorXd& u) {
+SolveReport GeometryFixedPoint::solve(VectorXd& u) {
   rep_.num_free = problem_.num_free();
   {
     // New Dirichlet values: a finite-strain body follows them by its linearised response first, so that
@@ -420,7 +420,7 @@ void GeometryFixedPoint::accelerate(const VectorXd& x_in, const IpoptResult& res
 
 }  // namespace
 
-ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+SolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                  const Logger& log, const FrictionState* friction) {
   // A solve that is not lazy starts from a whole u; one that fails leaves a whole last iterate.

@@ -32,6 +32,7 @@
 #include "symcontact/solvers/condensation_cache.hpp"
 #include "symcontact/solvers/fixed_dofs.hpp"
 #include "symcontact/solvers/friction_state.hpp"
+#include "symcontact/solvers/solve_report.hpp"
 
 namespace symcontact {
 
@@ -58,7 +59,7 @@ struct ContactSolveOptions {
   double geometry_tolerance = 1e-6;
   /// An inexact solve when above geometry_tolerance: the fixed point stops once the change is below this,
   /// and its answer is taken as an intermediate one: the force-balancing polish of a non-quadratic energy
-  /// (applied once, to the iterate that ends the fixed point) is left out and ContactSolveReport::converged
+  /// (applied once, to the iterate that ends the fixed point) is left out and SolveReport::converged
   /// is false, even where the change happens to fall below geometry_tolerance. Set by the Coulomb fixed
   /// point while the thresholds still move (frictional_contact.hpp), where a solve to geometry_tolerance
   /// (and its polish) would be wasted. 0: a solve to geometry_tolerance.
@@ -117,31 +118,12 @@ constexpr int kMaxTightenings = 2;
 /// the dual reads the same tolerance.
 void tighten_optimiser(IpoptOptions& o);
 
-/// The statistics of a solve and the contact state it ended with (contact/contact_state.hpp: linearization,
-/// multipliers, forces, friction terms), which is what the post-processing reads.
-struct ContactSolveReport : ContactState {
-  int geometry_iterations = 0;
-  int ipopt_iterations = 0;                 ///< summed over the geometry iterations
-  std::vector<int> ipopt_per_iteration;
-  std::vector<double> change_history;       ///< relative change after each geometry iteration
-  /// A solve to geometry_tolerance (not an inexact one: ContactSolveOptions::loose_geometry_tolerance) that
-  /// reached it (always, unless inexact); a non-quadratic energy's last iterate was then force-balanced.
-  bool converged = false;
-  std::string ipopt_status;                 ///< of the last solve
-  Index num_free = 0;
-  Index num_constraints = 0;                ///< of the last linearisation
-  Index num_condensed = 0;                  ///< DOFs IPOPT worked on when condensed (0: not condensed)
-  int condensation_factorisations = 0;      ///< factorisations for the condensation in this call
-  int dual_solves = 0;                      ///< geometry iterations solved through the dual (SubproblemSolver)
-  bool interior_deferred = false;           ///< u's interior was left out of date (ContactSolveOptions::lazy_interior)
-  PhaseTimes times;                         ///< "search" (geometry), "optimizer", "assembly"
-};
-
-/// On entry u is the starting point (previous load step); on exit the solution. `energy` is the bodies'
+/// On entry u is the starting point (previous load step); on exit the solution. The report's fields of the
+/// Coulomb fixed point and of the load step are left empty. `energy` is the bodies'
 /// energy (elastic + loads); friction terms, rebuilt at each geometry iteration from `friction`, are
 /// added to it. Throws SolveError (with the IPOPT status or the fixed-point history) when a solve fails
 /// or the fixed point does not converge; u then holds the last iterate.
-ContactSolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+SolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                  const Logger& log, const FrictionState* friction = nullptr);
 

@@ -67,22 +67,22 @@ VectorXd active_contact_force(const ContactState& state, int dim) {
 /// r_k = μ p_k − τ_k per Coulomb pair (empty for the others), p_k from the last solve's contact forces at the
 /// nodes its multipliers act on.
 std::vector<Eigen::VectorXd> coulomb_residuals(const ContactSet& contacts, const DofMap& dofs, const VectorXd& u,
-                                               const FrictionalReport& rep, const Logger& log) {
+                                               const SolveReport& rep, const Logger& log) {
   const int np = static_cast<int>(contacts.pairs.size());
-  const VectorXd force = active_contact_force(rep.last, dofs.dim());
+  const VectorXd force = active_contact_force(rep, dofs.dim());
   std::vector<Eigen::VectorXd> r(np);
   for (int p = 0; p < np; ++p) {
     if (contacts.pairs[p].friction != FrictionLaw::kCoulomb) continue;
     r[p] = contacts.pairs[p].mu * friction_side_pressure(contacts, p, dofs, u, force) -
-           rep.friction.nodal_tau[p];
+           rep.friction_state.nodal_tau[p];
     if (log.level() >= Verbosity::kDebug && r[p].size() > 0) {
       Index at = 0;
       r[p].cwiseAbs().maxCoeff(&at);
       const ContactSurface& s = contacts.surfaces[contacts.families()[contacts.friction_family(p)].slave];
       std::ostringstream m;
       m << "    pair " << contacts.pairs[p].name << ": largest threshold change at surface node " << at << " (X = "
-        << s.X.col(at).transpose() << "): " << rep.friction.nodal_tau[p][at] << " -> "
-        << rep.friction.nodal_tau[p][at] + r[p][at];
+        << s.X.col(at).transpose() << "): " << rep.friction_state.nodal_tau[p][at] << " -> "
+        << rep.friction_state.nodal_tau[p][at] + r[p][at];
       log.debug(m.str());
     }
   }
@@ -156,7 +156,7 @@ class CoulombFixedPoint {
       : energy_(energy), fixed_(fixed), contacts_(contacts), dofs_(dofs), u_(u), options_(options), log_(log),
         previous_(previous), inner_(options.contact) {}
 
-  FrictionalReport run();
+  SolveReport run();
 
  private:
   void start_thresholds(double s_extrapolate);
@@ -172,7 +172,7 @@ class CoulombFixedPoint {
   const FrictionalOptions& options_;
   const Logger& log_;
   const FrictionState* previous_;
-  FrictionalReport rep_;
+  SolveReport rep_;
   bool any_friction_ = false, any_coulomb_ = false;
   bool warm_ = false;        ///< the step starts from the previous step's thresholds
   VectorXd u_step_start_;
@@ -192,24 +192,24 @@ class CoulombFixedPoint {
 /// s_extrapolate > 0: FrictionalOptions::extrapolate), or 0 for a frictionless first solve.
 void CoulombFixedPoint::start_thresholds(double s_extrapolate) {
   const int np = static_cast<int>(contacts_.pairs.size());
-  rep_.friction.nodal_tau.assign(np, Eigen::VectorXd());
+  rep_.friction_state.nodal_tau.assign(np, Eigen::VectorXd());
   for (int p = 0; p < np; ++p) {
     const ContactPair& pair = contacts_.pairs[p];
     if (pair.friction == FrictionLaw::kNone) continue;
     any_friction_ = true;
     const ContactSurface& s = contacts_.surfaces[contacts_.families()[contacts_.friction_family(p)].slave];
-    rep_.friction.nodal_tau[p] =
+    rep_.friction_state.nodal_tau[p] =
         Eigen::VectorXd::Constant(s.num_nodes(), pair.friction == FrictionLaw::kTresca ? pair.tau : 0.0);
     if (pair.friction != FrictionLaw::kCoulomb) continue;
     any_coulomb_ = true;
     const FrictionState* prev = previous_;
     if (prev && p < static_cast<int>(prev->nodal_tau.size()) && prev->nodal_tau[p].size() == s.num_nodes() &&
         prev->nodal_tau[p].maxCoeff() > 0.0) {
-      rep_.friction.nodal_tau[p] = prev->nodal_tau[p];
+      rep_.friction_state.nodal_tau[p] = prev->nodal_tau[p];
       warm_ = true;
       if (s_extrapolate > 0.0 && p < static_cast<int>(prev->previous_tau.size()) &&
           prev->previous_tau[p].size() == s.num_nodes())
-        rep_.friction.nodal_tau[p] =
+        rep_.friction_state.nodal_tau[p] =
             (prev->nodal_tau[p] + s_extrapolate * (prev->nodal_tau[p] - prev->previous_tau[p])).cwiseMax(0.0);
     }
   }
@@ -222,13 +222,10 @@ void CoulombFixedPoint::solve(double threshold_change) {
   if (inexact_) o.loose_geometry_tolerance = options_.inner_tolerance_factor * threshold_change;
   o.same_loads = same_loads_;
   o.lazy_interior = options_.lazy_interior;  // solve_contact applies it where it condenses (workspace, linear elasticity)
-  ContactSolveReport r =
-      solve_contact(energy_, fixed_, contacts_, dofs_, u_, o, log_, any_friction_ ? &rep_.friction : nullptr);
+  SolveReport r =
+      solve_contact(energy_, fixed_, contacts_, dofs_, u_, o, log_, any_friction_ ? &rep_.friction_state : nullptr);
   same_loads_ = true;  // the later solves of this call: the same load step, whose load part is now known
-  rep_.geometry_iterations += r.geometry_iterations;
-  rep_.ipopt_iterations += r.ipopt_iterations;
-  rep_.times.merge(r.times);
-  rep_.last = std::move(r);
+  add_geometry_solve(rep_, std::move(r));
 }
 
 /// The first solve. A warm start the solve cannot take (IPOPT failing from a start the moved boundary made
@@ -245,7 +242,7 @@ void CoulombFixedPoint::first_solve() {
     u_ = u_step_start_;
     warm_ = false;
     for (std::size_t p = 0; p < contacts_.pairs.size(); ++p)
-      if (contacts_.pairs[p].friction == FrictionLaw::kCoulomb) rep_.friction.nodal_tau[p].setZero();
+      if (contacts_.pairs[p].friction == FrictionLaw::kCoulomb) rep_.friction_state.nodal_tau[p].setZero();
     solve(1.0);
   }
 }
@@ -255,7 +252,7 @@ void CoulombFixedPoint::first_solve() {
 /// fixed point; throws SolveError when it cannot converge.
 bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
   const int iteration = k - (warm_ ? 0 : 1);
-  const double change = relative_change(r, rep_.friction.nodal_tau);
+  const double change = relative_change(r, rep_.friction_state.nodal_tau);
   scale_ = change;
   rep_.coulomb_change.push_back(change);
   monitor_.record(change);
@@ -267,7 +264,7 @@ bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
   if (change < options_.coulomb_tolerance) {
     // The loop ends on a solve converged to the geometry tolerance (and force-balanced): after an inexact
     // one, one more solve at full tolerance (its τ moves by less than the tolerance).
-    if (rep_.last.converged) return true;
+    if (rep_.converged) return true;
     log_.detail("  thresholds settled on an inexact solve; one more solve to the geometry tolerance");
     scale_ = 0.0;
   } else if (confirming_ && inexact_) {
@@ -288,7 +285,7 @@ bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
         << inner_.geometry_tolerance;
       log_.detail(m.str());
       monitor_.restart();
-    } else if (rep_.last.converged && change <= options_.stagnation_acceptance) {
+    } else if (rep_.converged && change <= options_.stagnation_acceptance) {
       rep_.accepted_at_noise_floor = change;
       std::ostringstream m;
       m << "Coulomb fixed point: the thresholds stopped changing at " << change << " of their size (tolerance "
@@ -305,9 +302,9 @@ bool CoulombFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
   return false;
 }
 
-FrictionalReport CoulombFixedPoint::run() {
-  rep_.friction.u_start = u_;
-  if (previous_) rep_.friction.previous_tau = previous_->nodal_tau;
+SolveReport CoulombFixedPoint::run() {
+  rep_.friction_state.u_start = u_;
+  if (previous_) rep_.friction_state.previous_tau = previous_->nodal_tau;
   // The predictor (FrictionalOptions::extrapolate): this step repeats the previous one's increment, scaled.
   const double s_extrapolate = options_.extrapolate && previous_ && energy_.hessian_is_constant()
                                    ? proportional_increment(fixed_, u_, previous_->u_start)
@@ -339,7 +336,7 @@ FrictionalReport CoulombFixedPoint::run() {
     if ((k > 1 || warm_) && stops(k, r)) break;
     for (std::size_t p = 0; p < r.size(); ++p)
       if (r[p].size() > 0)
-        rep_.friction.nodal_tau[p] = (rep_.friction.nodal_tau[p] + (k > 1 || warm_ ? omega_ : 1.0) * r[p]).cwiseMax(0.0);
+        rep_.friction_state.nodal_tau[p] = (rep_.friction_state.nodal_tau[p] + (k > 1 || warm_ ? omega_ : 1.0) * r[p]).cwiseMax(0.0);
     r_prev_ = r;
     rep_.coulomb_iterations = k;
     solve(scale_);
@@ -350,7 +347,7 @@ FrictionalReport CoulombFixedPoint::run() {
 
 }  // namespace
 
-FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                           const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
                                           const Logger& log, const FrictionState* previous) {
   return CoulombFixedPoint(energy, fixed, contacts, dofs, u, options, log, previous).run();

@@ -62,30 +62,17 @@ struct FrictionalOptions {
   /// A fixed point that stagnates (FixedPointMonitor: no new low of the change in six iterations — a cycle, or
   /// the noise floor of the inner solves) has its inner solves tightened, at most twice (IPOPT's tolerance
   /// × 1e-2 and the geometry tolerance × 0.1 each time, inexact solves off). Stagnated after that, its
-  /// iterate is accepted, with a warning and FrictionalReport::accepted_at_noise_floor, only when the last
+  /// iterate is accepted, with a warning and SolveReport::accepted_at_noise_floor, only when the last
   /// solve converged and the friction law holds to this relative tolerance: max |μ p − τ| ≤ it × max τ.
   /// Otherwise the step fails (SolveError naming what was tried).
   double stagnation_acceptance = 1e-4;
 };
 
-struct FrictionalReport {
-  ContactSolveReport last;                 ///< the final Tresca solve
-  int coulomb_iterations = 0;              ///< solves after the first (frictionless, or warm) one; 0: no Coulomb pair
-  std::vector<double> coulomb_change;      ///< ‖r_k‖∞ / ‖τ_k‖∞ per iteration
-  std::vector<double> coulomb_relaxation;  ///< ω_k per iteration
-  int geometry_iterations = 0;             ///< summed over all solves of the step
-  int ipopt_iterations = 0;                ///< summed over all solves of the step
-  FrictionState friction;                  ///< the thresholds of the final solve
-  /// The relative threshold change at which a stagnated fixed point was accepted (above coulomb_tolerance,
-  /// at most FrictionalOptions::stagnation_acceptance); 0 when it converged.
-  double accepted_at_noise_floor = 0.0;
-  PhaseTimes times;
-};
-
-/// u: on entry the start of the step (also the reference of the slip increments), on exit the solution.
+/// u: on entry the start of the step (also the reference of the slip increments), on exit the solution. The
+/// report holds the last Tresca solve's contact state and the Coulomb loop's fields (solve_report.hpp).
 /// `previous`: the friction state the previous load step ended with (its report's `friction`), or null
 /// for the first step.
-FrictionalReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                           const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
                                           const Logger& log, const FrictionState* previous = nullptr);
 

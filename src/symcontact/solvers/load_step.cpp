@@ -37,15 +37,15 @@ std::vector<double> solve_in_substeps(
   return ends;
 }
 
-LoadStepReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, FrictionState& friction,
+SolveReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, FrictionState& friction,
                                const FrictionalOptions& options, int max_cuts, const Logger& log) {
   const int step = problem.step;
-  LoadStepReport rep;
+  SolveReport rep;
   auto attempt = [&](double, double to) {
     const VectorXd u0 = u;
     const FrictionState friction0 = friction;
     const FixedDofs fixed = problem.move_to(to);
-    FrictionalReport fr;
+    SolveReport fr;
     try {
       fr = solve_frictional_contact(problem.energy, fixed, problem.contacts, problem.dofs, u, options, log,
                                     friction.nodal_tau.empty() ? nullptr : &friction);
@@ -56,12 +56,8 @@ LoadStepReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, Fric
       }
       throw;
     }
-    rep.geometry_iterations += fr.geometry_iterations;
-    rep.ipopt_iterations += fr.ipopt_iterations;
-    rep.coulomb_iterations += fr.coulomb_iterations;
-    rep.times.merge(fr.times);
-    friction = fr.friction;
-    rep.last = std::move(fr);
+    friction = fr.friction_state;
+    add_substep(rep, std::move(fr));
     if (to < 1.0 || rep.cuts > 0) {
       std::ostringstream s;
       s << "  load step " << step + 1 << ": sub-step to " << to << " converged";

@@ -37,16 +37,6 @@ std::vector<double> solve_in_substeps(
     int max_cuts, const std::function<void(double from, double to)>& attempt,
     const std::function<void(double from, double to, const std::string& error, int cuts)>& on_cut = nullptr);
 
-struct LoadStepReport {
-  FrictionalReport last;         ///< the final (sub-)step's solve
-  int cuts = 0;                  ///< halvings of the increment (0: solved whole)
-  std::vector<double> substeps;  ///< end fraction of every converged sub-step ({1} when solved whole)
-  int geometry_iterations = 0;   ///< over the converged sub-steps
-  int ipopt_iterations = 0;      ///< over the converged sub-steps
-  int coulomb_iterations = 0;    ///< over the converged sub-steps
-  PhaseTimes times;              ///< over the converged sub-steps
-};
-
 /// What a load step solves: the bodies' energy, the contact pairs and the DOF numbering (the same through
 /// the step), and how the loads move. `move_to(fraction)` sets the loads of `energy` to `fraction` ∈ (0, 1]
 /// of the way from the previous step to this one and returns the Dirichlet conditions there; it is called
@@ -61,9 +51,10 @@ struct LoadStepProblem {
 
 /// Solves the load step from u (on exit the solution; on a SolveError, the last iterate of the final failed
 /// attempt). `friction` holds the friction state the previous step ended with (empty nodal_tau for the first
-/// step) and is updated. On success the loads are left at the step's end. Throws SolveError when the step
+/// step) and is updated. On success the loads are left at the step's end. The report's counters sum over the
+/// converged sub-steps; the rest is the last sub-step's (solve_report.hpp). Throws SolveError when the step
 /// fails after max_cuts halvings.
-LoadStepReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, FrictionState& friction,
+SolveReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, FrictionState& friction,
                                const FrictionalOptions& options, int max_cuts, const Logger& log);
 
 }  // namespace symcontact

@@ -20,7 +20,7 @@ namespace {
 
 struct Solved {
   VectorXd u;
-  ContactSolveReport report;
+  SolveReport report;
 };
 
 class ContactSolverTest : public ::testing::Test {
@@ -95,7 +95,7 @@ TEST_F(ContactSolverTest, EveryMethodGivesTheSameAnswerOnSymmetricAndOnePassPair
 TEST_F(ContactSolverTest, TheRecoveredContactForcesBalanceTheLoadAndTheMultipliers) {
   build("symmetric");
   const Solved s = solve(options(SubproblemSolver::kDualIpopt, true));
-  const ContactSolveReport& r = s.report;
+  const SolveReport& r = s.report;
   // Each side of the interface carries the load p × 1 = 0.01, the two sides in opposite directions.
   const Model& m = *case_->model;
   std::vector<double> vertical;

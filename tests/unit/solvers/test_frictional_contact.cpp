@@ -24,7 +24,7 @@ class FrictionalContactTest : public ::testing::Test {
     c.mu = mu;
     case_ = symcontact::testing::contact_patch_model(c, folder_.path(), fixed_);
   }
-  FrictionalReport solve(const FrictionalOptions& options, VectorXd& u) {
+  SolveReport solve(const FrictionalOptions& options, VectorXd& u) {
     const Model& m = *case_->model;
     u = VectorXd::Zero(m.dofs().num_dofs());
     return solve_frictional_contact(m.energy(), fixed_, m.contacts(), m.dofs(), u, options, log_);
@@ -47,24 +47,24 @@ class FrictionalContactTest : public ::testing::Test {
 TEST_F(FrictionalContactTest, CoulombConvergesToTheFrictionlessAnswerWhenNothingSlips) {
   build(-1.0);
   VectorXd u_frictionless;
-  const FrictionalReport none = solve(options(), u_frictionless);
+  const SolveReport none = solve(options(), u_frictionless);
   EXPECT_EQ(none.coulomb_iterations, 0) << "no Coulomb pair: one solve";
   build(0.3);
   const FrictionalOptions o = options();
   VectorXd u;
-  const FrictionalReport r = solve(o, u);
+  const SolveReport r = solve(o, u);
   EXPECT_GE(r.coulomb_iterations, 1);
   ASSERT_FALSE(r.coulomb_change.empty());
   EXPECT_LT(r.coulomb_change.back(), o.coulomb_tolerance);
-  EXPECT_TRUE(r.last.converged) << "the loop ends on a solve to the geometry tolerance";
+  EXPECT_TRUE(r.converged) << "the loop ends on a solve to the geometry tolerance";
   EXPECT_EQ(r.accepted_at_noise_floor, 0.0);
   EXPECT_EQ(r.coulomb_relaxation.size(), r.coulomb_change.size());
   EXPECT_FALSE(o.contact.workspace->interior_pending) << "u is whole when the step ends";
   EXPECT_LT((u - u_frictionless).lpNorm<Eigen::Infinity>(), 1e-6 * u_frictionless.lpNorm<Eigen::Infinity>());
   // The thresholds the step ends with: μ times a pressure close to the patch's p = 0.01 at every node.
-  ASSERT_EQ(r.friction.nodal_tau.size(), 1u);
-  EXPECT_NEAR(r.friction.nodal_tau[0].maxCoeff(), 0.3 * 0.01, 0.3 * 0.01 * 0.05);
-  EXPECT_GT(r.friction.nodal_tau[0].minCoeff(), 0.0);
+  ASSERT_EQ(r.friction_state.nodal_tau.size(), 1u);
+  EXPECT_NEAR(r.friction_state.nodal_tau[0].maxCoeff(), 0.3 * 0.01, 0.3 * 0.01 * 0.05);
+  EXPECT_GT(r.friction_state.nodal_tau[0].minCoeff(), 0.0);
 }
 
 TEST_F(FrictionalContactTest, ALoopOutOfIterationsFailsNamingThemAndLeavesUWhole) {
