@@ -110,6 +110,22 @@ void make_mesh_path_absolute(toml::table& t, const fs::path& base) {
     t.insert_or_assign("mesh", fs::weakly_canonical(base / *name).string());
 }
 
+/// Replaces the `.geo` mesh of `t` (an absolute path) by a wrapper in `out_dir` that reads `definitions`
+/// and then Includes it (ProblemVariant::geo_definitions); one wrapper per distinct source file.
+void wrap_geo(toml::table& t, const std::string& definitions, const fs::path& out_dir,
+              std::map<std::string, std::string>& written) {
+  const auto name = t["mesh"].value<std::string>();
+  if (!name || fs::path(*name).extension() != ".geo") return;
+  auto [it, fresh] = written.try_emplace(*name, "");
+  if (fresh) {
+    it->second = (out_dir / ("wrapped" + std::to_string(written.size()) + "_" + fs::path(*name).filename().string())).string();
+    std::ofstream f(it->second);
+    f << definitions << "\nInclude \"" << *name << "\";\n";
+    if (!f) throw std::runtime_error("write_variant: cannot write " + it->second);
+  }
+  t.insert_or_assign("mesh", it->second);
+}
+
 }  // namespace
 
 std::string write_variant(const std::string& problem_path, const ProblemVariant& variant, const std::string& out_dir) {
@@ -120,7 +136,11 @@ std::string write_variant(const std::string& problem_path, const ProblemVariant&
     if (variant.order > 0) p->insert_or_assign("order", variant.order);
     if (variant.mesh_size > 0) p->insert_or_assign("mesh_size", variant.mesh_size);
   }
-  for_each_table(root, "body", [&](toml::table& body) { make_mesh_path_absolute(body, base); });
+  std::map<std::string, std::string> wrapped;
+  for_each_table(root, "body", [&](toml::table& body) {
+    make_mesh_path_absolute(body, base);
+    if (!variant.geo_definitions.empty()) wrap_geo(body, variant.geo_definitions, out_dir, wrapped);
+  });
   for_each_table(root, "contact", [&](toml::table& c) {
     if (toml::table* o = c["obstacle"].as_table()) make_mesh_path_absolute(*o, base);
     if (variant.coulomb_mu >= 0) {

@@ -32,6 +32,10 @@ struct ProblemVariant {
   int order = 0;           ///< > 0: [problem] order
   double coulomb_mu = -1;  ///< ≥ 0: every [[contact]] with Coulomb friction of this μ (its tau and alpha dropped)
   double mesh_size = 0;    ///< > 0: [problem] mesh_size (the largest element size of .geo meshes)
+  /// Non-empty: Gmsh statements read before each `.geo` mesh of a body (a wrapper `.geo` in the variant's
+  /// folder that sets them and then Includes the original), e.g. "h = 0.04;" for a file that sizes its
+  /// elements by `If (!Exists(h)) h = …; EndIf`.
+  std::string geo_definitions;
 };
 
 /// Writes `out_dir`/problem.toml: the problem with every mesh path made absolute and `variant` applied; the

@@ -123,12 +123,17 @@ std::vector<VariantCase> variants() {
   struct Example {
     std::string file;
     double mesh_size;  ///< 0: the example's
+    /// The order2_coulomb variant's .geo definitions (ProblemVariant::geo_definitions; "" none).
+    std::string order2_coulomb_geo;
   };
+  // The sphere at order 2 with Coulomb friction on a contact zone of h = 0.04 instead of the example's 0.02:
+  // the frictional solve stays on the primal (docs/performance.md), whose dense condensed block holds 3,218
+  // DOFs on the example's mesh (1,390 at h = 0.04); docs/validation.md (the zoo) gives the figures of both.
   const std::vector<Example> examples = {
-      {"hertz_2d/cylinder_on_plane.toml", 0.0}, {"hertz_2d/two_cylinders.toml", 0.0},
-      {"hertz_3d/sphere_on_plane.toml", 0.0},   {"rings_2d/rings.toml", 0.0},
-      {"friction_block/block.toml", 0.0},       {"inclined_2d/inclined.toml", 0.0},
-      {"inclined_3d/inclined.toml", 0.0},       {"crushed_ring_2d/ring.toml", 0.0}};
+      {"hertz_2d/cylinder_on_plane.toml", 0.0, ""},   {"hertz_2d/two_cylinders.toml", 0.0, ""},
+      {"hertz_3d/sphere_on_plane.toml", 0.0, "h = 0.04;"}, {"rings_2d/rings.toml", 0.0, ""},
+      {"friction_block/block.toml", 0.0, ""},         {"inclined_2d/inclined.toml", 0.0, ""},
+      {"inclined_3d/inclined.toml", 0.0, ""},         {"crushed_ring_2d/ring.toml", 0.0, ""}};
   std::vector<VariantCase> out;
   for (const Example& e : examples) {
     ProblemVariant base;
@@ -138,23 +143,12 @@ std::vector<VariantCase> variants() {
     mu.coulomb_mu = 0.3;
     p2mu.order = 2;
     p2mu.coulomb_mu = 0.3;
-    // Not yet in the zoo, both open defects of Coulomb friction on 6-node triangle facets (3D, order 2):
-    // inclined_3d at order 2, where the tangential traction exceeds μp by 0.6 μ max p at some nodes (suspected: the
-    // lumped weights of 6-node triangles vanish at their vertices), and the sphere on its plane at order 2 with
-    // Coulomb friction, which had not finished after 20 minutes.
-    const bool p2_friction_3d = e.file == "inclined_3d/inclined.toml";
-    // Nor the crushed ring at order 2 (finite strain, self-contact): IPOPT reaches its iteration limit at load
-    // step 26, with or without friction.
-    const bool p2_ring = e.file == "crushed_ring_2d/ring.toml";
-    if (p2_ring) {
-      out.push_back({e.file, "coulomb", mu, {}});
-      out.push_back({e.file, "mm", base, {1e3, 1.0}});
-      continue;
-    }
-    if (!p2_friction_3d) out.push_back({e.file, "order2", p2, {}});
+    p2mu.geo_definitions = e.order2_coulomb_geo;
+    // Not yet in the zoo: the crushed ring at order 2 (finite strain, self-contact), where IPOPT reaches its
+    // iteration limit at load step 26, with or without friction.
+    if (e.file != "crushed_ring_2d/ring.toml") out.push_back({e.file, "order2", p2, {}});
     out.push_back({e.file, "coulomb", mu, {}});
-    if (!p2_friction_3d && e.file != "hertz_3d/sphere_on_plane.toml")
-      out.push_back({e.file, "order2_coulomb", p2mu, {}});
+    if (e.file != "crushed_ring_2d/ring.toml") out.push_back({e.file, "order2_coulomb", p2mu, {}});
     out.push_back({e.file, "mm", base, {1e3, 1.0}});
   }
   return out;

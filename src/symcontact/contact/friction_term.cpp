@@ -1,32 +1,103 @@
 #include "symcontact/contact/friction_term.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "symcontact/contact/closest_point.hpp"
 #include "symcontact/fem/shape_functions.hpp"
 
 namespace symcontact {
+
+namespace {
+
+/// A relative-displacement map B as DOF columns: (node-major DOF base, coefficient) pairs, the slave
+/// side's (+N_a at ξ) and the master side's (−M_b at η) apart. One dim × dim block c·I per entry.
+struct SlipColumns {
+  std::vector<std::pair<Index, double>> slave, master;
+};
+
+/// The map of point p: s = u_s(ξ_p) − u_m(η_p) (no master part for an obstacle or a rigid master).
+SlipColumns point_columns(const ContactSurface& slave, const ContactSurface* master, const DofMap& dofs,
+                          const ContactPoint& p) {
+  SlipColumns c;
+  double N[10];
+  if (!slave.is_rigid()) {
+    shape_functions(slave.facet_type, p.xi, N, nullptr);
+    for (int a = 0; a < slave.nodes_per_facet(); ++a)
+      c.slave.emplace_back(dofs.dof(slave.body, slave.nodes[slave.facet(p.slave_facet)[a]], 0), N[a]);
+  }
+  if (master && !master->is_rigid()) {
+    shape_functions(master->facet_type, p.eta, N, nullptr);
+    for (int b = 0; b < master->nodes_per_facet(); ++b)
+      c.master.emplace_back(dofs.dof(master->body, master->nodes[master->facet(p.master_facet)[b]], 0), -N[b]);
+  }
+  return c;
+}
+
+/// into += a · from, entries with the same DOF base merged.
+void add_scaled(std::vector<std::pair<Index, double>>& into, const std::vector<std::pair<Index, double>>& from,
+                double a) {
+  for (const auto& [base, coefficient] : from) {
+    auto it = std::find_if(into.begin(), into.end(), [&](const auto& e) { return e.first == base; });
+    if (it == into.end())
+      into.emplace_back(base, a * coefficient);
+    else
+      it->second += a * coefficient;
+  }
+}
+
+/// Nodal points on a Tri6 slave: the maps of the slip's coefficients in the test basis (the header),
+///   B̃_v = B_v,   B̃_e = (B_e − c (B_v1 + B_v2)) / (1 − 2c).
+/// A vertex without a point of its own (it projects onto nothing) enters with its slave displacement
+/// against the master's at the edge node's projection: slave part δ_v, master part that of B_e.
+std::vector<SlipColumns> test_basis_columns(const ContactSurface& slave, const DofMap& dofs,
+                                            const std::vector<ContactPoint>& points,
+                                            const std::vector<SlipColumns>& nodal) {
+  constexpr double c = kModifiedTri6Coefficient;
+  std::vector<Index> point_of(slave.num_nodes(), -1);
+  for (std::size_t q = 0; q < points.size(); ++q) point_of[points[q].slave_node] = static_cast<Index>(q);
+  std::vector<SlipColumns> out = nodal;
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    const Index* facet = slave.facet(points[q].slave_facet);
+    const int a = static_cast<int>(std::find(facet, facet + 6, points[q].slave_node) - facet);
+    if (a < 3) continue;  // a vertex: s̃_v = s_v
+    SlipColumns& e = out[q];
+    for (std::pair<Index, double>& entry : e.slave) entry.second = entry.second / (1.0 - 2.0 * c);
+    for (std::pair<Index, double>& entry : e.master) entry.second = entry.second / (1.0 - 2.0 * c);
+    const double w = -c / (1.0 - 2.0 * c);
+    for (int end = 0; end < 2; ++end) {
+      const Index v = facet[triangle_edge(a - 3)[end]];
+      if (point_of[v] >= 0) {
+        add_scaled(e.slave, nodal[point_of[v]].slave, w);
+        add_scaled(e.master, nodal[point_of[v]].master, w);
+      } else {
+        if (!slave.is_rigid()) add_scaled(e.slave, {{dofs.dof(slave.body, slave.nodes[v], 0), 1.0}}, w);
+        add_scaled(e.master, nodal[q].master, w);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
 
 FrictionTerm::FrictionTerm(std::string name, const ContactSurface& slave, const ContactSurface* master,
                            std::vector<ContactPoint> points, std::vector<double> tau, double alpha,
                            const DofMap& dofs, const VectorXd& u_start)
     : name_(std::move(name)), points_(std::move(points)), alpha_(alpha), dim_(slave.dim) {
   const int D = dim_;
-  const int npf = slave.nodes_per_facet();
-  const int mpf = master ? master->nodes_per_facet() : 0;
-  std::vector<double> N(npf), M(std::max(mpf, 1));
+  std::vector<SlipColumns> columns;
+  columns.reserve(points_.size());
+  for (const ContactPoint& p : points_) columns.push_back(point_columns(slave, master, dofs, p));
+  const bool nodal = !points_.empty() && std::all_of(points_.begin(), points_.end(),
+                                                     [](const ContactPoint& p) { return p.slave_node >= 0; });
+  if (nodal && slave.facet_type == CellType::kTri6) columns = test_basis_columns(slave, dofs, points_, columns);
   local_.reserve(points_.size());
   for (std::size_t q = 0; q < points_.size(); ++q) {
     const ContactPoint& p = points_[q];
     Local l;
-    shape_functions(slave.facet_type, p.xi, N.data(), nullptr);
-    std::vector<std::pair<Index, double>> cols;  // (node-major DOF base, coefficient)
-    if (!slave.is_rigid())
-      for (int a = 0; a < npf; ++a) cols.emplace_back(dofs.dof(slave.body, slave.nodes[slave.facet(p.slave_facet)[a]], 0), N[a]);
-    if (master && !master->is_rigid()) {
-      shape_functions(master->facet_type, p.eta, M.data(), nullptr);
-      for (int b = 0; b < mpf; ++b)
-        cols.emplace_back(dofs.dof(master->body, master->nodes[master->facet(p.master_facet)[b]], 0), -M[b]);
-    }
+    std::vector<std::pair<Index, double>> cols = columns[q].slave;
+    cols.insert(cols.end(), columns[q].master.begin(), columns[q].master.end());
     const int n = static_cast<int>(cols.size()) * D;
     l.dofs.resize(n);
     l.B = Eigen::MatrixXd::Zero(D, n);

@@ -11,6 +11,22 @@
 /// geometry step. u⁰ is the displacement at the start of the load step: friction acts on the slip
 /// increment of the step, so loading paths are respected. For an obstacle u_m = 0.
 ///
+/// Nodal points on 6-node triangles (every point has ContactPoint::slave_node ≥ 0: nodal_contact_points(),
+/// on a Tri6 slave). The pressure, and with it τ_i = μ p_i, is recovered in the test basis
+/// φ_i = Σ_k T_ik N_k of the gap constraints (test_functions(), contact_surface.hpp; surface_tractions.hpp),
+/// in which a nodal force F reads T F. The friction term measures the slip in that basis too: the slip
+/// field Σ_k s_k N_k = Σ_i s̃_i φ_i has the coefficients s̃ = T⁻ᵀ s,
+///   s̃_v = s_v (vertex v),   s̃_e = (s_e − c (s_v1 + s_v2)) / (1 − 2c) (edge node e of edge v1–v2),
+/// c = kModifiedTri6Coefficient; a uniform slip keeps s̃ = s. Point q of edge node e then has the map
+/// B̃_e = (B_e − c (B_v1 + B_v2)) / (1 − 2c), over the DOFs of the three nodes' points (each with its own
+/// master side at its own projection), and the projector P_e of its own normal. Then j = Σ_i A_i τ_i η_α(s̃_i),
+/// its force F = −T⁻¹ (A τ P s̃ / r) on the slave, and T F = −A_i τ_i P_i s̃_i / r_i at every node: the
+/// recovered traction has |t_i| = τ_i |P_i s̃_i| / r_i ≤ τ_i, the nodal friction law in the basis that τ
+/// lives in. With the standard nodal slips instead, T F mixes each vertex's friction force with c times
+/// its edge neighbours', and |t_v| exceeds τ_v where the slip varies. A vertex without a point of its own
+/// (it projects onto nothing) enters B̃_e with its slave displacement against the master's at the edge
+/// node's projection. Other facets, and other points, use s_q as written above (T is the identity there).
+///
 /// Derivatives (r = sqrt(|s|² + α²) ≥ α > 0, so nothing divides by a small slip):
 ///   ∇ = w τ Bᵀ s / r,   ∇² = w τ Bᵀ P (I − s sᵀ / r²) P B / r,   B the relative-displacement map.
 /// The tangential traction on the slave is σ_T = −τ s / r (talk, regularised Tresca law).
@@ -36,7 +52,8 @@ class FrictionTerm : public EnergyTerm {
   void add_hessian(const VectorXd& u, MatrixSink& sink) const override;
   bool hessian_is_constant() const override { return false; }
 
-  /// Slip increment s_q at every point (3 components, z = 0 in 2D).
+  /// Slip increment s_q at every point (3 components, z = 0 in 2D); s̃_q at the nodal points of a Tri6
+  /// surface (the file comment).
   std::vector<Eigen::Vector3d> slips(const VectorXd& u) const;
   const std::vector<ContactPoint>& points() const { return points_; }
 

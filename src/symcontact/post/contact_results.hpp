@@ -37,7 +37,9 @@
 ///  - gap: the signed distance θ of the node to the opposite surface (closest point, smoothed normal),
 ///    NaN when the node projects onto nothing,
 ///  - slip (friction side only, NaN elsewhere): the tangential slip increment of the load step at the
-///    node, the weak average Σ_q w_q N_k s_q / Σ_q w_q N_k of the friction term's point slips,
+///    node, the weak average Σ_q w_q N_k s_q / Σ_q w_q N_k of the friction term's point slips (with the
+///    solver's nodal points the node's own point slip: on a Tri6 surface its coefficient s̃_k in the test
+///    basis, friction_term.hpp, the slip the law's traction τ s̃_k / r_k and the status below read),
 ///  - status: 0 open, 1 in contact (frictionless) or sticking, 2 slipping. In contact where the pressure of
 ///    Aᵀμ_p alone exceeds kContactPressureFraction × its maximum (exactly zero where no active row reaches the
 ///    node; an unpolished interior point leaves multipliers of order barrier/gap, far below that, on open

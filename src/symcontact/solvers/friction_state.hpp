@@ -25,7 +25,8 @@ struct FrictionState {
 /// The friction term of every pair at the displacement u (null for a pair without thresholds), integrated
 /// node by node: node k of the slave surface carries its own weight A_k, slip and threshold τ_k, so that
 /// σ_T = −τ_k s_k / sqrt(|s_k|² + α²) holds at every node with the same lumped A_k the pressure is recovered
-/// with, and the nodal law |σ_T| ≤ μ σ_n with it. (A quadrature of the interpolated τ and s would mix
+/// with, and the nodal law |σ_T| ≤ μ σ_n with it (on Tri6 surfaces, in the test basis of the pressure, s_k
+/// the slip's coefficient there: friction_term.hpp). (A quadrature of the interpolated τ and s would mix
 /// neighbouring nodes' thresholds and break the law where the pressure varies, at the ends of a dragged
 /// block for instance.) A self-contact surface holds both sides of its interface and every node of it
 /// carries a friction point: j_τ counts the interface once, so each side carries half the weight.

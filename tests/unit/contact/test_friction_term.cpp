@@ -16,6 +16,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -286,28 +287,80 @@ INSTANTIATE_TEST_SUITE_P(FrictionTerm, FrictionTermCase,
 // 3D: two-component slips in the tangent plane, between two non-matching boxes (Tri3 / Tri6 facets), with
 // the nodal points the solver uses (nodal_contact_points) and with the segment-based mortar points.
 
+/// Two non-matching boxes in one DofMap: the lower [0, 1]² × [−0.5, 0] (body 0) is the master through its
+/// "zmax"; the upper [0.13, 0.83] × [0.1, 0.9] × [0, 0.4] (body 1) the slave through its "zmin".
+struct Boxes {
+  Mesh lower, upper;
+  DofMap dofs{3};
+  ContactSurface master, slave;
+  int slave_body = 1;
+};
+
+Boxes boxes(int order) {
+  Boxes b;
+  b.lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), 3, 3, 1, order);
+  b.upper = box_mesh(Vec3(0.13, 0.1, 0), Vec3(0.83, 0.9, 0.4), 4, 3, 1, order);
+  const int b0 = b.dofs.add_body(b.lower.num_nodes());
+  b.slave_body = b.dofs.add_body(b.upper.num_nodes());
+  b.master = make_contact_surface(b.lower, "zmax", b0, "lower.top");
+  b.slave = make_contact_surface(b.upper, "zmin", b.slave_body, "upper.bottom");
+  return b;
+}
+
+/// The slave's nodal points (one per surface node, nodal_contact_points()) on the undeformed master.
+std::vector<ContactPoint> nodal_points(const Boxes& b) {
+  const MasterGeometry mg = prepare_master(b.master, b.master.X);
+  return nodal_contact_points(b.slave, b.slave.X, &mg, nullptr, 0.5);
+}
+
+/// Translation of the slave body by d: every point slips by exactly d (d tangential).
+VectorXd slave_translation(const Boxes& b, const Eigen::Vector3d& d) {
+  VectorXd v = VectorXd::Zero(b.dofs.num_dofs());
+  for (Index k = 0; k < b.upper.num_nodes(); ++k)
+    for (int i = 0; i < 3; ++i) v[b.dofs.dof(b.slave_body, k, i)] = d[i];
+  return v;
+}
+
+/// The slave's tangential traction recovered from the term's force as the post-processing and the Coulomb
+/// threshold recover it (surface_tractions.hpp): t_i = (T F)_i / A_i, F = −∇j on the slave's nodes.
+Eigen::MatrixXd recovered_traction(const Boxes& b, const FrictionTerm& term, const VectorXd& u) {
+  VectorXd g = VectorXd::Zero(u.size());
+  term.add_gradient(u, g);
+  Eigen::MatrixXd F(3, b.slave.num_nodes());
+  for (Index k = 0; k < b.slave.num_nodes(); ++k)
+    for (int i = 0; i < 3; ++i) F(i, k) = -g[b.dofs.dof(b.slave_body, b.slave.nodes[k], i)];
+  Eigen::MatrixXd t = test_basis_forces(b.slave, F);
+  for (Index k = 0; k < b.slave.num_nodes(); ++k) t.col(k) /= b.slave.nodal_area[k];
+  return t;
+}
+
+/// Whether nodal point p sits at an edge node of its facet (Tri6 local nodes 3–5).
+bool at_edge_node(const ContactSurface& s, const ContactPoint& p) {
+  const Index* f = s.facet(p.slave_facet);
+  return std::find(f, f + s.nodes_per_facet(), p.slave_node) - f >= 3;
+}
+
 class FrictionTerm3D : public ::testing::TestWithParam<int> {};
 
 TEST_P(FrictionTerm3D, DerivativesAtRandomStatesAndAtZeroSlip) {
-  const int order = GetParam();
-  const Mesh lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), 3, 3, 1, order);
-  const Mesh upper = box_mesh(Vec3(0.13, 0.1, 0), Vec3(0.83, 0.9, 0.4), 4, 3, 1, order);
-  DofMap dofs(3);
-  const int b0 = dofs.add_body(lower.num_nodes()), b1 = dofs.add_body(upper.num_nodes());
-  const ContactSurface master = make_contact_surface(lower, "zmax", b0, "lower.top");
-  const ContactSurface slave = make_contact_surface(upper, "zmin", b1, "upper.bottom");
-  const MasterGeometry mg = prepare_master(master, master.X);
+  const Boxes b = boxes(GetParam());
+  const MasterGeometry mg = prepare_master(b.master, b.master.X);
   ContactSearchOptions opt;
   opt.search_distance = 0.5;
-  const std::vector<std::vector<ContactPoint>> point_sets = {
-      contact_points(slave, slave.X, mg, opt), nodal_contact_points(slave, slave.X, &mg, nullptr, 0.5)};
+  std::vector<std::vector<ContactPoint>> point_sets = {contact_points(b.slave, b.slave.X, mg, opt), nodal_points(b)};
+  // The nodal points less a few vertices (on Tri6: edge nodes whose vertex projects onto nothing).
+  std::vector<ContactPoint> without_some_vertices;
+  for (const ContactPoint& p : point_sets[1])
+    if (at_edge_node(b.slave, p) || p.slave_node % 3 != 0) without_some_vertices.push_back(p);
+  ASSERT_LT(without_some_vertices.size(), point_sets[1].size());
+  point_sets.push_back(without_some_vertices);
   for (const auto& points : point_sets) {
     ASSERT_GT(points.size(), 10u);
     for (const ContactPoint& p : points) ASSERT_NEAR((p.normal - Eigen::Vector3d(0, 0, 1)).norm(), 0.0, 1e-14);  // the master's n̄
     const std::vector<double> tau = random_tau(points.size(), 6);
-    const Index n = dofs.num_dofs();
+    const Index n = b.dofs.num_dofs();
     const VectorXd u0 = random_vector(n, 0.01, 41);
-    const FrictionTerm term("friction", slave, &master, points, tau, kAlpha, dofs, u0);
+    const FrictionTerm term("friction", b.slave, &b.master, points, tau, kAlpha, b.dofs, u0);
     // Slips have both tangential components, none along the normal.
     const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 42);
     double sx = 0, sy = 0;
@@ -322,6 +375,43 @@ TEST_P(FrictionTerm3D, DerivativesAtRandomStatesAndAtZeroSlip) {
       const FdResult r = check_derivatives(term, state, kFdStep, 6, 400, 3);
       EXPECT_LT(r.gradient_error, kTol);
       EXPECT_LT(r.hessian_error, kTol);
+    }
+    // A uniform slide is a uniform slip in any basis: every point slips by d, also on Tri6 edge nodes.
+    const Eigen::Vector3d d(3 * kAlpha, -2 * kAlpha, 0.0);
+    for (const Eigen::Vector3d& s : term.slips(u0 + slave_translation(b, d))) EXPECT_LT((s - d).norm(), 1e-12 * d.norm());
+  }
+}
+
+// The nodal friction law in the basis the thresholds live in: with the solver's nodal points, the tangential
+// traction recovered from the term's force (in the test basis, as the pressure and τ = μ p are) satisfies
+// |t_i| ≤ τ_i at every node, for a slip that varies from node to node and a threshold that does too. On Tri6
+// facets this holds because the term measures the slip in the test basis (friction_term.hpp); with the
+// standard nodal slips a vertex's traction also carries c times its edge neighbours' friction forces.
+TEST_P(FrictionTerm3D, RecoveredTractionSatisfiesTheNodalLaw) {
+  const Boxes b = boxes(GetParam());
+  std::vector<ContactPoint> all = nodal_points(b), some;
+  ASSERT_EQ(static_cast<Index>(all.size()), b.slave.num_nodes());
+  for (const ContactPoint& p : all)
+    if (p.slave_node % 5 != 0) some.push_back(p);
+  for (const std::vector<ContactPoint>* points : {&all, &some}) {
+    const std::vector<double> point_tau = random_tau(points->size(), 17);
+    Eigen::VectorXd tau = Eigen::VectorXd::Zero(b.slave.num_nodes());  // 0 at nodes without a point
+    for (std::size_t q = 0; q < points->size(); ++q) tau[(*points)[q].slave_node] = point_tau[q];
+    const Index n = b.dofs.num_dofs();
+    const VectorXd u0 = random_vector(n, 0.01, 51);
+    const FrictionTerm term("friction", b.slave, &b.master, *points, point_tau, kAlpha, b.dofs, u0);
+    // Slips of 10 to 1000 α, in every direction: from the regularised zone to full slip at every node.
+    for (double amplitude : {10 * kAlpha, 1e3 * kAlpha}) {
+      const VectorXd u = u0 + random_vector(n, amplitude, 52);
+      const Eigen::MatrixXd t = recovered_traction(b, term, u);
+      double worst = -1e300;
+      for (Index k = 0; k < b.slave.num_nodes(); ++k) {
+        worst = std::max(worst, (t.col(k).norm() - tau[k]) / tau.maxCoeff());
+        EXPECT_LE(t.col(k).norm(), tau[k] * (1 + 1e-12) + 1e-12 * tau.maxCoeff()) << "node " << k;
+        EXPECT_NEAR(t(2, k), 0.0, 1e-12 * tau.maxCoeff()) << "node " << k;  // tangential to n̄ = e_z
+      }
+      std::printf("  P%d, %zu points, slips ~%g alpha: max (|t| - tau) / max tau = %.2e\n", GetParam(),
+                  points->size(), amplitude / kAlpha, worst);
     }
   }
 }
