@@ -92,7 +92,7 @@ using BeforeSolve = std::function<void(const HertzRun&)>;
 /// model and solves it (solve_hertz_model). `examples_dir` is the examples/ folder of the source tree.
 /// Throws what the library throws (InputError, SolveError) and what `before_solve` throws.
 /// `condense` false switches the static condensation off (contact_solver.static_condensation), `dual` chooses
-/// how the condensed problem is solved (contact_solver.dual_solve and dual_optimizer);
+/// how the condensed problem is solved (contact_solver.subproblem_solver);
 /// `search_distance` > 0 sets the contact pair's search_distance (default: the example's, automatic).
 std::unique_ptr<HertzRun> solve_hertz(HertzCase which, double h, const std::string& examples_dir,
                                       const std::string& work_dir, bool condense = true, double search_distance = 0.0,

@@ -4,8 +4,8 @@
 // where Coulomb friction keeps them from being tightened) — with the condensed path actually taken. Covers the
 // two Hertz 2D cases (one and two bodies, rigid obstacle and symmetric pair), Coulomb friction on the
 // inclined interface (friction terms condensed with the bulk) and the 3D sphere on a plane. The same cases
-// solved through the dual of the condensed problem (contact_solver.dual_solve, the default) and through IPOPT
-// on the condensed displacements agree as well.
+// solved through the dual of the condensed problem (contact_solver.subproblem_solver = "dual_interior_point",
+// the default) and through IPOPT on the condensed displacements ("primal_ipopt") agree as well.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -25,15 +25,14 @@ namespace {
 /// IPOPT iterates; what they agree to is what the tolerances of the fixed points and of the optimiser leave:
 /// measured 1e-5 at the defaults of the two-cylinder case).
 std::string prepare(const std::string& dir, const std::string& example, const std::string& geo, const std::string& size,
-                    double geometry_tolerance, bool condense, bool dual = true,
-                    const char* dual_optimizer = "interior_point") {
+                    double geometry_tolerance, bool condense,
+                    const char* subproblem_solver = "dual_interior_point") {
   const std::string folder = std::string(SYMCONTACT_EXAMPLES) + "/" + example + "/";
   write_text(dir, "case.geo", size + "\nInclude \"" + folder + geo + "\";\n");
   std::string toml = read_text(folder + geo.substr(0, geo.size() - 4) + ".toml");
   for (std::size_t at; (at = toml.find(geo)) != std::string::npos;) toml.replace(at, geo.size(), "case.geo");
   std::string lines = std::string("static_condensation = ") + (condense ? "true" : "false") + "\n" +
-                      "dual_solve = " + (dual ? "true" : "false") + "\n" + "dual_optimizer = \"" + dual_optimizer +
-                      "\"\n";
+                      "subproblem_solver = \"" + subproblem_solver + "\"\n";
   if (geometry_tolerance > 0.0) {
     for (const char* key : {"geometry_tolerance", "coulomb_tolerance"})
       for (std::size_t at; (at = toml.find(std::string("\n") + key)) != std::string::npos;)
@@ -101,8 +100,8 @@ TEST_P(CondensationChangesNothing, SameDisplacementsAndContactForces) {
 TEST_P(DualSolveChangesNothing, SameDisplacementsAndContactForces) {
   const Case& p = GetParam();
   const std::string dir = test_temp_dir(std::string("dual_") + p.example);
-  auto dual = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, true), dir);
-  auto primal = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, false), dir);
+  auto dual = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true), dir);
+  auto primal = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "primal_ipopt"), dir);
   EXPECT_GT(dual->report.num_condensed, 0);
   // (the report is that of the last solve, which carries friction on the inclined interface)
   if (p.frictionless) {
@@ -124,8 +123,8 @@ class DualOptimizerChangesNothing : public ::testing::TestWithParam<Case> {};
 TEST_P(DualOptimizerChangesNothing, SameDisplacementsAndContactForces) {
   const Case& p = GetParam();
   const std::string dir = test_temp_dir(std::string("dual_optimizer_") + p.example);
-  auto ipm = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, true), dir);
-  auto ipopt = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, true, "ipopt"), dir);
+  auto ipm = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true), dir);
+  auto ipopt = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "dual_ipopt"), dir);
   if (p.frictionless) {
     EXPECT_GT(ipm->report.dual_solves, 0) << "the dual path was not taken";
     EXPECT_EQ(ipm->report.ipopt_status.find("interior point") != std::string::npos, !p.two_sided)

@@ -107,9 +107,7 @@ FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
   o.geometry_tolerance = spec.contact_solver.geometry_tolerance;
   o.max_geometry_iterations = spec.contact_solver.max_geometry_iterations;
   o.static_condensation = spec.contact_solver.static_condensation;
-  o.subproblem_solver = !spec.contact_solver.dual_solve ? SubproblemSolver::kPrimalIpopt
-                        : spec.contact_solver.dual_optimizer == DualOptimizer::kIpopt ? SubproblemSolver::kDualIpopt
-                                                                                       : SubproblemSolver::kDualInteriorPoint;
+  o.subproblem_solver = spec.contact_solver.subproblem_solver;
   o.workspace = std::make_shared<ContactWorkspace>();  // one factorisation for the whole run
   if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
   o.ipopt.string_options = spec.contact_solver.ipopt_string;

@@ -888,9 +888,14 @@ class Reader {
     const toml::node* node = root.get("contact_solver");
     if (!node) return;
     const toml::table& t = as_table(*node, "contact_solver");
+    for (const char* replaced : {"dual_solve", "dual_optimizer"})
+      if (t.get(replaced))
+        fail(std::string("contact_solver.") + replaced,
+             "replaced by subproblem_solver = \"dual_interior_point\" (the default), \"dual_ipopt\" (dual_optimizer = "
+             "\"ipopt\") or \"primal_ipopt\" (dual_solve = false)");
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations",
-                "static_condensation", "dual_solve", "dual_optimizer", "max_step_cuts"});
+                "static_condensation", "subproblem_solver", "max_step_cuts"});
     ContactSolverSpec& s = spec.contact_solver;
     if (const toml::node* n = t.get("geometry_tolerance")) {
       const std::string key = "contact_solver.geometry_tolerance";
@@ -910,12 +915,13 @@ class Reader {
     }
     if (const toml::node* n = t.get("static_condensation"))
       s.static_condensation = as_bool(*n, "contact_solver.static_condensation");
-    if (const toml::node* n = t.get("dual_solve")) s.dual_solve = as_bool(*n, "contact_solver.dual_solve");
-    if (const toml::node* n = t.get("dual_optimizer")) {
-      const std::string key = "contact_solver.dual_optimizer";
+    if (const toml::node* n = t.get("subproblem_solver")) {
+      const std::string key = "contact_solver.subproblem_solver";
       const std::string v = as_string(*n, key);
-      if (v != "interior_point" && v != "ipopt") fail(key, "expected \"interior_point\" or \"ipopt\", got \"" + v + "\"");
-      s.dual_optimizer = v == "interior_point" ? DualOptimizer::kInteriorPoint : DualOptimizer::kIpopt;
+      const std::optional<SubproblemSolver> choice = parse_subproblem_solver(v);
+      if (!choice)
+        fail(key, "expected \"dual_interior_point\", \"dual_ipopt\" or \"primal_ipopt\", got \"" + v + "\"");
+      s.subproblem_solver = *choice;
     }
     if (const toml::node* n = t.get("max_step_cuts")) {
       const std::string key = "contact_solver.max_step_cuts";

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "symcontact/materials/analysis_model.hpp"
+#include "symcontact/solvers/subproblem_solver.hpp"
 
 namespace symcontact {
 
@@ -105,10 +106,9 @@ struct ContactSpec {
   double alpha = 0.0;              ///< regularisation of |v| by sqrt(|v|² + α²) [length]; > 0; 0: automatic
 };
 
-/// Settings of the contact solve (Algorithm 2) and of IPOPT.
-/// [contact_solver] dual_optimizer.
-enum class DualOptimizer { kInteriorPoint, kIpopt };
-
+/// Settings of the contact solve (Algorithm 2) and of IPOPT: the [contact_solver] and [ipopt] tables, under the
+/// names of the file (docs/input.md) and of the solver's options (solvers/contact_solver.hpp,
+/// solvers/frictional_contact.hpp).
 struct ContactSolverSpec {
   double geometry_tolerance = 1e-6;   ///< ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ below which the fixed point stops
   int max_geometry_iterations = 50;
@@ -117,11 +117,10 @@ struct ContactSolverSpec {
   /// Condense linear-elastic bodies onto their contact DOFs (one Cholesky factorisation per run); the
   /// solution is the same, only the cost changes. Finite-strain bodies are never condensed.
   bool static_condensation = true;
-  /// Solve the condensed frictionless problem through its dual (the contact multipliers: solvers/
-  /// dual_condensed_problem.hpp); the solution is the same to the optimiser's tolerance, only the cost changes.
-  bool dual_solve = true;
-  /// The dual's optimiser (dual_optimizer = "interior_point" or "ipopt"; SubproblemSolver).
-  DualOptimizer dual_optimizer = DualOptimizer::kInteriorPoint;
+  /// How each geometry iteration's subproblem is solved: "dual_interior_point", "dual_ipopt" or
+  /// "primal_ipopt" (solvers/subproblem_solver.hpp); the solution is the same to the optimiser's tolerance,
+  /// only the cost changes.
+  SubproblemSolver subproblem_solver = SubproblemSolver::kDualInteriorPoint;
   /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
   /// halvings (solvers/load_step.hpp); 0: no cutting, a failed step ends the run.
   int max_step_cuts = 0;

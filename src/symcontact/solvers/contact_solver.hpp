@@ -33,27 +33,9 @@
 #include "symcontact/solvers/fixed_dofs.hpp"
 #include "symcontact/solvers/friction_state.hpp"
 #include "symcontact/solvers/solve_report.hpp"
+#include "symcontact/solvers/subproblem_solver.hpp"
 
 namespace symcontact {
-
-/// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
-/// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
-/// without friction terms; any other subproblem is solved by the primal whatever the choice.
-enum class SubproblemSolver {
-  /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
-  /// factorisation at each of its iterations (primal_subproblem.hpp).
-  kPrimalIpopt,
-  /// The dual in the m contact multipliers with bounds, its Hessian formed once per geometry iteration, by
-  /// IPOPT (MUMPS factorising the dense matrix as a sparse one: about 3 times the time of the interior point
-  /// and 10 m² doubles of workspace); the displacements follow exactly from the multipliers, forces balanced
-  /// with no optimiser error (dual_subproblem.hpp). Falls back to the primal when IPOPT fails.
-  kDualIpopt,
-  /// The dual by the dense interior point of dense_qp_interior_point.hpp (one LAPACK Cholesky of the m × m
-  /// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance too) where the rows are
-  /// independent (no symmetric pair, no self-contact: the dual's λ is unique); by IPOPT otherwise, and
-  /// where it fails.
-  kDualInteriorPoint,
-};
 
 struct ContactSolveOptions {
   double geometry_tolerance = 1e-6;

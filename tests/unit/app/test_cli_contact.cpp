@@ -168,7 +168,7 @@ TEST_F(CliContact, HertzExampleWritesContactResults) {
 TEST_F(CliContact, FailedContactSolveKeepsTheSummaryAndTheLastIterateOnly) {
   // IPOPT as the dual's optimiser too (the default interior point does not read [ipopt] max_iter).
   const fs::path f = write_hertz_case("one_iteration.toml", [](std::string& t) {
-    t += "\n[contact_solver]\ndual_optimizer = \"ipopt\"\n[ipopt]\nmax_iter = 1\n";
+    t += "\n[contact_solver]\nsubproblem_solver = \"dual_ipopt\"\n[ipopt]\nmax_iter = 1\n";
   });
   const fs::path& out = out_;
   const CliResult r = run_case(f);

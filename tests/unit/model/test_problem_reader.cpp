@@ -333,8 +333,7 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
-  EXPECT_TRUE(spec.contact_solver.dual_solve);
-  EXPECT_EQ(spec.contact_solver.dual_optimizer, DualOptimizer::kInteriorPoint);
+  EXPECT_EQ(spec.contact_solver.subproblem_solver, SubproblemSolver::kDualInteriorPoint);
   EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
   EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
@@ -435,7 +434,7 @@ TEST(ProblemReader, TrescaFriction) {
 TEST(ProblemReader, CoulombFriction) {
   const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = 2e-6\n") +
                                  "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n"
-                                 "max_step_cuts = 3\ndual_optimizer = \"ipopt\"\n");
+                                 "max_step_cuts = 3\nsubproblem_solver = \"dual_ipopt\"\n");
   const ContactSpec& c = spec.contacts.at(0);
   EXPECT_EQ(c.friction, "coulomb");
   EXPECT_EQ(c.mu, 0.3);
@@ -444,7 +443,7 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-8);
   EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 12);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
-  EXPECT_EQ(spec.contact_solver.dual_optimizer, DualOptimizer::kIpopt);
+  EXPECT_EQ(spec.contact_solver.subproblem_solver, SubproblemSolver::kDualIpopt);
   EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);  // the others keep their defaults
   EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
 }
@@ -1012,11 +1011,16 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
-                "coulomb_tolerance, max_coulomb_iterations, static_condensation, dual_solve, dual_optimizer, max_step_cuts"},
-        InputErrorCase{"DualOptimizerUnknown", kTwoBodies + "[contact_solver]\ndual_optimizer = \"mumps\"\n",
-                "contact_solver.dual_optimizer", "expected \"interior_point\" or \"ipopt\", got \"mumps\""},
-        InputErrorCase{"DualOptimizerNotAString", kTwoBodies + "[contact_solver]\ndual_optimizer = 1\n",
-                "contact_solver.dual_optimizer", "expected a string"},
+                "coulomb_tolerance, max_coulomb_iterations, static_condensation, subproblem_solver, max_step_cuts"},
+        InputErrorCase{"SubproblemSolverUnknown", kTwoBodies + "[contact_solver]\nsubproblem_solver = \"mumps\"\n",
+                "contact_solver.subproblem_solver",
+                "expected \"dual_interior_point\", \"dual_ipopt\" or \"primal_ipopt\", got \"mumps\""},
+        InputErrorCase{"SubproblemSolverNotAString", kTwoBodies + "[contact_solver]\nsubproblem_solver = 1\n",
+                "contact_solver.subproblem_solver", "expected a string"},
+        InputErrorCase{"DualSolveReplaced", kTwoBodies + "[contact_solver]\ndual_solve = false\n",
+                "contact_solver.dual_solve", "replaced by subproblem_solver = \"dual_interior_point\" (the default)"},
+        InputErrorCase{"DualOptimizerReplaced", kTwoBodies + "[contact_solver]\ndual_optimizer = \"ipopt\"\n",
+                "contact_solver.dual_optimizer", "\"dual_ipopt\" (dual_optimizer = \"ipopt\")"},
         InputErrorCase{"MaxStepCutsNegative", kTwoBodies + "[contact_solver]\nmax_step_cuts = -1\n",
                 "contact_solver.max_step_cuts", "expected an integer in [0, 20], got -1"},
         InputErrorCase{"MaxStepCutsTooMany", kTwoBodies + "[contact_solver]\nmax_step_cuts = 21\n",

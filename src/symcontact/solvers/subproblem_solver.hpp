@@ -1,0 +1,36 @@
+#pragma once
+/// \file subproblem_solver.hpp
+/// The choice of the method that solves each geometry iteration's subproblem (subproblem.hpp), and its names
+/// in the problem file ([contact_solver] subproblem_solver, docs/input.md).
+
+#include <optional>
+#include <string>
+
+namespace symcontact {
+
+/// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
+/// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
+/// without friction terms; any other subproblem is solved by the primal whatever the choice.
+enum class SubproblemSolver {
+  /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
+  /// factorisation at each of its iterations (primal_subproblem.hpp).
+  kPrimalIpopt,
+  /// The dual in the m contact multipliers with bounds, its Hessian formed once per geometry iteration, by
+  /// IPOPT (MUMPS factorising the dense matrix as a sparse one: about 3 times the time of the interior point
+  /// and 10 m² doubles of workspace); the displacements follow exactly from the multipliers, forces balanced
+  /// with no optimiser error (dual_subproblem.hpp). Falls back to the primal when IPOPT fails.
+  kDualIpopt,
+  /// The dual by the dense interior point of dense_qp_interior_point.hpp (one LAPACK Cholesky of the m × m
+  /// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance too) where the rows are
+  /// independent (no symmetric pair, no self-contact: the dual's λ is unique); by IPOPT otherwise, and
+  /// where it fails.
+  kDualInteriorPoint,
+};
+
+/// The problem file's name of a choice: "primal_ipopt", "dual_ipopt", "dual_interior_point".
+const char* subproblem_solver_name(SubproblemSolver s);
+
+/// The choice named `name` in the problem file; nullopt for any other string.
+std::optional<SubproblemSolver> parse_subproblem_solver(const std::string& name);
+
+}  // namespace symcontact
