@@ -71,4 +71,14 @@ std::vector<ResultTable::Value> problem_run_values(const ProblemRun& run, const 
 /// The legend printed above such a table.
 extern const char* const kProblemRunLegend;
 
+/// The columns of a sweep of one problem over element sizes: "case", "h" (printed with `h_precision`
+/// digits), problem_run_columns(), the peak RSS of the floor (VmHWM reset before it, the solved model
+/// still in memory), then the case's own `tail`.
+std::vector<ResultTable::Column> problem_sweep_columns(int h_precision, const std::vector<ResultTable::Column>& tail);
+/// Measures the floor of `run` (measure_problem_floor, min of `repeat`) and adds the row of
+/// problem_sweep_columns() to `table`: `name`, `h`, problem_run_values(), the floor's peak RSS, then `tail`.
+void add_problem_sweep_row(ResultTable& table, const std::string& name, double h, const ProblemRun& run,
+                           double peak_rss, const std::vector<ResultTable::Value>& tail, int repeat,
+                           const MachineInfo& machine);
+
 }  // namespace symcontact::bench
