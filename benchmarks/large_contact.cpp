@@ -253,7 +253,7 @@ void run_large_contact_sweep(const LargeContactBenchOptions& opt, const MachineI
             << "# h: problem.mesh_size; floor RSS: peak RSS of the floor; Rt/Rn: |tangential / normal| reaction of "
             << files.moved_body << " at the last step" << (files.gross_slip && coulomb ? ", err against mu" : "") << "\n"
             << kProblemRunLegend;
-  ResultTable table(problem_sweep_columns(4, {{"reaction_ratio", "Rt/Rn", Kind::kFixed, 6},
+  ResultTable table(problem_sweep_columns(5, {{"reaction_ratio", "Rt/Rn", Kind::kFixed, 6},
                                               {"reaction_ratio_error_pct", "err [%]", Kind::kFixed, 3}}),
                     std::cout, opt.markdown);
   if (!opt.csv.empty()) table.write_csv(opt.csv);
@@ -274,10 +274,12 @@ void run_large_contact_sweep(const LargeContactBenchOptions& opt, const MachineI
       const double error = closed_form ? 100 * (ratio / kMu - 1) : std::numeric_limits<double>::quiet_NaN();
       add_problem_sweep_row(table, name, h, *run, peak_contact, {ratio, error}, opt.repeat, machine);
     } catch (const SolveError& e) {
-      std::cout << "# h = " << h << ": FAILED: " << e.what() << "\n" << std::flush;
-      if (first_failure.empty()) first_failure = "h = " + std::to_string(h) + ": " + e.what();
+      std::ostringstream at;
+      at << "h = " << std::defaultfloat << std::setprecision(6) << h << ": " << e.what();
+      std::cout << "# " << at.str() << ": FAILED\n" << std::flush;
+      if (first_failure.empty()) first_failure = at.str();
     } catch (const FactorTooLarge& e) {
-      std::cout << "# stopped at h = " << h << ": " << e.what() << "\n";
+      std::cout << "# stopped at h = " << std::defaultfloat << std::setprecision(6) << h << ": " << e.what() << "\n";
       break;
     }
   }

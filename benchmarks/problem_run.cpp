@@ -52,8 +52,14 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
     const double t0 = wall_seconds();
     StepFigures f;
     if (contact) {
-      const FrictionalReport rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u,
-                                                            opt, log, step > 0 ? &previous : nullptr);
+      FrictionalReport rep;
+      try {
+        rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u, opt, log,
+                                       step > 0 ? &previous : nullptr);
+      } catch (const SolveError& e) {
+        throw SolveError("load step " + std::to_string(step + 1) + " of " + std::to_string(run->steps) + " (" +
+                         std::to_string(dofs.num_dofs()) + " DOFs): " + e.what());
+      }
       previous = rep.friction;
       run->times.merge(rep.times);
       f.contact_solves = 1 + rep.coulomb_iterations;

@@ -52,7 +52,8 @@ struct ProblemRun {
 };
 
 /// Solves every load step of the problem in `toml` (`file_name` names it in messages; relative mesh
-/// paths resolve against `base_dir`). Throws what the library throws (InputError, SolveError).
+/// paths resolve against `base_dir`). Throws what the library throws (InputError, SolveError; the latter
+/// with "load step k of n (N DOFs): " put before its message).
 std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::string& file_name,
                                           const std::string& base_dir);
 
