@@ -12,8 +12,8 @@
 ///    (3D). The whole bottom face is in contact from the first step and slides in the last two: in gross
 ///    slip the top's reaction has |R_t / R_n| = μ exactly, which the table checks.
 ///  - pad-ball: the same pad pressed by 0.03 in four steps onto a rigid sphere (2D: a cylinder) of radius 1
-///    touching its bottom at the origin, so that the contact zone grows from a point to a disk of radius
-///    about 0.2 (a quarter of the face), then dragged along x by 0.05 in two more steps.
+///    touching its bottom at the origin, so that the contact zone grows from a point step by step, then
+///    dragged along x by 0.05 in two more steps.
 ///  - clamped-plates: two plates [−½, ½]² × [0, 0.2] and [−½, ½]² × [−0.2, 0] with a hole of radius 0.1 through
 ///    both, in contact over their whole common face (a symmetric pair, non-matching only where Gmsh makes it
 ///    so), held like a bolted joint: the lower plate's bottom annulus 0.1 ≤ r ≤ 0.2 (the washer) clamped,
