@@ -115,12 +115,15 @@ int case_dimension(LargeContactCase c) {
 /// The [[contact]] table of surface `a`; its friction lines are added by problem_text().
 std::string contact_pair(const std::string& a) { return "[[contact]]\nname = \"interface\"\na = \"" + a + "\"\n"; }
 
-CaseFiles pad_case(int dim, bool ball) {
+/// What the pad is pressed onto.
+enum class PadObstacle { kPlane, kBall };
+
+CaseFiles pad_case(int dim, PadObstacle obstacle) {
   CaseFiles f;
   f.moved_body = "pad";
   f.geo = {{"pad.geo", pad_geo(dim)}};
   const char* plane = dim == 2 ? "plane strain" : "3D";
-  if (!ball) {
+  if (obstacle == PadObstacle::kPlane) {
     f.description = std::string("pad on a rigid plane, ") + plane +
                     ", P1, Coulomb mu = 0.3; 4 load steps (2 press 0.005, 2 drag 0.02): the whole bottom face in "
                     "contact, sliding in the last two (|Rt/Rn| = mu expected)";
@@ -161,9 +164,9 @@ CaseFiles case_files(LargeContactCase c) {
   const int dim = case_dimension(c);
   switch (c) {
     case LargeContactCase::kPadFlat:
-    case LargeContactCase::kPadFlat2d: return pad_case(dim, false);
+    case LargeContactCase::kPadFlat2d: return pad_case(dim, PadObstacle::kPlane);
     case LargeContactCase::kPadBall:
-    case LargeContactCase::kPadBall2d: return pad_case(dim, true);
+    case LargeContactCase::kPadBall2d: return pad_case(dim, PadObstacle::kBall);
     case LargeContactCase::kClampedPlates:
     case LargeContactCase::kClampedPlates2d: return plates_case(dim);
   }
