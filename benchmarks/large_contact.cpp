@@ -125,8 +125,8 @@ CaseFiles pad_case(int dim, PadObstacle obstacle) {
   const char* plane = dim == 2 ? "plane strain" : "3D";
   if (obstacle == PadObstacle::kPlane) {
     f.description = std::string("pad on a rigid plane, ") + plane +
-                    ", P1, Coulomb mu = 0.3; 4 load steps (2 press 0.005, 2 drag 0.02): the whole bottom face in "
-                    "contact, sliding in the last two (|Rt/Rn| = mu expected)";
+                    ", P1; 4 load steps (2 press 0.005, 2 drag 0.02): the whole bottom face in contact, sliding "
+                    "in the last two";
     f.gross_slip = true;
     f.toml = "[steps]\nload_factors = [0.5, 1.0, 1.0, 1.0]\n\n" +
              moved_body(dim, "pad", "pad.geo", "top", 0.005, 0.02, {0.0, 0.0, 0.5, 1.0}) + contact_pair("pad.bottom") +
@@ -135,7 +135,7 @@ CaseFiles pad_case(int dim, PadObstacle obstacle) {
     return f;
   }
   f.description = std::string("pad on a rigid ") + (dim == 2 ? "cylinder" : "sphere") + " of radius 1, " + plane +
-                  ", P1, Coulomb mu = 0.3; 6 load steps (4 press 0.03: the zone grows, 2 drag 0.05)";
+                  ", P1; 6 load steps (4 press 0.03: the zone grows, 2 drag 0.05)";
   f.toml = "[steps]\nload_factors = [0.25, 0.5, 0.75, 1.0, 1.0, 1.0]\n\n" +
            moved_body(dim, "pad", "pad.geo", "top", 0.03, 0.05, {0.0, 0.0, 0.0, 0.0, 0.5, 1.0}) +
            contact_pair("pad.bottom") + "[contact.obstacle]\ntype = \"" + (dim == 2 ? "circle" : "sphere") +
@@ -148,8 +148,8 @@ CaseFiles plates_case(int dim) {
   f.moved_body = "upper";
   f.geo = {{"upper.geo", plate_geo(dim, 0.0)}, {"lower.geo", plate_geo(dim, -0.2)}};
   f.description = std::string("two plates with a hole, ") + (dim == 2 ? "plane-strain section" : "3D") +
-                  ", P1, symmetric pair, Coulomb mu = 0.3; lower washer clamped, upper washer pressed 0.002 (2 "
-                  "steps), then moved 5e-4 along x (2 steps)";
+                  ", P1, symmetric pair; lower washer clamped, upper washer pressed 0.002 (2 steps), then moved "
+                  "5e-4 along x (2 steps)";
   std::ostringstream lower;
   lower << "[[body]]\nname = \"lower\"\nmesh = \"lower.geo\"\ngroup = \"solid\"\nmaterial = { E = 1.0, nu = 0.3 }\n"
         << "[[body.dirichlet]]\nboundary = \"washer_bottom\"\nux = 0.0\nuy = 0.0\n" << (dim == 3 ? "uz = 0.0\n" : "")
@@ -250,11 +250,11 @@ void run_large_contact_sweep(const LargeContactBenchOptions& opt, const MachineI
   const std::string name = large_contact_name(opt.which);
   const CaseFiles files = case_files(opt.which);
   const bool coulomb = opt.friction == LargeContactFriction::kCoulomb;
-  std::cout << "\n## " << name << ": " << files.description << (coulomb ? "" : "; here FRICTIONLESS")
+  std::cout << "\n## " << name << ": " << files.description << (coulomb ? "; Coulomb mu = 0.3" : "; frictionless")
             << "; floor phases min of " << opt.repeat
             << " run(s), contact solves once\n"
             << "# h: problem.mesh_size; floor RSS: peak RSS of the floor; Rt/Rn: |tangential / normal| reaction of "
-            << files.moved_body << " at the last step" << (files.gross_slip && coulomb ? ", err against mu" : "") << "\n"
+            << files.moved_body << " at the last step" << (files.gross_slip && coulomb ? ", err against mu (gross slip)" : "") << "\n"
             << kProblemRunLegend;
   ResultTable table(problem_sweep_columns(5, {{"reaction_ratio", "Rt/Rn", Kind::kFixed, 6},
                                               {"reaction_ratio_error_pct", "err [%]", Kind::kFixed, 3}}),
