@@ -36,9 +36,9 @@
 /// `pad-flat`, `pad-ball`, `clamped-plates` and their 2D analogues `pad-flat-2d`, `pad-ball-2d`,
 /// `clamped-plates-2d` have a contact zone that is a whole face: a pad pressed onto a rigid plane, resp. a
 /// rigid sphere, and dragged; two plates with a hole pressed together by their washers and sheared; all
-/// with Coulomb friction μ = 0.3 over 4 to 6 load steps (large_contact.hpp), at the element sizes --h
-/// (default: a ladder from about 1e4 DOFs whose sizes each take a couple of minutes at most; --large the
-/// larger sizes), against the same floor:
+/// with Coulomb friction μ = 0.3 over 4 to 6 load steps (large_contact.hpp; --frictionless: without), at the
+/// element sizes --h (default: sizes that each take a couple of minutes at most, 1e4 to 3e5 DOFs in 2D, 1e3
+/// to 8e3 in 3D; --large the larger sizes), against the same floor:
 ///
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case pad-flat --csv pad-flat.csv
 ///
@@ -55,7 +55,8 @@
 ///
 /// `suite` runs, in ONE run, every contact case at its default sizes, one after the other: hertz2d,
 /// hertz2d-cylinders, inclined, hertz3d, hertz2d-freefem (which skips FreeFEM with a message when it is
-/// absent), pad-flat-2d, pad-ball-2d, clamped-plates-2d, pad-flat, pad-ball and clamped-plates, printing each table as it goes; --csv PREFIX writes one file PREFIX<case>.csv per case
+/// absent), pad-flat-2d, pad-ball-2d, clamped-plates-2d, pad-flat, pad-ball and clamped-plates, printing
+/// each table as it goes; --csv PREFIX writes one file PREFIX<case>.csv per case
 /// (e.g. results/suite-hertz3d.csv for --csv results/suite-). A case that fails is reported and the suite
 /// goes on (the exit code says so); --h is refused. At the default sizes it goes to about 1e6 DOFs in 2D,
 /// so the largest sizes dominate its run time:

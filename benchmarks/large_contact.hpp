@@ -57,8 +57,9 @@ struct LargeContactBenchOptions {
   bool keep_work = false; ///< keep the temporary directory with the .geo and .toml files
 };
 
-/// The ladder of h of each case, from about 1e4 DOFs up: by default sizes that each take at most a couple
-/// of minutes on two cores, with `large` (--large) the larger ones beyond them.
+/// The ladder of h of each case: by default sizes that each take at most a couple of minutes on two cores
+/// (2D: about 1e4 to 3e5 DOFs; 3D: 1e3 to 8e3, the contact solve of a whole face at 1e4 DOFs taking 1.5 to 7
+/// minutes), with `large` (--large) the larger ones beyond them.
 std::vector<double> default_large_contact_sizes(LargeContactCase c, bool large = false);
 
 /// Runs the sweep, printing the table as rows finish. A size whose solve fails (SolveError) is reported
