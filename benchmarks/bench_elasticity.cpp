@@ -33,6 +33,15 @@
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025
 ///
+/// `pad-flat`, `pad-ball`, `clamped-plates` and their 2D analogues `pad-flat-2d`, `pad-ball-2d`,
+/// `clamped-plates-2d` have a contact zone that is a whole face: a pad pressed onto a rigid plane, resp. a
+/// rigid sphere, and dragged; two plates with a hole pressed together by their washers and sheared; all
+/// with Coulomb friction μ = 0.3 over 4 to 6 load steps (large_contact.hpp; --frictionless: without), at the
+/// element sizes --h (default: sizes that each take a couple of minutes at most, 1e4 to 3e5 DOFs in 2D, 1e3
+/// to 8e3 in 3D; --large the larger sizes), against the same floor:
+///
+///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case pad-flat --csv pad-flat.csv
+///
 /// `hertz2d-freefem` solves the peers' Hertz quarter model (../shared/peers, hertz_quarter.geo) on the same
 /// .msh with symcontact and with FreeFEM + ff-Ipopt, side by side, at the sizes --h (default 0.005
 /// 0.0025 0.00125), against the same floor (freefem_peer.hpp); without FreeFEM the FreeFEM columns are skipped:
@@ -45,8 +54,9 @@
 ///   symcontact-bench --case problem --problem examples/ironing_2d/ironing.toml --steps-csv steps.csv
 ///
 /// `suite` runs, in ONE run, every contact case at its default sizes, one after the other: hertz2d,
-/// hertz2d-cylinders, inclined, hertz3d and hertz2d-freefem (which skips FreeFEM with a message when it is
-/// absent), printing each table as it goes; --csv PREFIX writes one file PREFIX<case>.csv per case
+/// hertz2d-cylinders, inclined, hertz3d, hertz2d-freefem (which skips FreeFEM with a message when it is
+/// absent), pad-flat-2d, pad-ball-2d, clamped-plates-2d, pad-flat, pad-ball and clamped-plates, printing
+/// each table as it goes; --csv PREFIX writes one file PREFIX<case>.csv per case
 /// (e.g. results/suite-hertz3d.csv for --csv results/suite-). A case that fails is reported and the suite
 /// goes on (the exit code says so); --h is refused. At the default sizes it goes to about 1e6 DOFs in 2D,
 /// so the largest sizes dominate its run time:
@@ -77,6 +87,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -87,6 +98,7 @@
 #include "bench_support.hpp"
 #include "elastic_block.hpp"
 #include "freefem_peer.hpp"
+#include "large_contact.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/mesh/cell_type.hpp"
 
@@ -141,8 +153,9 @@ struct Options {
   bool no_condense = false;
   bool no_dual = false;
   bool dual_ipopt = false;
-  bool large = false;            ///< hertz3d: the large sweep (2e5, 4e5, 1e6 DOFs)
+  bool large = false;            ///< hertz3d and the large-contact cases: the large sweep
   bool check_only = false;       ///< Hertz cases: mesh and check the memory of each size, solve none
+  bool frictionless = false;     ///< large-contact cases: no friction, to compare
   double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
@@ -210,7 +223,9 @@ double sweep(int dim, const Options& opt, const MachineInfo& machine, bool appen
 }
 
 /// The contact cases --case suite runs, in this order.
-const std::vector<std::string> kSuiteCases = {"hertz2d", "hertz2d-cylinders", "inclined", "hertz3d", "hertz2d-freefem"};
+const std::vector<std::string> kSuiteCases = {"hertz2d",        "hertz2d-cylinders", "inclined",     "hertz3d",
+                                              "hertz2d-freefem", "pad-flat-2d",       "pad-ball-2d",  "clamped-plates-2d",
+                                              "pad-flat",        "pad-ball",          "clamped-plates"};
 
 /// One contact benchmark (every --case but elasticity, problem and suite) at the sizes `h` (its default
 /// ladder when empty), its table printed as rows finish and written to `csv` when not empty.
@@ -231,6 +246,14 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     c.freefem_tol = opt.freefem_tol;
     c.skip_freefem = opt.skip_freefem;
     run_freefem_sweep(c, machine);
+    return;
+  }
+  if (const std::optional<LargeContactCase> which = large_contact_case(name)) {
+    LargeContactBenchOptions c;
+    common(c, default_large_contact_sizes(*which, opt.large));
+    c.which = *which;
+    c.friction = opt.frictionless ? LargeContactFriction::kNone : LargeContactFriction::kCoulomb;
+    run_large_contact_sweep(c, machine);
     return;
   }
   if (name == "inclined") {
@@ -306,14 +329,19 @@ int main(int argc, char** argv) {
                "symcontact-bench"};
   app.add_option("--case", opt.bench_case,
                  "elasticity (default), hertz2d, hertz2d-cylinders, hertz2d-freefem, hertz3d, hertz3d-spheres, "
-                 "inclined, problem, or suite (every contact case at its default sizes)")
+                 "inclined, pad-flat, pad-ball, clamped-plates, pad-flat-2d, pad-ball-2d, clamped-plates-2d, problem, "
+                 "or suite (every contact case at its default sizes: hertz2d, hertz2d-cylinders, inclined, hertz3d, "
+                 "hertz2d-freefem, pad-flat-2d, pad-ball-2d, clamped-plates-2d, pad-flat, pad-ball, clamped-plates)")
       ->check(CLI::IsMember({"elasticity", "hertz2d", "hertz2d-cylinders", "hertz2d-freefem", "hertz3d",
-                             "hertz3d-spheres", "inclined", "problem", "suite"}));
+                             "hertz3d-spheres", "inclined", "pad-flat", "pad-ball", "clamped-plates", "pad-flat-2d",
+                             "pad-ball-2d", "clamped-plates-2d", "problem", "suite"}));
   app.add_option("--h", opt.h,
                  "Hertz cases: fine mesh sizes near the contact point (default hertz2d 0.003 0.0015 0.00085 0.0006 "
                  "0.0004 0.00027, hertz2d-cylinders the same without the last, hertz3d 0.04 0.02 0.01 0.007 0.005, "
                  "hertz3d-spheres 0.04 0.02 0.014); inclined: element sizes (default 0.025 0.0125 0.00625 0.003125 0.0015625); "
-                 "hertz2d-freefem: sizes of the peers' mesh (default 0.005 0.0025 0.00125)")
+                 "hertz2d-freefem: sizes of the peers' mesh (default 0.005 0.0025 0.00125); pad-flat, pad-ball, "
+                 "clamped-plates and their -2d analogues: element sizes (problem.mesh_size; defaults in "
+                 "docs/performance.md)")
       ->check(CLI::PositiveNumber);
   app.add_option("--examples", opt.examples,
                  "contact: the examples/ folder holding hertz_2d/, hertz_3d/ and inclined_2d/")
@@ -324,7 +352,10 @@ int main(int argc, char** argv) {
   app.add_flag("--large", opt.large,
                "hertz3d: the large sweep h = 0.0045 0.0035 0.0028 0.0025 (2.0e5, 4.1e5, 7.8e5, 1.1e6 DOFs) instead of "
                "the default ladder: hours; a size that does not fit in memory stops the sweep (on 24 GiB, 1.1e6 "
-               "does not: the floor's own factor is 22 GiB)");
+               "does not: the floor's own factor is 22 GiB); pad-flat, pad-ball, clamped-plates and their -2d "
+               "analogues: the sizes beyond the default ladder (docs/performance.md)");
+  app.add_flag("--frictionless", opt.frictionless,
+               "pad-flat, pad-ball, clamped-plates and their -2d analogues: the same problems without friction");
   app.add_flag("--check-only", opt.check_only,
                "Hertz cases: mesh each size and print its DOFs, predicted factor and whether it fits in memory; "
                "solve none");

@@ -18,11 +18,8 @@ namespace {
 using Kind = ResultTable::Kind;
 
 std::vector<ResultTable::Column> columns() {
-  std::vector<ResultTable::Column> c = {{"case", "", Kind::kText, 0}, {"h", "h", Kind::kFixed, 4}};
-  for (auto& col : problem_run_columns()) c.push_back(col);
-  c.push_back({"reaction_ratio", "Rx/Ry ratio", Kind::kFixed, 6});
-  c.push_back({"reaction_ratio_error_pct", "err [%]", Kind::kFixed, 3});
-  return c;
+  return problem_sweep_columns(4, {{"reaction_ratio", "Rx/Ry ratio", Kind::kFixed, 6},
+                                   {"reaction_ratio_error_pct", "err [%]", Kind::kFixed, 3}});
 }
 
 }  // namespace
@@ -46,14 +43,8 @@ void run_inclined_sweep(const InclinedBenchOptions& opt, const MachineInfo& mach
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
     const auto run = solve_inclined(h, opt.examples_dir, work);
     const double peak_contact = peak_rss_mib();
-    Index floor_free = 0;
-    const CholeskyFloor floor = measure_problem_floor(*run->problem, opt.repeat, floor_free);
-    std::vector<ResultTable::Value> row = {"inclined", h};
-    for (auto& v : problem_run_values(*run->problem, floor, floor_free, peak_contact, opt.repeat, machine))
-      row.push_back(v);
-    row.push_back(run->ratio);
-    row.push_back(100 * (run->ratio / exact - 1));
-    table.add_row(row);
+    add_problem_sweep_row(table, "inclined", h, *run->problem, peak_contact, {run->ratio, 100 * (run->ratio / exact - 1)},
+                          opt.repeat, machine);
   }
   finish_sweep("inclined", t_sweep, rss_reset_ok, "meshing + setup + the contact solves", work, opt.keep_work);
 }

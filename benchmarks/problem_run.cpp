@@ -52,8 +52,14 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
     const double t0 = wall_seconds();
     StepFigures f;
     if (contact) {
-      const SolveReport rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u,
-                                                       opt, log, step > 0 ? &previous : nullptr);
+      SolveReport rep;
+      try {
+        rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u, opt, log,
+                                       step > 0 ? &previous : nullptr);
+      } catch (const SolveError& e) {
+        throw SolveError("load step " + std::to_string(step + 1) + " of " + std::to_string(run->steps) + " (" +
+                         std::to_string(dofs.num_dofs()) + " DOFs): " + e.what());
+      }
       previous = rep.friction_state;
       run->times.merge(rep.times);
       f.contact_solves = 1 + rep.coulomb_iterations;
@@ -178,6 +184,28 @@ std::vector<ResultTable::Value> problem_run_values(const ProblemRun& run, const 
           run.solve_cpu, floor.cpu_factor_and_solve, run.solve_cpu / floor.cpu_factor_and_solve, floor.nnz_factor,
           floor.relative_residual, run.ipopt_status, static_cast<double>(repeat),
           static_cast<double>(machine.openblas_threads)};
+}
+
+std::vector<ResultTable::Column> problem_sweep_columns(int h_precision, const std::vector<ResultTable::Column>& tail) {
+  std::vector<ResultTable::Column> c = {{"case", "", Kind::kText, 0}, {"h", "h", Kind::kFixed, h_precision}};
+  for (auto& col : problem_run_columns()) c.push_back(col);
+  c.push_back({"peak_rss_floor_mib", "floor RSS [MiB]", Kind::kInteger, 0});
+  c.insert(c.end(), tail.begin(), tail.end());
+  return c;
+}
+
+void add_problem_sweep_row(ResultTable& table, const std::string& name, double h, const ProblemRun& run,
+                           double peak_rss, const std::vector<ResultTable::Value>& tail, int repeat,
+                           const MachineInfo& machine) {
+  Index floor_free = 0;
+  reset_peak_rss();  // when refused, the caller's sweep says that peak RSS is monotone
+  const CholeskyFloor floor = measure_problem_floor(run, repeat, floor_free);
+  const double peak_floor = peak_rss_mib();
+  std::vector<ResultTable::Value> row = {name, h};
+  for (auto& v : problem_run_values(run, floor, floor_free, peak_rss, repeat, machine)) row.push_back(v);
+  row.push_back(peak_floor);
+  row.insert(row.end(), tail.begin(), tail.end());
+  table.add_row(row);
 }
 
 }  // namespace symcontact::bench

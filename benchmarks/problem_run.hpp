@@ -52,7 +52,8 @@ struct ProblemRun {
 };
 
 /// Solves every load step of the problem in `toml` (`file_name` names it in messages; relative mesh
-/// paths resolve against `base_dir`). Throws what the library throws (InputError, SolveError).
+/// paths resolve against `base_dir`). Throws what the library throws (InputError, SolveError; the latter
+/// with "load step k of n (N DOFs): " put before its message).
 std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::string& file_name,
                                           const std::string& base_dir);
 
@@ -70,5 +71,15 @@ std::vector<ResultTable::Value> problem_run_values(const ProblemRun& run, const 
                                                    double peak_rss, int repeat, const MachineInfo& machine);
 /// The legend printed above such a table.
 extern const char* const kProblemRunLegend;
+
+/// The columns of a sweep of one problem over element sizes: "case", "h" (printed with `h_precision`
+/// digits), problem_run_columns(), the peak RSS of the floor (VmHWM reset before it, the solved model
+/// still in memory), then the case's own `tail`.
+std::vector<ResultTable::Column> problem_sweep_columns(int h_precision, const std::vector<ResultTable::Column>& tail);
+/// Measures the floor of `run` (measure_problem_floor, min of `repeat`) and adds the row of
+/// problem_sweep_columns() to `table`: `name`, `h`, problem_run_values(), the floor's peak RSS, then `tail`.
+void add_problem_sweep_row(ResultTable& table, const std::string& name, double h, const ProblemRun& run,
+                           double peak_rss, const std::vector<ResultTable::Value>& tail, int repeat,
+                           const MachineInfo& machine);
 
 }  // namespace symcontact::bench
