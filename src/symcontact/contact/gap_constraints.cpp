@@ -82,12 +82,13 @@ GapConstraints assemble_gap_constraints(const ContactSurface& slave, const Conta
     }
   }
   flush();
-  // 3D: a row whose support Σ w φ_i is not positive has the wrong sign. With P2 test functions (negative
-  // in parts of a facet) a node whose facets are only partly integrated — cut by the border of the master
-  // (the search distance selects whole facets, contact_points.hpp) — can get g_i = (negative weight) ×
-  // (a positive gap) < 0: a violated constraint where nothing touches. Such rows are left out. 2D keeps them (Line3 facets cut at a master end give such rows
-  // too, test_gap_constraints.cpp PartialOverlap…; 2D behaviour is left unchanged).
-  if (slave.dim != 3) return g;
+  // A row whose support Σ w φ_i is not positive has the wrong sign. With P2 test functions (negative
+  // in parts of a facet) a node whose facets are only partly integrated — cut by the end or border of
+  // the master, or, in self-contact, where the surface stops facing itself (the search distance selects
+  // whole facets, contact_points.hpp) — can get g_i = (negative weight) × (a positive gap) < 0: a
+  // violated constraint where nothing touches, which the solver can only meet by closing a gap that is
+  // wide open (on a Line3 facet integrated over ξ ∈ [0, s], ∫ N_end = s²(4s − 3)/6 < 0 for s < 3/4).
+  // Such rows are left out; the other nodes of the facet keep theirs.
   std::vector<Index> keep(g.num_rows(), -1);
   Index kept = 0;
   for (Index r = 0; r < g.num_rows(); ++r)

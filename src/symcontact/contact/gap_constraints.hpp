@@ -9,7 +9,7 @@
 /// one row per slave surface node i with at least one contributing point. φ_i are the test functions of
 /// contact_surface.hpp: the trace shape functions N_i, except on Tri6 facets (a modified quadratic basis
 /// whose every function integrates positively). g(u) = A u + b with A in global DOF numbering.
-/// In 3D, rows whose support Σ_q w_q φ_i(ξ_q) is not positive (partly integrated P2 facets) are left out.
+/// Rows whose support Σ_q w_q φ_i(ξ_q) is not positive (partly integrated P2 facets) are left out.
 
 #include <vector>
 
