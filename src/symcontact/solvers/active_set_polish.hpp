@@ -12,10 +12,8 @@
 /// Nocedal & Wright, Numerical Optimization, 2006, §17.3): with M = H + ρ A_Sᵀ A_S factorised by CHOLMOD,
 ///     M Δx = −(∇f(x) − A_Sᵀ μ_S) − ρ A_Sᵀ c_S(x),   x ← x + Δx,   μ_S ← μ_S − ρ c_S(x),
 /// which converges whatever the rank of A_S (dependent rows get some split of the multiplier; A_Sᵀμ_S,
-/// the contact force, is unique). For a non-quadratic f (friction) the closing ends with Newton steps that
-/// hold A_S x + b_S at the values it reached, solved directly (range space): the large ρ and the friction
-/// term's curvature leave the method of multipliers off stationarity by far more than round-off. With no
-/// active constraint it is plain Newton on f (removing the optimiser's stationarity error). The polished point is accepted only if it is a KKT point of the
+/// the contact force, is unique). With no active constraint it is plain Newton on f (removing the
+/// optimiser's stationarity error). The polished point is accepted only if it is a KKT point of the
 /// inequality problem: μ_S ≥ 0 (up to round-off) and no other constraint violated; otherwise the IPOPT
 /// point is kept.
 

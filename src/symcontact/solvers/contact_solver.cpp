@@ -180,7 +180,8 @@ GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs
       workspace_(options.workspace ? options.workspace : std::make_shared<ContactWorkspace>()),
       factorisations_at_start_(workspace_->factorisations), dual_(dual_method(contacts, options.subproblem_solver)),
       polish_(options.polish, *workspace_,
-              options.geometry_acceleration > 0 && energy.hessian_is_constant() ? options.geometry_acceleration : 0),
+              options.geometry_acceleration > 0 && energy.hessian_is_constant() ? options.geometry_acceleration : 0,
+              energy.hessian_is_constant() ? BodiesEnergy::kQuadratic : BodiesEnergy::kNonQuadratic),
       inexact_(options.loose_geometry_tolerance > options.geometry_tolerance),
       stop_tolerance_(inexact_ ? options.loose_geometry_tolerance : options.geometry_tolerance),
       ipopt_(options.ipopt) {

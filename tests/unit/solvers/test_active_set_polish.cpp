@@ -205,23 +205,32 @@ class StickingFriction : public ConstrainedProblem {
 
 }  // namespace
 
-// Closing the active set of a non-quadratic f whose friction term sticks: the polished point is closed and
-// stationary to round-off (‖∇f − Aᵀμ‖∞ at the level of ε times the forces), not only to the accuracy of the
-// method of multipliers, whose ρ scales with the friction curvature.
-TEST(ActiveSetPolish, ClosingWithAStickingFrictionTermBalancesForcesToRoundOff) {
+// Closing the active set of a non-quadratic f whose friction term sticks, then balancing forces on the closed
+// point (what the polish strategy does at the end of a fixed point): closed, and stationary to round-off
+// (‖∇f − Aᵀμ‖∞ at the level of ε times the forces), which the closing alone is not: its method of multipliers
+// has a ρ scaled by the friction curvature.
+TEST(ActiveSetPolish, ClosingThenBalancingWithAStickingFrictionTermIsStationaryToRoundOff) {
   StickingFriction p;
   VectorXd x(4), mu(1);
   x << 1e-8, 0.4, 1e-9, -1e-9;  // an interior point's kind of answer: x_0 open by a barrier offset
   mu << 1.5;
-  const PolishResult r = polish_active_set(p, x, mu, PolishMode::kClose);
-  ASSERT_TRUE(r.applied) << r.reason;
-  EXPECT_EQ(r.active, 1);
+  const PolishResult closed = polish_active_set(p, x, mu, PolishMode::kClose);
+  ASSERT_TRUE(closed.applied) << closed.reason;
+  EXPECT_EQ(closed.active, 1);
   EXPECT_LE(std::abs(x[0]), 1e-14);
-  VectorXd g;
-  p.gradient(x, g);
+  auto stationarity = [&] {
+    VectorXd g;
+    p.gradient(x, g);
+    return (g - p.constraint_matrix().transpose() * mu).lpNorm<Eigen::Infinity>();
+  };
   const double force = (p.constraint_matrix().transpose() * mu).lpNorm<Eigen::Infinity>();
   ASSERT_GT(force, 0.1);
-  EXPECT_LE((g - p.constraint_matrix().transpose() * mu).lpNorm<Eigen::Infinity>(), 1e-13 * force);
+  const double after_closing = stationarity();
+  const PolishResult balanced = polish_active_set(p, x, mu, PolishMode::kBalanceForces);
+  ASSERT_TRUE(balanced.applied) << balanced.reason;
+  EXPECT_LE(std::abs(x[0]), 1e-14) << "the closed value is held";
+  EXPECT_LE(stationarity(), 1e-13 * force);
+  EXPECT_GT(after_closing, 10 * stationarity()) << "the balance is what brought it to round-off";
   EXPECT_LT(std::abs(x[2]), 1e-6);  // sticks
   EXPECT_LT(std::abs(x[3]), 1e-6);
 }
