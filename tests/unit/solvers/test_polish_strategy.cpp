@@ -78,25 +78,18 @@ TEST(PolishStrategy, ClosingRemovesTheBarrierOffset) {
 // at the end of the fixed point (the closing's method of multipliers leaves a stationarity error where friction
 // sticks); with finite-strain bodies it is not.
 TEST(PolishStrategy, AFrictionalClosingOnLinearElasticBodiesIsForceBalancedAtTheEnd) {
-  {
+  for (const BodiesEnergy bodies : {BodiesEnergy::kQuadratic, BodiesEnergy::kNonQuadratic}) {
     ContactWorkspace ws;
-    PolishStrategy finite_strain(true, ws, 0, BodiesEnergy::kNonQuadratic);
+    PolishStrategy polish(true, ws, 0, bodies);
     Projection frictional(false);
     IpoptResult r = interior_point_answer();
     PhaseTimes times;
-    EXPECT_TRUE(finite_strain.polish_primal(frictional, r, quiet(), times));
-    EXPECT_FALSE(finite_strain.balance_deferred());
+    EXPECT_TRUE(polish.polish_primal(frictional, r, quiet(), times));
+    EXPECT_NEAR(r.x[0], 0.0, 1e-14) << "closed now";
+    EXPECT_EQ(polish.balance_deferred(), bodies == BodiesEnergy::kQuadratic);
+    EXPECT_TRUE(polish.closes()) << "closing goes on";
+    EXPECT_FALSE(ws.closing_polish_rejected);
   }
-  ContactWorkspace ws;
-  PolishStrategy polish(true, ws, 0, BodiesEnergy::kQuadratic);
-  Projection frictional(false);
-  IpoptResult r = interior_point_answer();
-  PhaseTimes times;
-  EXPECT_TRUE(polish.polish_primal(frictional, r, quiet(), times));
-  EXPECT_NEAR(r.x[0], 0.0, 1e-14) << "closed now";
-  EXPECT_TRUE(polish.balance_deferred());
-  EXPECT_TRUE(polish.closes()) << "closing goes on";
-  EXPECT_FALSE(ws.closing_polish_rejected);
 }
 
 TEST(PolishStrategy, DisabledPolishLeavesTheOptimiserPoint) {
