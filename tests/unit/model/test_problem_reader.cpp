@@ -537,13 +537,16 @@ TEST(ProblemReader, MeshObstacle) {
 }
 
 #ifdef SYMCONTACT_TEST_DATA
-/// The ```toml blocks of docs/input.md, in order.
+/// The ```toml blocks of docs/input.md and then docs/friction.md, in order.
 std::vector<std::string> documentation_examples() {
-  std::ifstream in(std::string(SYMCONTACT_TEST_DATA) + "/../../docs/input.md");
-  EXPECT_TRUE(in) << "cannot open docs/input.md";
-  std::stringstream doc;
-  doc << in.rdbuf();
-  const std::string text = doc.str();
+  std::string text;
+  for (const char* page : {"input.md", "friction.md"}) {
+    std::ifstream in(std::string(SYMCONTACT_TEST_DATA) + "/../../docs/" + page);
+    EXPECT_TRUE(in) << "cannot open docs/" << page;
+    std::stringstream doc;
+    doc << in.rdbuf();
+    text += doc.str();
+  }
   std::vector<std::string> blocks;
   for (std::size_t begin = text.find("```toml\n"); begin != std::string::npos;
        begin = text.find("```toml\n", begin + 8)) {
