@@ -37,12 +37,13 @@ SlipColumns point_columns(const ContactSurface& slave, const ContactSurface* mas
 /// into += a · from, entries with the same DOF base merged.
 void add_scaled(std::vector<std::pair<Index, double>>& into, const std::vector<std::pair<Index, double>>& from,
                 double a) {
-  for (const auto& [base, coefficient] : from) {
-    auto it = std::find_if(into.begin(), into.end(), [&](const auto& e) { return e.first == base; });
+  for (const auto& entry : from) {
+    const Index base = entry.first;
+    auto it = std::find_if(into.begin(), into.end(), [base](const auto& e) { return e.first == base; });
     if (it == into.end())
-      into.emplace_back(base, a * coefficient);
+      into.emplace_back(base, a * entry.second);
     else
-      it->second += a * coefficient;
+      it->second += a * entry.second;
   }
 }
 
