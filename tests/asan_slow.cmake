@@ -8,3 +8,12 @@
 #   tests (all run sanitised) do not.
 set_tests_properties("Ironing2D.FrictionalRunsThroughEveryStepWithoutPenetrationOrOscillation"
                      PROPERTIES LABELS "validation;asan_slow")
+#
+# - Hertz3D.TwoElasticSpheresP2: two 10-node-tetrahedron spheres, 385 s sanitised against 38 s in the
+#   Release suite. Hertz3D.SphereOnRigidPlaneP2 runs the same Tri6 facet and P2 assembly paths
+#   sanitised in 6 s.
+# - SelfContact3D.HairpinEqualsHalfModelOnARigidPlane: two full 3D solves, 200 s sanitised against 29 s.
+#   SelfContactFriction3D.AnArmSlidingOnItsOwnBody… runs 3D self-contact detection and assembly
+#   sanitised.
+set_tests_properties("Hertz3D.TwoElasticSpheresP2" "SelfContact3D.HairpinEqualsHalfModelOnARigidPlane"
+                     PROPERTIES LABELS "validation;asan_slow")
