@@ -176,7 +176,13 @@ std::string rescale_problem(const std::string& problem_path, const UnitChange& c
     for_each_table(body, "dirichlet", [&](toml::table& d) {
       for (const char* k : {"ux", "uy", "uz"}) scale_key(d, k, L);
     });
-    for_each_table(body, "traction", [&](toml::table& d) { scale_key(d, "traction", S); });
+    // A resultant or point force: [force] in 3D, [force / length] (per unit thickness) in 2D.
+    const double F = m.dim == 3 ? S * L * L : S * L;
+    for_each_table(body, "traction", [&](toml::table& d) {
+      scale_key(d, "traction", S);
+      scale_key(d, "total_force", F);
+    });
+    for_each_table(body, "point_load", [&](toml::table& d) { scale_key(d, "force", F); });
     for_each_table(body, "pressure", [&](toml::table& d) { scale_key(d, "pressure", S); });
   });
   for_each_table(root, "contact", [&](toml::table& c) {

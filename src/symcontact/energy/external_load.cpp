@@ -82,11 +82,11 @@ VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, co
   return f;
 }
 
-double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral) {
+double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral, int degree) {
   const int D = mesh.dim;
   const CellType ft = mesh.facet_cell_type();
   const int NN = cell_num_nodes(ft);
-  const Tabulation tab = tabulate(ft, simplex_quadrature(D - 1, 2 * cell_order(ft)));
+  const Tabulation tab = tabulate(ft, simplex_quadrature(D - 1, degree + cell_order(ft)));
   Eigen::MatrixXd X(D, NN);
   double x[3], nrm[3], dS, m = 0.0;
   if (normal_integral) normal_integral->setZero(D);
@@ -101,6 +101,13 @@ double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::Vec
     }
   }
   return m;
+}
+
+VectorXd point_load_vector(const DofMap& dofs, int body, const std::vector<Index>& nodes, const double* F) {
+  VectorXd f = VectorXd::Zero(dofs.num_dofs());
+  for (Index a : nodes)
+    for (int i = 0; i < dofs.dim(); ++i) f[dofs.dof(body, a, i)] += F[i];
+  return f;
 }
 
 }  // namespace symcontact

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/dof_map.hpp"
@@ -43,7 +44,15 @@ VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const
 VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, const FacetGroup& group,
                               const TractionFn& t, int degree = 2);
 
-/// Measure (length in 2D, area in 3D) of a facet group, and ∫ n over it.
-double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral = nullptr);
+/// Measure (length in 2D, area in 3D) of a facet group, and ∫ n over it, with the quadrature of
+/// boundary_load_vector() at the same `degree` (degree + facet order): a uniform traction t = F / measure
+/// then has nodal forces summing to F to round-off (Σ_a N_a = 1 at every quadrature point), on curved
+/// (P2) facets too, where the measure itself is only that quadrature's.
+double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral = nullptr,
+                           int degree = 2);
+
+/// f_(a,i) = F_i at every node a of `nodes` (a concentrated force, per unit thickness in 2D): dim
+/// components of F.
+VectorXd point_load_vector(const DofMap& dofs, int body, const std::vector<Index>& nodes, const double* F);
 
 }  // namespace symcontact

@@ -296,7 +296,10 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
           if (local[v] >= 0) nodes.push_back(local[v]);
       std::sort(nodes.begin(), nodes.end());
       nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      if (!nodes.empty()) m.node_groups[g.name] = std::move(nodes);
+      if (!nodes.empty()) {
+        m.node_groups[g.name] = std::move(nodes);
+        m.node_group_dims[g.name] = g.dim;
+      }
     }
   }
   try {

@@ -41,6 +41,9 @@ struct Mesh {
   std::vector<Index> node_tags;  ///< node tag of each node in its mesh file (empty: built in code)
   std::map<std::string, FacetGroup> facet_groups;
   std::map<std::string, std::vector<Index>> node_groups;  ///< physical points (and any node set)
+  /// The dimension of the physical group each node group of a mesh file comes from (0: physical points;
+  /// 1: physical curves in 3D); no entry for a node group built in code.
+  std::map<std::string, int> node_group_dims;
 
   Index num_nodes() const { return x.cols(); }
   int nodes_per_cell() const { return cell_num_nodes(cell_type); }

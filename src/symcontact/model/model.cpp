@@ -39,6 +39,27 @@ const FacetGroup& require_facets(const ProblemSpec& spec, const Body& b, const s
   return it->second;
 }
 
+/// The nodes of the physical point group `group` of body b (Gmsh dimension 0), for a point load.
+const std::vector<Index>& require_points(const ProblemSpec& spec, const Body& b, const std::string& group,
+                                         const std::string& key) {
+  const Mesh& mesh = b.mesh;
+  const std::string where = "body '" + b.name + "' (mesh " + b.spec->mesh_file + ")";
+  if (mesh.facet_groups.count(group))
+    throw InputError(spec.file, key,
+                     "expected a physical point group, got '" + group + "', a boundary group (dimension " +
+                         std::to_string(mesh.dim - 1) + ") of " + where);
+  auto it = mesh.node_groups.find(group);
+  if (it == mesh.node_groups.end())
+    throw InputError(spec.file, key, where + " has no physical point group '" + group +
+                                         "'; its groups: " + available_groups(mesh));
+  auto d = mesh.node_group_dims.find(group);
+  if (d != mesh.node_group_dims.end() && d->second != 0)
+    throw InputError(spec.file, key,
+                     "expected a physical point group, got '" + group + "', a group of dimension " +
+                         std::to_string(d->second) + " of " + where);
+  return it->second;
+}
+
 /// The finite-strain law of a hyperelastic body (materials/hyperelastic.hpp); none for linear elasticity.
 std::optional<Hyperelastic> hyperelastic_law(const MaterialSpec& ms) {
   if (ms.model == "linear_elastic") return std::nullopt;
@@ -110,37 +131,11 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
     }
   }
   ScopedPhase t(times, "setup");
-  const int D = spec.dim;
   for (int b = 0; b < static_cast<int>(m->bodies_.size()); ++b) {
     const Body& body = *m->bodies_[b];
     const BodySpec& bs = *body.spec;
     m->energy_.add(elastic_energy(body, m->dofs_, b));
-    if (!bs.body_force.empty()) {
-      const std::vector<double> bf = bs.body_force;
-      VectorXd f = body_force_vector(body.mesh, m->dofs_, b, [&](const double*, double* out) {
-        for (int i = 0; i < D; ++i) out[i] = bf[i];
-      });
-      auto* term = m->energy_.add(std::make_unique<LinearLoad>(bs.name + ".body_force", std::move(f)));
-      m->loads_.push_back({term, bs.body_force_factors});
-    }
-    for (const auto& ts : bs.tractions) {
-      const FacetGroup& g = require_facets(spec, body, ts.group, ts.key + ".boundary");
-      const std::vector<double> tv = ts.traction;
-      VectorXd f = boundary_load_vector(body.mesh, m->dofs_, b, g, [&](const double*, const double*, double* out) {
-        for (int i = 0; i < D; ++i) out[i] = tv[i];
-      });
-      auto* term = m->energy_.add(std::make_unique<LinearLoad>(bs.name + ".traction." + ts.group, std::move(f)));
-      m->loads_.push_back({term, ts.factors});
-    }
-    for (const auto& ps : bs.pressures) {
-      const FacetGroup& g = require_facets(spec, body, ps.group, ps.key + ".boundary");
-      const double p = ps.pressure;
-      VectorXd f = boundary_load_vector(body.mesh, m->dofs_, b, g, [&](const double*, const double* n, double* out) {
-        for (int i = 0; i < D; ++i) out[i] = -p * n[i];
-      });
-      auto* term = m->energy_.add(std::make_unique<LinearLoad>(bs.name + ".pressure." + ps.group, std::move(f)));
-      m->loads_.push_back({term, ps.factors});
-    }
+    m->add_loads(b);
     for (const auto& ds : bs.dirichlet) {
       if (!body.mesh.has_group(ds.group))
         throw InputError(spec.file, ds.key + ".boundary",
@@ -152,6 +147,46 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
   m->build_contacts(log, mesh_options);
   m->set_step(0);
   return m;
+}
+
+void Model::add_loads(int b) {
+  const ProblemSpec& spec = spec_;
+  const Body& body = *bodies_[b];
+  const BodySpec& bs = *body.spec;
+  const int D = spec.dim;
+  auto add = [&](const std::string& name, VectorXd f, const std::vector<double>& factors) {
+    auto* term = energy_.add(std::make_unique<LinearLoad>(bs.name + "." + name, std::move(f)));
+    loads_.push_back({term, factors});
+  };
+  if (!bs.body_force.empty()) {
+    const std::vector<double> bf = bs.body_force;
+    add("body_force", body_force_vector(body.mesh, dofs_, b, [&](const double*, double* out) {
+          for (int i = 0; i < D; ++i) out[i] = bf[i];
+        }), bs.body_force_factors);
+  }
+  for (const auto& ts : bs.tractions) {
+    const FacetGroup& g = require_facets(spec, body, ts.group, ts.key + ".boundary");
+    std::vector<double> tv = ts.traction;
+    if (ts.input == TractionInput::kTotalForce) {
+      // t = F / |Γ_h| with |Γ_h| from boundary_load_vector()'s own quadrature: Σ f = F to round-off.
+      const double measure = facet_group_measure(body.mesh, g);
+      for (double& c : tv) c /= measure;
+    }
+    add("traction." + ts.group, boundary_load_vector(body.mesh, dofs_, b, g, [&](const double*, const double*, double* out) {
+          for (int i = 0; i < D; ++i) out[i] = tv[i];
+        }), ts.factors);
+  }
+  for (const auto& ps : bs.pressures) {
+    const FacetGroup& g = require_facets(spec, body, ps.group, ps.key + ".boundary");
+    const double p = ps.pressure;
+    add("pressure." + ps.group, boundary_load_vector(body.mesh, dofs_, b, g, [&](const double*, const double* n, double* out) {
+          for (int i = 0; i < D; ++i) out[i] = -p * n[i];
+        }), ps.factors);
+  }
+  for (const auto& pl : bs.point_loads) {
+    const std::vector<Index>& nodes = require_points(spec, body, pl.group, pl.key + ".group");
+    add("point_load." + pl.group, point_load_vector(dofs_, b, nodes, pl.force.data()), pl.factors);
+  }
 }
 
 int Model::body_index(const std::string& name) const {

@@ -97,6 +97,9 @@ class Model {
   ContactSet contacts_;
   std::vector<Mesh> rigid_meshes_;  ///< meshes of rigid meshed obstacles
   void build_contacts(const Logger& log, const MeshReadOptions& mesh_options);
+  /// The load terms of body b: body force, tractions, pressures, point loads (InputError for a group
+  /// the body's mesh lacks or of the wrong kind).
+  void add_loads(int b);
 };
 
 /// The factor of load step `step`: own[step] when `own` is given, else global[step]; step −1 is the

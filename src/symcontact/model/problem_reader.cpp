@@ -405,7 +405,7 @@ class Reader {
   BodySpec read_body(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
     check_keys(t, path,
                {"name", "mesh", "group", "body_force", "body_force_factors", "material", "dirichlet", "traction",
-                "pressure"});
+                "pressure", "point_load"});
     BodySpec body;
     body.key = path;
 
@@ -432,28 +432,23 @@ class Reader {
     body.material = read_material(as_table(required(t, path, "material", "a table [body.material]"), material_key),
                                   material_key, spec);
 
-    if (const toml::node* n = t.get("dirichlet")) {
-      const std::string key = child(path, "dirichlet");
-      const toml::array& list = as_table_array(*n, key, "[[body.dirichlet]]");
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        body.dirichlet.push_back(read_dirichlet(*list[i].as_table(), indexed(key, i), spec));
-      }
-    }
-    if (const toml::node* n = t.get("traction")) {
-      const std::string key = child(path, "traction");
-      const toml::array& list = as_table_array(*n, key, "[[body.traction]]");
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        body.tractions.push_back(read_traction(*list[i].as_table(), indexed(key, i), spec));
-      }
-    }
-    if (const toml::node* n = t.get("pressure")) {
-      const std::string key = child(path, "pressure");
-      const toml::array& list = as_table_array(*n, key, "[[body.pressure]]");
-      for (std::size_t i = 0; i < list.size(); ++i) {
-        body.pressures.push_back(read_pressure(*list[i].as_table(), indexed(key, i), spec));
-      }
-    }
+    read_list(t, path, "dirichlet", body.dirichlet, &Reader::read_dirichlet, spec);
+    read_list(t, path, "traction", body.tractions, &Reader::read_traction, spec);
+    read_list(t, path, "pressure", body.pressures, &Reader::read_pressure, spec);
+    read_list(t, path, "point_load", body.point_loads, &Reader::read_point_load, spec);
     return body;
+  }
+
+  /// The array of tables [[body.<name>]] of a body, if present, each read by `read_one`.
+  template <class Item>
+  void read_list(const toml::table& t, const std::string& path, std::string_view name, std::vector<Item>& out,
+                 Item (Reader::*read_one)(const toml::table&, const std::string&, const ProblemSpec&) const,
+                 const ProblemSpec& spec) const {
+    const toml::node* n = t.get(name);
+    if (!n) return;
+    const std::string key = child(path, name);
+    const toml::array& list = as_table_array(*n, key, "[[body." + std::string(name) + "]]");
+    for (std::size_t i = 0; i < list.size(); ++i) out.push_back((this->*read_one)(*list[i].as_table(), indexed(key, i), spec));
   }
 
   /// mesh: a .geo or .msh file, relative to the problem file's folder, that must exist. Sets
@@ -608,13 +603,37 @@ class Reader {
     return d;
   }
 
+  /// [[body.traction]]: `traction` (t) or `total_force` (F, the resultant), exactly one of the two.
   TractionSpec read_traction(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
-    check_keys(t, path, {"boundary", "traction", "factors"});
+    check_keys(t, path, {"boundary", "traction", "total_force", "factors"});
     TractionSpec s;
     s.key = path;
     s.group = boundary(t, path);
-    s.traction = as_vector(required(t, path, "traction", std::to_string(spec.dim) + " numbers"),
-                           child(path, "traction"), spec.dim);
+    const toml::node* traction = t.get("traction");
+    const toml::node* total = t.get("total_force");
+    const std::string numbers = std::to_string(spec.dim) + " numbers";
+    if (traction && total) {
+      fail(child(path, "total_force"), "expected either traction or total_force (one of the two), got both");
+    }
+    if (!traction && !total) {
+      fail(path, "missing required key traction or total_force (expected " + numbers +
+                     ": the traction, or the resultant force on the boundary), got neither");
+    }
+    s.input = total ? TractionInput::kTotalForce : TractionInput::kTraction;
+    s.traction = total ? as_vector(*total, child(path, "total_force"), spec.dim)
+                       : as_vector(*traction, child(path, "traction"), spec.dim);
+    if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
+    return s;
+  }
+
+  /// [[body.point_load]]: `force` at every node of the physical point group `group` (checked with the mesh).
+  PointLoadSpec read_point_load(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
+    check_keys(t, path, {"group", "force", "factors"});
+    PointLoadSpec s;
+    s.key = path;
+    s.group = as_nonempty_string(required(t, path, "group", "the name of a physical point group"), child(path, "group"));
+    s.force = as_vector(required(t, path, "force", std::to_string(spec.dim) + " numbers"), child(path, "force"),
+                        spec.dim);
     if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
     return s;
   }

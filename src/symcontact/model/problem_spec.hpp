@@ -43,11 +43,27 @@ struct DirichletSpec {
   std::vector<double> factors;                 ///< per-step multipliers (empty: the global ones)
 };
 
-/// A surface traction t (force per unit area, or per unit length in 2D) on a named boundary.
+/// How a [[body.traction]] states its load: the traction itself, or the resultant it must have.
+enum class TractionInput { kTraction, kTotalForce };
+
+/// A uniform surface traction t (force per unit area, or per unit length in 2D) on a named boundary,
+/// given as t (`traction`) or as its resultant F (`total_force`): then t = F / |Γ_h|, |Γ_h| the measure
+/// of the meshed facets (facet_group_measure(), energy/external_load.hpp), so that Σ of the nodal forces
+/// is F whatever the faceting.
 struct TractionSpec {
   std::string key;
   std::string group;
-  std::vector<double> traction;  ///< dim components
+  TractionInput input = TractionInput::kTraction;
+  std::vector<double> traction;  ///< dim components: t (kTraction) or F (kTotalForce)
+  std::vector<double> factors;
+};
+
+/// A force (per unit thickness in 2D) at every node of a physical point group (Gmsh dimension 0):
+/// a group of n points receives n × force in total.
+struct PointLoadSpec {
+  std::string key;
+  std::string group;
+  std::vector<double> force;  ///< dim components
   std::vector<double> factors;
 };
 
@@ -71,6 +87,7 @@ struct BodySpec {
   std::vector<DirichletSpec> dirichlet;
   std::vector<TractionSpec> tractions;
   std::vector<PressureSpec> pressures;
+  std::vector<PointLoadSpec> point_loads;
 };
 
 /// A rigid obstacle: analytic ("plane", "circle" in 2D / "sphere" in 3D) or meshed ("mesh": the facets

@@ -213,4 +213,36 @@ TEST_F(CliInputErrors, GeoRunningAProgramIsRefusedUnlessAllowed) {
   EXPECT_TRUE(fs::exists(dir_ / "marker"));
 }
 
+// ---- 7. point loads and total-force tractions ----
+
+TEST_F(CliInputErrors, PointLoadOnAMissingOrNonPointGroupIsAnInputError) {
+  // examples/block_2d's mesh: "origin" is its physical point, "top" a physical curve.
+  const auto point_load = [](const std::string& group, const std::string& force) {
+    return "[[body.point_load]]\ngroup = \"" + group + "\"\nforce = " + force + "\n";
+  };
+  expect_input_error(write("curve.toml", block_toml(kBlockGeo, "1000.0", "10.0", point_load("top", "[1.0, 0.0]"))),
+                     {"curve.toml", "body[0].point_load[0].group", "expected a physical point group, got 'top'",
+                      "a boundary group (dimension 1)"});
+  expect_input_error(write("missing.toml", block_toml(kBlockGeo, "1000.0", "10.0", point_load("tip", "[1.0, 0.0]"))),
+                     {"missing.toml", "body[0].point_load[0].group", "no physical point group 'tip'", "'origin'"});
+  expect_input_error(write("short.toml", block_toml(kBlockGeo, "1000.0", "10.0", point_load("origin", "[1.0]"))),
+                     {"short.toml", "body[0].point_load[0].force", "expected 2 components", "got 1"});
+  // The correct one runs.
+  const CliResult ok = run("check " + shell_quote(write("ok.toml", block_toml(kBlockGeo, "1000.0", "10.0",
+                                                                             point_load("origin", "[1.0, 0.0]")))));
+  EXPECT_EQ(ok.exit_code, 0) << ok.output;
+}
+
+TEST_F(CliInputErrors, TractionWithBothOrNeitherOfTractionAndTotalForceIsAnInputError) {
+  const std::string both = "[[body.traction]]\nboundary = \"right\"\ntraction = [1.0, 0.0]\ntotal_force = [1.0, 0.0]\n";
+  expect_input_error(write("both.toml", block_toml(kBlockGeo, "1000.0", "10.0", both)),
+                     {"both.toml", "body[0].traction[0].total_force", "either traction or total_force", "got both"});
+  const std::string neither = "[[body.traction]]\nboundary = \"right\"\n";
+  expect_input_error(write("neither.toml", block_toml(kBlockGeo, "1000.0", "10.0", neither)),
+                     {"neither.toml", "body[0].traction[0]", "traction or total_force", "got neither"});
+  const std::string total = "[[body.traction]]\nboundary = \"nowhere\"\ntotal_force = [1.0, 0.0]\n";
+  expect_input_error(write("total.toml", block_toml(kBlockGeo, "1000.0", "10.0", total)),
+                     {"total.toml", "body[0].traction[0].boundary", "no boundary group 'nowhere'"});
+}
+
 }  // namespace

@@ -190,6 +190,96 @@ TEST_F(ModelTest, MissingDirichletGroupIsAnInputError) {
   }
 }
 
+TEST_F(ModelTest, PointLoadActsAtItsNodeWithItsFactors) {
+  // corner_lr, the physical point at (2, 0) of block.msh; factors 0.5 and 1 (the global ones), then its own.
+  build(kBlock + "[[body.point_load]]\ngroup = \"corner_lr\"\nforce = [3.0, -1.5]\n"
+                 "[[body.point_load]]\ngroup = \"corner_ll\"\nforce = [0.0, 2.0]\nfactors = [1.0, 0.0]\n");
+  for (int step : {0, 1}) {
+    model_->set_step(step);
+    const double s = step == 0 ? 0.5 : 1.0, own = step == 0 ? 1.0 : 0.0;
+    const VectorXd f = model_->external_load();
+    EXPECT_EQ(f[dof_at(0, 2.0, 0.0, 0)], 3.0 * s);
+    EXPECT_EQ(f[dof_at(0, 2.0, 0.0, 1)], -1.5 * s);
+    EXPECT_EQ(f[dof_at(0, 0.0, 0.0, 1)], 2.0 * own);
+    EXPECT_EQ(f.lpNorm<1>(), 4.5 * s + 2.0 * own) << "no force at any other DOF";
+  }
+}
+
+TEST_F(ModelTest, PointLoadOnABoundaryOrMissingGroupIsAnInputError) {
+  const struct {
+    std::string group, fragment;
+  } cases[] = {{"top", "expected a physical point group, got 'top', a boundary group (dimension 1) of body 'block' (mesh block.msh)"},
+               {"nowhere", "body 'block' (mesh block.msh) has no physical point group 'nowhere'; its groups: 'bottom'"}};
+  for (const auto& c : cases) {
+    try {
+      build(kBlock + "[[body.point_load]]\ngroup = \"" + c.group + "\"\nforce = [1.0, 0.0]\n");
+      ADD_FAILURE() << "expected an InputError for " << c.group;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "case.toml");
+      EXPECT_EQ(e.key(), "body[0].point_load[0].group");
+      EXPECT_NE(e.message().find(c.fragment), std::string::npos) << e.what();
+    }
+  }
+}
+
+/// A quarter disk of radius 1 (2D) or a quarter cylinder of it, height 0.5 (3D), coarsely meshed (h = 0.3),
+/// its arc (the curved face) "arc", in 3D a physical curve "axis_edge" (its bottom edge on the x axis).
+std::string quarter_disk_geo(int dim) {
+  std::string geo =
+      "h = 0.3;\nPoint(1) = {0, 0, 0, h};\nPoint(2) = {1, 0, 0, h};\nPoint(3) = {0, 1, 0, h};\n"
+      "Line(1) = {1, 2};\nCircle(2) = {2, 1, 3};\nLine(3) = {3, 1};\nCurve Loop(1) = {1, 2, 3};\n"
+      "Plane Surface(1) = {1};\n";
+  if (dim == 2)
+    return geo + "Physical Surface(\"disk\") = {1};\nPhysical Curve(\"arc\") = {2};\n"
+                 "Physical Curve(\"left\") = {3};\n";
+  return geo + "out[] = Extrude {0, 0, 0.5} { Surface{1}; };\nPhysical Volume(\"disk\") = {out[1]};\n"
+               "Physical Surface(\"arc\") = {out[3]};\nPhysical Surface(\"left\") = {out[4]};\n"
+               "Physical Curve(\"axis_edge\") = {1};\n";
+}
+
+TEST_F(ModelTest, TotalForceIsTheResultantOnACurvedFacetedSurface) {
+  // t = F / |Γ_h| with |Γ_h| the measure of the facets by the load's own quadrature: Σ f = F to round-off,
+  // though |Γ_h| is not the exact arc length (π/2) nor cylinder area (π/4), and differs between P1 and P2.
+  for (int dim : {2, 3})
+    for (int order : {1, 2}) {
+      SCOPED_TRACE("dimension " + std::to_string(dim) + ", order " + std::to_string(order));
+      testing::write_text(folder_ / "disk.geo", quarter_disk_geo(dim));
+      const std::string F = dim == 2 ? "[0.7, -1.3]" : "[0.7, -1.3, 0.4]";
+      const std::string toml = "[problem]\ndimension = " + std::to_string(dim) + "\norder = " + std::to_string(order) +
+                               "\n[steps]\nload_factors = [0.5, 1.0]\n" +
+                               testing::body_toml("disk", "disk.geo", "disk", "E = 1.0, nu = 0.3",
+                                                  testing::dirichlet_toml("left", "ux = 0.0\n") +
+                                                      "[[body.traction]]\nboundary = \"arc\"\ntotal_force = " + F + "\n");
+      case_ = testing::build_model(toml, folder_.path());
+      model_ = case_->model.get();
+      model_->set_step(1);
+      const double expected[] = {0.7, -1.3, 0.4};
+      for (int i = 0; i < dim; ++i) EXPECT_NEAR(total_load(i), expected[i], 1e-12 * 1.3) << "component " << i;
+      const Mesh& mesh = model_->bodies()[0]->mesh;
+      const double measure = facet_group_measure(mesh, mesh.facet_groups.at("arc"));
+      EXPECT_GT(std::abs(measure / (dim == 2 ? M_PI / 2 : M_PI / 4) - 1), 1e-6) << "the faceting changes the measure";
+      model_->set_step(0);
+      EXPECT_NEAR(total_load(1), -1.3 * 0.5, 1e-12);
+    }
+}
+
+TEST_F(ModelTest, PointLoadOnAPhysicalCurveIn3DIsAnInputError) {
+  testing::write_text(folder_ / "disk.geo", quarter_disk_geo(3));
+  const std::string toml = "[problem]\ndimension = 3\n[steps]\nload_factors = [1.0]\n" +
+                           testing::body_toml("disk", "disk.geo", "disk", "E = 1.0, nu = 0.3",
+                                              testing::dirichlet_toml("left", "ux = 0.0\n") +
+                                                  "[[body.point_load]]\ngroup = \"axis_edge\"\nforce = [1, 0, 0]\n");
+  try {
+    testing::build_model(toml, folder_.path());
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "body[0].point_load[0].group");
+    EXPECT_NE(e.message().find("expected a physical point group, got 'axis_edge', a group of dimension 1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 // The load factors (step_factor): a step's own factors or the global ones, and within a step (the sub-steps
 // of an automatic step cut) linear between step − 1 and step.
 TEST(ModelLoads, StepFactorsAreInterpolatedBetweenSteps) {

@@ -125,6 +125,15 @@ factors = [0.0, 1.0]
 boundary = "top"
 pressure = 0.01
 
+[[body.traction]]
+boundary = "left"
+total_force = [0.0, -3]
+
+[[body.point_load]]
+group = "left_corner"
+force = [2.5, -1]
+factors = [1.0, 0.0]
+
 [[body]]
 name = "foundation-2"
 mesh = "meshes/../meshes/foundation.msh"
@@ -173,11 +182,22 @@ b = "foundation-2.top"
   EXPECT_EQ(b.dirichlet[1].value[1], std::optional<double>(0.5));
   EXPECT_EQ(b.dirichlet[1].factors, (std::vector<double>{1.0, 2.0}));
 
-  ASSERT_EQ(b.tractions.size(), 1u);
+  ASSERT_EQ(b.tractions.size(), 2u);
   EXPECT_EQ(b.tractions[0].key, "body[0].traction[0]");
   EXPECT_EQ(b.tractions[0].group, "right");
+  EXPECT_EQ(b.tractions[0].input, TractionInput::kTraction);
   EXPECT_EQ(b.tractions[0].traction, (std::vector<double>{1.5, 0.0}));
   EXPECT_EQ(b.tractions[0].factors, (std::vector<double>{0.0, 1.0}));
+  EXPECT_EQ(b.tractions[1].key, "body[0].traction[1]");
+  EXPECT_EQ(b.tractions[1].input, TractionInput::kTotalForce);
+  EXPECT_EQ(b.tractions[1].traction, (std::vector<double>{0.0, -3.0}));
+  EXPECT_TRUE(b.tractions[1].factors.empty());
+
+  ASSERT_EQ(b.point_loads.size(), 1u);
+  EXPECT_EQ(b.point_loads[0].key, "body[0].point_load[0]");
+  EXPECT_EQ(b.point_loads[0].group, "left_corner");
+  EXPECT_EQ(b.point_loads[0].force, (std::vector<double>{2.5, -1.0}));
+  EXPECT_EQ(b.point_loads[0].factors, (std::vector<double>{1.0, 0.0}));
 
   ASSERT_EQ(b.pressures.size(), 1u);
   EXPECT_EQ(b.pressures[0].key, "body[0].pressure[0]");
@@ -194,7 +214,7 @@ b = "foundation-2.top"
   EXPECT_EQ(f.material.key, "body[1].material");
   EXPECT_EQ(f.material.young, 1000.0);
   EXPECT_EQ(f.material.poisson, -0.2);
-  EXPECT_TRUE(f.dirichlet.empty() && f.tractions.empty() && f.pressures.empty());
+  EXPECT_TRUE(f.dirichlet.empty() && f.tractions.empty() && f.pressures.empty() && f.point_loads.empty());
 }
 
 // steps.count alone is a linear ramp; a load curve { at, values } is piecewise linear in the step number.
@@ -815,6 +835,24 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"TractionWrongLengthIn3D",
                 kBase.in_3d() + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, 0.0]\n",
                 "body[0].traction[0].traction", "expected 3 components (problem.dimension = 3), got 2"},
+        InputErrorCase{"TractionAndTotalForce",
+                kBase + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, 0.0]\ntotal_force = [1.0, 0.0]\n",
+                "body[0].traction[0].total_force", "expected either traction or total_force (one of the two), got both"},
+        InputErrorCase{"TractionNorTotalForce", kBase + "[[body.traction]]\nboundary = \"r\"\n", "body[0].traction[0]",
+                "missing required key traction or total_force (expected 2 numbers"},
+        InputErrorCase{"TotalForceWrongLength", kBase + "[[body.traction]]\nboundary = \"r\"\ntotal_force = [1.0]\n",
+                "body[0].traction[0].total_force", "expected 2 components (problem.dimension = 2), got 1"},
+        InputErrorCase{"PointLoadWrongLengthIn3D", kBase.in_3d() + "[[body.point_load]]\ngroup = \"tip\"\nforce = [1.0, 0.0]\n",
+                "body[0].point_load[0].force", "expected 3 components (problem.dimension = 3), got 2"},
+        InputErrorCase{"PointLoadWithoutGroup", kBase + "[[body.point_load]]\nforce = [1.0, 0.0]\n",
+                "body[0].point_load[0].group", "missing required key (expected the name of a physical point group)"},
+        InputErrorCase{"PointLoadWithoutForce", kBase + "[[body.point_load]]\ngroup = \"tip\"\n",
+                "body[0].point_load[0].force", "missing required key (expected 2 numbers)"},
+        InputErrorCase{"PointLoadBoundaryKey", kBase + "[[body.point_load]]\nboundary = \"tip\"\nforce = [1.0, 0.0]\n",
+                "body[0].point_load[0].boundary", "allowed keys in body[0].point_load[0]: group, force, factors"},
+        InputErrorCase{"PointLoadFactorsLength",
+                kBase + "[[body.point_load]]\ngroup = \"tip\"\nforce = [1.0, 0.0]\nfactors = [1.0]\n",
+                "body[0].point_load[0].factors", "expected 2 entries"},
         InputErrorCase{"DirichletFactorsLength", kBase.after("uy = 0.0\n", "factors = [1.0, 1.0, 1.0]\n"),
                 "body[0].dirichlet[0].factors",
                 "expected 2 entries (one per load step, as in steps.load_factors), got 3"},
