@@ -64,7 +64,10 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
     for (int i = 0; i < D; ++i) os << ",f" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",fn_" << xyz[i];
     for (int i = 0; i < D; ++i) os << ",slip_" << xyz[i];
-    os << ",accumulated_slip,status\n";
+    os << ",accumulated_slip";
+    for (int i = 0; i < D; ++i) os << ",u" << xyz[i];
+    if (D == 2) os << ",t_tangential,slip_tangential";
+    os << ",status\n";
     os.precision(17);
     static const char* status[] = {"open", "contact", "slip"};
     for (std::size_t side = 0; side < r.sides.size(); ++side) {
@@ -92,6 +95,11 @@ void write_contact_csv(const Model& model, const ContactPairResult& r, const std
         for (int i = 0; i < D; ++i) cell(sr.slip(i, k));
         const bool has_acc = side < accumulated.size() && accumulated[side].size() > k && friction;
         cell(has_acc ? accumulated[side][k] : std::nan(""));
+        for (int i = 0; i < D; ++i) cell(sr.displacement(i, k));
+        if (D == 2) {
+          cell(sr.tangential_along[k]);
+          cell(sr.slip_along[k]);
+        }
         const int st = sr.status[k];
         os << ',' << (st == 1 && friction ? "stick" : status[st]) << '\n';
       }

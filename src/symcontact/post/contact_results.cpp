@@ -123,6 +123,17 @@ Eigen::MatrixXd nodal_values(const ContactSurface& s, const DofMap& dofs, const 
   return out;
 }
 
+/// In 2D, ±|v_k| with the sign of v_k·τ_k, τ_k = (−ν_y, ν_x) (the header); NaN where v_k is.
+Eigen::VectorXd signed_along_tangent(const Eigen::MatrixXd& v, const Eigen::MatrixXd& normals) {
+  Eigen::VectorXd out(v.cols());
+  for (Index k = 0; k < v.cols(); ++k) {
+    const double along = -v(0, k) * normals(1, k) + v(1, k) * normals(0, k);
+    const double norm = v.col(k).norm();
+    out[k] = along < 0 ? -norm : norm;
+  }
+  return out;
+}
+
 /// One side of pair `pi` on surface `si`: forces from the pair's own rows and friction term, pressure and
 /// traction per lumped reference area (in the test basis, surface_tractions.hpp), gaps, slips.
 /// `multiplier_pressure`: the pressure of Aᵀμ_p alone (for the status: exactly zero where no active row reaches).
@@ -164,6 +175,11 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
   const bool friction_side = has_friction && si == cs.families()[cs.friction_family(pi)].slave;
   sr.slip = friction_side ? nodal_slips(s, *state.friction[pi], u)
                           : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
+  sr.displacement = nodal_values(s, dofs, u);
+  if (s.dim == 2) {
+    sr.tangential_along = signed_along_tangent(sr.tangential, normals);
+    sr.slip_along = signed_along_tangent(sr.slip, normals);
+  }
   return sr;
 }
 

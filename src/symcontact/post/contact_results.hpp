@@ -40,6 +40,11 @@
 ///    node, the weak average Σ_q w_q N_k s_q / Σ_q w_q N_k of the friction term's point slips (with the
 ///    solver's nodal points the node's own point slip: on a Tri6 surface its coefficient s̃_k in the test
 ///    basis, friction_term.hpp, the slip the law's traction τ s̃_k / r_k and the status below read),
+///  - in 2D, along the tangent τ_k = (−ν_y, ν_x) (ν_k turned by +90°: the direction in which the side is
+///    traversed with its body on the left, counter-clockwise round a body's outer boundary; the two sides of
+///    a pair have opposite tangents): the signed magnitudes tangential_along_k = ±|t_k| and slip_along_k = ±|s_k|,
+///    the sign that of t_k·τ_k (of s_k·τ_k), so that |tangential_along| is exactly the norm of the traction.
+///    Friction opposes slip: on a slipping node of the friction side the two have opposite signs,
 ///  - status: 0 open, 1 in contact (frictionless) or sticking, 2 slipping. In contact where the pressure of
 ///    Aᵀμ_p alone exceeds kContactPressureFraction × its maximum (exactly zero where no active row reaches the
 ///    node; an unpolished interior point leaves multipliers of order barrier/gap, far below that, on open
@@ -69,6 +74,7 @@ struct ContactSideResult {
   Eigen::MatrixXd x;           ///< dim × n current positions x = X + u
   Eigen::MatrixXd X;           ///< dim × n reference positions: where a small-strain closed form (Hertz)
                                ///< is stated; x − X is O(p/E) of the body's size (3 % of a in V1)
+  Eigen::MatrixXd displacement;  ///< dim × n displacements u at the nodes (zero on a rigid side)
   Eigen::MatrixXd force;       ///< dim × n nodal force of the pair: normal_part + the friction part
   Eigen::MatrixXd normal_part; ///< dim × n nodal A_pᵀ μ_p
   Eigen::MatrixXd normals;     ///< dim × n interface normals ν_k of the pressure
@@ -77,6 +83,8 @@ struct ContactSideResult {
   Eigen::MatrixXd tangential;  ///< dim × n tangential traction
   Eigen::VectorXd gap;         ///< n (NaN: no projection)
   Eigen::MatrixXd slip;        ///< dim × n (NaN off the friction side)
+  Eigen::VectorXd tangential_along;  ///< 2D: n, ±|tangential| along τ_k (empty in 3D)
+  Eigen::VectorXd slip_along;        ///< 2D: n, ±|slip| along τ_k (NaN off the friction side; empty in 3D)
   Eigen::VectorXi status;      ///< n
   Eigen::VectorXd total_force;       ///< Σ_k force
   Eigen::VectorXd normal_force;      ///< Σ_k normal_part

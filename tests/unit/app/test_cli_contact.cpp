@@ -136,6 +136,7 @@ TEST_F(CliContact, HertzExampleWritesContactResults) {
   EXPECT_EQ(column("fy"), column("fx") + 1) << line;
   ASSERT_EQ(column("status"), columns.size() - 1) << line;
   EXPECT_EQ(column("z"), columns.size()) << "no z column in 2D: " << line;
+  EXPECT_NE(line.find(",accumulated_slip,ux,uy,t_tangential,slip_tangential,status"), std::string::npos) << line;
   double p_max = 0.0, fy = 0.0;
   int rows = 0, in_contact = 0;
   while (std::getline(csv, line)) {
@@ -150,6 +151,14 @@ TEST_F(CliContact, HertzExampleWritesContactResults) {
     const std::string status = v[column("status")];
     EXPECT_TRUE(status == "contact" || status == "open") << line;
     in_contact += status == "contact" ? 1 : 0;
+    // The displacement columns are the field u = x − X at the node; frictionless: no tangential traction,
+    // no slip.
+    for (const char* c : {"x", "y"})
+      EXPECT_NEAR(std::stod(v[column((std::string("u") + c).c_str())]),
+                  std::stod(v[column(c)]) - std::stod(v[column((std::string(c) + "_ref").c_str())]), 1e-14)
+          << c << ": " << line;
+    EXPECT_EQ(std::stod(v[column("t_tangential")]), 0.0) << line;
+    EXPECT_EQ(v[column("slip_tangential")], "nan") << line;
     ++rows;
   }
   EXPECT_GT(rows, 50);  // 80 nodes on the arc of the example mesh
@@ -207,6 +216,30 @@ TEST_F(CliContact, FrictionRunWritesTractionsSlipsAndStatus) {
   for (const char* column : {"pressure", "tx", "ty", "slip_x", "slip_y", "accumulated_slip", "status"})
     EXPECT_NE(header.find(column), std::string::npos) << column << " missing from " << header;
   EXPECT_NE(csv.find(",slip\n"), std::string::npos) << "no slipping node in gross slip";
+  {
+    // 2D: t_tangential is ±|(tx, ty)| along the tangent, slip_tangential ±|slip|; friction opposes slip.
+    std::istringstream rows(csv);
+    std::string line;
+    std::getline(rows, line);
+    const std::vector<std::string> columns = split(line, ',');
+    const auto at = [&](const std::vector<std::string>& v, const char* name) {
+      const auto it = std::find(columns.begin(), columns.end(), name);
+      EXPECT_NE(it, columns.end()) << name;
+      return it == columns.end() ? std::nan("") : std::stod(v[it - columns.begin()]);
+    };
+    int slipping = 0;
+    while (std::getline(rows, line)) {
+      const std::vector<std::string> v = split(line, ',');
+      const double t = at(v, "t_tangential"), s = at(v, "slip_tangential");
+      EXPECT_NEAR(std::abs(t), std::hypot(at(v, "tx"), at(v, "ty")), 1e-15 + 1e-12 * std::abs(t)) << line;
+      EXPECT_NEAR(std::abs(s), std::hypot(at(v, "slip_x"), at(v, "slip_y")), 1e-15 + 1e-12 * std::abs(s)) << line;
+      EXPECT_NEAR(at(v, "ux"), at(v, "x") - at(v, "x_ref"), 1e-14) << line;
+      if (v.back() != "slip") continue;
+      EXPECT_LT(t * s, 0.0) << "friction opposes slip: " << line;
+      ++slipping;
+    }
+    EXPECT_GT(slipping, 0);
+  }
   const std::string vtu = read_text(out / "block_0011.vtu");
   for (const char* field : {"contact_tangential_traction", "slip_increment", "accumulated_slip", "contact_pressure"})
     EXPECT_NE(vtu.find(std::string("Name=\"") + field + "\""), std::string::npos) << field;
