@@ -68,6 +68,16 @@ void expect_header_figures(const std::string& example, const SolvedCase& c) {
     std::printf("%s: |Rx/Ry| %.6f, exact %.6f (%+.3f %%)\n", example.c_str(), ratio, exact, 100 * (ratio / exact - 1));
     EXPECT_NEAR(ratio / exact, 1.0, 3e-3) << example;
   }
+  if (example == "point_load_2d/bar.toml") {
+    // Header: u_x(mid) = F L / (2 E H) = 0.005 (Saint-Venant), the reactions −F exactly.
+    const std::vector<Index> mid = c.model->bodies()[0]->mesh.group_nodes("mid");
+    const double ux = c.u[c.model->dofs().dof(0, mid.at(0), 0)];
+    std::printf("%s: u_x(mid) %.9f, exact 0.005 (%+.2e relative)\n", example.c_str(), ux, ux / 0.005 - 1);
+    EXPECT_NEAR(ux / 0.005, 1.0, 1e-8) << example;  // measured 1.1e-10
+    double rx = 0;
+    for (const Eigen::VectorXd& r : c.reactions.back()) rx += r[0];
+    EXPECT_NEAR(rx, -1.0, 1e-10) << example;
+  }
 }
 
 class ExampleAsShipped : public ::testing::TestWithParam<std::string> {};
