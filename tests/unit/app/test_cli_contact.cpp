@@ -267,6 +267,8 @@ TEST_F(CliContact, Hertz3DExampleWritesContactResults) {
   EXPECT_LT(area, 0.04);
   const std::string csv = read_text(out / "contact_floor_0001.csv");
   EXPECT_EQ(csv.rfind("side,surface,node,x,y,z,x_ref,y_ref,z_ref,gap,pressure,", 0), 0u) << csv.substr(0, csv.find('\n'));
+  // The displacements; no signed tangential values in 3D.
+  EXPECT_NE(csv.find(",accumulated_slip,ux,uy,uz,status\n"), std::string::npos) << csv.substr(0, csv.find('\n'));
   const std::string vtu = read_text(out / "sphere_0001.vtu");
   EXPECT_NE(vtu.find("Name=\"contact_pressure\""), std::string::npos);
 }
