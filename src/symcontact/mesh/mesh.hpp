@@ -41,6 +41,8 @@ struct Mesh {
   std::vector<Index> node_tags;  ///< node tag of each node in its mesh file (empty: built in code)
   std::map<std::string, FacetGroup> facet_groups;
   std::map<std::string, std::vector<Index>> node_groups;  ///< physical points (and any node set)
+  /// Physical groups of cells (of dimension `dim`) restricted to this mesh: cell indices, increasing.
+  std::map<std::string, std::vector<Index>> cell_groups;
 
   Index num_nodes() const { return x.cols(); }
   int nodes_per_cell() const { return cell_num_nodes(cell_type); }
