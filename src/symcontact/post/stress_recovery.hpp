@@ -18,6 +18,7 @@
 /// A point where the law cannot be evaluated (J ≤ 0, as in a failed iterate) reports zero stress; its
 /// J ≤ 0 marks it (VTU files cannot hold NaN).
 #include <functional>
+#include <vector>
 
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/materials/hyperelastic.hpp"
@@ -51,6 +52,12 @@ PointLaw linear_point_law(const LinearElastic& material);
 PointLaw hyperelastic_point_law(const Hyperelastic& material);
 
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u);
+/// A body of several materials: cell c reports laws[cell_law[c]] (`laws` non-empty; `cell_law` empty, for
+/// laws[0] everywhere, or one index per cell). A node on the interface of two materials averages the
+/// stresses of the cells around it, whatever their law (the nodal stress jumps there; the cell values do not
+/// mix).
+BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const std::vector<PointLaw>& laws,
+                          const std::vector<int>& cell_law, const VectorXd& u);
 /// The linear-elastic case (ε, σ = C : ε).
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                           const VectorXd& u);
