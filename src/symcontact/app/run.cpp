@@ -157,8 +157,13 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
 }
 
 BodyFields body_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u) {
-  const PointLaw law = body.hyperelastic ? hyperelastic_point_law(*body.hyperelastic) : linear_point_law(body.material);
-  return recover_fields(body.mesh, dofs, b, law, u);
+  std::vector<PointLaw> laws;
+  for (const LinearElastic& m : body.materials) laws.push_back(linear_point_law(m));
+  if (!body.hyperelastic.empty()) {
+    laws.clear();
+    for (const Hyperelastic& m : body.hyperelastic) laws.push_back(hyperelastic_point_law(m));
+  }
+  return recover_fields(body.mesh, dofs, b, laws, body.cell_material, u);
 }
 
 /// The name of the first field of `f` holding a NaN or an infinity, or "" when all are finite.
