@@ -157,13 +157,7 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
 }
 
 BodyFields body_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u) {
-  std::vector<PointLaw> laws;
-  for (const LinearElastic& m : body.materials) laws.push_back(linear_point_law(m));
-  if (!body.hyperelastic.empty()) {
-    laws.clear();
-    for (const Hyperelastic& m : body.hyperelastic) laws.push_back(hyperelastic_point_law(m));
-  }
-  return recover_fields(body.mesh, dofs, b, laws, body.cell_material, u);
+  return recover_fields(body, dofs, b, u);
 }
 
 /// The name of the first field of `f` holding a NaN or an infinity, or "" when all are finite.

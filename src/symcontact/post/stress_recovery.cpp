@@ -48,6 +48,15 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
   return recover_fields(mesh, dofs, body, linear_point_law(material), u);
 }
 
+BodyFields recover_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u) {
+  std::vector<PointLaw> laws;
+  if (body.hyperelastic.empty())
+    for (const LinearElastic& m : body.materials) laws.push_back(linear_point_law(m));
+  else
+    for (const Hyperelastic& m : body.hyperelastic) laws.push_back(hyperelastic_point_law(m));
+  return recover_fields(body.mesh, dofs, b, laws, body.cell_material, u);
+}
+
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u) {
   return recover_fields(mesh, dofs, body, std::vector<PointLaw>{law}, {}, u);
 }

@@ -24,6 +24,7 @@
 #include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
 #include "symcontact/mesh/mesh.hpp"
+#include "symcontact/model/model.hpp"
 
 namespace symcontact {
 
@@ -61,6 +62,10 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
 /// The linear-elastic case (ε, σ = C : ε).
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                           const VectorXd& u);
+
+/// The fields of body `b` of a model: each cell with the law of its material (Body::cell_material), the
+/// finite-strain law for a hyperelastic body, the small-strain one otherwise.
+BodyFields recover_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u);
 
 /// Packs a symmetric 3 × 3 tensor into ParaView's 6-component order.
 Eigen::Matrix<double, 6, 1> to_voigt6(const Eigen::Matrix3d& t);
