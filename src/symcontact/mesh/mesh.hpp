@@ -1,6 +1,6 @@
 #pragma once
 /// \file mesh.hpp
-/// The mesh of one body: nodes, volume cells of a single Lagrange type, and named groups of
+/// The mesh of one body: nodes, volume cells of a single Lagrange type, and named groups of cells, of
 /// boundary facets and of nodes (from Gmsh physical groups).
 ///
 /// Layout: `x` is dim × num_nodes (column j = node j). `cells` holds num_cells × cell_num_nodes(type)
