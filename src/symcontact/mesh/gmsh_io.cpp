@@ -39,7 +39,10 @@ class GmshInstance {
     std::vector<char*> argv;
     for (std::string& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
-    gmsh::initialize(static_cast<int>(args.size()), argv.data(), false);
+    if (parameters.empty())
+      gmsh::initialize(0, nullptr, false);
+    else
+      gmsh::initialize(static_cast<int>(args.size()), argv.data(), false);
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
     gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
     // Gmsh's API throws its errors as std::string by default (General.AbortOnError = 2), also from
