@@ -131,8 +131,8 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
         MeshReadOptions body_options = mesh_options;
         body_options.geo_parameters = bs.mesh_parameters;
         try {
-          it = files.emplace(std::make_pair(bs.mesh_path, bs.mesh_parameters), read_mesh_file(bs.mesh_path, body_options))
-                   .first;
+          MeshFile file = read_mesh_file(bs.mesh_path, body_options);
+          it = files.emplace(std::make_pair(bs.mesh_path, bs.mesh_parameters), std::move(file)).first;
         } catch (const InputError& e) {
           // A malformed mesh file: name the problem file, the body that reads it, the mesh file and
           // where in it ("line L" from the structural check).

@@ -536,7 +536,8 @@ class Reader {
       const MaterialSpec& m = materials.back();
       for (std::size_t j = 0; j < i; ++j) {
         if (materials[j].group == m.group) {
-          fail(child(m.key, "group"), "group " + in_quotes(m.group) + " already has a material (" + materials[j].key + ")");
+          fail(child(m.key, "group"),
+               "group " + in_quotes(m.group) + " already has a material (" + materials[j].key + ")");
         }
         if ((materials[j].model == "linear_elastic") != (m.model == "linear_elastic")) {
           fail(child(m.key, "model"), "model " + in_quotes(m.model) + " in a body whose " + materials[j].key + " is " +

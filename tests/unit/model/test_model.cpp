@@ -210,7 +210,8 @@ TEST_F(ModelTest, BodiesOfOneGeoWithOtherMeshParametersHaveTheirOwnMesh) {
   const std::string clamp = testing::dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n");
   const auto c = testing::build_model(
       "[problem]\ndimension = 2\n" +
-          testing::body_toml("coarse", "square.geo", "block", "E = 1.0, nu = 0.3", "mesh_parameters = { n = 2 }\n" + clamp) +
+          testing::body_toml("coarse", "square.geo", "block", "E = 1.0, nu = 0.3",
+                             "mesh_parameters = { n = 2 }\n" + clamp) +
           testing::body_toml("fine", "square.geo", "block", "E = 1.0, nu = 0.3", "mesh_parameters = { n = 3 }\n" + clamp),
       folder_.path());
   EXPECT_EQ(c->model->bodies()[0]->mesh.num_cells(), 2 * 2 * 2);
@@ -231,14 +232,16 @@ Physical Curve("bottom") = {1, 2};
 )";
 
 /// The bar with a material on each group of `groups` (E = 1 + its index).
-std::unique_ptr<testing::ModelCase> build_bar(const testing::TempFolder& folder, std::initializer_list<const char*> groups) {
+std::unique_ptr<testing::ModelCase> build_bar(const testing::TempFolder& folder,
+                                              std::initializer_list<const char*> groups) {
   testing::write_text(folder / "bar.geo", kBarGeo);
   std::string materials;
   double E = 1.0;
   for (const char* g : groups)
     materials += "[[body.material]]\ngroup = \"" + std::string(g) + "\"\nE = " + std::to_string(E++) + "\nnu = 0.0\n";
-  return testing::build_model("[problem]\ndimension = 2\n[[body]]\nname = \"bar\"\nmesh = \"bar.geo\"\ngroup = \"bar\"\n" +
-                                  materials + testing::dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n"),
+  return testing::build_model("[problem]\ndimension = 2\n[[body]]\nname = \"bar\"\nmesh = \"bar.geo\"\n"
+                              "group = \"bar\"\n" + materials +
+                                  testing::dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n"),
                               folder.path());
 }
 

@@ -613,7 +613,9 @@ TEST(ProblemReader, MeshParametersOfAGeo) {
 }
 
 /// kBase with two materials, "steel" and "rubber", each on its group of cells.
-const ProblemSnippet kTwoMaterials = kBase.replaced("[body.material]\nE = 1.0\nnu = 0.3\n", "[[body.material]]\ngroup = \"steel\"\nE = 1.0\nnu = 0.3\n[[body.material]]\ngroup = \"rubber\"\nE = 0.01\nnu = 0.45\n");
+const ProblemSnippet kTwoMaterials = kBase.replaced("[body.material]\nE = 1.0\nnu = 0.3\n",
+                                                    "[[body.material]]\ngroup = \"steel\"\nE = 1.0\nnu = 0.3\n"
+                                                    "[[body.material]]\ngroup = \"rubber\"\nE = 0.01\nnu = 0.45\n");
 
 TEST(ProblemReader, MaterialsPerGroupOfCells) {
   const std::vector<MaterialSpec> m = parse(kTwoMaterials).bodies[0].materials;
