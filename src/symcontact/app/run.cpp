@@ -165,8 +165,7 @@ BodyContactFields body_contact_fields(const Model& model, int b, const std::vect
 }
 
 BodyFields body_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u) {
-  const PointLaw law = body.hyperelastic ? hyperelastic_point_law(*body.hyperelastic) : linear_point_law(body.material);
-  return recover_fields(body.mesh, dofs, b, law, u);
+  return recover_fields(body, dofs, b, u);
 }
 
 /// The name of the first field of `f` holding a NaN or an infinity, or "" when all are finite.

@@ -1,5 +1,6 @@
 #include "symcontact/energy/hyperelastic_energy.hpp"
 
+#include <cassert>
 #include <stdexcept>
 
 #include "symcontact/core/error.hpp"
@@ -58,7 +59,18 @@ int hyperelastic_element(const Eigen::Matrix<double, D, NN>& X, const Eigen::Mat
 
 HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
                                        const Hyperelastic& material, std::string label)
-    : mesh_(mesh), offset_(dofs.offset(body)), material_(material), label_(std::move(label)) {
+    : HyperelasticEnergy(mesh, dofs, body, std::vector<Hyperelastic>{material}, {}, std::move(label)) {}
+
+HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
+                                       std::vector<Hyperelastic> materials, std::vector<int> cell_material,
+                                       std::string label)
+    : mesh_(mesh),
+      offset_(dofs.offset(body)),
+      materials_(std::move(materials)),
+      cell_material_(std::move(cell_material)),
+      label_(std::move(label)) {
+  assert(!materials_.empty());
+  assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
   if (mesh.dim != 2 && mesh.dim != 3)
     throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
   // Same rule as LinearElasticEnergy (see the header for why).
@@ -91,7 +103,8 @@ void HyperelasticEnergy::for_each_cell(const VectorXd& u, Fn&& f) const {
         const auto X = gather_coordinates<D, NN>(mesh_.x, n);
         int bad = -1;
         try {
-          bad = hyperelastic_element<D, NN, What>(X, U, tab_, material_, e, g, K);
+          const Hyperelastic& material = materials_[cell_material_.empty() ? 0 : cell_material_[c]];
+          bad = hyperelastic_element<D, NN, What>(X, U, tab_, material, e, g, K);
         } catch (const EvaluationError& err) {
           throw EvaluationError(name() + ": " + mesh_.cell_label(c) + ": " + err.what());
         }

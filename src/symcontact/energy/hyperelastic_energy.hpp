@@ -20,6 +20,7 @@
 /// (Mesh::cell_label), so that a solver can back away.
 
 #include <string>
+#include <vector>
 
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/dof_map.hpp"
@@ -34,6 +35,10 @@ class HyperelasticEnergy : public EnergyTerm {
   /// `label` names the body in messages. The mesh must be 2D (plane strain) or 3D and outlive the term.
   HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, const Hyperelastic& material,
                      std::string label);
+  /// A body of several materials: cell c has the law materials[cell_material[c]] (`materials` non-empty;
+  /// `cell_material` empty, for one law everywhere, or one index per cell).
+  HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, std::vector<Hyperelastic> materials,
+                     std::vector<int> cell_material, std::string label);
   std::string name() const override { return "hyperelastic(" + label_ + ")"; }
   double value(const VectorXd& u) const override;
   void add_gradient(const VectorXd& u, VectorXd& g) const override;
@@ -48,7 +53,8 @@ class HyperelasticEnergy : public EnergyTerm {
 
   const Mesh& mesh_;
   Index offset_;
-  Hyperelastic material_;
+  std::vector<Hyperelastic> materials_;
+  std::vector<int> cell_material_;
   std::string label_;
   Tabulation tab_;
 };

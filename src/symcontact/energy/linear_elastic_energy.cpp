@@ -1,5 +1,7 @@
 #include "symcontact/energy/linear_elastic_energy.hpp"
 
+#include <cassert>
+
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/elastic_kernel.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
@@ -8,7 +10,18 @@ namespace symcontact {
 
 LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
                                          const LinearElastic& material, std::string label)
-    : mesh_(mesh), offset_(dofs.offset(body)), material_(material), label_(std::move(label)) {
+    : LinearElasticEnergy(mesh, dofs, body, std::vector<LinearElastic>{material}, {}, std::move(label)) {}
+
+LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
+                                         std::vector<LinearElastic> materials, std::vector<int> cell_material,
+                                         std::string label)
+    : mesh_(mesh),
+      offset_(dofs.offset(body)),
+      materials_(std::move(materials)),
+      cell_material_(std::move(cell_material)),
+      label_(std::move(label)) {
+  assert(!materials_.empty());
+  assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
   // Degree 2(p−1) integrates the straight-element integrand exactly; P2 gets 3 for curved cells.
   const int order = cell_order(mesh.cell_type);
   tab_ = tabulate(mesh.cell_type, simplex_quadrature(mesh.dim, order == 1 ? 0 : 3));
@@ -24,7 +37,8 @@ void LinearElasticEnergy::for_each_cell(F&& f) const {
     for (Index c = 0; c < mesh_.num_cells(); ++c) {
       const Index* n = mesh_.cell(c);
       const auto X = gather_coordinates<D, NN>(mesh_.x, n);
-      if (linear_elastic_stiffness<D, NN>(X, tab_, material_.lambda, material_.mu, K) >= 0)
+      const LinearElastic& m = materials_[cell_material_.empty() ? 0 : cell_material_[c]];
+      if (linear_elastic_stiffness<D, NN>(X, tab_, m.lambda, m.mu, K) >= 0)
         throw InputError("", label_ + ": " + mesh_.cell_label(c),
                          "inverted or degenerate element (Jacobian determinant <= 0 inside the cell)");
       for (int a = 0; a < NN; ++a)

@@ -1,9 +1,11 @@
 #pragma once
 /// \file linear_elastic_energy.hpp
 /// Strain energy of one linear-elastic body, E(u) = ½ a(u, u) = ½ uᵀ K u (talk eq. 4–5).
-/// Element stiffnesses are recomputed at every call (no per-cell storage).
+/// Element stiffnesses are recomputed at every call (no per-cell storage). Each cell has its own law:
+/// materials[cell_material[c]] (one law for all cells when cell_material is empty).
 
 #include <string>
+#include <vector>
 
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/dof_map.hpp"
@@ -19,6 +21,10 @@ class LinearElasticEnergy : public EnergyTerm {
   /// isoparametric map is inverted or degenerate at a quadrature point.
   LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                       std::string label);
+  /// A body of several materials: `materials` non-empty; `cell_material` empty or one index into
+  /// `materials` per cell of `mesh`.
+  LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, std::vector<LinearElastic> materials,
+                      std::vector<int> cell_material, std::string label);
   std::string name() const override { return "elastic(" + label_ + ")"; }
   double value(const VectorXd& u) const override;
   void add_gradient(const VectorXd& u, VectorXd& g) const override;
@@ -32,7 +38,8 @@ class LinearElasticEnergy : public EnergyTerm {
 
   const Mesh& mesh_;
   Index offset_;
-  LinearElastic material_;
+  std::vector<LinearElastic> materials_;
+  std::vector<int> cell_material_;
   std::string label_;
   Tabulation tab_;
 };

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string_view>
 #include <utility>
 
@@ -90,12 +91,33 @@ class Lexer {
   int line_ = 1;
 };
 
-void scan(const std::string& path, int depth) {
+std::string read_geo_text(const std::string& path) {
   if (const std::string problem = input_file_problem(path); !problem.empty())
     throw InputError(path, "", "cannot read the .geo file: it " + problem);
   std::ifstream in(path, std::ios::binary);
-  std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  Lexer lex(std::move(text));
+  return std::string{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The .geo file that `Include "f"` or `Merge "f"` (token `t`, file name token `name`) reads as .geo text,
+/// or "" when it merges another kind of file (a mesh, a CAD file).
+std::string included_geo(const std::string& path, const Token& t, const Token& name, int depth) {
+  const fs::path included = fs::path(path).parent_path() / name.text;
+  if (t.text != "Include" && included.extension() != ".geo") return "";
+  if (depth >= kMaxIncludeDepth)
+    throw InputError(path, "line " + std::to_string(t.line),
+                     "more than " + std::to_string(kMaxIncludeDepth) + " nested Include/Merge of .geo files");
+  return included.string();
+}
+
+/// The file name token after Include or Merge (skipping an opening parenthesis).
+Token include_name(Lexer& lex) {
+  Token name = lex.next();
+  while (name.kind == Token::kOther && name.text == "(") name = lex.next();
+  return name;
+}
+
+void scan(const std::string& path, int depth) {
+  Lexer lex(read_geo_text(path));
   for (Token t = lex.next(); t.kind != Token::kEnd; t = lex.next()) {
     if (t.kind != Token::kIdentifier) continue;
     for (std::string_view command : kRunsPrograms)
@@ -103,24 +125,61 @@ void scan(const std::string& path, int depth) {
         throw InputError(path, "line " + std::to_string(t.line),
                          "the command '" + t.text + "' runs another program. " + kHint);
     if (t.text != "Include" && t.text != "Merge") continue;
-    Token name = lex.next();
-    while (name.kind == Token::kOther && name.text == "(") name = lex.next();
+    const Token name = include_name(lex);
     if (name.kind != Token::kString)
       throw InputError(path, "line " + std::to_string(t.line),
                        "'" + t.text + "' with a computed file name cannot be checked for commands that run " +
                            "other programs. " + kHint);
-    const fs::path included = fs::path(path).parent_path() / name.text;
-    const bool geo_text = t.text == "Include" || included.extension() == ".geo";
-    if (!geo_text) continue;
-    if (depth >= kMaxIncludeDepth)
-      throw InputError(path, "line " + std::to_string(t.line),
-                       "more than " + std::to_string(kMaxIncludeDepth) + " nested Include/Merge of .geo files");
-    scan(included.string(), depth + 1);
+    if (const std::string geo = included_geo(path, t, name, depth); !geo.empty()) scan(geo, depth + 1);
+  }
+}
+
+/// Adds the names declared in the brackets of one `DefineConstant[ ... ]` (the lexer just past the
+/// keyword): identifiers directly inside the brackets (not inside a `{...}` or `(...)` of options) and
+/// followed by `=`.
+void read_define_constant(Lexer& lex, std::set<std::string>& names) {
+  Token t = lex.next();
+  if (t.kind != Token::kOther || t.text != "[") return;
+  int depth = 0;  // of (), {} and [] inside the outer brackets
+  Token previous;
+  for (t = lex.next(); t.kind != Token::kEnd; previous = t, t = lex.next()) {
+    if (t.kind == Token::kOther && (t.text == "(" || t.text == "{" || t.text == "[")) ++depth;
+    if (t.kind == Token::kOther && (t.text == ")" || t.text == "}" || t.text == "]")) {
+      if (depth-- == 0) return;
+    }
+    if (depth == 0 && t.kind == Token::kOther && t.text == "=" && previous.kind == Token::kIdentifier)
+      names.insert(previous.text);
+  }
+}
+
+void collect_constants(const std::string& path, int depth, std::set<std::string>& names) {
+  Lexer lex(read_geo_text(path));
+  for (Token t = lex.next(); t.kind != Token::kEnd; t = lex.next()) {
+    if (t.kind != Token::kIdentifier) continue;
+    if (t.text == "DefineConstant") read_define_constant(lex, names);
+    if (t.text != "Include" && t.text != "Merge") continue;
+    const Token name = include_name(lex);
+    if (name.kind != Token::kString) continue;  // a computed name cannot be followed
+    if (const std::string geo = included_geo(path, t, name, depth); !geo.empty())
+      collect_constants(geo, depth + 1, names);
   }
 }
 
 }  // namespace
 
 void check_geo_commands(const std::string& path) { scan(path, 0); }
+
+std::set<std::string> geo_defined_constants(const std::string& path) {
+  std::set<std::string> names;
+  collect_constants(path, 0, names);
+  return names;
+}
+
+bool is_geo_identifier(const std::string& name) {
+  if (name.empty() || !(std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_')) return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return true;
+}
 
 }  // namespace symcontact

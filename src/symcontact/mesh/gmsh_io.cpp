@@ -28,8 +28,21 @@ namespace {
 /// Initialises Gmsh for the lifetime of the object (Gmsh itself is a process-wide singleton).
 class GmshInstance {
  public:
-  explicit GmshInstance(bool verbose) {
-    gmsh::initialize(0, nullptr, false);
+  /// `parameters` are passed as Gmsh's command line passes `-setnumber name value`.
+  GmshInstance(bool verbose, const std::map<std::string, double>& parameters) {
+    std::vector<std::string> args{"symcontact"};
+    for (const auto& [name, value] : parameters) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", value);  // read back exactly by Gmsh's atof
+      args.insert(args.end(), {"-setnumber", name, text});
+    }
+    std::vector<char*> argv;
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    if (parameters.empty())
+      gmsh::initialize(0, nullptr, false);
+    else
+      gmsh::initialize(static_cast<int>(args.size()), argv.data(), false);
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);
     gmsh::option::setNumber("General.Verbosity", verbose ? 5 : 1);
     // Gmsh's API throws its errors as std::string by default (General.AbortOnError = 2), also from
@@ -190,6 +203,22 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
   return f;
 }
 
+/// Fills m.cell_groups: every group of dimension m.dim, restricted to the cells of m (matched by element tag).
+void add_cell_groups(const MeshFile& file, Mesh& m) {
+  std::unordered_map<Index, Index> cell_of_tag;
+  for (std::size_t c = 0; c < m.cell_tags.size(); ++c) cell_of_tag[m.cell_tags[c]] = static_cast<Index>(c);
+  for (const auto& g : file.groups) {
+    if (g.dim != m.dim) continue;
+    std::vector<Index> cells;
+    for (const auto& b : g.blocks)
+      for (Index tag : b.tags)
+        if (auto it = cell_of_tag.find(tag); it != cell_of_tag.end()) cells.push_back(it->second);
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    if (!cells.empty()) m.cell_groups[g.name] = std::move(cells);
+  }
+}
+
 }  // namespace
 
 MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options) {
@@ -203,7 +232,7 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
   if (ext == ".geo" && options.geo_commands == GeoCommands::kRefuse) check_geo_commands(path);
   // Gmsh's own parser trusts the file's structure: check it first (msh_validation.hpp).
   if (ext == ".msh") validate_msh_file(path);
-  GmshInstance gmsh_instance(options.verbose);
+  GmshInstance gmsh_instance(options.verbose, ext == ".geo" ? options.geo_parameters : std::map<std::string, double>{});
   try {
     return read_with_gmsh(path, options, ext == ".geo");
   } catch (const InputError&) {
@@ -270,6 +299,7 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
     for (Index v : b.nodes) m.cells.push_back(local[v]);
     m.cell_tags.insert(m.cell_tags.end(), b.tags.begin(), b.tags.end());
   }
+  add_cell_groups(file, m);
   // Lower-dimensional groups, restricted to this body.
   const CellType ft = facet_type(m.cell_type);
   for (const auto& g : file.groups) {

@@ -7,6 +7,7 @@
 /// dimensions). The Gmsh library is global state; these functions initialise and finalise it
 /// around each call, so they are not re-entrant.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,10 @@ struct MeshReadOptions {
   /// is at most this; 0 or less: no limit.
   double max_predicted_cells = kDefaultMaxPredictedCells;
   GeoCommands geo_commands = GeoCommands::kRefuse;
+  /// Numbers given to a .geo before it is parsed, as Gmsh's command-line `-setnumber name value` does:
+  /// they replace the values of `DefineConstant[ name = ... ]` (geo_defined_constants()). Names must be
+  /// Gmsh identifiers and values finite (the problem reader checks both); ignored for a .msh file.
+  std::map<std::string, double> geo_parameters;
   bool verbose = false;    ///< let Gmsh print its log
 };
 
@@ -71,7 +76,8 @@ struct MeshFile {
 MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options);
 
 /// The mesh of one body: the cells of dimension `dim` in physical group `group` (all cells of that
-/// dimension when `group` is empty), renumbered; lower-dimensional groups restricted to its nodes
+/// dimension when `group` is empty), renumbered; groups of dimension `dim` restricted to its cells
+/// (Mesh::cell_groups, matched by element tag), lower-dimensional groups restricted to its nodes
 /// (facet groups from dimension dim − 1, node groups from the rest). Cells are oriented, checked and
 /// facets located; the mesh keeps the file's node and element tags for messages. Throws
 /// InputError(file, key = `group_key`) when the group is absent or empty, and InputError(file, ...)

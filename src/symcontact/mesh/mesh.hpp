@@ -1,6 +1,6 @@
 #pragma once
 /// \file mesh.hpp
-/// The mesh of one body: nodes, volume cells of a single Lagrange type, and named groups of
+/// The mesh of one body: nodes, volume cells of a single Lagrange type, and named groups of cells, of
 /// boundary facets and of nodes (from Gmsh physical groups).
 ///
 /// Layout: `x` is dim × num_nodes (column j = node j). `cells` holds num_cells × cell_num_nodes(type)
@@ -44,6 +44,8 @@ struct Mesh {
   /// The dimension of the physical group each node group of a mesh file comes from (0: physical points;
   /// 1: physical curves in 3D); no entry for a node group built in code.
   std::map<std::string, int> node_group_dims;
+  /// Physical groups of cells (of dimension `dim`) restricted to this mesh: cell indices, increasing.
+  std::map<std::string, std::vector<Index>> cell_groups;
 
   Index num_nodes() const { return x.cols(); }
   int nodes_per_cell() const { return cell_num_nodes(cell_type); }

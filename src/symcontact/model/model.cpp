@@ -1,7 +1,9 @@
 #include "symcontact/model/model.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/hyperelastic_energy.hpp"
@@ -60,7 +62,7 @@ const std::vector<Index>& require_points(const ProblemSpec& spec, const Body& b,
   return it->second;
 }
 
-/// The finite-strain law of a hyperelastic body (materials/hyperelastic.hpp); none for linear elasticity.
+/// The finite-strain law of a hyperelastic material (materials/hyperelastic.hpp); none for linear elasticity.
 std::optional<Hyperelastic> hyperelastic_law(const MaterialSpec& ms) {
   if (ms.model == "linear_elastic") return std::nullopt;
   const HyperelasticLaw law = ms.model == "neo_hookean" ? HyperelasticLaw::kNeoHookean : HyperelasticLaw::kMooneyRivlin;
@@ -69,10 +71,61 @@ std::optional<Hyperelastic> hyperelastic_law(const MaterialSpec& ms) {
                                              : Hyperelastic::mooney_rivlin(ms.c1, ms.c2, ms.kappa);
 }
 
-/// The strain energy of a body: linear elastic, or finite-strain hyperelastic.
+/// The strain energy of a body: linear elastic, or finite-strain hyperelastic, each cell with its material.
 std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs, int b) {
-  if (!body.hyperelastic) return std::make_unique<LinearElasticEnergy>(body.mesh, dofs, b, body.material, body.name);
-  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, *body.hyperelastic, body.name);
+  if (body.hyperelastic.empty())
+    return std::make_unique<LinearElasticEnergy>(body.mesh, dofs, b, body.materials, body.cell_material, body.name);
+  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, body.hyperelastic, body.cell_material, body.name);
+}
+
+/// The laws of a body's materials (Body::materials, Body::hyperelastic).
+void set_material_laws(const ProblemSpec& spec, Body& body) {
+  for (const MaterialSpec& ms : body.spec->materials) {
+    body.materials.push_back(LinearElastic::from_young_poisson(ms.young, ms.poisson, spec.model));
+    if (std::optional<Hyperelastic> law = hyperelastic_law(ms)) body.hyperelastic.push_back(*law);
+  }
+}
+
+/// Body::cell_material from the groups of the body's materials: every cell in exactly one material's group.
+/// A body of one material without a group leaves it empty. Throws InputError(problem file, key of the
+/// material) for a group that is not a group of the body's cells, a cell in two materials' groups, or a
+/// cell in none (naming the cell by its element tag and counting the others).
+void assign_cell_materials(const ProblemSpec& spec, Body& body) {
+  const std::vector<MaterialSpec>& materials = body.spec->materials;
+  if (materials.size() == 1 && materials[0].group.empty()) return;
+  const Mesh& mesh = body.mesh;
+  const std::string where = "body '" + body.name + "' (mesh " + body.spec->mesh_file + ")";
+  body.cell_material.assign(mesh.num_cells(), -1);
+  for (int r = 0; r < static_cast<int>(materials.size()); ++r) {
+    const MaterialSpec& ms = materials[r];
+    if (ms.group.empty())
+      throw InputError(spec.file, ms.key + ".group",
+                       "missing required key (a body of several materials needs the group of each)");
+    auto it = mesh.cell_groups.find(ms.group);
+    if (it == mesh.cell_groups.end()) {
+      std::string known;
+      for (const auto& [name, cells] : mesh.cell_groups) known += (known.empty() ? "'" : ", '") + name + "'";
+      throw InputError(spec.file, ms.key + ".group",
+                       where + " has no physical group '" + ms.group + "' of dimension " + std::to_string(mesh.dim) +
+                           " among its cells; its groups of cells: " + (known.empty() ? "none" : known));
+    }
+    for (Index c : it->second) {
+      if (body.cell_material[c] >= 0)
+        throw InputError(spec.file, ms.key + ".group",
+                         where + ": " + mesh.cell_label(c) + " is in group '" + ms.group + "' and in group '" +
+                             materials[body.cell_material[c]].group + "' (" + materials[body.cell_material[c]].key +
+                             "): each cell takes one material");
+      body.cell_material[c] = r;
+    }
+  }
+  const auto uncovered = std::count(body.cell_material.begin(), body.cell_material.end(), -1);
+  if (uncovered == 0) return;
+  const Index first = std::find(body.cell_material.begin(), body.cell_material.end(), -1) - body.cell_material.begin();
+  throw InputError(spec.file, body.spec->key + ".material",
+                   where + ": " + mesh.cell_label(first) + (uncovered > 1 ? " and " + std::to_string(uncovered - 1) +
+                                                                                " other cells are"
+                                                                          : " is") +
+                       " in no material's group: every cell of the body needs a material");
 }
 }  // namespace
 
@@ -90,14 +143,17 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
   mesh_options.verbose = log.level() >= Verbosity::kDebug;
   {
     ScopedPhase t(times, "meshing");
-    // Bodies from the same file share one read.
-    std::map<std::string, MeshFile> files;
+    // Bodies from the same file with the same mesh parameters share one read.
+    std::map<std::pair<std::string, std::map<std::string, double>>, MeshFile> files;
     for (const auto& bs : spec.bodies) {
-      auto it = files.find(bs.mesh_path);
+      auto it = files.find({bs.mesh_path, bs.mesh_parameters});
       if (it == files.end()) {
         log.detail("reading mesh " + bs.mesh_path);
+        MeshReadOptions body_options = mesh_options;
+        body_options.geo_parameters = bs.mesh_parameters;
         try {
-          it = files.emplace(bs.mesh_path, read_mesh_file(bs.mesh_path, mesh_options)).first;
+          MeshFile file = read_mesh_file(bs.mesh_path, body_options);
+          it = files.emplace(std::make_pair(bs.mesh_path, bs.mesh_parameters), std::move(file)).first;
         } catch (const InputError& e) {
           // A malformed mesh file: name the problem file, the body that reads it, the mesh file and
           // where in it ("line L" from the structural check).
@@ -120,8 +176,8 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
                          "body '" + bs.name + "', mesh " + bs.mesh_file + ": " + (e.key().empty() ? "" : e.key() + ": ") +
                              e.message());
       }
-      body->material = LinearElastic::from_young_poisson(bs.material.young, bs.material.poisson, spec.model);
-      body->hyperelastic = hyperelastic_law(bs.material);
+      set_material_laws(spec, *body);
+      assign_cell_materials(spec, *body);
       m->dofs_.add_body(body->mesh.num_nodes());
       std::ostringstream s;
       s << "body '" << bs.name << "': " << body->mesh.num_nodes() << " nodes, " << body->mesh.num_cells() << " "

@@ -39,8 +39,12 @@ struct Body {
   std::string name;
   const BodySpec* spec = nullptr;
   Mesh mesh;
-  LinearElastic material;                   ///< the small-strain law (for every body)
-  std::optional<Hyperelastic> hyperelastic; ///< the finite-strain law, for hyperelastic bodies
+  /// The laws of the body's materials, in the order of spec->materials: the small-strain law of each (for
+  /// every body), and the finite-strain law of each for a hyperelastic body (empty for a linear one).
+  std::vector<LinearElastic> materials;
+  std::vector<Hyperelastic> hyperelastic;
+  /// The material of each cell (an index into `materials`); empty when the body has one material.
+  std::vector<int> cell_material;
 };
 
 /// One named Dirichlet boundary of a body, for reaction forces.

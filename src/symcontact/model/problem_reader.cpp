@@ -8,6 +8,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -19,6 +20,7 @@
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/input_file.hpp"
+#include "symcontact/mesh/geo_commands.hpp"
 #include "symcontact/model/toml_parse.hpp"
 #include "symcontact/optim/ipopt_solver.hpp"
 
@@ -404,8 +406,8 @@ class Reader {
 
   BodySpec read_body(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
     check_keys(t, path,
-               {"name", "mesh", "group", "body_force", "body_force_factors", "material", "dirichlet", "traction",
-                "pressure", "point_load"});
+               {"name", "mesh", "mesh_parameters", "group", "body_force", "body_force_factors", "material", "dirichlet",
+                "traction", "pressure", "point_load"});
     BodySpec body;
     body.key = path;
 
@@ -416,6 +418,9 @@ class Reader {
     }
 
     read_mesh(t, path, body.mesh_file, body.mesh_path);
+    if (const toml::node* n = t.get("mesh_parameters")) {
+      body.mesh_parameters = read_mesh_parameters(*n, child(path, "mesh_parameters"), body);
+    }
 
     if (const toml::node* n = t.get("group")) body.group = as_nonempty_string(*n, child(path, "group"));
 
@@ -428,9 +433,8 @@ class Reader {
       body.body_force_factors = as_factors(*n, key, spec);
     }
 
-    const std::string material_key = child(path, "material");
-    body.material = read_material(as_table(required(t, path, "material", "a table [body.material]"), material_key),
-                                  material_key, spec);
+    body.materials = read_materials(required(t, path, "material", "a table [body.material]"), child(path, "material"),
+                                    spec);
 
     read_list(t, path, "dirichlet", body.dirichlet, &Reader::read_dirichlet, spec);
     read_list(t, path, "traction", body.tractions, &Reader::read_traction, spec);
@@ -470,6 +474,92 @@ class Reader {
                     "the problem file's folder)");
     }
     if (!problem.empty()) fail(key, "mesh file " + in_quotes(mesh_path) + " " + problem);
+  }
+
+  /// mesh_parameters = { name = value, ... }: numbers handed to the body's .geo as Gmsh's `-setnumber`
+  /// (gmsh_io.hpp). Each name must be a Gmsh identifier declared by DefineConstant in the .geo (or a file
+  /// it includes; geo_commands.hpp), each value a finite number; a .msh mesh takes none.
+  std::map<std::string, double> read_mesh_parameters(const toml::node& node, const std::string& key,
+                                                     const BodySpec& body) const {
+    const toml::table& t = as_table(node, key);
+    if (fs::path(body.mesh_file).extension() != ".geo") {
+      fail(key, "mesh parameters are passed to a .geo file when it is meshed, but mesh " + in_quotes(body.mesh_file) +
+                    " is a .msh file (remove mesh_parameters, or mesh the .geo)");
+    }
+    std::set<std::string> declared;
+    try {
+      declared = geo_defined_constants(body.mesh_path);
+    } catch (const InputError& e) {
+      fail(child(body.key, "mesh"), e.file() + (e.key().empty() ? "" : ": " + e.key()) + ": " + e.message());
+    }
+    std::string declared_list;
+    for (const std::string& d : declared) declared_list += (declared_list.empty() ? "" : ", ") + d;
+    std::map<std::string, double> parameters;
+    for (auto&& [name_key, value] : t) {
+      const std::string name(name_key.str());
+      const std::string parameter_key = child(key, name);
+      if (!is_geo_identifier(name)) {
+        fail(parameter_key, "expected a Gmsh variable name (a letter or '_', then letters, digits and '_'), got " +
+                                in_quotes(name));
+      }
+      parameters[name] = as_number(value, parameter_key);
+      if (!declared.count(name)) {
+        fail(parameter_key, "mesh " + in_quotes(body.mesh_file) + " declares no DefineConstant[ " + name +
+                                " = ... ]: only such constants take a value from outside the file (a plain "
+                                "assignment would replace it); constants it declares: " +
+                                (declared_list.empty() ? std::string("none") : declared_list));
+      }
+    }
+    return parameters;
+  }
+
+  /// material: one table [body.material] (the whole body, or the group it names), or an array of tables
+  /// [[body.material]], each with the physical group of cells it fills. Groups must differ, and the models
+  /// must be all linear elastic or all hyperelastic (one body is solved by one of the two formulations).
+  std::vector<MaterialSpec> read_materials(const toml::node& node, const std::string& key,
+                                           const ProblemSpec& spec) const {
+    if (node.is_table()) return {read_material_in_group(*node.as_table(), key, spec, false)};
+    if (!node.is_array()) {
+      fail(key, "expected a table [body.material], or an array of tables [[body.material]] each with a group, got " +
+                    describe(node));
+    }
+    const toml::array& list = as_table_array(node, key, "[[body.material]]");
+    if (list.empty()) fail(key, "expected at least one [[body.material]], got an empty array");
+    std::vector<MaterialSpec> materials;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      materials.push_back(read_material_in_group(*list[i].as_table(), indexed(key, i), spec, true));
+      const MaterialSpec& m = materials.back();
+      for (std::size_t j = 0; j < i; ++j) {
+        if (materials[j].group == m.group) {
+          fail(child(m.key, "group"),
+               "group " + in_quotes(m.group) + " already has a material (" + materials[j].key + ")");
+        }
+        if ((materials[j].model == "linear_elastic") != (m.model == "linear_elastic")) {
+          fail(child(m.key, "model"), "model " + in_quotes(m.model) + " in a body whose " + materials[j].key + " is " +
+                                          in_quotes(materials[j].model) +
+                                          ": the materials of one body must be all \"linear_elastic\" or all "
+                                          "hyperelastic (use two bodies bonded by a shared mesh otherwise)");
+        }
+      }
+    }
+    return materials;
+  }
+
+  /// One material table with its optional `group` (required when `group_required`, in a list).
+  MaterialSpec read_material_in_group(const toml::table& t, const std::string& path, const ProblemSpec& spec,
+                                      bool group_required) const {
+    std::string group;
+    if (const toml::node* n = t.get("group")) {
+      group = as_nonempty_string(*n, child(path, "group"));
+    } else if (group_required) {
+      fail(child(path, "group"), "missing required key (expected the physical group of cells this material fills; "
+                                 "every [[body.material]] of a list names one)");
+    }
+    toml::table rest = t;
+    rest.erase("group");
+    MaterialSpec material = read_material(rest, path, spec);
+    material.group = group;
+    return material;
   }
 
   /// [body.material]: model "linear_elastic" (E, nu), "neo_hookean" (E, nu | mu, lambda) or

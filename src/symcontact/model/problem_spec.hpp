@@ -22,7 +22,9 @@ namespace symcontact {
 /// materials/hyperelastic.hpp). Parameters: (E, nu) for every model, or the model's own constants
 /// (mu, lambda for neo_hookean; c1, c2, kappa for mooney_rivlin), exactly one set.
 struct MaterialSpec {
-  std::string key;             ///< e.g. "body[0].material"
+  std::string key;             ///< e.g. "body[0].material", or "body[0].material[1]" in a list
+  /// The physical group of cells (of the body's dimension) this material fills; empty: the whole body.
+  std::string group;
   std::string model = "linear_elastic";
   double young = 0.0;          ///< E > 0, [stress]; with own_constants, the small-strain equivalent
   double poisson = 0.0;        ///< nu in (-1, 0.5); with own_constants, the small-strain equivalent
@@ -80,8 +82,12 @@ struct BodySpec {
   std::string name;               ///< unique; used in output file names
   std::string mesh_file;          ///< as written in the problem file
   std::string mesh_path;          ///< resolved against the problem file's folder
+  /// Numbers set in the .geo before it is meshed, as Gmsh's `-setnumber name value` (mesh_parameters).
+  std::map<std::string, double> mesh_parameters;
   std::string group;              ///< physical group of cells forming the body; empty: all cells of the file
-  MaterialSpec material;
+  /// One material for the whole body (group empty), or one per physical group of its cells
+  /// ([[body.material]] tables, each with `group`); all linear elastic or all hyperelastic.
+  std::vector<MaterialSpec> materials;
   std::vector<double> body_force; ///< force per unit volume, dim components (empty: none)
   std::vector<double> body_force_factors;
   std::vector<DirichletSpec> dirichlet;

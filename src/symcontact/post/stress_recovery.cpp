@@ -1,5 +1,7 @@
 #include "symcontact/post/stress_recovery.hpp"
 
+#include <cassert>
+
 #include "symcontact/core/error.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
 #include "symcontact/fem/element_geometry.hpp"
@@ -46,7 +48,23 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
   return recover_fields(mesh, dofs, body, linear_point_law(material), u);
 }
 
+BodyFields recover_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u) {
+  std::vector<PointLaw> laws;
+  if (body.hyperelastic.empty())
+    for (const LinearElastic& m : body.materials) laws.push_back(linear_point_law(m));
+  else
+    for (const Hyperelastic& m : body.hyperelastic) laws.push_back(hyperelastic_point_law(m));
+  return recover_fields(body.mesh, dofs, b, laws, body.cell_material, u);
+}
+
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u) {
+  return recover_fields(mesh, dofs, body, std::vector<PointLaw>{law}, {}, u);
+}
+
+BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const std::vector<PointLaw>& laws,
+                          const std::vector<int>& cell_law, const VectorXd& u) {
+  assert(!laws.empty());
+  assert(cell_law.empty() || static_cast<Index>(cell_law.size()) == mesh.num_cells());
   BodyFields f;
   const Index nn = mesh.num_nodes(), nc = mesh.num_cells();
   const int D = mesh.dim;
@@ -74,13 +92,15 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
     constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;
     Eigen::Matrix<double, NN, DD> G;
     Eigen::Matrix<double, DD, NN> U;
+    const PointLaw* law = &laws[0];
     auto state_at = [&](const Eigen::Matrix<double, DD, NN>& X, const double* dN, double& det) {
       det = physical_gradients<DD, NN>(X, dN, G);
       Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
       if (det > 0) H.topLeftCorner<DD, DD>() = U * G;  // ∇_X u
-      return law(H);
+      return (*law)(H);
     };
     for (Index c = 0; c < nc; ++c) {
+      law = &laws[cell_law.empty() ? 0 : cell_law[c]];
       const Index* n = mesh.cell(c);
       const auto X = gather_coordinates<DD, NN>(mesh.x, n);
       for (int a = 0; a < NN; ++a) U.col(a) = f.displacement.col(n[a]).template head<DD>();

@@ -18,11 +18,13 @@
 /// A point where the law cannot be evaluated (J ≤ 0, as in a failed iterate) reports zero stress; its
 /// J ≤ 0 marks it (VTU files cannot hold NaN).
 #include <functional>
+#include <vector>
 
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
 #include "symcontact/mesh/mesh.hpp"
+#include "symcontact/model/model.hpp"
 
 namespace symcontact {
 
@@ -51,9 +53,19 @@ PointLaw linear_point_law(const LinearElastic& material);
 PointLaw hyperelastic_point_law(const Hyperelastic& material);
 
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u);
+/// A body of several materials: cell c reports laws[cell_law[c]] (`laws` non-empty; `cell_law` empty, for
+/// laws[0] everywhere, or one index per cell). A node on the interface of two materials averages the
+/// stresses of the cells around it, whatever their law (the nodal stress jumps there; the cell values do not
+/// mix).
+BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const std::vector<PointLaw>& laws,
+                          const std::vector<int>& cell_law, const VectorXd& u);
 /// The linear-elastic case (ε, σ = C : ε).
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                           const VectorXd& u);
+
+/// The fields of body `b` of a model: each cell with the law of its material (Body::cell_material), the
+/// finite-strain law for a hyperelastic body, the small-strain one otherwise.
+BodyFields recover_fields(const Body& body, const DofMap& dofs, int b, const VectorXd& u);
 
 /// Packs a symmetric 3 × 3 tensor into ParaView's 6-component order.
 Eigen::Matrix<double, 6, 1> to_voigt6(const Eigen::Matrix3d& t);

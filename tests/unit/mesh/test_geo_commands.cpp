@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
@@ -56,6 +57,29 @@ TEST_F(GeoCommands, IncludedFilesAreScannedAndComputedNamesRefused) {
   write("mesh.msh", "$MeshFormat\n");  // merged meshes are data, not scripts
   EXPECT_EQ(refused_at(write("merge.geo", "Merge \"mesh.msh\";\n")), "none");
   EXPECT_EQ(refused_at(write("self.geo", "Include \"self.geo\";\n")), "line 1");  // nesting limit
+}
+
+TEST_F(GeoCommands, DefinedConstantsAreTheNamesInsideDefineConstant) {
+  write("sizes.geo", "DefineConstant[ h = 0.1 ];\n");
+  const std::string path = write("constants.geo",
+                                 "DefineConstant[ n = 4, lc = {0.5, Name \"Parameters/lc\", Min 0.1, Max 1},\n"
+                                 "  w = {2, Choices{1 = \"a\", 2 = \"b\"}} ];\n"
+                                 "m = 3;  // a plain assignment is not a constant\n"
+                                 "// DefineConstant[ commented = 1 ];\n"
+                                 "Include \"sizes.geo\";\n"
+                                 "Printf(\"DefineConstant[ in_string = 1 ]\");\n");
+  EXPECT_EQ(geo_defined_constants(path), (std::set<std::string>{"h", "lc", "n", "w"}));
+}
+
+TEST(GeoIdentifier, LettersDigitsAndUnderscoreNotFirstDigit) {
+  EXPECT_TRUE(is_geo_identifier("h"));
+  EXPECT_TRUE(is_geo_identifier("_n2"));
+  EXPECT_TRUE(is_geo_identifier("Mesh_size"));
+  EXPECT_FALSE(is_geo_identifier(""));
+  EXPECT_FALSE(is_geo_identifier("2h"));
+  EXPECT_FALSE(is_geo_identifier("h-1"));
+  EXPECT_FALSE(is_geo_identifier("a.b"));
+  EXPECT_FALSE(is_geo_identifier("h "));
 }
 
 }  // namespace

@@ -179,6 +179,103 @@ TEST_F(ModelTest, ReactionsBalanceTheAppliedLoad) {
   EXPECT_NEAR(r[0][1], -2.0, 1e-10);
 }
 
+/// A unit square cut into n × n squares of two triangles each, n a DefineConstant (default 4).
+const char* const kSquareGeo = R"(DefineConstant[ n = 4 ];
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0}; Point(4) = {0, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 2, 3, 4} = n + 1;
+Transfinite Surface{1};
+Physical Surface("block") = {1};
+Physical Curve("bottom") = {1};
+)";
+
+TEST_F(ModelTest, MeshParametersSetTheGeoConstants) {
+  testing::write_text(folder_ / "square.geo", kSquareGeo);
+  auto cells = [&](const std::string& parameters) {
+    const std::string text = "[problem]\ndimension = 2\n" +
+                             testing::body_toml("block", "square.geo", "block", "E = 1.0, nu = 0.3",
+                                                parameters + testing::dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n"));
+    const auto c = testing::build_model(text, folder_.path());
+    return c->model->bodies()[0]->mesh.num_cells();
+  };
+  EXPECT_EQ(cells(""), 2 * 4 * 4);  // the .geo's own n = 4
+  EXPECT_EQ(cells("mesh_parameters = { n = 4 }\n"), 2 * 4 * 4);
+  EXPECT_EQ(cells("mesh_parameters = { n = 8 }\n"), 2 * 8 * 8);
+}
+
+TEST_F(ModelTest, BodiesOfOneGeoWithOtherMeshParametersHaveTheirOwnMesh) {
+  testing::write_text(folder_ / "square.geo", kSquareGeo);
+  const std::string clamp = testing::dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n");
+  const auto c = testing::build_model(
+      "[problem]\ndimension = 2\n" +
+          testing::body_toml("coarse", "square.geo", "block", "E = 1.0, nu = 0.3",
+                             "mesh_parameters = { n = 2 }\n" + clamp) +
+          testing::body_toml("fine", "square.geo", "block", "E = 1.0, nu = 0.3", "mesh_parameters = { n = 3 }\n" + clamp),
+      folder_.path());
+  EXPECT_EQ(c->model->bodies()[0]->mesh.num_cells(), 2 * 2 * 2);
+  EXPECT_EQ(c->model->bodies()[1]->mesh.num_cells(), 2 * 3 * 3);
+}
+
+/// Two unit squares side by side, "left" and "right", both in "bar"; "bottom" under both.
+const char* const kBarGeo = R"(Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {2, 0, 0};
+Point(4) = {2, 1, 0}; Point(5) = {1, 1, 0}; Point(6) = {0, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5}; Line(5) = {5, 6}; Line(6) = {6, 1};
+Line(7) = {2, 5};
+Curve Loop(1) = {1, 7, 5, 6}; Plane Surface(1) = {1};
+Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};
+Transfinite Curve{1:7} = 3;
+Transfinite Surface{1, 2};
+Physical Surface("left") = {1}; Physical Surface("right") = {2}; Physical Surface("bar") = {1, 2};
+Physical Curve("bottom") = {1, 2};
+)";
+
+/// The bar with a material on each group of `groups` (E = 1 + its index).
+std::unique_ptr<testing::ModelCase> build_bar(const testing::TempFolder& folder,
+                                              std::initializer_list<const char*> groups) {
+  testing::write_text(folder / "bar.geo", kBarGeo);
+  std::string materials;
+  double E = 1.0;
+  for (const char* g : groups)
+    materials += "[[body.material]]\ngroup = \"" + std::string(g) + "\"\nE = " + std::to_string(E++) + "\nnu = 0.0\n";
+  return testing::build_model("[problem]\ndimension = 2\n[[body]]\nname = \"bar\"\nmesh = \"bar.geo\"\n"
+                              "group = \"bar\"\n" + materials +
+                                  testing::dirichlet_toml("bottom", "ux = 0.0\nuy = 0.0\n"),
+                              folder.path());
+}
+
+TEST_F(ModelTest, EachCellTakesTheMaterialOfItsGroup) {
+  const auto bar_case = build_bar(folder_, {"left", "right"});
+  const Body& bar = *bar_case->model->bodies()[0];
+  ASSERT_EQ(bar.materials.size(), 2u);
+  EXPECT_EQ(bar.materials[1].mu, 1.0);  // E = 2, nu = 0: mu = E / 2
+  ASSERT_EQ(static_cast<Index>(bar.cell_material.size()), bar.mesh.num_cells());
+  EXPECT_EQ(bar.mesh.num_cells(), 16);
+  for (Index c = 0; c < bar.mesh.num_cells(); ++c) {
+    const Index* n = bar.mesh.cell(c);
+    const double x = (bar.mesh.x(0, n[0]) + bar.mesh.x(0, n[1]) + bar.mesh.x(0, n[2])) / 3.0;
+    EXPECT_EQ(bar.cell_material[c], x < 1.0 ? 0 : 1) << "cell " << c;
+  }
+}
+
+TEST_F(ModelTest, MaterialGroupsMustCoverEveryCellOnce) {
+  auto error_of = [&](std::initializer_list<const char*> groups) {
+    const auto e = testing::input_error_of([&] { build_bar(folder_, groups); });
+    return e ? e->key() + ": " + e->message() : std::string("no error");
+  };
+  EXPECT_EQ(error_of({"left", "middle"}),
+            "body[0].material[1].group: body 'bar' (mesh bar.geo) has no physical group 'middle' of dimension 2 among "
+            "its cells; its groups of cells: 'bar', 'left', 'right'");
+  EXPECT_NE(error_of({"left", "bar"}).find("body[0].material[1].group: body 'bar' (mesh bar.geo): element "),
+            std::string::npos);
+  EXPECT_NE(error_of({"left", "bar"}).find("is in group 'bar' and in group 'left' (body[0].material[0]): each cell "
+                                           "takes one material"),
+            std::string::npos);
+  EXPECT_NE(error_of({"left"}).find("body[0].material: body 'bar' (mesh bar.geo): element "), std::string::npos);
+  EXPECT_NE(error_of({"left"}).find(" and 7 other cells are in no material's group"), std::string::npos);
+}
+
 TEST_F(ModelTest, MissingDirichletGroupIsAnInputError) {
   try {
     build(kBlock.replaced("boundary = \"left\"", "boundary = \"nowhere\""));

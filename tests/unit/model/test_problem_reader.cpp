@@ -30,6 +30,7 @@ const std::string& mesh_dir() {
     const fs::path d = fs::path(::testing::TempDir()) / "symcontact_problem_reader";
     testing::write_placeholders(d, {"block.geo", "block.msh", "block.stl", "meshes/foundation.msh", "upper.geo",
                                     "lower.geo", "die.geo"});
+    testing::write_text(d / "param.geo", "DefineConstant[ h = 0.5, n = 4 ];\n");
     return d.string();
   }();
   return dir;
@@ -164,10 +165,10 @@ b = "foundation-2.top"
   EXPECT_EQ(b.group, "solid");
   EXPECT_EQ(b.body_force, (std::vector<double>{0.0, -1.0}));
   EXPECT_EQ(b.body_force_factors, (std::vector<double>{0.0, 1.0}));
-  EXPECT_EQ(b.material.key, "body[0].material");
-  EXPECT_EQ(b.material.model, "linear_elastic");
-  EXPECT_EQ(b.material.young, 210.0);
-  EXPECT_EQ(b.material.poisson, 0.3);
+  EXPECT_EQ(b.materials[0].key, "body[0].material");
+  EXPECT_EQ(b.materials[0].model, "linear_elastic");
+  EXPECT_EQ(b.materials[0].young, 210.0);
+  EXPECT_EQ(b.materials[0].poisson, 0.3);
 
   ASSERT_EQ(b.dirichlet.size(), 2u);
   EXPECT_EQ(b.dirichlet[0].key, "body[0].dirichlet[0]");
@@ -211,9 +212,9 @@ b = "foundation-2.top"
   EXPECT_EQ(f.mesh_path, resolved("meshes/foundation.msh"));
   EXPECT_TRUE(f.group.empty());
   EXPECT_TRUE(f.body_force.empty());
-  EXPECT_EQ(f.material.key, "body[1].material");
-  EXPECT_EQ(f.material.young, 1000.0);
-  EXPECT_EQ(f.material.poisson, -0.2);
+  EXPECT_EQ(f.materials[0].key, "body[1].material");
+  EXPECT_EQ(f.materials[0].young, 1000.0);
+  EXPECT_EQ(f.materials[0].poisson, -0.2);
   EXPECT_TRUE(f.dirichlet.empty() && f.tractions.empty() && f.pressures.empty() && f.point_loads.empty());
 }
 
@@ -256,7 +257,7 @@ traction = [1, 2, 3]
   EXPECT_TRUE(spec.output.vtu);
   EXPECT_TRUE(spec.output.summary);
   ASSERT_EQ(spec.bodies.size(), 1u);
-  EXPECT_EQ(spec.bodies[0].material.model, "linear_elastic");
+  EXPECT_EQ(spec.bodies[0].materials[0].model, "linear_elastic");
   EXPECT_EQ(spec.bodies[0].body_force, (std::vector<double>{0.0, 0.0, -9.81}));
   EXPECT_EQ(spec.bodies[0].dirichlet[0].value[2], std::optional<double>(0.0));
   EXPECT_EQ(spec.bodies[0].tractions[0].traction, (std::vector<double>{1.0, 2.0, 3.0}));
@@ -267,7 +268,7 @@ traction = [1, 2, 3]
 TEST(ProblemReader, HyperelasticMaterialsFromYoungAndPoisson) {
   for (const char* model : {"neo_hookean", "mooney_rivlin"}) {
     const ProblemSpec spec = parse(kBase.replaced("E = 1.0", std::string("model = \"") + model + "\"\nE = 1.0"));
-    const MaterialSpec& m = spec.bodies[0].material;
+    const MaterialSpec& m = spec.bodies[0].materials[0];
     EXPECT_EQ(m.model, model);
     EXPECT_FALSE(m.own_constants);
     EXPECT_EQ(m.young, 1.0);
@@ -277,7 +278,7 @@ TEST(ProblemReader, HyperelasticMaterialsFromYoungAndPoisson) {
 
 TEST(ProblemReader, NeoHookeanOwnConstants) {
   const ProblemSpec spec = parse(kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nmu = 0.5\nlambda = 1.5"));
-  const MaterialSpec& m = spec.bodies[0].material;
+  const MaterialSpec& m = spec.bodies[0].materials[0];
   EXPECT_EQ(m.model, "neo_hookean");
   EXPECT_TRUE(m.own_constants);
   EXPECT_EQ(m.mu, 0.5);
@@ -290,7 +291,7 @@ TEST(ProblemReader, NeoHookeanOwnConstants) {
 TEST(ProblemReader, MooneyRivlinOwnConstantsIn3D) {
   const ProblemSpec spec =
       parse(kBase.replaced("E = 1.0\nnu = 0.3", "model = \"mooney_rivlin\"\nc1 = 0.3\nc2 = 0\nkappa = 2").in_3d());
-  const MaterialSpec& m = spec.bodies[0].material;
+  const MaterialSpec& m = spec.bodies[0].materials[0];
   EXPECT_EQ(m.model, "mooney_rivlin");
   EXPECT_TRUE(m.own_constants);
   EXPECT_EQ(m.c1, 0.3);
@@ -624,6 +625,36 @@ TEST(ProblemReader, DocumentationExampleIsValid) {
 }
 #endif
 
+TEST(ProblemReader, MeshParametersOfAGeo) {
+  const ProblemSpec spec = parse(
+      kBase.replaced("mesh = \"block.geo\"", "mesh = \"param.geo\"\nmesh_parameters = { h = 0.3, n = 7 }"));
+  EXPECT_EQ(spec.bodies[0].mesh_parameters, (std::map<std::string, double>{{"h", 0.3}, {"n", 7.0}}));
+  EXPECT_TRUE(parse(kBase).bodies[0].mesh_parameters.empty());
+}
+
+/// kBase with two materials, "steel" and "rubber", each on its group of cells.
+const ProblemSnippet kTwoMaterials = kBase.replaced("[body.material]\nE = 1.0\nnu = 0.3\n",
+                                                    "[[body.material]]\ngroup = \"steel\"\nE = 1.0\nnu = 0.3\n"
+                                                    "[[body.material]]\ngroup = \"rubber\"\nE = 0.01\nnu = 0.45\n");
+
+TEST(ProblemReader, MaterialsPerGroupOfCells) {
+  const std::vector<MaterialSpec> m = parse(kTwoMaterials).bodies[0].materials;
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].key, "body[0].material[0]");
+  EXPECT_EQ(m[0].group, "steel");
+  EXPECT_EQ(m[0].young, 1.0);
+  EXPECT_EQ(m[1].key, "body[0].material[1]");
+  EXPECT_EQ(m[1].group, "rubber");
+  EXPECT_EQ(m[1].poisson, 0.45);
+  // One table: the whole body (no group), or the group it names.
+  EXPECT_EQ(parse(kBase).bodies[0].materials[0].group, "");
+  EXPECT_EQ(parse(kBase.after("[body.material]\n", "group = \"core\"\n")).bodies[0].materials[0].group, "core");
+  // Hyperelastic laws may differ from group to group.
+  const ProblemSpec rubbers = parse(kTwoMaterials.replaced("E = 1.0", "model = \"neo_hookean\"\nE = 1.0")
+                                        .replaced("E = 0.01", "model = \"mooney_rivlin\"\nE = 0.01"));
+  EXPECT_EQ(rubbers.bodies[0].materials[1].model, "mooney_rivlin");
+}
+
 TEST(ProblemReader, DefaultModelIn2DIsPlaneStrain) { EXPECT_EQ(parse(kBase).model, AnalysisModel::kPlaneStrain); }
 
 TEST(ProblemReader, ReadsFileAndResolvesMeshAgainstItsFolder) {
@@ -717,7 +748,7 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"UnknownProblemKey", kBase.after("dimension = 2\n", "odrer = 1\n"), "problem.odrer",
                 "unknown key \"odrer\" (did you mean \"order\"?)"},
         InputErrorCase{"UnknownBodyKey", kBase.after("mesh = \"block.geo\"\n", "colour = \"red\"\n"),
-                "body[0].colour", "allowed keys in body[0]: name, mesh, group, body_force"},
+                "body[0].colour", "allowed keys in body[0]: name, mesh, mesh_parameters, group, body_force"},
         InputErrorCase{"UnknownMaterialKey", kBase.after("nu = 0.3\n", "Nu = 0.3\n"), "body[0].material.Nu",
                 "unknown key \"Nu\" (did you mean \"nu\"?); allowed keys in body[0].material: model, E, nu"},
         InputErrorCase{"UnknownDirichletKey", kBase.after("uy = 0.0\n", "value = 1.0\n"), "body[0].dirichlet[0].value",
@@ -827,6 +858,41 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected \"plane_strain\" or \"plane_stress\""},
         InputErrorCase{"NonPositiveMeshSize", kBase.after("dimension = 2\n", "mesh_size = -0.1\n"), "problem.mesh_size",
                 "expected a number > 0, got -0.1"},
+        // materials per group of cells
+        InputErrorCase{"MaterialListEntryWithoutGroup", kTwoMaterials.replaced("group = \"rubber\"\n", ""),
+                "body[0].material[1].group", "missing required key"},
+        InputErrorCase{"MaterialListSameGroupTwice", kTwoMaterials.replaced("\"rubber\"", "\"steel\""),
+                "body[0].material[1].group", "group \"steel\" already has a material (body[0].material[0])"},
+        InputErrorCase{"MaterialListMixesLinearAndHyperelastic",
+                kTwoMaterials.replaced("E = 0.01", "model = \"neo_hookean\"\nE = 0.01"), "body[0].material[1].model",
+                "the materials of one body must be all \"linear_elastic\" or all hyperelastic"},
+        InputErrorCase{"MaterialListEmpty", kBase.replaced("[body.material]\nE = 1.0\nnu = 0.3\n", "material = []\n"),
+                "body[0].material", "expected at least one [[body.material]], got an empty array"},
+        InputErrorCase{"MaterialNotATable", kBase.replaced("[body.material]\nE = 1.0\nnu = 0.3\n", "material = 3\n"),
+                "body[0].material", "expected a table [body.material], or an array of tables"},
+        InputErrorCase{"MaterialGroupEmpty", kTwoMaterials.replaced("\"rubber\"", "\"\""),
+                "body[0].material[1].group", "expected a non-empty string"},
+        InputErrorCase{"MaterialListEntryBadValue", kTwoMaterials.replaced("nu = 0.45", "nu = 0.5"),
+                "body[0].material[1].nu", "expected a number in (-1, 0.5)"},
+        // mesh_parameters (param.geo declares DefineConstant[ h, n ])
+        InputErrorCase{"MeshParameterNotANumber",
+                kBase.replaced("mesh = \"block.geo\"", "mesh = \"param.geo\"\nmesh_parameters = { h = \"0.3\" }"),
+                "body[0].mesh_parameters.h", "expected a number, got a string (\"0.3\")"},
+        InputErrorCase{"MeshParameterNotFinite",
+                kBase.replaced("mesh = \"block.geo\"", "mesh = \"param.geo\"\nmesh_parameters = { n = inf }"),
+                "body[0].mesh_parameters.n", "expected a finite number, got inf"},
+        InputErrorCase{"MeshParameterNotAnIdentifier",
+                kBase.replaced("mesh = \"block.geo\"", "mesh = \"param.geo\"\nmesh_parameters = { \"2h\" = 1 }"),
+                "body[0].mesh_parameters.2h", "expected a Gmsh variable name"},
+        InputErrorCase{"MeshParameterNotDeclared",
+                kBase.replaced("mesh = \"block.geo\"", "mesh = \"param.geo\"\nmesh_parameters = { lc = 1 }"),
+                "body[0].mesh_parameters.lc", "declares no DefineConstant[ lc = ... ]"},
+        InputErrorCase{"MeshParametersOfAMsh",
+                kBase.replaced("mesh = \"block.geo\"", "mesh = \"block.msh\"\nmesh_parameters = { h = 1 }"),
+                "body[0].mesh_parameters", "is a .msh file"},
+        InputErrorCase{"MeshParametersNotATable",
+                kBase.replaced("mesh = \"block.geo\"", "mesh = \"param.geo\"\nmesh_parameters = 0.3"),
+                "body[0].mesh_parameters", "expected a table"},
         InputErrorCase{"EmptyLoadFactors", kBase.replaced("[0.5, 1.0]", "[]"), "steps.load_factors",
                 "expected at least one load factor, got an empty array"},
         // vectors and factors
