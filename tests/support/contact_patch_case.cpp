@@ -29,7 +29,7 @@ std::string top_group(const std::vector<std::string>& names, std::size_t i) {
 
 }  // namespace
 
-std::string contact_patch_geo(int n1, int n2, int dim, int n3) {
+std::string contact_patch_geo(int n1, int n2, int dim, int n3, bool one_body) {
   const std::vector<std::string> names = block_names(n3);
   const std::vector<int> n = n3 > 0 ? std::vector<int>{n1, n2, n3} : std::vector<int>{n1, n2};
   const auto nb = static_cast<int>(names.size());
@@ -79,10 +79,28 @@ std::string contact_patch_geo(int n1, int n2, int dim, int n3) {
   }
   g << "Physical Point(\"origin\") = {1};\n";
   for (int i = 1; i < nb; ++i) g << "Physical Point(\"" << names[i] << "_corner\") = {" << 4 * i + 4 << "};\n";
+  if (one_body) g << "Physical Surface(\"blocks\") = {1, 2};\nPhysical Curve(\"interface\") = {3, 5};\n";
   return g.str();
 }
 
+namespace {
+
+/// The problem file of the one-body case (ContactPatchCase::one_body).
+std::string one_body_toml(const ContactPatchCase& c) {
+  return "[problem]\ndimension = 2\norder = " + std::to_string(c.order) +
+         "\n\n[[body]]\nname = \"blocks\"\nmesh = \"blocks.geo\"\ngroup = \"blocks\"\n"
+         "[body.material]\nE = 1.0\nnu = 0.3\n"
+         "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n"
+         "[[body.dirichlet]]\nboundary = \"origin\"\nux = 0.0\n"
+         "[[body.dirichlet]]\nboundary = \"upper_corner\"\nux = 0.0\n"
+         "[[body.pressure]]\nboundary = \"top\"\npressure = 0.01\n"
+         "[[contact]]\nname = \"interface\"\na = \"blocks.interface\"\nb = \"blocks.interface\"\n";
+}
+
+}  // namespace
+
 std::string contact_patch_toml(const ContactPatchCase& c) {
+  if (c.one_body) return one_body_toml(c);
   const std::vector<std::string> names = block_names(c.n3);
   const std::size_t nb = names.size();
   auto body = [&](std::size_t i) {
@@ -126,7 +144,7 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
 
 std::unique_ptr<ModelCase> contact_patch_model(const ContactPatchCase& c, const std::filesystem::path& folder,
                                                FixedDofs& fixed) {
-  write_text(folder / "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3));
+  write_text(folder / "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3, c.one_body));
   std::unique_ptr<ModelCase> m = build_model(contact_patch_toml(c), folder);
   m->model->set_step(0);
   fixed = m->model->fixed_dofs(0);
@@ -135,7 +153,7 @@ std::unique_ptr<ModelCase> contact_patch_model(const ContactPatchCase& c, const 
 
 std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c) {
   const std::string dir = test_temp_dir(c.dim == 3 ? "contact_patch_3d" : "contact_patch");
-  write_text(dir, "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3));
+  write_text(dir, "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3, c.one_body));
   return solve_case(contact_patch_toml(c), dir);
 }
 
@@ -186,6 +204,7 @@ std::string contact_patch_name(const ContactPatchCase& c) {
                      (c.mode == "symmetric" ? std::string("symmetric") : std::string("onepass"));
   if (c.swap) name += "_swapped";
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));
+  if (c.one_body) name += "_one_body";
   return name;
 }
 

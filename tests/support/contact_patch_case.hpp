@@ -36,6 +36,10 @@ struct ContactPatchCase {
   bool swap = false;               ///< declare the bodies and the pairs in reverse order, each pair's a and b swapped
   double mu = -1.0;                ///< < 0: frictionless; ≥ 0: Coulomb friction with this coefficient
   double alpha = 0.0;              ///< friction regularisation length; 0: automatic
+  /// 2D, two blocks: one body "blocks" (both surfaces) whose two blocks touch at y = 1, with their own nodes
+  /// there (coincident where the divisions meet), held by one self-contact pair on the group "interface" (both
+  /// faces); the lower block's supports as in the two-body case, u_x = 0 at (0, 2) on the same body.
+  bool one_body = false;
 };
 
 struct ContactPatchErrors {
@@ -53,9 +57,10 @@ struct ContactPatchErrors {
 /// "upper_corner" (0, 0, 2), "upper_x" (1, 0, 2). With n3 > 0, three blocks "lower", "middle", "upper":
 /// faces "bottom", "lower_top", "middle_bottom", "middle_top", "upper_bottom", "top"; points "origin"
 /// (and "lower_x"), "middle_corner" (0, 2) (and "middle_x" (1, 0, 2)), "upper_corner" (0, 3) (and
-/// "upper_x" (1, 0, 3)). The 3D corner groups are bounding boxes: they also hold the coincident corner
+/// "upper_x" (1, 0, 3)). `one_body` (2D, two blocks): the surface "blocks" (both) and the curve "interface"
+/// (the lower block's top and the upper block's bottom) as well. The 3D corner groups are bounding boxes: they also hold the coincident corner
 /// of the block above, which a body's restriction of the group leaves out.
-std::string contact_patch_geo(int n1, int n2, int dim = 2, int n3 = 0);
+std::string contact_patch_geo(int n1, int n2, int dim = 2, int n3 = 0, bool one_body = false);
 
 /// The problem file (mesh "blocks.geo" in the same folder).
 std::string contact_patch_toml(const ContactPatchCase& c);
@@ -74,7 +79,7 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
 /// Solves and measures: contact_patch_errors(c, *contact_patch_solve(c)).
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
-/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3"; "3D_" first in 3D): a GoogleTest parameter name.
+/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body"; "3D_" first in 3D): a GoogleTest parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing

@@ -252,7 +252,8 @@ double predicted_cell_count(int dim, const double extent[3], double h) {
   return dim == 2 ? 2.0 * e[0] * e[1] / (h * h) : 6.0 * e[0] * e[1] * e[2] / (h * h * h);
 }
 
-Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key) {
+Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key,
+                  const TopologyAllowances& allow) {
   const std::vector<MeshFile::Block>* cells = &file.all_cells;
   if (!group.empty()) {
     const MeshFile::Group* g = file.find(group, dim);
@@ -340,7 +341,7 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   m.orient_cells();
   try {
     m.check();
-    check_topology(m);
+    check_topology(m, allow);
     m.locate_facets();
   } catch (const InputError& e) {
     throw e.in_file(file.path);

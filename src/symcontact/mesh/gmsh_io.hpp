@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "symcontact/mesh/mesh.hpp"
+#include "symcontact/mesh/mesh_topology.hpp"
 
 namespace symcontact {
 
@@ -82,9 +83,11 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
 /// facets located; the mesh keeps the file's node and element tags for messages. Throws
 /// InputError(file, key = `group_key`) when the group is absent or empty, and InputError(file, ...)
 /// for a fault of the body's mesh: check_folds() on the cells as read, before they are oriented (a cell
-/// folded over its neighbour), Mesh::check() (a non-finite coordinate, a degenerate element), check_topology() (coincident nodes that make a crack, a body in several pieces;
-/// mesh_topology.hpp) and Mesh::locate_facets() (a group facet inside the body or off it).
-Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key);
+/// folded over its neighbour), Mesh::check() (a non-finite coordinate, a degenerate element), check_topology() (coincident nodes that make a crack, a body in several pieces,
+/// unless `allow` declares them: mesh_topology.hpp) and Mesh::locate_facets() (a group facet inside the body or
+/// off it).
+Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key,
+                  const TopologyAllowances& allow = {});
 
 /// A rigid surface: the facets of group `group` (dimension dim − 1), with no cells. The mesh's cell_type is
 /// the cell type whose facets these are; facets keep the orientation of the file. Throws InputError(file,

@@ -115,40 +115,117 @@ std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double rela
   return unshared;
 }
 
-void check_topology(const Mesh& m) {
+namespace {
+
+/// Marks the nodes of group `name` (facet or node group) in `mask`; a group the mesh lacks marks none.
+void mark_group(const Mesh& m, const std::string& name, std::vector<char>& mask) {
+  if (!m.has_group(name)) return;
+  for (Index v : m.group_nodes(name)) mask[v] = 1;
+}
+
+std::vector<char> group_mask(const Mesh& m, const std::string& name) {
+  std::vector<char> mask(m.num_nodes(), 0);
+  mark_group(m, name, mask);
+  return mask;
+}
+
+/// "a, b and c" (names quoted), or "none".
+std::string name_list(const std::vector<std::string>& names) {
+  if (names.empty()) return "none";
+  std::string s;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    s += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + ("'" + names[k] + "'");
+  return s;
+}
+
+/// "<body>" for messages: the body's name, or a placeholder when it is not known.
+std::string body_name(const TopologyAllowances& allow) { return allow.body.empty() ? "<body>" : allow.body; }
+
+/// Coincident nodes sharing no cell that no self-contact of `allow` covers: refused (see check_topology()).
+void check_twins(const Mesh& m, const TopologyAllowances& allow) {
   const std::vector<std::pair<Index, Index>> twins = coincident_nodes(m);
-  if (!twins.empty()) {
-    std::string list;
-    for (std::size_t k = 0; k < twins.size() && k < 3; ++k) {
-      list += (k ? "; " : "") + m.node_label(twins[k].first) + " and " + m.node_label(twins[k].second) + " at " +
-              position(m, twins[k].first);
-    }
-    if (twins.size() > 3) list += "; and " + std::to_string(twins.size() - 3) + " more pairs";
-    throw InputError("", "",
-                     std::to_string(twins.size()) + " pair" + (twins.size() == 1 ? " of nodes is" : "s of nodes are") +
-                         " at the same position without sharing any element (" + list +
-                         "): the body is cut there, like a crack; merge the duplicate nodes (Gmsh: Coherence, or "
-                         "Geometry.AutoCoherence) or declare the parts as separate bodies");
+  if (twins.empty()) return;
+  std::vector<std::pair<std::vector<char>, std::vector<char>>> sides;
+  std::vector<std::string> surfaces;
+  for (const auto& [g, h] : allow.self_contacts) {
+    sides.emplace_back(group_mask(m, g), group_mask(m, h));
+    surfaces.push_back(g == h ? g : g + "' with '" + h);
   }
+  std::vector<std::pair<Index, Index>> refused;
+  for (const auto& [a, b] : twins) {
+    const bool covered = std::any_of(sides.begin(), sides.end(), [a = a, b = b](const auto& s) {
+      return (s.first[a] && s.second[b]) || (s.first[b] && s.second[a]);
+    });
+    if (!covered) refused.emplace_back(a, b);
+  }
+  if (refused.empty()) return;
+  std::string list;
+  for (std::size_t k = 0; k < refused.size() && k < 3; ++k) {
+    list += (k ? "; " : "") + m.node_label(refused[k].first) + " and " + m.node_label(refused[k].second) + " at " +
+            position(m, refused[k].first);
+  }
+  if (refused.size() > 3) list += "; and " + std::to_string(refused.size() - 3) + " more pairs";
+  const std::size_t allowed = twins.size() - refused.size();
+  throw InputError(
+      "", "",
+      std::to_string(refused.size()) + " pair" + (refused.size() == 1 ? " of nodes is" : "s of nodes are") +
+          " at the same position without sharing any element (" + list + ")" +
+          (allowed ? " and on no self-contact of the body (" + std::to_string(allowed) + " other pair" +
+                         (allowed == 1 ? " is" : "s are") + " on one, allowed)"
+                   : "") +
+          ": the body is cut there, like a crack; merge the duplicate nodes (Gmsh: Coherence, or "
+          "Geometry.AutoCoherence) or declare the parts as separate bodies; a cut that is meant (a crack, two parts of "
+          "the body that touch) is allowed when its faces are declared in contact: both faces in one boundary group G "
+          "with a [[contact]] a = b = \"" +
+          body_name(allow) + ".G\" (self-contact surfaces of this body: " + name_list(surfaces) + ")");
+}
+
+/// A body in pieces with a piece that no group of `allow` holds: refused (see check_topology()).
+void check_pieces(const Mesh& m, const TopologyAllowances& allow) {
   std::vector<Index> component;
   const Index count = cell_components(m, &component);
-  if (count > 1) {
-    std::vector<Index> size(count, 0), first(count, -1);
-    for (Index c = 0; c < m.num_cells(); ++c) {
-      ++size[component[c]];
-      if (first[component[c]] < 0) first[component[c]] = c;
-    }
-    std::string parts;
-    for (Index k = 0; k < count && k < 5; ++k) {
-      parts += (k ? ", " : "") + std::to_string(size[k]) + " element" + (size[k] == 1 ? "" : "s") + " from " +
-               m.cell_label(first[k]);
-    }
-    if (count > 5) parts += ", ...";
-    throw InputError("", "",
-                     "the body is disconnected: its elements form " + std::to_string(count) +
-                         " separate pieces that share no node (" + parts +
-                         "); a body must be one piece: give each piece its own [[body]] (its own physical group)");
+  if (count <= 1) return;
+  std::vector<char> holding(m.num_nodes(), 0);
+  for (const std::string& g : allow.contact_surfaces) mark_group(m, g, holding);
+  for (const std::string& g : allow.dirichlet_boundaries) mark_group(m, g, holding);
+  std::vector<Index> size(count, 0), first(count, -1);
+  std::vector<char> held(count, 0);
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    const Index k = component[c];
+    ++size[k];
+    if (first[k] < 0) first[k] = c;
+    for (int a = 0; a < m.nodes_per_cell(); ++a) held[k] = held[k] || holding[m.cell(c)[a]];
   }
+  const auto piece = [&](Index k) {
+    return std::to_string(size[k]) + " element" + (size[k] == 1 ? "" : "s") + " from " + m.cell_label(first[k]);
+  };
+  std::string parts, free;
+  Index num_free = 0;
+  for (Index k = 0; k < count; ++k) {
+    if (k < 5) parts += (k ? ", " : "") + piece(k);
+    if (!held[k] && num_free++ < 5) free += (num_free > 1 ? ", " : "") + piece(k);
+  }
+  if (num_free == 0) return;
+  if (count > 5) parts += ", ...";
+  if (num_free > 5) free += ", ...";
+  throw InputError(
+      "", "",
+      "the body is disconnected: its elements form " + std::to_string(count) + " separate pieces that share no node (" +
+          parts + "), and " +
+          (num_free == count ? std::string("none of them has a node")
+                             : std::to_string(num_free) + " of them (" + free + ") " + (num_free == 1 ? "has" : "have") +
+                                   " no node") +
+          " on a contact surface or a Dirichlet boundary of the body (contact surfaces: " +
+          name_list(allow.contact_surfaces) + "; Dirichlet boundaries: " + name_list(allow.dirichlet_boundaries) +
+          "); give each piece its own [[body]] (its own physical group), or hold every piece: a node of it on a "
+          "[[body.dirichlet]] boundary or on a surface of a [[contact]]");
+}
+
+}  // namespace
+
+void check_topology(const Mesh& m, const TopologyAllowances& allow) {
+  check_twins(m, allow);
+  check_pieces(m, allow);
 }
 
 }  // namespace symcontact

@@ -6,18 +6,34 @@
 /// - **Coincident nodes**: two nodes at the same position that share no cell cut the body there (a
 ///   crack: the cells on either side do not hold together), typically two surfaces meshed separately
 ///   and not merged. Positions count as equal within `relative_tolerance` × the diagonal of the
-///   body's bounding box.
-/// - **Connected components**: cells are connected when they share a node; a body must be one piece
-///   (each piece of several needs its own [[body]], its own support or contact).
+///   body's bounding box. Such a pair is allowed when the problem declares the cut's faces in contact:
+///   a self-contact of the body (TopologyAllowances::self_contacts) with one node on each side of it.
+/// - **Connected components**: cells are connected when they share a node. A body in several pieces
+///   is allowed when every piece is held: it has a node on one of the body's contact surfaces or
+///   Dirichlet boundaries (TopologyAllowances). Whether that holds the piece against every rigid
+///   motion is not checked here (a piece touching the rest only through a frictionless contact can
+///   still slide along it); the solve then fails and says so.
 ///
 /// Both use the node labels of Mesh::node_label() (the mesh file's node tags) in messages.
 
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "symcontact/mesh/mesh.hpp"
 
 namespace symcontact {
+
+/// What a body's problem declares that lets check_topology() accept a mesh that is cut or in pieces. A
+/// group named here that the mesh lacks is ignored (its absence is reported where the group is used).
+struct TopologyAllowances {
+  std::string body;  ///< the body's name, for messages
+  /// Pairs of the body's boundary groups declared in contact with each other (a [[contact]] whose a and b
+  /// both name this body; (g, g) for a surface in contact with itself).
+  std::vector<std::pair<std::string, std::string>> self_contacts;
+  std::vector<std::string> contact_surfaces;      ///< the body's boundary groups in any [[contact]]
+  std::vector<std::string> dirichlet_boundaries;  ///< the groups of the body's [[body.dirichlet]]
+};
 
 /// Number of connected components of the cells (two cells are connected when they share a node). If
 /// `component` is given it gets, for each cell, the index of its component, components numbered in
@@ -28,11 +44,14 @@ Index cell_components(const Mesh& m, std::vector<Index>* component = nullptr);
 /// diagonal) that belong to no common cell, sorted. A hash grid of that cell size: O(n) expected.
 std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double relative_tolerance = 1e-10);
 
-/// Throws InputError(file = "", key = "", message) when the body has coincident nodes sharing no cell
-/// (the message names up to three pairs by their node labels, with the position, and the number of
-/// pairs) or more than one connected component (the message gives the count and, for each component,
-/// its number of cells and one of its elements).
-void check_topology(const Mesh& m);
+/// Throws InputError(file = "", key = "", message) when the body has coincident nodes sharing no cell that
+/// no self-contact of `allow` covers (a pair is covered by a pair of groups (g, h) when one node lies on g
+/// and the other on h; the message names up to three refused pairs by their node labels, with the
+/// position, the number of such pairs, and the body's self-contact surfaces), or more than one connected
+/// component with one of them held by no group of `allow` (the message gives the count and, for each
+/// component, its number of cells and one of its elements, then the pieces held by nothing). Each message
+/// says what would make the mesh allowed.
+void check_topology(const Mesh& m, const TopologyAllowances& allow = {});
 
 /// Throws InputError(file = "", key = cell_label(), message) when two cells that share a facet (an edge in 2D,
 /// a face in 3D) lie on the same side of it (their opposite vertices on the same side of the facet's line or

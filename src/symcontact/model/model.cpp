@@ -71,6 +71,24 @@ std::optional<Hyperelastic> hyperelastic_law(const MaterialSpec& ms) {
                                              : Hyperelastic::mooney_rivlin(ms.c1, ms.c2, ms.kappa);
 }
 
+/// What the problem declares about body `bs` that lets its mesh be cut or in pieces (mesh_topology.hpp):
+/// its self-contacts (pairs with both sides on it), its contact surfaces and its Dirichlet boundaries.
+TopologyAllowances topology_allowances(const ProblemSpec& spec, const BodySpec& bs) {
+  TopologyAllowances allow;
+  allow.body = bs.name;
+  const auto add = [](std::vector<std::string>& names, const std::string& name) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  };
+  for (const ContactSpec& cs : spec.contacts) {
+    const bool on_a = cs.body_a == bs.name, on_b = !cs.obstacle && cs.body_b == bs.name;
+    if (on_a) add(allow.contact_surfaces, cs.boundary_a);
+    if (on_b) add(allow.contact_surfaces, cs.boundary_b);
+    if (on_a && on_b) allow.self_contacts.emplace_back(cs.boundary_a, cs.boundary_b);
+  }
+  for (const DirichletSpec& ds : bs.dirichlet) add(allow.dirichlet_boundaries, ds.group);
+  return allow;
+}
+
 /// The strain energy of a body: linear elastic, or finite-strain hyperelastic, each cell with its material.
 std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs, int b) {
   if (body.hyperelastic.empty())
@@ -166,7 +184,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
       body->name = bs.name;
       body->spec = &bs;
       try {
-        body->mesh = extract_body(it->second, spec.dim, bs.group, bs.key + ".group");
+        body->mesh = extract_body(it->second, spec.dim, bs.group, bs.key + ".group", topology_allowances(spec, bs));
       } catch (const InputError& e) {
         if (e.key() == bs.key + ".group")
           throw InputError(spec.file, e.key(), e.message() + " (mesh " + bs.mesh_file + ")");

@@ -166,12 +166,44 @@ TEST_F(Cli, DuplicateNodesAreAnInputErrorNamingTheNodes) {
                          "node 1 and node 6 at (0, 0)", "same position without sharing any element"});
 }
 
+TEST_F(Cli, CrackWithItsFacesInSelfContactIsAllowed) {
+  // crack_faces.msh: crack_duplicate_nodes.msh with the crack's two faces in the boundary group "crack". In
+  // self-contact, the twins are allowed; a contact of the crack with another surface does not allow them.
+  const std::string crack = "[[contact]]\na = \"block.crack\"\nb = \"block.crack\"\n";
+  const fs::path ok = write("crack_ok.toml", problem_toml(test_mesh("crack_faces.msh"), "square", "0.3",
+                                                          kClampBottom + kPressTop + crack));
+  const CliResult r = run("check " + shell_quote(ok.string()));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string other = "[[contact]]\na = \"block.crack\"\nb = \"block.top\"\n";
+  const fs::path f = write("crack_top.toml", problem_toml(test_mesh("crack_faces.msh"), "square", "0.3",
+                                                          kClampBottom + kPressTop + other));
+  expect_input_error(f, {"crack_top.toml", "body[0].mesh", "body 'block'", "crack_faces.msh",
+                         "node 1 and node 6 at (0, 0)", "[[contact]] a = b = \"block.G\"",
+                         "self-contact surfaces of this body: 'crack' with 'top'"});
+}
+
 TEST_F(Cli, DisconnectedBodyIsAnInputErrorGivingThePieces) {
-  // Two unit squares, [0, 1] and [2, 3] along x, in one physical group.
-  const fs::path f = write("two_pieces.toml", problem_toml(test_mesh("disconnected.msh"), "square", "0.3",
-                                                           kClampBottom + kPressTop));
-  expect_input_error(f, {"two_pieces.toml", "body[0].mesh", "body 'block'", "disconnected.msh", "disconnected",
-                         "2 separate pieces", "2 elements from element 5, 2 elements from element 7"});
+  // Two unit squares, [0, 1] and [2, 3] along x, in one physical group; only the first one clamped.
+  const std::string clamp_left = "[[body.dirichlet]]\nboundary = \"bottom_left\"\nux = 0.0\nuy = 0.0\n\n";
+  const fs::path f = write("two_pieces.toml", problem_toml(test_mesh("two_pieces_groups.msh"), "square", "0.3",
+                                                           clamp_left + kPressTop));
+  expect_input_error(f, {"two_pieces.toml", "body[0].mesh", "body 'block'", "two_pieces_groups.msh", "disconnected",
+                         "2 separate pieces", "2 elements from element 5, 2 elements from element 7",
+                         "1 of them (2 elements from element 7) has no node on a contact surface or a Dirichlet "
+                         "boundary of the body (contact surfaces: none; Dirichlet boundaries: 'bottom_left')"});
+}
+
+TEST_F(Cli, BodyInPiecesEachClampedIsAllowed) {
+  // The same two squares, each with its own clamped bottom (disconnected.msh: one group over both bottoms).
+  const std::string clamp_right = "[[body.dirichlet]]\nboundary = \"bottom_right\"\nux = 0.0\nuy = 0.0\n\n";
+  const std::string clamp_left = "[[body.dirichlet]]\nboundary = \"bottom_left\"\nux = 0.0\nuy = 0.0\n\n";
+  const fs::path f = write("two_clamped.toml", problem_toml(test_mesh("two_pieces_groups.msh"), "square", "0.3",
+                                                            clamp_left + clamp_right + kPressTop));
+  const CliResult r = run("check " + shell_quote(f.string()));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const fs::path g = write("one_group.toml", problem_toml(test_mesh("disconnected.msh"), "square", "0.3",
+                                                          kClampBottom + kPressTop));
+  EXPECT_EQ(run("check " + shell_quote(g.string())).exit_code, 0);
 }
 
 TEST_F(Cli, NonFiniteMshCoordinateIsAnInputErrorNamingTheLine) {

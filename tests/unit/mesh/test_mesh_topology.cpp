@@ -1,5 +1,7 @@
 // Tests of the whole-body mesh checks (src/symcontact/mesh/mesh_topology.hpp): coincident nodes that
 // share no cell (a crack) and bodies in several pieces, on structured meshes cut or duplicated by hand.
+// What a problem may declare to allow them (a self-contact on the cut's faces, pieces held by a contact
+// surface or a Dirichlet boundary) is tested on the same meshes with groups added by hand.
 // The same faults read from .msh files, through the command line, are in tests/unit/app/test_cli.cpp.
 
 #include "symcontact/mesh/mesh_topology.hpp"
@@ -24,9 +26,9 @@ Mesh side_by_side(const Mesh& a, const Mesh& b) {
   return m;
 }
 
-std::string message_of(const Mesh& m) {
+std::string message_of(const Mesh& m, const TopologyAllowances& allow = {}) {
   try {
-    check_topology(m);
+    check_topology(m, allow);
   } catch (const InputError& e) {
     return e.message();
   }
@@ -134,6 +136,108 @@ TEST(MeshTopology, TouchingBlocksWithTheirOwnNodesAreACrack) {
                      std::to_string(100 + twins[0].second) + " at (1, "),
             std::string::npos)
       << msg;
+}
+
+/// Two unit squares meeting along x = 1, each with its own nodes there (ny = 2: 3 pairs of twins), with the
+/// node groups "left_face" (the first square's nodes on x = 1), "right_face" (the second's), "interface" (both),
+/// "left_bottom" and "right_bottom" (each square's nodes on y = 0).
+Mesh touching_squares() {
+  Mesh m = side_by_side(rectangle_mesh(0, 0, 1, 1, 1, 2), rectangle_mesh(1, 0, 2, 1, 1, 2));
+  const Index first = rectangle_mesh(0, 0, 1, 1, 1, 2).num_nodes();
+  for (Index v = 0; v < m.num_nodes(); ++v) {
+    const std::string side = v < first ? "left" : "right";
+    if (m.x(0, v) == 1.0) {
+      m.node_groups[side + "_face"].push_back(v);
+      m.node_groups["interface"].push_back(v);
+    }
+    if (m.x(1, v) == 0.0) m.node_groups[side + "_bottom"].push_back(v);
+  }
+  return m;
+}
+
+TEST(MeshTopology, CutWhoseFacesAreInSelfContactIsAllowed) {
+  const Mesh m = touching_squares();
+  TopologyAllowances allow;
+  allow.body = "blocks";
+  allow.self_contacts = {{"interface", "interface"}};
+  allow.contact_surfaces = {"interface"};
+  EXPECT_NO_THROW(check_topology(m, allow));
+  // The two faces as two groups of one pair, in either order.
+  allow.self_contacts = {{"right_face", "left_face"}};
+  allow.contact_surfaces = {"right_face", "left_face"};
+  EXPECT_NO_THROW(check_topology(m, allow));
+}
+
+TEST(MeshTopology, CutWithOneFaceOutsideTheSelfContactIsRefused) {
+  const Mesh m = touching_squares();
+  TopologyAllowances allow;
+  allow.body = "blocks";
+  allow.contact_surfaces = {"left_face"};
+  allow.self_contacts = {{"left_face", "left_face"}};  // the right square's twins are on no side of it
+  std::string msg = message_of(m, allow);
+  EXPECT_NE(msg.find("3 pairs of nodes are at the same position without sharing any element"), std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("a [[contact]] a = b = \"blocks.G\" (self-contact surfaces of this body: 'left_face')"),
+            std::string::npos)
+      << msg;
+  // A contact between a face and the other square's bottom covers none of the twins either.
+  allow.self_contacts = {{"left_face", "right_bottom"}};
+  msg = message_of(m, allow);
+  EXPECT_NE(msg.find("self-contact surfaces of this body: 'left_face' with 'right_bottom'"), std::string::npos) << msg;
+  // Without any self-contact, the message says what would allow the cut.
+  msg = message_of(m, TopologyAllowances{});
+  EXPECT_NE(msg.find("declare the parts as separate bodies"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("\"<body>.G\" (self-contact surfaces of this body: none)"), std::string::npos) << msg;
+}
+
+TEST(MeshTopology, CutPartlyInSelfContactNamesTheOtherPairs) {
+  Mesh m = touching_squares();
+  // "top_pair": the twins at (1, 1) only, as a two-node group on both squares.
+  for (Index v : m.node_groups["interface"])
+    if (m.x(1, v) == 1.0) m.node_groups["top_pair"].push_back(v);
+  TopologyAllowances allow;
+  allow.self_contacts = {{"top_pair", "top_pair"}};
+  const std::string msg = message_of(m, allow);
+  EXPECT_NE(msg.find("2 pairs of nodes are at the same position"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("and on no self-contact of the body (1 other pair is on one, allowed)"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("at (1, 1)"), std::string::npos) << "the covered pair is not listed: " << msg;
+}
+
+TEST(MeshTopology, PiecesEachHeldAreAllowed) {
+  // Two separate squares: held by a contact surface on one and a Dirichlet boundary on the other.
+  Mesh m = side_by_side(rectangle_mesh(0, 0, 1, 1, 2, 2), rectangle_mesh(2, 0, 3, 1, 3, 1));
+  for (Index v = 0; v < m.num_nodes(); ++v) {
+    if (m.x(0, v) == 1.0) m.node_groups["a_right"].push_back(v);
+    if (m.x(0, v) == 3.0 && m.x(1, v) == 0.0) m.node_groups["b_corner"].push_back(v);
+  }
+  TopologyAllowances allow;
+  allow.contact_surfaces = {"a_right"};
+  allow.dirichlet_boundaries = {"b_corner"};
+  EXPECT_NO_THROW(check_topology(m, allow));
+  // The second square held by nothing: refused, naming it and the groups that hold pieces.
+  allow.dirichlet_boundaries = {"absent_group"};  // a group the mesh lacks holds nothing
+  std::string msg = message_of(m, allow);
+  EXPECT_NE(msg.find("the body is disconnected: its elements form 2 separate pieces"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("and 1 of them (6 elements from cell 9) has no node on a contact surface or a Dirichlet "
+                     "boundary of the body (contact surfaces: 'a_right'; Dirichlet boundaries: 'absent_group')"),
+            std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("or hold every piece"), std::string::npos) << msg;
+  // Neither held.
+  msg = message_of(m, TopologyAllowances{});
+  EXPECT_NE(msg.find("and none of them has a node on a contact surface"), std::string::npos) << msg;
+}
+
+TEST(MeshTopology, TouchingSquaresInSelfContactWithOneClampedAreAllowed) {
+  // The V3 patch test as one body: twins covered by the self-contact, both pieces held.
+  const Mesh m = touching_squares();
+  TopologyAllowances allow;
+  allow.self_contacts = {{"interface", "interface"}};
+  allow.contact_surfaces = {"interface"};
+  allow.dirichlet_boundaries = {"left_bottom"};
+  EXPECT_NO_THROW(check_topology(m, allow));
+  allow.self_contacts.clear();  // the pieces are held, but the twins are not covered
+  EXPECT_NE(message_of(m, allow).find("3 pairs of nodes"), std::string::npos);
 }
 
 TEST(MeshTopology, NearlyCoincidentNodesWithinTheTolerance) {
