@@ -64,6 +64,23 @@ double largest_ux(const SolvedCase& c) {
   return largest;
 }
 
+/// rotation_2d: the largest |u − u_rot| over the nodes, u_rot the rigid rotation by π/6 about (0, 0), and the
+/// largest reaction component.
+void expect_rigid_rotation(const SolvedCase& c) {
+  const double a = std::acos(-1.0) / 6.0;
+  const Mesh& mesh = c.model->bodies()[0]->mesh;
+  double error = 0.0, reaction = 0.0;
+  for (Index n = 0; n < mesh.num_nodes(); ++n) {
+    const double x = mesh.x(0, n), y = mesh.x(1, n);
+    const double exact[2] = {(std::cos(a) - 1) * x - std::sin(a) * y, std::sin(a) * x + (std::cos(a) - 1) * y};
+    for (int i = 0; i < 2; ++i) error = std::max(error, std::abs(c.u[c.model->dofs().dof(0, n, i)] - exact[i]));
+  }
+  for (const Eigen::VectorXd& r : c.reactions.back()) reaction = std::max(reaction, r.lpNorm<Eigen::Infinity>());
+  std::printf("rotation_2d: |u - u_rotation| %.2e, largest reaction %.2e\n", error, reaction);
+  EXPECT_LT(error, 1e-10);
+  EXPECT_LT(reaction, 1e-9);
+}
+
 /// The closed-form figures an example's header states, where it states one.
 void expect_header_figures(const std::string& example, const SolvedCase& c) {
   if (example == "bimaterial_2d/bimaterial.toml") {
@@ -72,6 +89,7 @@ void expect_header_figures(const std::string& example, const SolvedCase& c) {
     std::printf("%s: tip u_x %.12f, exact %.12f\n", example.c_str(), tip, exact);
     EXPECT_NEAR(tip / exact, 1.0, 1e-10) << example;
   }
+  if (example == "rotation_2d/rotation.toml") expect_rigid_rotation(c);
   const double tan_a = 0.1;
   double mu = -1;
   if (example == "inclined_2d/inclined_mu0.toml") mu = 0.0;

@@ -24,6 +24,8 @@ class LinearLoad : public EnergyTerm {
   void set_scale(double s) { scale_ = s; }
   double scale() const { return scale_; }
   const VectorXd& load() const { return f_; }  ///< f at scale 1
+  /// Replaces f (a load that is not proportional to the load factor: Model::set_step).
+  void set_load(VectorXd f) { f_ = std::move(f); }
 
  private:
   std::string name_;

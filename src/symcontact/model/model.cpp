@@ -1,6 +1,7 @@
 #include "symcontact/model/model.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -210,17 +211,89 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
     const BodySpec& bs = *body.spec;
     m->energy_.add(elastic_energy(body, m->dofs_, b));
     m->add_loads(b);
-    for (const auto& ds : bs.dirichlet) {
-      if (!body.mesh.has_group(ds.group))
-        throw InputError(spec.file, ds.key + ".boundary",
-                         "body '" + body.name + "' (mesh " + bs.mesh_file + ") has no group '" + ds.group +
-                             "'; its groups: " + available_groups(body.mesh));
-      m->boundaries_.push_back({b, ds.group, body.mesh.group_nodes(ds.group)});
-    }
+    for (const auto& ds : bs.dirichlet) m->add_dirichlet(b, ds);
   }
   m->build_contacts(log, mesh_options);
   m->set_step(0);
   return m;
+}
+
+namespace {
+/// The load factors a value given by `factors` meets: 0 (the unloaded start), 1 and those of the steps.
+std::vector<double> factors_met(const std::vector<double>& own, const std::vector<double>& global) {
+  std::vector<double> t{0.0, 1.0};
+  for (int k = 0; k < static_cast<int>(global.size()); ++k) t.push_back(step_factor(own, global, k));
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+  return t;
+}
+
+/// Compiles a value of the problem file (`key` names it) and, for an expression, checks that it is finite
+/// at every node of `nodes` at every load factor of `factors`.
+CompiledValue compile_value(const ProblemSpec& spec, const LoadValue& v, const std::string& key, const Mesh& mesh,
+                            const std::vector<Index>& nodes, const std::vector<double>& factors) {
+  CompiledValue c{v.number, nullptr};
+  if (!v.is_expression()) return c;
+  try {
+    c.expression = std::make_shared<const Expression>(v.expression);
+  } catch (const ExpressionError& e) {
+    throw InputError(spec.file, key, "expected a number or an expression of x, y, z, t; " + e.message());
+  }
+  for (double t : factors_met(factors, spec.load_factors))
+    for (Index node : nodes) {
+      const double value = c.at(&mesh.x(0, node), mesh.dim, t);
+      if (std::isfinite(value)) continue;
+      std::ostringstream s;
+      s << "the expression \"" << v.expression << "\" is " << (std::isnan(value) ? "NaN" : value > 0 ? "inf" : "-inf")
+        << " at t = " << t << ", at the node (x, y, z) = (" << mesh.x(0, node) << ", " << mesh.x(1, node) << ", "
+        << (mesh.dim > 2 ? mesh.x(2, node) : 0.0)
+        << "); expected a finite value at every node of the group at every load factor (0, 1 and the steps')";
+      throw InputError(spec.file, key, s.str());
+    }
+  return c;
+}
+}  // namespace
+
+void Model::add_surface_load(int b, const std::string& group, const std::string& key,
+                             const std::vector<LoadValue>& values, const std::vector<double>& factors,
+                             SurfaceLoad kind) {
+  const Body& body = *bodies_[b];
+  const FacetGroup& g = require_facets(spec_, body, group, key + ".boundary");
+  const std::vector<Index> nodes = body.mesh.group_nodes(group);
+  const std::string name = kind == SurfaceLoad::kPressure ? "pressure" : "traction";
+  std::vector<CompiledValue> v;
+  bool any_expression = false;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string value_key = key + "." + name + (kind == SurfaceLoad::kPressure ? "" : "[" + std::to_string(i) + "]");
+    v.push_back(compile_value(spec_, values[i], value_key, body.mesh, nodes, factors));
+    any_expression = any_expression || values[i].is_expression();
+  }
+  const int D = dim();
+  const Mesh& mesh = body.mesh;
+  const DofMap& dofs = dofs_;
+  // f(t)_(a,i) = ∫_Γ t_i(X, t) N_a: t_i = v_i(X, t) for a traction, −p(X, t) n_i for a pressure.
+  auto assemble = [&mesh, &dofs, &g, b, D, v, kind](double t) {
+    return boundary_load_vector(mesh, dofs, b, g, [&](const double* x, const double* n, double* out) {
+      for (int i = 0; i < D; ++i) out[i] = kind == SurfaceLoad::kPressure ? -v[0].at(x, D, t) * n[i] : v[i].at(x, D, t);
+    });
+  };
+  auto* term = energy_.add(std::make_unique<LinearLoad>(body.name + "." + name + "." + group, assemble(1.0)));
+  loads_.push_back({term, factors, any_expression ? std::function<VectorXd(double)>(assemble) : nullptr});
+}
+
+void Model::add_dirichlet(int b, const DirichletSpec& ds) {
+  const Body& body = *bodies_[b];
+  if (!body.mesh.has_group(ds.group))
+    throw InputError(spec_.file, ds.key + ".boundary",
+                     "body '" + body.name + "' (mesh " + body.spec->mesh_file + ") has no group '" + ds.group +
+                         "'; its groups: " + available_groups(body.mesh));
+  DirichletBoundary boundary{b, ds.group, body.mesh.group_nodes(ds.group), &ds, {}};
+  constexpr const char* components[3] = {"ux", "uy", "uz"};
+  for (int i = 0; i < 3; ++i)
+    if (ds.value[i])
+      boundary.values[i] = compile_value(spec_, *ds.value[i], ds.key + "." + components[i], body.mesh, boundary.nodes,
+                                         ds.factors);
+  boundaries_.push_back(std::move(boundary));
 }
 
 void Model::add_loads(int b) {
@@ -230,7 +303,7 @@ void Model::add_loads(int b) {
   const int D = spec.dim;
   auto add = [&](const std::string& name, VectorXd f, const std::vector<double>& factors) {
     auto* term = energy_.add(std::make_unique<LinearLoad>(bs.name + "." + name, std::move(f)));
-    loads_.push_back({term, factors});
+    loads_.push_back({term, factors, nullptr});
   };
   if (!bs.body_force.empty()) {
     const std::vector<double> bf = bs.body_force;
@@ -239,24 +312,17 @@ void Model::add_loads(int b) {
         }), bs.body_force_factors);
   }
   for (const auto& ts : bs.tractions) {
-    const FacetGroup& g = require_facets(spec, body, ts.group, ts.key + ".boundary");
-    std::vector<double> tv = ts.traction;
+    std::vector<LoadValue> tv = ts.traction;
     if (ts.input == TractionInput::kTotalForce) {
       // t = F / |Γ_h| with |Γ_h| from boundary_load_vector()'s own quadrature: Σ f = F to round-off.
+      const FacetGroup& g = require_facets(spec, body, ts.group, ts.key + ".boundary");
       const double measure = facet_group_measure(body.mesh, g);
-      for (double& c : tv) c /= measure;
+      for (LoadValue& c : tv) c.number /= measure;
     }
-    add("traction." + ts.group, boundary_load_vector(body.mesh, dofs_, b, g, [&](const double*, const double*, double* out) {
-          for (int i = 0; i < D; ++i) out[i] = tv[i];
-        }), ts.factors);
+    add_surface_load(b, ts.group, ts.key, tv, ts.factors, SurfaceLoad::kTraction);
   }
-  for (const auto& ps : bs.pressures) {
-    const FacetGroup& g = require_facets(spec, body, ps.group, ps.key + ".boundary");
-    const double p = ps.pressure;
-    add("pressure." + ps.group, boundary_load_vector(body.mesh, dofs_, b, g, [&](const double*, const double* n, double* out) {
-          for (int i = 0; i < D; ++i) out[i] = -p * n[i];
-        }), ps.factors);
-  }
+  for (const auto& ps : bs.pressures)
+    add_surface_load(b, ps.group, ps.key, {ps.pressure}, ps.factors, SurfaceLoad::kPressure);
   for (const auto& pl : bs.point_loads) {
     const std::vector<Index>& nodes = require_points(spec, body, pl.group, pl.key + ".group");
     add("point_load." + pl.group, point_load_vector(dofs_, b, nodes, pl.force.data()), pl.factors);
@@ -367,20 +433,27 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
 }
 
 void Model::set_step(int step, double fraction) {
-  for (auto& l : loads_) l.term->set_scale(step_factor(l.factors, spec_.load_factors, step, fraction));
+  for (auto& l : loads_) {
+    const double t = step_factor(l.factors, spec_.load_factors, step, fraction);
+    if (!l.at) {
+      l.term->set_scale(t);
+      continue;
+    }
+    l.term->set_load(l.at(t));
+    l.term->set_scale(1.0);
+  }
 }
 
 FixedDofs Model::fixed_dofs(int step, double fraction) const {
   FixedDofs fixed;
-  std::size_t k = 0;
-  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
-    for (const auto& ds : bodies_[b]->spec->dirichlet) {
-      const double s = step_factor(ds.factors, spec_.load_factors, step, fraction);
-      for (Index node : boundaries_[k].nodes)
-        for (int i = 0; i < dim(); ++i)
-          if (ds.value[i]) fixed.fix(dofs_.dof(b, node, i), *ds.value[i] * s, static_cast<int>(k));
-      ++k;
-    }
+  for (std::size_t k = 0; k < boundaries_.size(); ++k) {
+    const DirichletBoundary& db = boundaries_[k];
+    const Mesh& mesh = bodies_[db.body]->mesh;
+    const double t = step_factor(db.spec->factors, spec_.load_factors, step, fraction);
+    for (Index node : db.nodes)
+      for (int i = 0; i < dim(); ++i)
+        if (db.values[i])
+          fixed.fix(dofs_.dof(db.body, node, i), db.values[i]->at(&mesh.x(0, node), dim(), t), static_cast<int>(k));
   }
   return fixed;
 }

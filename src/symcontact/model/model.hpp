@@ -5,11 +5,14 @@
 /// load step. Every lookup that can fail on user input (a physical group, a component) fails here, with
 /// the problem file and key, before anything is solved or written.
 
+#include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "symcontact/contact/contact_set.hpp"
+#include "symcontact/core/expression.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
 #include "symcontact/energy/energy_sum.hpp"
@@ -47,12 +50,28 @@ struct Body {
   std::vector<int> cell_material;
 };
 
-/// One named Dirichlet boundary of a body, for reaction forces.
+/// A LoadValue ready to evaluate: at reference point X (dim coordinates) and load factor t, number × t, or
+/// the compiled expression of (X, t).
+struct CompiledValue {
+  double number = 0.0;
+  std::shared_ptr<const Expression> expression;  ///< null: the number
+  double at(const double* X, int dim, double t) const {
+    return expression ? expression->at(X, dim, t) : number * t;
+  }
+};
+
+/// One named Dirichlet boundary of a body ([[body.dirichlet]] entry), for the imposed values and the
+/// reaction forces.
 struct DirichletBoundary {
   int body = 0;
   std::string name;            ///< the group name
   std::vector<Index> nodes;
+  const DirichletSpec* spec = nullptr;
+  std::array<std::optional<CompiledValue>, 3> values;  ///< ux, uy, uz; unset: free
 };
+
+/// What a surface load's values are: the traction vector, or a pressure p (traction −p n).
+enum class SurfaceLoad { kTraction, kPressure };
 
 class Model {
  public:
@@ -95,6 +114,9 @@ class Model {
   struct LoadHandle {
     LinearLoad* term;
     std::vector<double> factors;
+    /// The load vector at load factor t, for a load given by expressions (its term's scale then stays 1);
+    /// empty: the term's vector is the load at factor 1, scaled by the factor.
+    std::function<VectorXd(double t)> at;
   };
   std::vector<LoadHandle> loads_;
   std::vector<DirichletBoundary> boundaries_;
@@ -104,6 +126,11 @@ class Model {
   /// The load terms of body b: body force, tractions, pressures, point loads (InputError for a group
   /// the body's mesh lacks or of the wrong kind).
   void add_loads(int b);
+  /// Adds the load of a [[body.traction]] (`values`: dim components) or [[body.pressure]] (`values`: one)
+  /// of body b to the energy and to loads_.
+  void add_surface_load(int b, const std::string& group, const std::string& key, const std::vector<LoadValue>& values,
+                        const std::vector<double>& factors, SurfaceLoad kind);
+  void add_dirichlet(int b, const DirichletSpec& ds);
 };
 
 /// The factor of load step `step`: own[step] when `own` is given, else global[step]; step −1 is the

@@ -19,6 +19,7 @@
 #include <toml++/toml.h>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/expression.hpp"
 #include "symcontact/core/input_file.hpp"
 #include "symcontact/mesh/geo_commands.hpp"
 #include "symcontact/model/toml_parse.hpp"
@@ -260,6 +261,38 @@ class Reader {
       fail(key, "expected " + std::to_string(dim) + " components (problem.dimension = " + std::to_string(dim) +
                     "), got " + std::to_string(v.size()));
     }
+    return v;
+  }
+
+  /// A number (scaled by the load factor) or a string holding an expression of x, y, z, t (evaluated as
+  /// written), compiled here so that a fault is reported with the file and the key.
+  LoadValue as_load_value(const toml::node& node, const std::string& key) const {
+    LoadValue v;
+    if (!node.is_string()) {
+      if (!node.is_number()) fail(key, "expected a number or an expression of x, y, z, t (a string), got " + describe(node));
+      v.number = as_number(node, key);
+      return v;
+    }
+    v.expression = *node.value<std::string>();
+    try {
+      Expression compiled(v.expression);
+    } catch (const ExpressionError& e) {
+      fail(key, "expected a number or an expression of x, y, z, t; " + e.message());
+    }
+    return v;
+  }
+
+  /// A vector with one component per space dimension, each a number or an expression (as_load_value).
+  std::vector<LoadValue> as_load_vector(const toml::node& node, const std::string& key, int dim) const {
+    if (!node.is_array())
+      fail(key, "expected an array of " + std::to_string(dim) + " numbers or expressions, got " + describe(node));
+    const toml::array& array = *node.as_array();
+    if (array.size() != static_cast<std::size_t>(dim)) {
+      fail(key, "expected " + std::to_string(dim) + " components (problem.dimension = " + std::to_string(dim) +
+                    "), got " + std::to_string(array.size()));
+    }
+    std::vector<LoadValue> v;
+    for (std::size_t i = 0; i < array.size(); ++i) v.push_back(as_load_value(array[i], indexed(key, i)));
     return v;
   }
 
@@ -682,7 +715,7 @@ class Reader {
       if (!n) continue;
       const std::string key = child(path, components[i]);
       if (i >= spec.dim) fail(key, "uz is only allowed in 3D (problem.dimension = 3), got problem.dimension = 2");
-      d.value[i] = as_number(*n, key);
+      d.value[i] = as_load_value(*n, key);
       any = true;
     }
     if (!any) {
@@ -710,8 +743,11 @@ class Reader {
                      ": the traction, or the resultant force on the boundary), got neither");
     }
     s.input = total ? TractionInput::kTotalForce : TractionInput::kTraction;
-    s.traction = total ? as_vector(*total, child(path, "total_force"), spec.dim)
-                       : as_vector(*traction, child(path, "traction"), spec.dim);
+    if (total) {
+      for (double f : as_vector(*total, child(path, "total_force"), spec.dim)) s.traction.push_back(LoadValue{f, {}});
+    } else {
+      s.traction = as_load_vector(*traction, child(path, "traction"), spec.dim);
+    }
     if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
     return s;
   }
@@ -733,7 +769,7 @@ class Reader {
     PressureSpec s;
     s.key = path;
     s.group = boundary(t, path);
-    s.pressure = as_number(required(t, path, "pressure", "a number"), child(path, "pressure"));
+    s.pressure = as_load_value(required(t, path, "pressure", "a number or an expression"), child(path, "pressure"));
     if (const toml::node* n = t.get("factors")) s.factors = as_factors(*n, child(path, "factors"), spec);
     return s;
   }

@@ -5,7 +5,8 @@
 /// "body[2].dirichlet[1].boundary"), so that errors found later (a missing physical group) can name it.
 ///
 /// Load histories: every load and imposed displacement is multiplied, at load step k, by its own
-/// `factors[k]` when given, else by the problem's `steps.load_factors[k]`.
+/// `factors[k]` when given, else by the problem's `steps.load_factors[k]`. A value given as an expression
+/// (LoadValue) is not multiplied: it is evaluated with that factor as its variable t.
 
 #include <array>
 #include <map>
@@ -37,12 +38,22 @@ struct MaterialSpec {
   double kappa = 0.0;          ///< mooney_rivlin: bulk modulus > 0, [stress]
 };
 
-/// u_i = value_i × factor on a named boundary (facet group) or node group; unset components are free.
+/// A value the problem file gives as a number or as an expression (a Dirichlet component, a pressure, a
+/// traction component). At load factor t and reference point X: `number` × t, or the expression
+/// (core/expression.hpp) of (X, t) as written.
+struct LoadValue {
+  double number = 0.0;      ///< the value at load factor 1 (without an expression)
+  std::string expression;   ///< non-empty: an expression of x, y, z, t, checked to compile by the reader
+  bool is_expression() const { return !expression.empty(); }
+};
+
+/// u_i = value_i at the step's factor on a named boundary (facet group) or node group; unset components
+/// are free.
 struct DirichletSpec {
   std::string key;
   std::string group;
-  std::array<std::optional<double>, 3> value;  ///< ux, uy, uz
-  std::vector<double> factors;                 ///< per-step multipliers (empty: the global ones)
+  std::array<std::optional<LoadValue>, 3> value;  ///< ux, uy, uz
+  std::vector<double> factors;                    ///< per-step multipliers (empty: the global ones)
 };
 
 /// How a [[body.traction]] states its load: the traction itself, or the resultant it must have.
@@ -56,7 +67,8 @@ struct TractionSpec {
   std::string key;
   std::string group;
   TractionInput input = TractionInput::kTraction;
-  std::vector<double> traction;  ///< dim components: t (kTraction) or F (kTotalForce)
+  /// dim components: t (kTraction: numbers or expressions) or F (kTotalForce: numbers)
+  std::vector<LoadValue> traction;
   std::vector<double> factors;
 };
 
@@ -73,7 +85,7 @@ struct PointLoadSpec {
 struct PressureSpec {
   std::string key;
   std::string group;
-  double pressure = 0.0;
+  LoadValue pressure;
   std::vector<double> factors;
 };
 

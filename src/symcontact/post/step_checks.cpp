@@ -59,6 +59,14 @@ double check_penetration(const Model& model, const VectorXd& u) {
   throw SolveError(s.str());
 }
 
+/// The floor of body b's force scale (step_checks.hpp): kRoundOffStrain × (λ + 2μ) × L^(dim−1), L the
+/// diagonal of the body's bounding box (reference configuration).
+double force_floor(const Body& body, int dim) {
+  const Mesh& m = body.mesh;
+  const double L = m.num_nodes() > 0 ? (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).norm() : 0.0;
+  return kRoundOffStrain * (body.material.lambda + 2.0 * body.material.mu) * std::pow(L, dim - 1);
+}
+
 /// Largest ‖r_b‖ / F over the bodies (step_checks.hpp); throws when above the tolerance.
 double check_equilibrium(const Model& model, const VectorXd& u, const VectorXd& g, const FixedDofs& fixed,
                          const ContactState* contact) {
@@ -88,14 +96,15 @@ double check_equilibrium(const Model& model, const VectorXd& u, const VectorXd& 
   const double scale = std::max({model.external_load().norm(), std::sqrt(reactions2), contact_scale});
   double worst = 0.0;
   for (int b = 0; b < dofs.num_bodies(); ++b) {
-    const double rel = scale > 0 ? std::sqrt(body_r2[b]) / scale : 0.0;
+    const double body_scale = std::max(scale, force_floor(*model.bodies()[b], model.dim()));
+    const double rel = body_scale > 0 ? std::sqrt(body_r2[b]) / body_scale : 0.0;
     worst = std::max(worst, rel);
     if (rel > kEquilibriumRelativeTolerance) {
       std::ostringstream s;
       s.precision(3);
       s << "check of the answer: body '" << model.bodies()[b]->name
         << "' is not in equilibrium: the force residual ‖∇E − contact forces‖ on its free DOFs is " << rel
-        << " of the step's force scale " << scale << " (at most " << kEquilibriumRelativeTolerance << ")";
+        << " of the step's force scale " << body_scale << " (at most " << kEquilibriumRelativeTolerance << ")";
       throw SolveError(s.str());
     }
   }

@@ -13,7 +13,12 @@
 ///    energy: elastic minus the loads' work; j the regularised friction terms of the last solve; A, μ the
 ///    gap constraints of the last geometry iteration and their multipliers), and
 ///    ‖r_b‖₂ ≤ kEquilibriumRelativeTolerance × F with F the force scale of the step:
-///    max(‖f_ext‖₂, ‖∇E(u) on the fixed DOFs‖₂ (the reactions), ‖Aᵀμ‖₂).
+///    max(‖f_ext‖₂, ‖∇E(u) on the fixed DOFs‖₂ (the reactions), ‖Aᵀμ‖₂, F_b), where the floor
+///    F_b = kRoundOffStrain × (λ + 2μ) × L_b^(dim−1) (the body's small-strain moduli, L_b the diagonal of
+///    its bounding box) is the force a strain of kRoundOffStrain makes across the body. Without it a
+///    step whose forces are all round-off (a rigid motion imposed on a hyperelastic body, which is
+///    stress-free) would be measured against round-off; the elastic forces' own round-off,
+///    about 1e-16 (λ + 2μ) L_b^(dim−1), stays well below 1e-6 F_b.
 ///
 /// A failed check throws SolveError naming the step, the body or pair, the node and the measured figure;
 /// the run turns it into exit 3 with the finished steps kept.
@@ -28,6 +33,8 @@ namespace symcontact {
 /// ‖r_b‖₂ / F above which a body is not in equilibrium (see the file comment). The solvers balance forces to
 /// round-off on the condensed and dual paths and to the optimiser's tolerance otherwise.
 constexpr double kEquilibriumRelativeTolerance = 1e-6;
+/// The strain whose force across a body is the floor of its force scale (see the file comment).
+constexpr double kRoundOffStrain = 1e-8;
 
 /// What the checks measured (for summary.json): the largest ‖r_b‖₂ / F over the bodies, and the largest
 /// depth / h over the contact nodes (0 without contact or penetration).

@@ -147,7 +147,7 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
   CholeskySolver chol;
   SparseMatrix K;
   bool have_factor = false;
-  double reaction_scale = 0.0;
+  double reaction_scale = 0.0, increment_scale = 0.0;
   VectorXd g(n), rhs(rep.num_free);
   try {
   for (int it = 0;; ++it) {
@@ -165,7 +165,7 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
     const double g_norm = g.stableNorm();
     const double q = g_norm > 0.0 ? std::min(1.0, r / g_norm) : 1.0;
     reaction_scale = std::max(reaction_scale, g_norm * std::sqrt((1.0 - q) * (1.0 + q)));
-    const double scale = std::max({load_scale, rep.residual0, reaction_scale});
+    const double scale = std::max({load_scale, rep.residual0, reaction_scale, increment_scale});
     // Before the convergence test: r ≤ tol·scale holds for r = scale = inf.
     if (!std::isfinite(r) || !std::isfinite(scale))
       throw SolveError("Newton iteration produced a non-finite residual (the loads or the stiffness overflow)");
@@ -191,9 +191,14 @@ EquilibriumReport solve_equilibrium(const EnergyTerm& energy, const FixedDofs& f
     if (!have_factor || !constant) {
       {
         ScopedPhase t(rep.times, "assembly");
+        const VectorXd rhs_without_jump = rhs;
         CouplingSink sink(free_index, jump, rhs);
         energy.add_hessian(u, sink);
         K = sink.to_lower_matrix(rep.num_free);
+        // ‖K_fD Δu_D‖: the force the Dirichlet increment exerts on the free DOFs through the tangent. The
+        // force scale of a problem driven by Dirichlet values alone whose answer is stress-free (a rigid
+        // motion), where the loads, the residuals and the reactions are all round-off.
+        if (boundary_moving) increment_scale = std::max(increment_scale, (rhs - rhs_without_jump).stableNorm());
       }
       ScopedPhase t(rep.times, "factorization");
       factorize_descent(chol, K, constant, rep);

@@ -3,7 +3,8 @@
 /// Minimises an energy E(u) without contact constraints, with Dirichlet DOFs fixed, by Newton's
 /// method on the free DOFs: K_ff Δu_f = −g_f(u), K = ∇²E, g = ∇E, each linear system solved by sparse
 /// Cholesky. A quadratic energy (linear elasticity) converges in one step; the loop stops when
-/// ‖g_f‖ ≤ tolerance · max(‖f_ext‖, ‖g_f(u0)‖) or after max_iterations (then SolveError).
+/// ‖g_f‖ ≤ tolerance · max(‖f_ext‖, ‖g_f(u0)‖, the largest reaction norm ‖g_D‖ met, the largest
+/// ‖K_fD Δu_D‖ of a Dirichlet increment below) or after max_iterations (then SolveError).
 ///
 /// A non-quadratic energy (hyperelasticity) is globalised (Nocedal & Wright, Numerical Optimization,
 /// 2006, §3.1 and §3.4):

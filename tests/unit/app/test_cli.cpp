@@ -157,6 +157,23 @@ TEST_F(Cli, PartlyConstrainedBodyIsAnInputError) {
                          "No Dirichlet condition holds it"});
 }
 
+TEST_F(Cli, ExpressionThatDoesNotCompileIsAnInputErrorGivingThePosition) {
+  const fs::path f = write("expr.toml", problem_toml(example_geo(), "block", "0.3",
+                                                     kClampBottom + "[[body.pressure]]\nboundary = \"top\"\n"
+                                                                    "pressure = \"10*t*(1 + q)\"\n"));
+  expect_input_error(f, {"expr.toml: body[0].pressure[0].pressure:", "character 11 of \"10*t*(1 + q)\"",
+                         "unexpected token \"q\" (the variables are x, y, z and t)"});
+}
+
+TEST_F(Cli, ExpressionNotFiniteAtANodeIsAnInputErrorNamingTheNode) {
+  // block.geo: the 2 × 1 block; its bottom runs from (0, 0) to (2, 0).
+  const fs::path f = write("inf.toml", problem_toml(example_geo(), "block", "0.3",
+                                                    "[[body.dirichlet]]\nboundary = \"bottom\"\nux = 0.0\n"
+                                                    "uy = \"t/(x - 2)\"\n\n" + kPressTop));
+  expect_input_error(f, {"inf.toml: body[0].dirichlet[0].uy:", "the expression \"t/(x - 2)\" is",
+                         "at the node (x, y, z) = (2, 0, 0)"});
+}
+
 TEST_F(Cli, DuplicateNodesAreAnInputErrorNamingTheNodes) {
   // Node 6 repeats node 1 at (0, 0) but no triangle has both: the square is cut from (0, 0) to its
   // centre. The message names the problem file, the body, the mesh file and the two node tags.

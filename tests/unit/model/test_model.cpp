@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "support/model_case.hpp"
@@ -274,6 +275,77 @@ TEST_F(ModelTest, MaterialGroupsMustCoverEveryCellOnce) {
             std::string::npos);
   EXPECT_NE(error_of({"left"}).find("body[0].material: body 'bar' (mesh bar.geo): element "), std::string::npos);
   EXPECT_NE(error_of({"left"}).find(" and 7 other cells are in no material's group"), std::string::npos);
+}
+
+// A Dirichlet expression is evaluated at each node's reference coordinates with t = the condition's load
+// factor, as written (not multiplied by the factor); numbers beside it keep their meaning.
+TEST_F(ModelTest, DirichletExpressionsAreEvaluatedAtTheNodesWithTheLoadFactor) {
+  build(kBlock.replaced("uy = -0.3\n", "uy = \"x*t^2 - y\"\nux = 0.2\n"));
+  const Index top_right_y = dof_at(0, 2.0, 1.0, 1), top_mid_y = dof_at(0, 1.0, 1.0, 1);
+  const Index top_mid_x = dof_at(0, 1.0, 1.0, 0);
+  for (const auto& [step, fraction, t] : {std::tuple{0, 1.0, 0.5}, {1, 1.0, 1.0}, {1, 0.5, 0.75}, {0, 0.0, 0.0}}) {
+    SCOPED_TRACE("step " + std::to_string(step) + ", fraction " + std::to_string(fraction));
+    const VectorXd u = imposed(model_->fixed_dofs(step, fraction));
+    EXPECT_EQ(u[top_right_y], 2.0 * t * t - 1.0);
+    EXPECT_EQ(u[top_mid_y], 1.0 * t * t - 1.0);
+    EXPECT_EQ(u[top_mid_x], 0.2 * t);
+  }
+}
+
+// Pressures that vary along the boundary: the nodal forces' resultant and first moment equal the integrals
+// of the closed form (exact: the quadrature integrates a linear pressure times the linear shape functions).
+// An expression that is not linear in t is assembled again at each factor.
+TEST_F(ModelTest, VaryingPressureMatchesItsClosedFormResultant) {
+  // Right side x = 2, y ∈ [0, 1], outward normal +x: p = 10 (1 − y) t (hydrostatic), so
+  //   Σ f_x = −∫ p dy = −5 t,  Σ f_x y = −∫ p y dy = −10 t / 6.
+  // Top y = 1, x ∈ [0, 2], outward normal +y: p = 3 x t², so Σ f_y = −6 t², Σ f_y x = −8 t².
+  build(kBlock + "[[body.pressure]]\nboundary = \"right\"\npressure = \"10*(1 - y)*t\"\n"
+                 "[[body.pressure]]\nboundary = \"top\"\npressure = \"3*x*t^2\"\n");
+  const Mesh& mesh = model_->bodies()[0]->mesh;
+  for (const auto& [step, fraction, t] : {std::tuple{0, 1.0, 0.5}, {1, 1.0, 1.0}, {1, 0.5, 0.75}}) {
+    SCOPED_TRACE("step " + std::to_string(step) + ", fraction " + std::to_string(fraction));
+    model_->set_step(step, fraction);
+    const VectorXd f = model_->external_load();
+    double fx = 0, fx_y = 0, fy = 0, fy_x = 0;
+    for (Index a = 0; a < mesh.num_nodes(); ++a) {
+      fx += f[model_->dofs().dof(0, a, 0)];
+      fx_y += f[model_->dofs().dof(0, a, 0)] * mesh.x(1, a);
+      fy += f[model_->dofs().dof(0, a, 1)];
+      fy_x += f[model_->dofs().dof(0, a, 1)] * mesh.x(0, a);
+    }
+    EXPECT_NEAR(fx, -5.0 * t, 1e-12);
+    EXPECT_NEAR(fx_y, -10.0 * t / 6.0, 1e-12);
+    EXPECT_NEAR(fy, -6.0 * t * t, 1e-12);
+    EXPECT_NEAR(fy_x, -8.0 * t * t, 1e-12);
+    VectorXd g = VectorXd::Zero(f.size());  // the energy sees the same load: ∇E(0) = −f
+    model_->energy().add_gradient(VectorXd::Zero(g.size()), g);
+    EXPECT_LT((g + f).lpNorm<Eigen::Infinity>(), 1e-12);
+  }
+}
+
+// An expression that is not finite at a node of its group, at t = 0, 1 or a step's factor, is an input error
+// naming the key, the node and t.
+TEST_F(ModelTest, NonFiniteExpressionIsAnInputErrorNamingTheNode) {
+  const struct {
+    std::string text, key, fragment;
+  } cases[] = {
+      {kBlock.replaced("uy = -0.3", "uy = \"1/(x - 2)\""), "body[0].dirichlet[2].uy",
+       "the expression \"1/(x - 2)\" is inf at t = 0, at the node (x, y, z) = (2, 1, 0)"},
+      {kBlock + "[[body.traction]]\nboundary = \"right\"\ntraction = [0, \"sqrt(0.75 - t)*y\"]\n",
+       "body[0].traction[0].traction[1]", "is NaN at t = 1, at the node (x, y, z) = (2, "},
+      {kBlock + "[[body.pressure]]\nboundary = \"top\"\npressure = \"log(t - 0.5)\"\n",
+       "body[0].pressure[0].pressure", "\"log(t - 0.5)\" is NaN at t = 0, at the node (x, y, z) = ("},
+  };
+  for (const auto& c : cases) {
+    try {
+      build(c.text);
+      ADD_FAILURE() << "expected an InputError for " << c.key;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "case.toml");
+      EXPECT_EQ(e.key(), c.key);
+      EXPECT_NE(e.message().find(c.fragment), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST_F(ModelTest, MissingDirichletGroupIsAnInputError) {

@@ -42,6 +42,19 @@ std::string resolved(const std::string& relative) {
 
 ProblemSpec parse(const std::string& text) { return parse_problem(text, "case.toml", mesh_dir()); }
 
+/// The number of a value given as a number (nullopt for an unset one; an expression fails the test).
+std::optional<double> number(const std::optional<LoadValue>& v) {
+  if (!v) return std::nullopt;
+  EXPECT_FALSE(v->is_expression()) << v->expression;
+  return v->number;
+}
+
+std::vector<double> numbers(const std::vector<LoadValue>& values) {
+  std::vector<double> out;
+  for (const LoadValue& v : values) out.push_back(*number(v));
+  return out;
+}
+
 /// A valid 2D file with one body; bad cases are one edit away from it.
 const ProblemSnippet kBase(R"(title = "base"
 [problem]
@@ -174,24 +187,24 @@ b = "foundation-2.top"
   EXPECT_EQ(b.dirichlet[0].key, "body[0].dirichlet[0]");
   EXPECT_EQ(b.dirichlet[0].group, "bottom");
   EXPECT_FALSE(b.dirichlet[0].value[0].has_value());
-  EXPECT_EQ(b.dirichlet[0].value[1], std::optional<double>(0.0));
+  EXPECT_EQ(number(b.dirichlet[0].value[1]), std::optional<double>(0.0));
   EXPECT_FALSE(b.dirichlet[0].value[2].has_value());
   EXPECT_TRUE(b.dirichlet[0].factors.empty());
   EXPECT_EQ(b.dirichlet[1].key, "body[0].dirichlet[1]");
   EXPECT_EQ(b.dirichlet[1].group, "left_corner");
-  EXPECT_EQ(b.dirichlet[1].value[0], std::optional<double>(-0.25));
-  EXPECT_EQ(b.dirichlet[1].value[1], std::optional<double>(0.5));
+  EXPECT_EQ(number(b.dirichlet[1].value[0]), std::optional<double>(-0.25));
+  EXPECT_EQ(number(b.dirichlet[1].value[1]), std::optional<double>(0.5));
   EXPECT_EQ(b.dirichlet[1].factors, (std::vector<double>{1.0, 2.0}));
 
   ASSERT_EQ(b.tractions.size(), 2u);
   EXPECT_EQ(b.tractions[0].key, "body[0].traction[0]");
   EXPECT_EQ(b.tractions[0].group, "right");
   EXPECT_EQ(b.tractions[0].input, TractionInput::kTraction);
-  EXPECT_EQ(b.tractions[0].traction, (std::vector<double>{1.5, 0.0}));
+  EXPECT_EQ(numbers(b.tractions[0].traction), (std::vector<double>{1.5, 0.0}));
   EXPECT_EQ(b.tractions[0].factors, (std::vector<double>{0.0, 1.0}));
   EXPECT_EQ(b.tractions[1].key, "body[0].traction[1]");
   EXPECT_EQ(b.tractions[1].input, TractionInput::kTotalForce);
-  EXPECT_EQ(b.tractions[1].traction, (std::vector<double>{0.0, -3.0}));
+  EXPECT_EQ(numbers(b.tractions[1].traction), (std::vector<double>{0.0, -3.0}));
   EXPECT_TRUE(b.tractions[1].factors.empty());
 
   ASSERT_EQ(b.point_loads.size(), 1u);
@@ -203,7 +216,7 @@ b = "foundation-2.top"
   ASSERT_EQ(b.pressures.size(), 1u);
   EXPECT_EQ(b.pressures[0].key, "body[0].pressure[0]");
   EXPECT_EQ(b.pressures[0].group, "top");
-  EXPECT_EQ(b.pressures[0].pressure, 0.01);
+  EXPECT_EQ(number(b.pressures[0].pressure), 0.01);
   EXPECT_TRUE(b.pressures[0].factors.empty());
 
   const BodySpec& f = spec.bodies[1];
@@ -259,8 +272,24 @@ traction = [1, 2, 3]
   ASSERT_EQ(spec.bodies.size(), 1u);
   EXPECT_EQ(spec.bodies[0].materials[0].model, "linear_elastic");
   EXPECT_EQ(spec.bodies[0].body_force, (std::vector<double>{0.0, 0.0, -9.81}));
-  EXPECT_EQ(spec.bodies[0].dirichlet[0].value[2], std::optional<double>(0.0));
-  EXPECT_EQ(spec.bodies[0].tractions[0].traction, (std::vector<double>{1.0, 2.0, 3.0}));
+  EXPECT_EQ(number(spec.bodies[0].dirichlet[0].value[2]), std::optional<double>(0.0));
+  EXPECT_EQ(numbers(spec.bodies[0].tractions[0].traction), (std::vector<double>{1.0, 2.0, 3.0}));
+}
+
+// A string where a Dirichlet component, a pressure or a traction component takes a number is an expression,
+// kept as written; numbers beside it stay numbers.
+TEST(ProblemReader, ExpressionsForDirichletPressureAndTraction) {
+  const ProblemSpec spec = parse(kBase.replaced("uy = 0.0", "uy = \"(cos(0.1*t)-1)*y + sin(0.1*t)*x\"\nux = 0") +
+                                 "[[body.pressure]]\nboundary = \"top\"\npressure = \"9.81*(1 - y)*t\"\n"
+                                 "[[body.traction]]\nboundary = \"right\"\ntraction = [2.5, \"x*t\"]\n");
+  const BodySpec& b = spec.bodies[0];
+  EXPECT_EQ(number(b.dirichlet[0].value[0]), std::optional<double>(0.0));
+  ASSERT_TRUE(b.dirichlet[0].value[1].has_value());
+  EXPECT_EQ(b.dirichlet[0].value[1]->expression, "(cos(0.1*t)-1)*y + sin(0.1*t)*x");
+  EXPECT_EQ(b.pressures[0].pressure.expression, "9.81*(1 - y)*t");
+  ASSERT_EQ(b.tractions[0].traction.size(), 2u);
+  EXPECT_EQ(number(b.tractions[0].traction[0]), 2.5);
+  EXPECT_EQ(b.tractions[0].traction[1].expression, "x*t");
 }
 
 // ---- hyperelastic materials ----
@@ -578,23 +607,30 @@ std::vector<std::string> documentation_examples() {
   return blocks;
 }
 
-// The contact examples of docs/input.md are complete, valid files too.
+// The expression and contact examples of docs/input.md are complete, valid files too.
 TEST(ProblemReader, DocumentationContactExamplesAreValid) {
   const std::vector<std::string> blocks = documentation_examples();
-  ASSERT_EQ(blocks.size(), 4u) << "expected the complete example, two contact examples and a friction example";
+  ASSERT_EQ(blocks.size(), 5u)
+      << "expected the complete example, an expression example, two contact examples and a friction example";
 
-  const ProblemSpec two_bodies = parse(blocks[1]);
+  const ProblemSpec expressions = parse(blocks[1]);
+  ASSERT_EQ(expressions.bodies.size(), 1u);
+  ASSERT_TRUE(expressions.bodies[0].dirichlet[0].value[1].has_value());
+  EXPECT_EQ(expressions.bodies[0].dirichlet[0].value[1]->expression, "sin(0.2*t)*(x - 1) + (cos(0.2*t) - 1)*y");
+  EXPECT_TRUE(expressions.bodies[0].pressures[0].pressure.is_expression());
+
+  const ProblemSpec two_bodies = parse(blocks[2]);
   ASSERT_EQ(two_bodies.contacts.size(), 1u);
   EXPECT_EQ(two_bodies.contacts[0].name, "interface");
   EXPECT_EQ(two_bodies.contacts[0].body_b, "lower");
   EXPECT_EQ(two_bodies.contact_solver.ipopt_string.at("mu_strategy"), "adaptive");
 
-  const ProblemSpec obstacles = parse(blocks[2]);
+  const ProblemSpec obstacles = parse(blocks[3]);
   ASSERT_EQ(obstacles.contacts.size(), 2u);
   EXPECT_EQ(obstacles.contacts[0].obstacle.value().type, "plane");
   EXPECT_EQ(obstacles.contacts[1].obstacle.value().type, "circle");
 
-  const ProblemSpec friction = parse(blocks[3]);
+  const ProblemSpec friction = parse(blocks[4]);
   ASSERT_EQ(friction.contacts.size(), 1u);
   EXPECT_EQ(friction.contacts[0].friction, "coulomb");
   EXPECT_EQ(friction.contacts[0].mu, 0.3);
@@ -763,7 +799,17 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"StringForBoolean", kBase + "[output]\nvtu = \"yes\"\n", "output.vtu",
                 "expected a boolean (true or false), got a string"},
         InputErrorCase{"NumberForVectorEntry", kBase + "[[body.traction]]\nboundary = \"r\"\ntraction = [1.0, true]\n",
-                "body[0].traction[0].traction[1]", "expected a number, got a boolean"},
+                "body[0].traction[0].traction[1]",
+                "expected a number or an expression of x, y, z, t (a string), got a boolean"},
+        InputErrorCase{"ExpressionSyntaxError", kBase.replaced("uy = 0.0", "uy = \"2*x +\""),
+                "body[0].dirichlet[0].uy",
+                "expected a number or an expression of x, y, z, t; character 6 of \"2*x +\": unexpected end of "
+                "expression"},
+        InputErrorCase{"ExpressionUnknownVariable", kBase + "[[body.pressure]]\nboundary = \"top\"\npressure = \"r*t\"\n",
+                "body[0].pressure[0].pressure",
+                "character 1 of \"r*t\": unexpected token \"r\" (the variables are x, y, z and t)"},
+        InputErrorCase{"ExpressionEmpty", kBase + "[[body.traction]]\nboundary = \"r\"\ntraction = [0, \" \"]\n",
+                "body[0].traction[0].traction[1]", "the expression is empty"},
         InputErrorCase{"BodyAsTable", kBase.replaced("[[body]]", "[body]"), "body",
                 "expected an array of tables ([[body]]), got a table"},
         // missing keys
@@ -777,7 +823,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "missing required key"},
         InputErrorCase{"MissingPressureValue", kBase + "[[body.pressure]]\nboundary = \"top\"\n",
                 "body[0].pressure[0].pressure",
-                "missing required key (expected a number)"},
+                "missing required key (expected a number or an expression)"},
         InputErrorCase{"NoBody", "[problem]\ndimension = 2\n", "body", "at least one body"},
         // bodies that nothing holds (no Dirichlet condition, no contact with another body or an obstacle)
         InputErrorCase{"BodyHeldByNothing", kBase.replaced("[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n", ""), "body[0]",
