@@ -107,6 +107,7 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
     std::string t = "[[contact]]\nname = \"" + (nb == 2 ? std::string("interface") : names[j] + "_" + names[j + 1]) +
                     "\"\na = \"" + a + "\"\nb = \"" + b + "\"\nmode = \"" + c.mode + "\"\n";
     if (c.mode == "one-pass") t += "slave = \"b\"\n";
+    if (c.geometry != "current") t += "geometry = \"" + c.geometry + "\"\n";
     if (c.mu >= 0) {
       char buf[64];
       std::snprintf(buf, sizeof buf, "friction = \"coulomb\"\nmu = %.17g\n", c.mu);
@@ -186,6 +187,7 @@ std::string contact_patch_name(const ContactPatchCase& c) {
                      (c.mode == "symmetric" ? std::string("symmetric") : std::string("onepass"));
   if (c.swap) name += "_swapped";
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));
+  if (c.geometry != "current") name += "_" + c.geometry;
   return name;
 }
 

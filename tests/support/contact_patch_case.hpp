@@ -36,6 +36,7 @@ struct ContactPatchCase {
   bool swap = false;               ///< declare the bodies and the pairs in reverse order, each pair's a and b swapped
   double mu = -1.0;                ///< < 0: frictionless; ≥ 0: Coulomb friction with this coefficient
   double alpha = 0.0;              ///< friction regularisation length; 0: automatic
+  std::string geometry = "current";  ///< [[contact]] geometry: "current" or "reference" (small sliding)
 };
 
 struct ContactPatchErrors {
@@ -74,7 +75,7 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
 /// Solves and measures: contact_patch_errors(c, *contact_patch_solve(c)).
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
-/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3"; "3D_" first in 3D): a GoogleTest parameter name.
+/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_reference"; "3D_" first in 3D): a GoogleTest parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing
