@@ -7,6 +7,8 @@
 // the frictional variant (test_contact_patch_friction.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "support/contact_patch_case.hpp"
@@ -56,9 +58,23 @@ TEST(ContactPatch2DReference, UniformPressureExactDisplacementsAndTwoGeometryIte
   for (ContactPatchCase pc : {patch(4, 5, 1, "symmetric"), patch(5, 4, 2, "symmetric"), patch(4, 5, 1, "one-pass"),
                               patch(5, 4, 2, "one-pass")}) {
     pc.geometry = "reference";
-    const ContactPatchErrors e = contact_patch_errors(pc);
-    std::printf("  %s: displacement error %.2e, pressure error %.2e, %d geometry / %d IPOPT iterations\n",
-                contact_patch_name(pc).c_str(), e.displacement, e.pressure, e.geometry_iterations, e.ipopt_iterations);
+    const auto solved = contact_patch_solve(pc);
+    const ContactPatchErrors e = contact_patch_errors(pc, *solved);
+    // The reported gap is the linearised one, g(X) + ν̄·(u − u_opposite): zero at every node that projects
+    // (the interface moves down by (1 − ν²) p, which a wrong sign or a missing term would show).
+    double max_gap = 0.0;
+    int projected = 0;
+    for (const symcontact::ContactSideResult& side : solved->contact.at(0).sides)
+      for (symcontact::Index k = 0; k < side.gap.size(); ++k)
+        if (std::isfinite(side.gap[k])) {
+          max_gap = std::max(max_gap, std::abs(side.gap[k]));
+          ++projected;
+        }
+    EXPECT_GT(projected, 0) << contact_patch_name(pc);
+    EXPECT_LT(max_gap, 1e-12) << contact_patch_name(pc);
+    std::printf("  %s: displacement error %.2e, pressure error %.2e, max |gap| %.1e, %d geometry / %d IPOPT iterations\n",
+                contact_patch_name(pc).c_str(), e.displacement, e.pressure, max_gap, e.geometry_iterations,
+                e.ipopt_iterations);
     EXPECT_LT(e.pressure, 1e-6) << contact_patch_name(pc);
     EXPECT_LT(e.displacement, 1e-8) << contact_patch_name(pc);
     EXPECT_EQ(e.geometry_iterations, 2) << contact_patch_name(pc);

@@ -272,7 +272,8 @@ void replace_once(std::string& text, const std::string& from, const std::string&
 // examples/inclined_2d/inclined_reference.toml (μ = 0.2, δ = 0.01, U = 0.03, α = 1e-7) with its loads and α
 // scaled by k = 1/20, 1/4 and 1 (δ = 5e-4, the loads of inclined.toml, to 0.01), in the reference and in
 // the current geometry. The reference geometry writes exactly the problem of the closed form: in gross slip
-// (the last three steps) |R_x/R_y| = tan(α + φ) to 1e-8 whatever the load (measured 8.5e-10 at every k: the
+// (from step 6; required in the last three) |R_x/R_y| = tan(α + φ) to 1e-8 whatever the load, after a first
+// gross-slip step within 1e-6 (measured 3.2e-7, then at most 8.5e-10, the same at every k: the
 // problem is linear in the load; what is left is the regularisation, (α/s)²/2 = 3.6e-10 with s ≈ 3.7e-3 k
 // the slip of a step, and the Coulomb tolerance 1e-6 on τ). The current geometry drifts with the load, as
 // the interface turns: −0.15 %, −0.77 % and −3.2 % at step 10 for k = 1/20, 1/4 and 1 on this mesh. A
@@ -280,7 +281,7 @@ void replace_once(std::string& text, const std::string& from, const std::string&
 // second subproblem is the first one again (an inexact inner solve may stop after the first).
 TEST(InclinedInterface, ReferenceGeometryMeetsTheClosedFormAtEveryLoad) {
   const double exact = exact_ratio(kTanAlpha, 0.2);
-  std::printf("  exact |Rx/Ry| = %.10f; last three steps (gross slip), reference | current\n", exact);
+  std::printf("  exact |Rx/Ry| = %.10f; every step, reference | current\n", exact);
   for (const double k : {0.05, 0.25, 1.0}) {
     char loads[128];
     std::snprintf(loads, sizeof loads, "uy = %.9g|ux = %.9g|alpha = %.9g", -0.01 * k, 0.03 * k, 1e-7 * k);
@@ -301,20 +302,28 @@ TEST(InclinedInterface, ReferenceGeometryMeetsTheClosedFormAtEveryLoad) {
     ASSERT_EQ(current.size(), 10u);
     for (std::size_t s = 0; s < 10; ++s)  // at most two geometry iterations per contact solve (one Coulomb iteration)
       EXPECT_LE(reference[s].geometry_iterations, 2 * reference[s].coulomb_iterations) << "step " << s + 1;
-    for (std::size_t s = 7; s < 10; ++s) {
+    for (std::size_t s = 0; s < 10; ++s) {
       const double r = std::abs(reference[s].reaction[0] / reference[s].reaction[1]);
       const double c = std::abs(current[s].reaction[0] / current[s].reaction[1]);
-      std::printf("  delta = %.2e, step %2zu: %.10f (%+.2e)  |  %.6f (%+.3f %%); geometry iterations %d | %d, "
-                  "Coulomb %d | %d\n",
-                  0.01 * k, s + 1, r, r / exact - 1, c, 100 * (c / exact - 1), reference[s].geometry_iterations,
-                  current[s].geometry_iterations, reference[s].coulomb_iterations, current[s].coulomb_iterations);
-      EXPECT_NEAR(r / exact, 1.0, 1e-8) << "delta " << 0.01 * k << ", step " << s + 1;
-      EXPECT_EQ(reference[s].sticking, 0) << "delta " << 0.01 * k << ", step " << s + 1;
-      EXPECT_GT(reference[s].slipping, 0) << "delta " << 0.01 * k << ", step " << s + 1;
+      // Gross slip: every friction-side node in contact slips (from step 7 on; required in the last three).
+      const bool gross = reference[s].sticking == 0 && reference[s].slipping > 0;
+      std::printf("  delta = %.2e, step %2zu: %.10f (%+.2e)%s |  %.6f (%+.3f %%); geometry iterations %2d | %2d, "
+                  "Coulomb %2d | %2d\n",
+                  0.01 * k, s + 1, r, r / exact - 1, gross ? " slip " : " stick", c, 100 * (c / exact - 1),
+                  reference[s].geometry_iterations, current[s].geometry_iterations, reference[s].coulomb_iterations,
+                  current[s].coulomb_iterations);
       // The normal force is along the normal of X: the interface's slope as meshed, 0.1.
       EXPECT_NEAR(reference[s].interface_slope, kTanAlpha, 1e-12) << "delta " << 0.01 * k << ", step " << s + 1;
+      if (s >= 7) {
+        EXPECT_TRUE(gross) << "delta " << 0.01 * k << ", step " << s + 1;
+      }
+      if (!gross) continue;
+      // The first step in gross slip is off by the regularisation of the node that started slipping last,
+      // within it (measured 3.2e-7: its slip is about 125 α); the later ones to 1e-8.
+      const bool first = s == 0 || !(reference[s - 1].sticking == 0 && reference[s - 1].slipping > 0);
+      EXPECT_NEAR(r / exact, 1.0, first ? 1e-6 : 1e-8) << "delta " << 0.01 * k << ", step " << s + 1;
       // The current geometry's drift grows with the load (about −3.2 % k): above 1 % at k = 1.
-      if (k == 1.0) {
+      if (k == 1.0 && s >= 7) {
         EXPECT_LT(c / exact - 1, -1e-2) << "step " << s + 1;
       }
     }

@@ -47,11 +47,6 @@ VectorXd ContactSet::geometry_displacement(int pair, const VectorXd& u) const {
   return pairs[pair].geometry == ContactGeometry::kReference ? VectorXd::Zero(u.size()) : u;
 }
 
-bool ContactSet::geometry_is_fixed() const {
-  return std::all_of(pairs.begin(), pairs.end(),
-                     [](const ContactPair& p) { return p.geometry == ContactGeometry::kReference; });
-}
-
 ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u) const {
   ContactLinearization lin;
   // Positions and master geometries per (surface, configuration): entry s for X + u, entry n + s for X

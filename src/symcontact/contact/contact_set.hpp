@@ -91,9 +91,6 @@ class ContactSet {
   /// reference configuration X) for kReference. Every caller that takes projections, normals or friction
   /// points of the pair at a displacement passes it this.
   VectorXd geometry_displacement(int pair, const VectorXd& u) const;
-  /// True when no pair's geometry depends on u (every pair kReference): the linearisation is then the
-  /// same at every iterate.
-  bool geometry_is_fixed() const;
   bool empty() const { return pairs.empty(); }
 
   /// Projections, normals and gap constraints from the configuration X + u (X for a pair in
