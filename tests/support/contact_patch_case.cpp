@@ -125,6 +125,7 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
     std::string t = "[[contact]]\nname = \"" + (nb == 2 ? std::string("interface") : names[j] + "_" + names[j + 1]) +
                     "\"\na = \"" + a + "\"\nb = \"" + b + "\"\nmode = \"" + c.mode + "\"\n";
     if (c.mode == "one-pass") t += "slave = \"b\"\n";
+    if (c.geometry != "current") t += "geometry = \"" + c.geometry + "\"\n";
     if (c.mu >= 0) {
       char buf[64];
       std::snprintf(buf, sizeof buf, "friction = \"coulomb\"\nmu = %.17g\n", c.mu);
@@ -205,6 +206,7 @@ std::string contact_patch_name(const ContactPatchCase& c) {
   if (c.swap) name += "_swapped";
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));
   if (c.one_body) name += "_one_body";
+  if (c.geometry != "current") name += "_" + c.geometry;
   return name;
 }
 

@@ -40,6 +40,7 @@ struct ContactPatchCase {
   /// there (coincident where the divisions meet), held by one self-contact pair on the group "interface" (both
   /// faces); the lower block's supports as in the two-body case, u_x = 0 at (0, 2) on the same body.
   bool one_body = false;
+  std::string geometry = "current";  ///< [[contact]] geometry: "current" or "reference" (small sliding)
 };
 
 struct ContactPatchErrors {
@@ -79,7 +80,7 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
 /// Solves and measures: contact_patch_errors(c, *contact_patch_solve(c)).
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
-/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body"; "3D_" first in 3D): a GoogleTest parameter name.
+/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body", "_reference"; "3D_" first in 3D): a GoogleTest parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing

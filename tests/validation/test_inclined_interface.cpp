@@ -61,9 +61,10 @@ struct StepResult {
 
 /// Solves `file` of `example_dir` (examples/inclined_2d or inclined_3d) on the mesh of size h, step by
 /// step, as `symcontact run` does. In 3D the reaction and the forces are their x and y components.
-/// `configure`, when given, changes the solver options read from the file.
+/// `configure`, when given, changes the solver options read from the file; `edit`, the file's text.
 std::vector<StepResult> solve_inclined(const std::string& file, double h, const std::string& example_dir = kExampleDir,
-                                       const std::function<void(FrictionalOptions&)>& configure = nullptr) {
+                                       const std::function<void(FrictionalOptions&)>& configure = nullptr,
+                                       const std::function<void(std::string&)>& edit = nullptr) {
   const std::string dir = test_temp_dir("inclined_interface");
   char geo[512];
   std::snprintf(geo, sizeof geo, "h = %.9g;\nInclude \"%s/inclined.geo\";\n", h, example_dir.c_str());
@@ -74,6 +75,7 @@ std::vector<StepResult> solve_inclined(const std::string& file, double h, const 
   for (std::size_t at = 0; (at = toml.find(from, at)) != std::string::npos; ++count)
     toml.replace(at, from.size(), "mesh = \"inclined_h.geo\"");
   EXPECT_EQ(count, 2u) << file << ": both bodies should read inclined.geo";
+  if (edit) edit(toml);
 
   const ProblemSpec spec = parse_problem(toml, file, dir);
   std::ostringstream sink;
@@ -256,6 +258,76 @@ TEST(InclinedInterface, LazyInteriorKeepsTheAnswer) {
     EXPECT_LT(eager[k].interior_residual, 1e-10) << "step " << k + 1;
   }
   EXPECT_EQ(deferred, 10) << "every step's solves deferred the interior (the condensed set holds the interface)";
+}
+
+/// Replaces the one occurrence of `from` in `text` by `to`.
+void replace_once(std::string& text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  ASSERT_EQ(text.find(from, at + 1), std::string::npos) << from;
+  text.replace(at, from.size(), to);
+}
+
+// Small sliding ([[contact]] geometry = "reference", contact/contact_geometry.hpp): the example
+// examples/inclined_2d/inclined_reference.toml (μ = 0.2, δ = 0.01, U = 0.03, α = 1e-7) with its loads and α
+// scaled by k = 1/20, 1/4 and 1 (δ = 5e-4, the loads of inclined.toml, to 0.01), in the reference and in
+// the current geometry. The reference geometry writes exactly the problem of the closed form: in gross slip
+// (from step 6; required in the last three) |R_x/R_y| = tan(α + φ) to 1e-8 whatever the load, after a first
+// gross-slip step within 1e-6 (measured 3.2e-7, then at most 8.5e-10, the same at every k: the
+// problem is linear in the load; what is left is the regularisation, (α/s)²/2 = 3.6e-10 with s ≈ 3.7e-3 k
+// the slip of a step, and the Coulomb tolerance 1e-6 on τ). The current geometry drifts with the load, as
+// the interface turns: −0.15 %, −0.77 % and −3.2 % at step 10 for k = 1/20, 1/4 and 1 on this mesh. A
+// reference solve takes at most two geometry iterations: its rows do not depend on the iterate, so the
+// second subproblem is the first one again (an inexact inner solve may stop after the first).
+TEST(InclinedInterface, ReferenceGeometryMeetsTheClosedFormAtEveryLoad) {
+  const double exact = exact_ratio(kTanAlpha, 0.2);
+  std::printf("  exact |Rx/Ry| = %.10f; every step, reference | current\n", exact);
+  for (const double k : {0.05, 0.25, 1.0}) {
+    char loads[128];
+    std::snprintf(loads, sizeof loads, "uy = %.9g|ux = %.9g|alpha = %.9g", -0.01 * k, 0.03 * k, 1e-7 * k);
+    std::vector<std::string> lines;
+    std::istringstream in(loads);
+    for (std::string line; std::getline(in, line, '|');) lines.push_back(line);
+    auto scale = [&](std::string& t) {
+      replace_once(t, "uy = -0.01\n", lines.at(0) + "\n");
+      replace_once(t, "ux = 0.03\n", lines.at(1) + "\n");
+      replace_once(t, "alpha = 1e-7 ", lines.at(2) + " ");
+    };
+    const auto reference = solve_inclined("inclined_reference.toml", 0.1, kExampleDir, nullptr, scale);
+    const auto current = solve_inclined("inclined_reference.toml", 0.1, kExampleDir, nullptr, [&](std::string& t) {
+      scale(t);
+      replace_once(t, "\ngeometry = \"reference\"", "\ngeometry = \"current\"");
+    });
+    ASSERT_EQ(reference.size(), 10u);
+    ASSERT_EQ(current.size(), 10u);
+    for (std::size_t s = 0; s < 10; ++s)  // at most two geometry iterations per contact solve (one Coulomb iteration)
+      EXPECT_LE(reference[s].geometry_iterations, 2 * reference[s].coulomb_iterations) << "step " << s + 1;
+    for (std::size_t s = 0; s < 10; ++s) {
+      const double r = std::abs(reference[s].reaction[0] / reference[s].reaction[1]);
+      const double c = std::abs(current[s].reaction[0] / current[s].reaction[1]);
+      // Gross slip: every friction-side node in contact slips (from step 7 on; required in the last three).
+      const bool gross = reference[s].sticking == 0 && reference[s].slipping > 0;
+      std::printf("  delta = %.2e, step %2zu: %.10f (%+.2e)%s |  %.6f (%+.3f %%); geometry iterations %2d | %2d, "
+                  "Coulomb %2d | %2d\n",
+                  0.01 * k, s + 1, r, r / exact - 1, gross ? " slip " : " stick", c, 100 * (c / exact - 1),
+                  reference[s].geometry_iterations, current[s].geometry_iterations, reference[s].coulomb_iterations,
+                  current[s].coulomb_iterations);
+      // The normal force is along the normal of X: the interface's slope as meshed, 0.1.
+      EXPECT_NEAR(reference[s].interface_slope, kTanAlpha, 1e-12) << "delta " << 0.01 * k << ", step " << s + 1;
+      if (s >= 7) {
+        EXPECT_TRUE(gross) << "delta " << 0.01 * k << ", step " << s + 1;
+      }
+      if (!gross) continue;
+      // The first step in gross slip is off by the regularisation of the node that started slipping last,
+      // within it (measured 3.2e-7: its slip is about 125 α); the later ones to 1e-8.
+      const bool first = s == 0 || !(reference[s - 1].sticking == 0 && reference[s - 1].slipping > 0);
+      EXPECT_NEAR(r / exact, 1.0, first ? 1e-6 : 1e-8) << "delta " << 0.01 * k << ", step " << s + 1;
+      // The current geometry's drift grows with the load (about −3.2 % k): above 1 % at k = 1.
+      if (k == 1.0 && s >= 7) {
+        EXPECT_LT(c / exact - 1, -1e-2) << "step " << s + 1;
+      }
+    }
+  }
 }
 
 // The three example files are one problem: they may differ only in lines that mention mu (the

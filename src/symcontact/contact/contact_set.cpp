@@ -43,12 +43,22 @@ OppositeSide ContactSet::opposite_side(int f, const DofMap& dofs, const VectorXd
   return side;
 }
 
+VectorXd ContactSet::geometry_displacement(int pair, const VectorXd& u) const {
+  return pairs[pair].geometry == ContactGeometry::kReference ? VectorXd::Zero(u.size()) : u;
+}
+
 ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u) const {
   ContactLinearization lin;
-  std::vector<Eigen::MatrixXd> x(surfaces.size());
-  std::vector<MasterGeometry> master(surfaces.size());
-  std::vector<char> prepared(surfaces.size(), 0);
-  for (std::size_t s = 0; s < surfaces.size(); ++s) x[s] = current_positions(surfaces[s], dofs, u);
+  // Positions and master geometries per (surface, configuration): entry s for X + u, entry n + s for X
+  // (a surface may belong to pairs of both kinds).
+  const std::size_t n = surfaces.size();
+  std::vector<Eigen::MatrixXd> x(2 * n);
+  std::vector<MasterGeometry> master(2 * n);
+  std::vector<char> prepared(2 * n, 0);
+  for (std::size_t s = 0; s < n; ++s) {
+    x[s] = current_positions(surfaces[s], dofs, u);
+    x[n + s] = surfaces[s].X;
+  }
   std::vector<Triplet> triplets;
   std::vector<double> b;
   for (int f = 0; f < static_cast<int>(families_.size()); ++f) {
@@ -58,15 +68,17 @@ ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u
     opt.search_distance = pair.search_distance;
     opt.bisector_ray = pair.bisector_ray();
     const ContactSurface& slave = surfaces[fam.slave];
+    const std::size_t at = pair.geometry == ContactGeometry::kReference ? n : 0;
     std::vector<ContactPoint> pts;
     if (fam.master >= 0) {
-      if (!prepared[fam.master]) {
-        master[fam.master] = prepare_master(surfaces[fam.master], x[fam.master]);
-        prepared[fam.master] = 1;
+      const std::size_t m = at + fam.master;
+      if (!prepared[m]) {
+        master[m] = prepare_master(surfaces[fam.master], x[m]);
+        prepared[m] = 1;
       }
-      pts = contact_points(slave, x[fam.slave], master[fam.master], opt);
+      pts = contact_points(slave, x[at + fam.slave], master[m], opt);
     } else {
-      pts = contact_points(slave, x[fam.slave], obstacles[pair.obstacle], opt);
+      pts = contact_points(slave, x[at + fam.slave], obstacles[pair.obstacle], opt);
     }
     const GapConstraints g = assemble_gap_constraints(slave, fam.master >= 0 ? &surfaces[fam.master] : nullptr, pts, dofs);
     const int offset = static_cast<int>(b.size());

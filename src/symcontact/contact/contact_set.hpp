@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "symcontact/contact/contact_geometry.hpp"
 #include "symcontact/contact/contact_points.hpp"
 #include "symcontact/contact/gap_constraints.hpp"
 
@@ -38,6 +39,8 @@ struct ContactPair {
   double mu = 0.0;              ///< Coulomb coefficient
   double tau = 0.0;             ///< Tresca threshold
   double alpha = 0.0;           ///< regularisation length (resolved, > 0 with friction)
+  /// Where the pair's projections, normals and friction points are taken (contact_geometry.hpp).
+  ContactGeometry geometry = ContactGeometry::kCurrent;
   /// Constraints push on each node from both sides (symmetric or self-contact): the reported pressure is
   /// along the bisector of the two sides' normals (contact_points.hpp, interface_normal()).
   bool two_sided() const { return obstacle < 0 && (mode == ContactMode::kSymmetric || surface_a == surface_b); }
@@ -84,9 +87,14 @@ class ContactSet {
   int friction_family(int pair) const;
   /// The opposite side of family f at the configuration X + u.
   OppositeSide opposite_side(int f, const DofMap& dofs, const VectorXd& u) const;
+  /// The displacement pair p's geometry is evaluated at: u for ContactGeometry::kCurrent, 0 (the
+  /// reference configuration X) for kReference. Every caller that takes projections, normals or friction
+  /// points of the pair at a displacement passes it this.
+  VectorXd geometry_displacement(int pair, const VectorXd& u) const;
   bool empty() const { return pairs.empty(); }
 
-  /// Projections, normals and gap constraints from the configuration X + u.
+  /// Projections, normals and gap constraints from the configuration X + u (X for a pair in
+  /// ContactGeometry::kReference: its rows are then g = g(X) + A u whatever u).
   ContactLinearization linearize(const DofMap& dofs, const VectorXd& u) const;
 
   /// The default search distance of a pair: 0.1 × the diagonal of the bounding box of its surfaces

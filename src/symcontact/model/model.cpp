@@ -364,6 +364,7 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
     pair.surface_a = surface(cs.body_a, cs.boundary_a, cs.key + ".a");
     pair.mode = cs.mode == "one-pass" ? ContactMode::kOnePass : ContactMode::kSymmetric;
     pair.slave_is_b = cs.slave == "b";
+    pair.geometry = cs.geometry;
     const ContactSurface* other = nullptr;
     if (cs.obstacle) {
       const ObstacleSpec& os = *cs.obstacle;
@@ -423,7 +424,8 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
     s << "contact '" << cs.name << "': " << contacts_.surfaces[pair.surface_a].name << " / "
       << (pair.obstacle >= 0 ? std::string("obstacle") : contacts_.surfaces[pair.surface_b].name) << ", "
       << (pair.obstacle >= 0 ? "obstacle" : pair.mode == ContactMode::kSymmetric ? "symmetric" : "one-pass")
-      << ", search distance " << pair.search_distance;
+      << ", search distance " << pair.search_distance
+      << (pair.geometry == ContactGeometry::kReference ? ", reference geometry (small sliding)" : "");
     if (pair.friction == FrictionLaw::kTresca) s << ", Tresca friction tau = " << pair.tau << ", alpha = " << pair.alpha;
     if (pair.friction == FrictionLaw::kCoulomb) s << ", Coulomb friction mu = " << pair.mu << ", alpha = " << pair.alpha;
     log.info(s.str());

@@ -841,7 +841,8 @@ class Reader {
   ContactSpec read_contact(const toml::table& t, const std::string& path, std::size_t index,
                            const ProblemSpec& spec) const {
     check_keys(t, path,
-               {"name", "a", "b", "obstacle", "mode", "slave", "search_distance", "friction", "mu", "tau", "alpha"});
+               {"name", "a", "b", "obstacle", "mode", "slave", "search_distance", "friction", "mu", "tau", "alpha",
+                "geometry"});
     ContactSpec c;
     c.key = path;
 
@@ -899,6 +900,13 @@ class Reader {
       const std::string key = child(path, "search_distance");
       c.search_distance = as_number(*n, key);
       if (!(c.search_distance > 0.0)) fail(key, "expected a number > 0, got " + format_number(c.search_distance));
+    }
+
+    if (const toml::node* n = t.get("geometry")) {
+      const std::string key = child(path, "geometry");
+      const std::string g = as_string(*n, key);
+      if (g != "current" && g != "reference") fail(key, "expected \"current\" or \"reference\", got " + in_quotes(g));
+      c.geometry = g == "reference" ? ContactGeometry::kReference : ContactGeometry::kCurrent;
     }
 
     read_friction(t, path, c);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "symcontact/contact/contact_geometry.hpp"
 #include "symcontact/materials/analysis_model.hpp"
 #include "symcontact/solvers/subproblem_solver.hpp"
 
@@ -139,6 +140,9 @@ struct ContactSpec {
   double mu = 0.0;                 ///< coulomb: ≥ 0
   double tau = 0.0;                ///< tresca: ≥ 0
   double alpha = 0.0;              ///< regularisation of |v| by sqrt(|v|² + α²) [length]; > 0; 0: automatic
+  /// "current" (finite sliding: the geometry fixed point) | "reference" (small sliding: the geometry of X,
+  /// the gap linearised there once; contact/contact_geometry.hpp).
+  ContactGeometry geometry = ContactGeometry::kCurrent;
 };
 
 /// Settings of the contact solve (Algorithm 2) and of IPOPT: the [contact_solver] and [ipopt] tables, under the

@@ -12,32 +12,58 @@ namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// Displacement of `surface` at point (facet, eta), 3 components (zero for a rigid surface).
+Eigen::Vector3d displacement_at(const ContactSurface& surface, Index facet, const double* eta, const DofMap& dofs,
+                                const VectorXd& u) {
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  if (surface.is_rigid()) return w;
+  double M[10];
+  shape_functions(surface.facet_type, eta, M, nullptr);
+  for (int b = 0; b < surface.nodes_per_facet(); ++b)
+    for (int c = 0; c < surface.dim; ++c)
+      w[c] += M[b] * u[dofs.dof(surface.body, surface.nodes[surface.facet(facet)[b]], c)];
+  return w;
+}
+
 /// Signed distance of every node of side `side` to the opposite side of its pair, and the interface normal
 /// there (interface_normal(), contact_points.hpp: outward for this side); nodes that project onto nothing
-/// get a NaN gap and keep their own normal.
+/// get a NaN gap and keep their own normal. xs and the opposite side are at X + u_geometry. With
+/// `linearised_at` (a pair in ContactGeometry::kReference, u_geometry = 0) the gap is the solver's
+/// linearised one, θ(X) + d·(u_s − u_m(η̄)) at the node with the projection η̄ and direction d of X.
 Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int side, const DofMap& dofs,
-                           const VectorXd& u, const Eigen::MatrixXd& xs, Eigen::MatrixXd& normals) {
+                           const VectorXd& u_geometry, const Eigen::MatrixXd& xs, Eigen::MatrixXd& normals,
+                           const VectorXd* linearised_at) {
   const ContactSurface& s = cs.surfaces[side == 0 ? pair.surface_a : pair.surface_b];
   Eigen::VectorXd gap = Eigen::VectorXd::Constant(s.num_nodes(), kNaN);
   const Eigen::MatrixXd own = normals;
+  auto node_displacement = [&](Index k) {
+    Eigen::Vector3d w = Eigen::Vector3d::Zero();
+    if (!s.is_rigid())
+      for (int c = 0; c < s.dim; ++c) w[c] = (*linearised_at)[dofs.dof(s.body, s.nodes[k], c)];
+    return w;
+  };
   if (pair.obstacle >= 0) {
     for (Index k = 0; k < s.num_nodes(); ++k) {
       Eigen::Vector3d p = Eigen::Vector3d::Zero(), xbar, n;
       p.head(s.dim) = xs.col(k);
       cs.obstacles[pair.obstacle].project(p, xbar, n);
       gap[k] = (p - xbar).dot(n);
+      if (linearised_at) gap[k] += n.dot(node_displacement(k));
       normals.col(k) = -n.head(s.dim);
     }
     return gap;
   }
   const ContactSurface& other = cs.surfaces[side == 0 ? pair.surface_b : pair.surface_a];
-  const MasterGeometry mg = prepare_master(other, current_positions(other, dofs, u));
+  const MasterGeometry mg = prepare_master(other, current_positions(other, dofs, u_geometry));
   for (Index k = 0; k < s.num_nodes(); ++k) {
     Eigen::Vector3d n3 = Eigen::Vector3d::Zero();
     n3.head(s.dim) = own.col(k);
     ContactPoint cp;
     if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp, false, pair.bisector_ray() ? &n3 : nullptr)) {
       gap[k] = cp.gap;
+      if (linearised_at)
+        gap[k] += cp.row_direction().dot(node_displacement(k) -
+                                         displacement_at(other, cp.master_facet, cp.eta, dofs, *linearised_at));
       // With the bisector ray, cp.normal is already the interface normal (the master side's).
       normals.col(k) = interface_normal(own.col(k), cp.normal.head(s.dim), pair.two_sided() && !pair.bisector_ray());
     }
@@ -147,8 +173,11 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
   sr.surface = si;
   sr.x = current_positions(s, dofs, u);
   sr.X = s.X;
-  Eigen::MatrixXd normals = nodal_normals(s, sr.x);
-  sr.gap = nodal_gaps(cs, pair, side, dofs, u, sr.x, normals);
+  // The normals (and gaps) the solver used: those of X for a pair in ContactGeometry::kReference.
+  const bool reference = pair.geometry == ContactGeometry::kReference;
+  Eigen::MatrixXd normals = nodal_normals(s, reference ? s.X : sr.x);
+  sr.gap = nodal_gaps(cs, pair, side, dofs, cs.geometry_displacement(pi, u), reference ? s.X : sr.x, normals,
+                      reference ? &u : nullptr);
   sr.normals = normals;
   const Eigen::MatrixXd multiplier_part = nodal_values(s, dofs, pf.normal);
   sr.normal_part = multiplier_part + nodal_values(s, dofs, pf.defect);

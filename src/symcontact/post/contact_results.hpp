@@ -35,7 +35,9 @@
 ///    that both sides' agree to discretisation error (two-material Hertz cylinders, peak: 2.1 % apart per
 ///    reference length, 2.3e-4 per current length),
 ///  - gap: the signed distance θ of the node to the opposite surface (closest point, smoothed normal),
-///    NaN when the node projects onto nothing,
+///    NaN when the node projects onto nothing. For a pair in ContactGeometry::kReference
+///    (contact_geometry.hpp) the normals ν_k and the gap are those the solver used: ν_k of X, and the
+///    linearised gap θ(X) + d·(u_s − u_m(η̄)) at the node's projection η̄ of X,
 ///  - slip (friction side only, NaN elsewhere): the tangential slip increment of the load step at the
 ///    node, the weak average Σ_q w_q N_k s_q / Σ_q w_q N_k of the friction term's point slips (with the
 ///    solver's nodal points the node's own point slip: on a Tri6 surface its coefficient s̃_k in the test

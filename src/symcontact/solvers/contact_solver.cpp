@@ -292,6 +292,9 @@ SubproblemSolution GeometryFixedPoint::solve_subproblem(int it, ConstrainedProbl
 bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   const VectorXd u_it = problem_.expand(x_);  ///< the iterate with its fixed DOFs
   {
+    // A pair in ContactGeometry::kReference gives the same rows and friction points at every iterate
+    // (contact_geometry.hpp): with every pair so, the second iteration repeats the first subproblem and its
+    // change is that subproblem's noise, below the tolerance, which ends the loop.
     ScopedPhase t(rep_.times, "search");
     rep_.linearization = contacts_.linearize(dofs_, u_it);
   }

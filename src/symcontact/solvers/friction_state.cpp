@@ -7,9 +7,11 @@ namespace symcontact {
 
 namespace {
 
-/// The nodal friction points of pair p's friction family at the displacement u.
+/// The nodal friction points of pair p's friction family at the displacement u (at X for a pair in
+/// ContactGeometry::kReference: contact_geometry.hpp).
 std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int p, const DofMap& dofs,
-                                                const VectorXd& u) {
+                                                const VectorXd& u_iterate) {
+  const VectorXd u = contacts.geometry_displacement(p, u_iterate);
   const int f = contacts.friction_family(p);
   const ContactSurface& slave = contacts.surfaces[contacts.families()[f].slave];
   const ContactPair& pair = contacts.pairs[p];

@@ -15,11 +15,13 @@ namespace {
 /// Nodal pressures (clamped at 0) on the friction-slave surface of pair p.
 Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap& dofs, const VectorXd& u,
                                        const VectorXd& force) {
-  // Along the interface normal, as the friction term and the contact results decompose.
+  // Along the interface normal, as the friction term and the contact results decompose (the normal of X
+  // for a pair in ContactGeometry::kReference).
   const int f = cs.friction_family(p);
   const ContactSurface& s = cs.surfaces[cs.families()[f].slave];
-  const Eigen::MatrixXd xs = current_positions(s, dofs, u);
-  const OppositeSide other = cs.opposite_side(f, dofs, u);
+  const VectorXd u_geometry = cs.geometry_displacement(p, u);
+  const Eigen::MatrixXd xs = current_positions(s, dofs, u_geometry);
+  const OppositeSide other = cs.opposite_side(f, dofs, u_geometry);
   const Eigen::MatrixXd normals =
       interface_normals(s, xs, other.master(), other.obstacle, cs.pairs[p].search_distance, cs.pairs[p].bisector_ray());
   return surface_tractions(s, dofs, u, force, &normals).pressure.cwiseMax(0.0);

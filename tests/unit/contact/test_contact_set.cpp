@@ -134,6 +134,38 @@ TEST(ContactSet, SymmetricRowsAreTheTwoOnePassFamiliesStacked) {
   }
 }
 
+TEST(ContactSet, ReferenceGeometryRowsAreThoseOfXAtEveryDisplacement) {
+  // A pair in ContactGeometry::kReference linearises at u = 0 whatever u: its rows are the current pair's
+  // at u = 0 (g = g(X) + A u). Here next to a current pair on the same surfaces (each configuration has its
+  // own positions and master geometry), whose rows do move with u.
+  for (int order = 1; order <= 2; ++order) {
+    Blocks b = make_blocks(order);
+    VectorXd u = VectorXd::Zero(b.dofs.num_dofs());
+    for (Index i = 0; i < u.size(); ++i) u[i] = 2e-2 * std::sin(1.7 * static_cast<double>(i));
+    ContactSet mixed = b.set, current = b.set;
+    ContactPair reference = pair_of(0, 1, ContactMode::kOnePass, true);
+    reference.geometry = ContactGeometry::kReference;
+    mixed.pairs = {reference, pair_of(0, 1, ContactMode::kOnePass, true)};
+    current.pairs = {pair_of(0, 1, ContactMode::kOnePass, true)};
+    mixed.finalize();
+    current.finalize();
+    const ContactLinearization lm = mixed.linearize(b.dofs, u);
+    const ContactLinearization l0 = current.linearize(b.dofs, VectorXd::Zero(u.size()));
+    const ContactLinearization lu = current.linearize(b.dofs, u);
+    ASSERT_GT(l0.A.rows(), 0);
+    ASSERT_EQ(lm.A.rows(), l0.A.rows() + lu.A.rows());
+    const Eigen::MatrixXd M(lm.A), A0(l0.A), Au(lu.A);
+    EXPECT_EQ(M.topRows(l0.A.rows()), A0) << "P" << order;
+    EXPECT_EQ(lm.b.head(l0.b.size()), l0.b) << "P" << order;
+    EXPECT_EQ(M.bottomRows(lu.A.rows()), Au) << "P" << order;
+    EXPECT_EQ(lm.b.tail(lu.b.size()), lu.b) << "P" << order;
+    // And the displacement does change the current rows (the test above could not tell otherwise).
+    EXPECT_GT((A0.rows() == Au.rows() ? (A0 - Au).cwiseAbs().maxCoeff() : 1.0), 1e-6) << "P" << order;
+    EXPECT_EQ(mixed.geometry_displacement(0, u), VectorXd::Zero(u.size()));
+    EXPECT_EQ(mixed.geometry_displacement(1, u), u);
+  }
+}
+
 TEST(ContactSet, EmptySetLinearizesToNoRows) {
   Blocks b = make_blocks(1);
   b.set.finalize();

@@ -403,6 +403,7 @@ b = "lower.top.left"        # split at the first dot: the group is "top.left"
 mode = "one-pass"
 slave = "b"
 search_distance = 0.05
+geometry = "reference"
 
 [contact_solver]
 geometry_tolerance = 1e-8
@@ -426,6 +427,7 @@ acceptable_tol = 1
   EXPECT_EQ(c.mode, "one-pass");
   EXPECT_EQ(c.slave, "b");
   EXPECT_EQ(c.search_distance, 0.05);
+  EXPECT_EQ(c.geometry, ContactGeometry::kReference);
 
   const ContactSolverSpec& s = spec.contact_solver;
   EXPECT_EQ(s.geometry_tolerance, 1e-8);
@@ -451,6 +453,7 @@ TEST(ProblemReader, ContactDefaults) {
     EXPECT_EQ(c.mu, 0.0);
     EXPECT_EQ(c.tau, 0.0);
     EXPECT_EQ(c.alpha, 0.0);        // automatic
+    EXPECT_EQ(c.geometry, ContactGeometry::kCurrent);
   }
   EXPECT_EQ(spec.contacts[1].body_a, "lower");
   EXPECT_EQ(spec.contacts[1].boundary_b, "bottom");
@@ -1016,7 +1019,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "expected an array of tables ([[contact]]), got a table"},
         InputErrorCase{"UnknownContactKey", kTwoBodies.replaced("b = ", "master = \"a\"\nb = "), "contact[0].master",
                 "unknown key \"master\"; allowed keys in contact[0]: name, a, b, obstacle, mode, slave, "
-                "search_distance, friction, mu, tau, alpha"},
+                "search_distance, friction, mu, tau, alpha, geometry"},
         InputErrorCase{"MissingContactA", kTwoBodies.replaced("a = \"block.bottom\"\n", ""), "contact[0].a",
                 "missing required key (expected a surface \"<body>.<boundary>\")"},
         InputErrorCase{"ContactANotAString", kTwoBodies.replaced("a = \"block.bottom\"", "a = 1"), "contact[0].a",
@@ -1048,6 +1051,10 @@ INSTANTIATE_TEST_SUITE_P(
         // contact: mode, slave, search distance
         InputErrorCase{"BadContactMode", with_contact_keys(kTwoBodies, "mode = \"two-pass\"\n"),
                 "contact[0].mode", "expected \"symmetric\" or \"one-pass\", got \"two-pass\""},
+        InputErrorCase{"ContactGeometryUnknown", with_contact_keys(kTwoBodies, "geometry = \"deformed\"\n"),
+                "contact[0].geometry", "expected \"current\" or \"reference\", got \"deformed\""},
+        InputErrorCase{"ContactGeometryNotAString", with_contact_keys(kTwoBodies, "geometry = 1\n"),
+                "contact[0].geometry", "expected a string, got an integer (1)"},
         InputErrorCase{"SlaveWithDefaultSymmetricMode", with_contact_keys(kTwoBodies, "slave = \"b\"\n"),
                 "contact[0].slave",
                 "slave is only used with mode = \"one-pass\", got mode = \"symmetric\" (the symmetric mode writes the "
