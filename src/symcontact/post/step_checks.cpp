@@ -60,11 +60,13 @@ double check_penetration(const Model& model, const VectorXd& u) {
 }
 
 /// The floor of body b's force scale (step_checks.hpp): kRoundOffStrain × (λ + 2μ) × L^(dim−1), L the
-/// diagonal of the body's bounding box (reference configuration).
+/// diagonal of the body's bounding box (reference configuration), λ + 2μ of its stiffest material.
 double force_floor(const Body& body, int dim) {
   const Mesh& m = body.mesh;
   const double L = m.num_nodes() > 0 ? (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).norm() : 0.0;
-  return kRoundOffStrain * (body.material.lambda + 2.0 * body.material.mu) * std::pow(L, dim - 1);
+  double modulus = 0.0;
+  for (const LinearElastic& law : body.materials) modulus = std::max(modulus, law.lambda + 2.0 * law.mu);
+  return kRoundOffStrain * modulus * std::pow(L, dim - 1);
 }
 
 /// Largest ‖r_b‖ / F over the bodies (step_checks.hpp); throws when above the tolerance.

@@ -14,8 +14,9 @@
 ///    gap constraints of the last geometry iteration and their multipliers), and
 ///    ‖r_b‖₂ ≤ kEquilibriumRelativeTolerance × F with F the force scale of the step:
 ///    max(‖f_ext‖₂, ‖∇E(u) on the fixed DOFs‖₂ (the reactions), ‖Aᵀμ‖₂, F_b), where the floor
-///    F_b = kRoundOffStrain × (λ + 2μ) × L_b^(dim−1) (the body's small-strain moduli, L_b the diagonal of
-///    its bounding box) is the force a strain of kRoundOffStrain makes across the body. Without it a
+///    F_b = kRoundOffStrain × (λ + 2μ) × L_b^(dim−1) (the small-strain moduli of the body's stiffest
+///    material, L_b the diagonal of its bounding box) is the force a strain of kRoundOffStrain makes
+///    across the body. Without it a
 ///    step whose forces are all round-off (a rigid motion imposed on a hyperelastic body, which is
 ///    stress-free) would be measured against round-off; the elastic forces' own round-off,
 ///    about 1e-16 (λ + 2μ) L_b^(dim−1), stays well below 1e-6 F_b.
