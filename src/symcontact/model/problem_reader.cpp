@@ -588,14 +588,12 @@ class Reader {
       fail(child(path, "group"), "missing required key (expected the physical group of cells this material fills; "
                                  "every [[body.material]] of a list names one)");
     }
-    toml::table rest = t;
-    rest.erase("group");
-    MaterialSpec material = read_material(rest, path, spec);
+    MaterialSpec material = read_material(t, path, spec);
     material.group = group;
     return material;
   }
 
-  /// [body.material]: model "linear_elastic" (E, nu), "neo_hookean" (E, nu | mu, lambda) or
+  /// [body.material] (its optional `group` read by the caller): model "linear_elastic" (E, nu), "neo_hookean" (E, nu | mu, lambda) or
   /// "mooney_rivlin" (E, nu | c1, c2, kappa); exactly one parameter set. Hyperelastic models need plane
   /// strain or 3D. With the model's own constants, young/poisson get the small-strain equivalent.
   MaterialSpec read_material(const toml::table& t, const std::string& path, const ProblemSpec& spec) const {
@@ -617,9 +615,9 @@ class Reader {
         fail(child(path, k), "unknown key " + in_quotes(k) + " for model \"linear_elastic\" (" +
                                  (neo_key ? "mu, lambda are constants of model = \"neo_hookean\""
                                           : "c1, c2, kappa are constants of model = \"mooney_rivlin\"") +
-                                 "); allowed keys in " + path + ": model, E, nu");
+                                 "); allowed keys in " + path + ": model, E, nu, group");
       }
-      check_keys(t, path, {"model", "E", "nu"});
+      check_keys(t, path, {"model", "E", "nu", "group"});
       read_young_poisson(t, path, material);
       return material;
     }
@@ -631,9 +629,9 @@ class Reader {
     const std::vector<std::string_view> own =
         neo ? std::vector<std::string_view>{"mu", "lambda"} : std::vector<std::string_view>{"c1", "c2", "kappa"};
     if (neo) {
-      check_keys(t, path, {"model", "E", "nu", "mu", "lambda"});
+      check_keys(t, path, {"model", "E", "nu", "mu", "lambda", "group"});
     } else {
-      check_keys(t, path, {"model", "E", "nu", "c1", "c2", "kappa"});
+      check_keys(t, path, {"model", "E", "nu", "c1", "c2", "kappa", "group"});
     }
     // Exactly one parameter set: (E, nu) or the model's own constants.
     const std::string_view given_young = t.get("E") ? "E" : t.get("nu") ? "nu" : "";

@@ -789,7 +789,7 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"UnknownBodyKey", kBase.after("mesh = \"block.geo\"\n", "colour = \"red\"\n"),
                 "body[0].colour", "allowed keys in body[0]: name, mesh, mesh_parameters, group, body_force"},
         InputErrorCase{"UnknownMaterialKey", kBase.after("nu = 0.3\n", "Nu = 0.3\n"), "body[0].material.Nu",
-                "unknown key \"Nu\" (did you mean \"nu\"?); allowed keys in body[0].material: model, E, nu"},
+                "unknown key \"Nu\" (did you mean \"nu\"?); allowed keys in body[0].material: model, E, nu, group"},
         InputErrorCase{"UnknownDirichletKey", kBase.after("uy = 0.0\n", "value = 1.0\n"), "body[0].dirichlet[0].value",
                 "allowed keys in body[0].dirichlet[0]: boundary, ux, uy, uz, factors"},
         InputErrorCase{"UnknownKeyInSecondBody", kBase + kSecondBody + "density = 7.8\n", "body[1].material.density",
@@ -858,11 +858,11 @@ INSTANTIATE_TEST_SUITE_P(
         // hyperelastic materials
         InputErrorCase{"NeoHookeanConstantsForLinearElastic", kBase.after("nu = 0.3\n", "mu = 1.0\n"), "body[0].material.mu",
                 "unknown key \"mu\" for model \"linear_elastic\" (mu, lambda are constants of model = \"neo_hookean\"); "
-                "allowed keys in body[0].material: model, E, nu"},
+                "allowed keys in body[0].material: model, E, nu, group"},
         InputErrorCase{"MooneyRivlinConstantsForLinearElastic", kBase.after("nu = 0.3\n", "kappa = 1.0\n"),
                 "body[0].material.kappa", "c1, c2, kappa are constants of model = \"mooney_rivlin\""},
         InputErrorCase{"MooneyRivlinKeyForNeoHookean", kBase.replaced("E = 1.0\nnu = 0.3", "model = \"neo_hookean\"\nc1 = 1.0"),
-                "body[0].material.c1", "allowed keys in body[0].material: model, E, nu, mu, lambda"},
+                "body[0].material.c1", "allowed keys in body[0].material: model, E, nu, mu, lambda, group"},
         InputErrorCase{"NeoHookeanMixedParameterSets", kBase.replaced("E = 1.0", "model = \"neo_hookean\"\nmu = 1.0\nE = 1.0"),
                 "body[0].material.mu", "give either E, nu or mu, lambda for \"neo_hookean\", not both (E is also given)"},
         InputErrorCase{"MooneyRivlinMixedParameterSets",
