@@ -1,4 +1,4 @@
-// Expressions in the problem file (core/expression.hpp, docs/input.md "Expressions"): a Dirichlet condition
+// Expressions in the problem file (core/expression.hpp, docs/loads.md "Expressions"): a Dirichlet condition
 // written as an expression of x, y, z and the load factor t imposes a finite rigid rotation on the whole
 // boundary of a Neo-Hookean body. A rigid motion is stress-free for a hyperelastic law (ψ(R) = 0,
 // P(R) = 0), so it is the solution, also inside:

@@ -1,7 +1,7 @@
 #pragma once
 /// \file expression.hpp
 /// A scalar expression of a point's reference coordinates x, y, z and the load factor t, written by the user
-/// where the problem file takes a Dirichlet value, a pressure or a traction component (docs/input.md,
+/// where the problem file takes a Dirichlet value, a pressure or a traction component (docs/loads.md,
 /// "Expressions"). The one adapter to muParser (Debian libmuparser-dev): nothing else includes it.
 ///
 /// The syntax is muParser's: + − * / ^, parentheses, comparisons and `c ? a : b`, the functions sin, cos,

@@ -590,10 +590,10 @@ TEST(ProblemReader, MeshObstacle) {
 }
 
 #ifdef SYMCONTACT_TEST_DATA
-/// The ```toml blocks of docs/input.md and then docs/friction.md, in order.
+/// The ```toml blocks of docs/input.md, docs/loads.md and docs/friction.md, in that order.
 std::vector<std::string> documentation_examples() {
   std::string text;
-  for (const char* page : {"input.md", "friction.md"}) {
+  for (const char* page : {"input.md", "loads.md", "friction.md"}) {
     std::ifstream in(std::string(SYMCONTACT_TEST_DATA) + "/../../docs/" + page);
     EXPECT_TRUE(in) << "cannot open docs/" << page;
     std::stringstream doc;
@@ -610,25 +610,26 @@ std::vector<std::string> documentation_examples() {
   return blocks;
 }
 
-// The expression and contact examples of docs/input.md are complete, valid files too.
+// The contact examples of docs/input.md, the expression example of docs/loads.md and the friction example of
+// docs/friction.md are complete, valid files too.
 TEST(ProblemReader, DocumentationContactExamplesAreValid) {
   const std::vector<std::string> blocks = documentation_examples();
   ASSERT_EQ(blocks.size(), 5u)
-      << "expected the complete example, an expression example, two contact examples and a friction example";
+      << "expected the complete example, two contact examples, an expression example and a friction example";
 
-  const ProblemSpec expressions = parse(blocks[1]);
+  const ProblemSpec expressions = parse(blocks[3]);
   ASSERT_EQ(expressions.bodies.size(), 1u);
   ASSERT_TRUE(expressions.bodies[0].dirichlet[0].value[1].has_value());
   EXPECT_EQ(expressions.bodies[0].dirichlet[0].value[1]->expression, "sin(0.2*t)*(x - 1) + (cos(0.2*t) - 1)*y");
   EXPECT_TRUE(expressions.bodies[0].pressures[0].pressure.is_expression());
 
-  const ProblemSpec two_bodies = parse(blocks[2]);
+  const ProblemSpec two_bodies = parse(blocks[1]);
   ASSERT_EQ(two_bodies.contacts.size(), 1u);
   EXPECT_EQ(two_bodies.contacts[0].name, "interface");
   EXPECT_EQ(two_bodies.contacts[0].body_b, "lower");
   EXPECT_EQ(two_bodies.contact_solver.ipopt_string.at("mu_strategy"), "adaptive");
 
-  const ProblemSpec obstacles = parse(blocks[3]);
+  const ProblemSpec obstacles = parse(blocks[2]);
   ASSERT_EQ(obstacles.contacts.size(), 2u);
   EXPECT_EQ(obstacles.contacts[0].obstacle.value().type, "plane");
   EXPECT_EQ(obstacles.contacts[1].obstacle.value().type, "circle");
