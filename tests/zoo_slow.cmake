@@ -4,11 +4,12 @@
 # matched from the list gtest_discover_tests defines; a case that is not found stops CTest, loudly.
 # - the two ironing examples as shipped: 110 finite-strain load steps each (about 80 s and 130 s in Release);
 #   the validation suite runs the same problems (Ironing2D.*);
-# - the crushed ring at order 2: 40 finite-strain load steps on 2,592 nodes, the last three with the bore
-#   closed (about 35 s of CPU in Release).
+# - the crushed ring at order 2, without and with Coulomb friction: 40 finite-strain load steps on 2,592
+#   nodes, the last three with the bore closed (about 35 s and 60 s of CPU in Release).
 set(zoo_slow_cases "ExampleAsShipped.SolvesAndPassesItsChecks/ironing_2d_ironing"
                    "ExampleAsShipped.SolvesAndPassesItsChecks/ironing_2d_ironing_mu0_3"
-                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2")
+                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2"
+                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2_coulomb")
 foreach(case IN LISTS zoo_slow_cases)
   set(found FALSE)
   foreach(test IN LISTS symcontact_zoo_tests_TESTS)

@@ -61,9 +61,10 @@ struct CattaneoCase {
 };
 
 /// a/R = 0.11, 0.055 and 0.028 at a/h = 13.7, α ∝ a² below the first. The slips scale with a²
-/// (μ p0 a / E*), and at a/R = 0.055 the automatic α (2.8e-6, from the pair's bounding box) smears the stick
-/// zone's edge: q at x = 0.5a is 1.4 % of μp0 higher than with α = 7e-8, against 0.04 % between 7e-8 and
-/// 1.75e-8. With that α the sticking nodes are springs τ/α 40 times stiffer, and at IPOPT's default tol the
+/// (μ p0 a / E*), and at a/R = 0.055 the automatic α (4e-6, 10⁻³ of the facet size) smears the stick zone's
+/// edge: q at x = 0.5a is 1.8 % of μp0 higher than with α = 7e-8 (0.04 % between 7e-8 and 1.75e-8), and the
+/// stick zone read from the law is 2.6 elements too wide at the last step. With α = 7e-8 the sticking nodes
+/// are springs τ/α 60 times stiffer, and at IPOPT's default tol the
 /// optimiser's force defect leaves up to 2.8e-5 of the peak pressure on open nodes 2–3 elements outside the
 /// zone; tol = 1e-12 brings it under the 1e-5 asked. q(x) is held to the profile on matching meshes only:
 /// on non-matching ones the nodal q of the finer side oscillates with the period of the mismatch (at

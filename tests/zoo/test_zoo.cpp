@@ -204,10 +204,7 @@ std::vector<VariantCase> variants() {
     p2mu.geo_definitions = e.order2_coulomb_geo;
     out.push_back({e.file, "order2", p2, {}});
     out.push_back({e.file, "coulomb", mu, {}});
-    // Not yet in the zoo: the crushed ring at order 2 with Coulomb friction, whose frictional subproblems at
-    // load step 38 (where the bore closes) take IPOPT 100 to 240 iterations, some ending in its restoration
-    // failure and redone from the start of the step (docs/validation.md, the zoo).
-    if (e.file != "crushed_ring_2d/ring.toml") out.push_back({e.file, "order2_coulomb", p2mu, {}});
+    out.push_back({e.file, "order2_coulomb", p2mu, {}});
     out.push_back({e.file, "mm", base, {1e3, 1.0}});
   }
   return out;

@@ -98,18 +98,11 @@ ContactLinearization ContactSet::linearize(const DofMap& dofs, const VectorXd& u
 double ContactSet::automatic_search_distance(const ContactSurface& a, const ContactSurface* b) {
   Eigen::VectorXd lo = a.X.rowwise().minCoeff(), hi = a.X.rowwise().maxCoeff();
   double hmax = 0.0;
-  auto facet_size = [&](const ContactSurface& s) {
-    const int nv = cell_num_vertices(s.facet_type);
-    for (Index f = 0; f < s.num_facets(); ++f)
-      for (int i = 0; i < nv; ++i)
-        for (int j = i + 1; j < nv; ++j)
-          hmax = std::max(hmax, (s.X.col(s.facet(f)[i]) - s.X.col(s.facet(f)[j])).norm());
-  };
-  facet_size(a);
+  for (Index f = 0; f < a.num_facets(); ++f) hmax = std::max(hmax, facet_size(a, f));
   if (b) {
     lo = lo.cwiseMin(b->X.rowwise().minCoeff());
     hi = hi.cwiseMax(b->X.rowwise().maxCoeff());
-    facet_size(*b);
+    for (Index f = 0; f < b->num_facets(); ++f) hmax = std::max(hmax, facet_size(*b, f));
   }
   return 0.1 * (hi - lo).norm() + 2.0 * hmax;
 }

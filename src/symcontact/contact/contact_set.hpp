@@ -27,6 +27,22 @@ namespace symcontact {
 enum class ContactMode { kSymmetric, kOnePass };
 enum class FrictionLaw { kNone, kTresca, kCoulomb };
 
+/// How a frictional pair's regularisation length α is set (docs/friction.md, "Choosing α").
+///  - kGivenLength: the `alpha` of the problem file, the same at every point.
+///  - kElementFraction (automatic): at every friction point q, α_q = kAlphaPerElement × h_q, h_q the mean
+///    size of the slave facets around the point's node. The regularised law is a stick spring τ/α below
+///    |s| ≈ α, and 99 % of τ is reached at |s| = 7α: a stuck node moves by at most 0.7 % of its elements
+///    before it slips, the order of the elastic slip of penalty friction, which Abaqus sets by default to
+///    0.005 of the contact element length (Abaqus Analysis User's Guide, "Frictional behavior"). Tied to
+///    the element, the spring keeps its ratio to the bodies' stiffness (about E/h per unit area) under
+///    refinement and whatever the size of the model or the units. A length fixed by the model's size
+///    instead (10⁻⁶ of it) gave springs 10⁴ times the bodies' stiffness at p/E = 0.1, on which IPOPT's
+///    line search stalled.
+enum class FrictionRegularisation { kGivenLength, kElementFraction };
+
+/// The automatic α in units of the local facet size (FrictionRegularisation::kElementFraction).
+constexpr double kAlphaPerElement = 1e-3;
+
 struct ContactPair {
   std::string name;
   int surface_a = -1;
@@ -38,7 +54,12 @@ struct ContactPair {
   FrictionLaw friction = FrictionLaw::kNone;
   double mu = 0.0;              ///< Coulomb coefficient
   double tau = 0.0;             ///< Tresca threshold
-  double alpha = 0.0;           ///< regularisation length (resolved, > 0 with friction)
+  FrictionRegularisation regularisation = FrictionRegularisation::kElementFraction;
+  double alpha = 0.0;           ///< kGivenLength: the regularisation length (> 0)
+  /// The regularisation length at a point whose slave facets have the mean size h.
+  double regularisation_length(double h) const {
+    return regularisation == FrictionRegularisation::kGivenLength ? alpha : kAlphaPerElement * h;
+  }
   /// Where the pair's projections, normals and friction points are taken (contact_geometry.hpp).
   ContactGeometry geometry = ContactGeometry::kCurrent;
   /// Constraints push on each node from both sides (symmetric or self-contact): the reported pressure is

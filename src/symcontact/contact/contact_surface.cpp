@@ -60,6 +60,30 @@ Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd
   return out;
 }
 
+double facet_size(const ContactSurface& s, Index f) {
+  const int nv = cell_num_vertices(s.facet_type);
+  double h = 0.0;
+  for (int i = 0; i < nv; ++i)
+    for (int j = i + 1; j < nv; ++j) h = std::max(h, (s.X.col(s.facet(f)[i]) - s.X.col(s.facet(f)[j])).norm());
+  return h;
+}
+
+namespace {
+
+Eigen::VectorXd mean_facet_size_at_nodes(const ContactSurface& s) {
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(s.num_nodes()), count = Eigen::VectorXd::Zero(s.num_nodes());
+  for (Index f = 0; f < s.num_facets(); ++f) {
+    const double h = facet_size(s, f);
+    for (int a = 0; a < s.nodes_per_facet(); ++a) {
+      sum[s.facet(f)[a]] += h;
+      count[s.facet(f)[a]] += 1.0;
+    }
+  }
+  return sum.cwiseQuotient(count.cwiseMax(1.0));
+}
+
+}  // namespace
+
 ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name) {
   const FacetGroup& g = mesh.facet_groups.at(group);
   ContactSurface s;
@@ -107,6 +131,7 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
         }
   }
   s.nodal_area = lumped_areas(s, s.X);
+  s.nodal_size = mean_facet_size_at_nodes(s);
   return s;
 }
 

@@ -45,6 +45,8 @@ struct ContactSurface {
   /// ∫_Γ φ_k dS in the reference configuration (lumped area), φ_k the test functions of the gap
   /// constraints (test_functions(): the shape functions, except on Tri6 facets).
   Eigen::VectorXd nodal_area;
+  /// Mean facet_size() of the facets that contain each surface node (reference configuration).
+  Eigen::VectorXd nodal_size;
 
   int nodes_per_facet() const { return cell_num_nodes(facet_type); }
   Index num_facets() const { return static_cast<Index>(facets.size()) / nodes_per_facet(); }
@@ -60,6 +62,9 @@ constexpr double kCornerAngleDegrees = 45.0;
 /// The surface of facet group `group` of `mesh`, owned by `body` (−1: rigid). Throws
 /// std::out_of_range if the group does not exist (the caller turns it into an InputError with its key).
 ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name);
+
+/// Size of facet f of s: the largest distance between two of its vertices (reference configuration).
+double facet_size(const ContactSurface& s, Index f);
 
 /// Current positions x = X + u of the surface nodes (dim × num_nodes); X for a rigid surface.
 Eigen::MatrixXd current_positions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u);

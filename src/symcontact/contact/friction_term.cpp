@@ -83,9 +83,9 @@ std::vector<SlipColumns> test_basis_columns(const ContactSurface& slave, const D
 }  // namespace
 
 FrictionTerm::FrictionTerm(std::string name, const ContactSurface& slave, const ContactSurface* master,
-                           std::vector<ContactPoint> points, std::vector<double> tau, double alpha,
+                           std::vector<ContactPoint> points, std::vector<double> tau, std::vector<double> alpha,
                            const DofMap& dofs, const VectorXd& u_start)
-    : name_(std::move(name)), points_(std::move(points)), alpha_(alpha), dim_(slave.dim) {
+    : name_(std::move(name)), points_(std::move(points)), alpha_(std::move(alpha)), dim_(slave.dim) {
   const int D = dim_;
   std::vector<SlipColumns> columns;
   columns.reserve(points_.size());
@@ -110,6 +110,7 @@ FrictionTerm::FrictionTerm(std::string name, const ContactSurface& slave, const 
     const Eigen::VectorXd nv = p.normal.head(D);
     l.P = Eigen::MatrixXd::Identity(D, D) - nv * nv.transpose();
     l.wt = p.weight * tau[q];
+    l.alpha2 = alpha_[q] * alpha_[q];
     Eigen::VectorXd u0(n);
     for (int k = 0; k < n; ++k) u0[k] = u_start[l.dofs[k]];
     l.s0 = l.P * (l.B * u0);
@@ -127,7 +128,7 @@ double FrictionTerm::value(const VectorXd& u) const {
   double j = 0.0;
   for (const Local& l : local_) {
     if (l.wt == 0.0) continue;
-    j += l.wt * std::sqrt(slip(l, u).squaredNorm() + alpha_ * alpha_);
+    j += l.wt * std::sqrt(slip(l, u).squaredNorm() + l.alpha2);
   }
   return j;
 }
@@ -136,7 +137,7 @@ void FrictionTerm::add_gradient(const VectorXd& u, VectorXd& g) const {
   for (const Local& l : local_) {
     if (l.wt == 0.0) continue;
     const Eigen::VectorXd s = slip(l, u);
-    const double r = std::sqrt(s.squaredNorm() + alpha_ * alpha_);
+    const double r = std::sqrt(s.squaredNorm() + l.alpha2);
     const Eigen::VectorXd gl = (l.wt / r) * (l.B.transpose() * (l.P * s));
     for (std::size_t k = 0; k < l.dofs.size(); ++k) g[l.dofs[k]] += gl[k];
   }
@@ -147,7 +148,7 @@ void FrictionTerm::add_hessian(const VectorXd& u, MatrixSink& sink) const {
   for (const Local& l : local_) {
     if (l.wt == 0.0) continue;
     const Eigen::VectorXd s = slip(l, u);
-    const double r2 = s.squaredNorm() + alpha_ * alpha_;
+    const double r2 = s.squaredNorm() + l.alpha2;
     const double r = std::sqrt(r2);
     const Eigen::MatrixXd Hs = (Eigen::MatrixXd::Identity(D, D) - s * s.transpose() / r2) * (l.wt / r);
     const Eigen::MatrixXd PB = l.P * l.B;

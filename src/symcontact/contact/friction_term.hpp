@@ -2,8 +2,9 @@
 /// \file friction_term.hpp
 /// Regularised Tresca friction as one more energy term (talk eq. 16–18, METHOD.md "Friction"):
 ///
-///   j_{α,τ}(u) = Σ_q w_q τ_q η_α(s_q(u)),   η_α(v) = sqrt(|v|² + α²),
-/// (the solver uses one point per slave node, w_q = its lumped area: nodal_contact_points()),
+///   j_{α,τ}(u) = Σ_q w_q τ_q η_{α_q}(s_q(u)),   η_α(v) = sqrt(|v|² + α²),
+/// (the solver uses one point per slave node, w_q = its lumped area: nodal_contact_points(); α_q its
+/// regularisation length, ContactPair::regularisation_length()),
 ///   s_q(u) = P_q [ (u_s(ξ_q) − u⁰_s(ξ_q)) − (u_m(η_q) − u⁰_m(η_q)) ],   P_q = I − n̄_q n̄_qᵀ,
 ///
 /// over the integration points of ONE constraint family of the pair (the interface is counted once,
@@ -42,10 +43,11 @@ namespace symcontact {
 
 class FrictionTerm : public EnergyTerm {
  public:
-  /// `master` is null for an obstacle. `tau` has one threshold per point (≥ 0), alpha > 0.
+  /// `master` is null for an obstacle. `tau` and `alpha` have one value per point: τ_q ≥ 0, and α_q > 0
+  /// wherever τ_q > 0 (a point with τ_q = 0 adds nothing).
   FrictionTerm(std::string name, const ContactSurface& slave, const ContactSurface* master,
-               std::vector<ContactPoint> points, std::vector<double> tau, double alpha, const DofMap& dofs,
-               const VectorXd& u_start);
+               std::vector<ContactPoint> points, std::vector<double> tau, std::vector<double> alpha,
+               const DofMap& dofs, const VectorXd& u_start);
   std::string name() const override { return name_; }
   double value(const VectorXd& u) const override;
   void add_gradient(const VectorXd& u, VectorXd& g) const override;
@@ -56,6 +58,8 @@ class FrictionTerm : public EnergyTerm {
   /// surface (the file comment).
   std::vector<Eigen::Vector3d> slips(const VectorXd& u) const;
   const std::vector<ContactPoint>& points() const { return points_; }
+  /// The regularisation length α_q of every point.
+  const std::vector<double>& alphas() const { return alpha_; }
 
  private:
   struct Local {
@@ -64,13 +68,14 @@ class FrictionTerm : public EnergyTerm {
     Eigen::MatrixXd P;         ///< dim × dim tangential projector
     Eigen::VectorXd s0;        ///< P B u⁰_loc
     double wt = 0.0;           ///< w τ
+    double alpha2 = 0.0;       ///< α_q²
   };
   Eigen::VectorXd slip(const Local& l, const VectorXd& u) const;
 
   std::string name_;
   std::vector<ContactPoint> points_;
   std::vector<Local> local_;
-  double alpha_;
+  std::vector<double> alpha_;
   int dim_;
 };
 

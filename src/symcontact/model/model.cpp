@@ -408,14 +408,8 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
     pair.mu = cs.mu;
     pair.tau = cs.tau;
     if (pair.friction != FrictionLaw::kNone) {
-      // Automatic regularisation: 1e-6 × the diagonal of the pair's bounding box (docs/input.md).
-      const ContactSurface& sa = contacts_.surfaces[pair.surface_a];
-      Eigen::VectorXd lo = sa.X.rowwise().minCoeff(), hi = sa.X.rowwise().maxCoeff();
-      if (other) {
-        lo = lo.cwiseMin(other->X.rowwise().minCoeff());
-        hi = hi.cwiseMax(other->X.rowwise().maxCoeff());
-      }
-      pair.alpha = cs.alpha > 0 ? cs.alpha : 1e-6 * (hi - lo).norm();
+      pair.regularisation = cs.alpha > 0 ? FrictionRegularisation::kGivenLength : FrictionRegularisation::kElementFraction;
+      pair.alpha = cs.alpha;
     }
     pair.search_distance = cs.search_distance > 0
                                ? cs.search_distance
@@ -426,8 +420,12 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
       << (pair.obstacle >= 0 ? "obstacle" : pair.mode == ContactMode::kSymmetric ? "symmetric" : "one-pass")
       << ", search distance " << pair.search_distance
       << (pair.geometry == ContactGeometry::kReference ? ", reference geometry (small sliding)" : "");
-    if (pair.friction == FrictionLaw::kTresca) s << ", Tresca friction tau = " << pair.tau << ", alpha = " << pair.alpha;
-    if (pair.friction == FrictionLaw::kCoulomb) s << ", Coulomb friction mu = " << pair.mu << ", alpha = " << pair.alpha;
+    if (pair.friction == FrictionLaw::kTresca) s << ", Tresca friction tau = " << pair.tau;
+    if (pair.friction == FrictionLaw::kCoulomb) s << ", Coulomb friction mu = " << pair.mu;
+    if (pair.regularisation == FrictionRegularisation::kGivenLength && pair.friction != FrictionLaw::kNone)
+      s << ", alpha = " << pair.alpha;
+    else if (pair.friction != FrictionLaw::kNone)
+      s << ", alpha automatic (" << kAlphaPerElement << " of the local facet size)";
     log.info(s.str());
     contacts_.pairs.push_back(pair);
   }

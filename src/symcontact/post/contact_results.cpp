@@ -72,24 +72,39 @@ Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int si
 }
 
 /// Weak nodal average of the point slips of a friction term over its slave surface.
-Eigen::MatrixXd nodal_slips(const ContactSurface& s, const FrictionTerm& term, const VectorXd& u) {
-  const std::vector<Eigen::Vector3d> sq = term.slips(u);
-  Eigen::MatrixXd num = Eigen::MatrixXd::Zero(s.dim, s.num_nodes());
+/// Values v (rows × points) given at the points of a friction term, as nodal values (rows × nodes): the
+/// weighted average Σ_q w_q N_k(ξ_q) v_q / Σ_q w_q N_k(ξ_q) (the point's own value at a nodal point); NaN
+/// at nodes no point reaches.
+Eigen::MatrixXd point_values_at_nodes(const ContactSurface& s, const FrictionTerm& term, const Eigen::MatrixXd& v) {
+  Eigen::MatrixXd num = Eigen::MatrixXd::Zero(v.rows(), s.num_nodes());
   Eigen::VectorXd den = Eigen::VectorXd::Zero(s.num_nodes());
   double N[10];
-  for (std::size_t q = 0; q < sq.size(); ++q) {
+  for (std::size_t q = 0; q < term.points().size(); ++q) {
     const ContactPoint& p = term.points()[q];
     shape_functions(s.facet_type, p.xi, N, nullptr);
     for (int a = 0; a < s.nodes_per_facet(); ++a) {
       const Index k = s.facet(p.slave_facet)[a];
-      num.col(k) += p.weight * N[a] * sq[q].head(s.dim);
+      num.col(k) += p.weight * N[a] * v.col(static_cast<Index>(q));
       den[k] += p.weight * N[a];
     }
   }
-  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(v.rows(), s.num_nodes(), kNaN);
   for (Index k = 0; k < s.num_nodes(); ++k)
     if (den[k] > 0) out.col(k) = num.col(k) / den[k];
   return out;
+}
+
+Eigen::MatrixXd nodal_slips(const ContactSurface& s, const FrictionTerm& term, const VectorXd& u) {
+  const std::vector<Eigen::Vector3d> sq = term.slips(u);
+  Eigen::MatrixXd v(s.dim, static_cast<Index>(sq.size()));
+  for (std::size_t q = 0; q < sq.size(); ++q) v.col(static_cast<Index>(q)) = sq[q].head(s.dim);
+  return point_values_at_nodes(s, term, v);
+}
+
+/// The regularisation length α at every node of the term's slave surface (NaN where no point reaches).
+Eigen::VectorXd nodal_alphas(const ContactSurface& s, const FrictionTerm& term) {
+  const Eigen::Map<const Eigen::RowVectorXd> a(term.alphas().data(), static_cast<Index>(term.alphas().size()));
+  return point_values_at_nodes(s, term, a).row(0).transpose();
 }
 
 /// The force of pair `pi` alone on every DOF, split as the solve builds it: its constraint rows' Aᵀμ (the
@@ -163,6 +178,12 @@ Eigen::VectorXd signed_along_tangent(const Eigen::MatrixXd& v, const Eigen::Matr
 /// One side of pair `pi` on surface `si`: forces from the pair's own rows and friction term, pressure and
 /// traction per lumped reference area (in the test basis, surface_tractions.hpp), gaps, slips.
 /// `multiplier_pressure`: the pressure of Aᵀμ_p alone (for the status: exactly zero where no active row reaches).
+/// The friction term of pair pi if surface si is its slave side (the side its slips are measured on), else null.
+const FrictionTerm* friction_on_side(const ContactSet& cs, const ContactState& state, int pi, int si) {
+  const bool has_friction = pi < static_cast<int>(state.friction.size()) && state.friction[pi];
+  return has_friction && si == cs.families()[cs.friction_family(pi)].slave ? state.friction[pi].get() : nullptr;
+}
+
 ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofMap& dofs, const VectorXd& u,
                               const PairForce& pf, const ContactState& state,
                               Eigen::VectorXd& multiplier_pressure) {
@@ -200,10 +221,8 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
     sr.tangential.col(k) = ft.col(k) / s.nodal_area[k];
     if (current_area[k] > 0) sr.current_pressure[k] = sr.pressure[k] * s.nodal_area[k] / current_area[k];
   }
-  const bool has_friction = pi < static_cast<int>(state.friction.size()) && state.friction[pi];
-  const bool friction_side = has_friction && si == cs.families()[cs.friction_family(pi)].slave;
-  sr.slip = friction_side ? nodal_slips(s, *state.friction[pi], u)
-                          : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
+  const FrictionTerm* friction = friction_on_side(cs, state, pi, si);
+  sr.slip = friction ? nodal_slips(s, *friction, u) : Eigen::MatrixXd::Constant(s.dim, s.num_nodes(), kNaN);
   sr.displacement = nodal_values(s, dofs, u);
   if (s.dim == 2) {
     sr.tangential_along = signed_along_tangent(sr.tangential, normals);
@@ -212,15 +231,17 @@ ContactSideResult side_result(const ContactSet& cs, int pi, int side, const DofM
   return sr;
 }
 
-/// Status from the law (see the header): open / contact (stick) / slip.
-void set_status(ContactSideResult& sr, const Eigen::VectorXd& multiplier_pressure, double max_pressure, double alpha) {
+/// Status from the law (see the header): open / contact (stick) / slip. `alpha`: the regularisation length
+/// at every node (NaN off the friction side, whose slips are NaN too).
+void set_status(ContactSideResult& sr, const Eigen::VectorXd& multiplier_pressure, double max_pressure,
+                const Eigen::VectorXd& alpha) {
   sr.status = Eigen::VectorXi::Zero(sr.pressure.size());
   if (!(max_pressure > 0)) return;
   for (Index k = 0; k < sr.status.size(); ++k) {
     if (!(multiplier_pressure[k] > kContactPressureFraction * max_pressure)) continue;
     sr.status[k] = 1;
     const double s = sr.slip.col(k).norm();
-    if (std::isfinite(s) && s >= kSlipRatio * std::sqrt(s * s + alpha * alpha)) sr.status[k] = 2;
+    if (std::isfinite(s) && s >= kSlipRatio * std::sqrt(s * s + alpha[k] * alpha[k])) sr.status[k] = 2;
   }
 }
 
@@ -251,7 +272,10 @@ std::vector<ContactPairResult> contact_results(const ContactSet& cs, const DofMa
       ContactSideResult& sr = r.sides[side];
       for (Index k = 0; k < sr.pressure.size(); ++k)
         if (std::abs(sr.pressure[k]) <= 1e-12 * r.max_pressure) sr.pressure[k] = sr.current_pressure[k] = 0.0;
-      set_status(sr, multiplier_pressure[side], max_multiplier_pressure, pair.alpha);
+      const ContactSurface& s = cs.surfaces[sr.surface];
+      const FrictionTerm* friction = friction_on_side(cs, state, pi, sr.surface);
+      set_status(sr, multiplier_pressure[side], max_multiplier_pressure,
+                 friction ? nodal_alphas(s, *friction) : Eigen::VectorXd::Constant(s.num_nodes(), kNaN));
     }
     r.total_force = r.sides[0].total_force;
     r.normal_force = r.sides[0].normal_force;

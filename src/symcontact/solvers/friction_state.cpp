@@ -35,9 +35,15 @@ std::vector<std::shared_ptr<const FrictionTerm>> friction_terms(const FrictionSt
     const ContactSurface& slave = contacts.surfaces[fam.slave];
     std::vector<ContactPoint> nodal = nodal_friction_points(contacts, p, dofs, u);
     const std::vector<double> tau = interpolate_at_points(slave, nodal, state.nodal_tau[p]);
+    std::vector<double> alpha(nodal.size());
+    for (std::size_t q = 0; q < nodal.size(); ++q) {
+      const double h = nodal[q].slave_node >= 0 ? slave.nodal_size[nodal[q].slave_node]
+                                                : facet_size(slave, nodal[q].slave_facet);
+      alpha[q] = contacts.pairs[p].regularisation_length(h);
+    }
     terms[p] = std::make_shared<FrictionTerm>("friction(" + contacts.pairs[p].name + ")", slave,
                                               fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
-                                              std::move(nodal), tau, contacts.pairs[p].alpha, dofs, state.u_start);
+                                              std::move(nodal), tau, std::move(alpha), dofs, state.u_start);
   }
   return terms;
 }

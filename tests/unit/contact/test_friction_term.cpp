@@ -120,7 +120,8 @@ VectorXd slave_slide(const Interface& s, double c) {
 }
 
 FrictionTerm make_term(const Interface& s, const std::vector<double>& tau, const VectorXd& u_start) {
-  return FrictionTerm("friction", s.slave, s.with_master ? &s.master : nullptr, s.points, tau, kAlpha, s.dofs, u_start);
+  return FrictionTerm("friction", s.slave, s.with_master ? &s.master : nullptr, s.points, tau,
+                      std::vector<double>(s.points.size(), kAlpha), s.dofs, u_start);
 }
 
 Eigen::MatrixXd dense_hessian(const FrictionTerm& term, const VectorXd& u) {
@@ -360,7 +361,9 @@ TEST_P(FrictionTerm3D, DerivativesAtRandomStatesAndAtZeroSlip) {
     const std::vector<double> tau = random_tau(points.size(), 6);
     const Index n = b.dofs.num_dofs();
     const VectorXd u0 = random_vector(n, 0.01, 41);
-    const FrictionTerm term("friction", b.slave, &b.master, points, tau, kAlpha, b.dofs, u0);
+    std::vector<double> alpha(points.size());  // a regularisation length of its own at every point
+    for (std::size_t q = 0; q < points.size(); ++q) alpha[q] = kAlpha * (0.5 + 0.1 * static_cast<double>(q % 10));
+    const FrictionTerm term("friction", b.slave, &b.master, points, tau, alpha, b.dofs, u0);
     // Slips have both tangential components, none along the normal.
     const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 42);
     double sx = 0, sy = 0;
@@ -399,7 +402,8 @@ TEST_P(FrictionTerm3D, RecoveredTractionSatisfiesTheNodalLaw) {
     for (std::size_t q = 0; q < points->size(); ++q) tau[(*points)[q].slave_node] = point_tau[q];
     const Index n = b.dofs.num_dofs();
     const VectorXd u0 = random_vector(n, 0.01, 51);
-    const FrictionTerm term("friction", b.slave, &b.master, *points, point_tau, kAlpha, b.dofs, u0);
+    const FrictionTerm term("friction", b.slave, &b.master, *points, point_tau,
+                            std::vector<double>(points->size(), kAlpha), b.dofs, u0);
     // Slips of 10 to 1000 α, in every direction: from the regularised zone to full slip at every node.
     for (double amplitude : {10 * kAlpha, 1e3 * kAlpha}) {
       const VectorXd u = u0 + random_vector(n, amplitude, 52);
