@@ -335,6 +335,19 @@ int Model::body_index(const std::string& name) const {
   return -1;
 }
 
+namespace {
+/// Contact surfaces are made of segments (2D) or triangles (3D): quadrilateral facets (the faces of
+/// hexahedra, or a rigid surface meshed with quadrangles) are refused with InputError(file, key).
+void check_contact_facets(const Mesh& mesh, const std::string& file, const std::string& key, const std::string& what) {
+  const CellType ft = mesh.facet_cell_type();
+  if (cell_shape(ft) != CellShape::kTensor) return;
+  throw InputError(file, key,
+                   what + " is made of quadrilateral facets (" + cell_name(ft) +
+                       "), and contact surfaces of quadrilaterals are not supported in 3D: mesh the body (or the "
+                       "surface) with tetrahedra (triangles), or use hexahedra only in bodies without contact");
+}
+}  // namespace
+
 void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_options) {
   const ProblemSpec& spec = spec_;
   const int D = spec.dim;
@@ -346,6 +359,7 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
       throw InputError(spec.file, key,
                        "body '" + body + "' (mesh " + bodies_[b]->spec->mesh_file + ") has no boundary group '" + group +
                            "'; its groups: " + available_groups(mesh));
+    check_contact_facets(mesh, spec.file, key, "boundary '" + group + "' of body '" + body + "'");
     const std::string name = body + "." + group;
     for (int s = 0; s < static_cast<int>(contacts_.surfaces.size()); ++s)
       if (contacts_.surfaces[s].name == name) return s;
@@ -377,6 +391,7 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
                            "obstacle mesh " + e.file() + (e.key().empty() ? "" : ", " + e.key()) + ": " + e.message());
         }
         rigid_meshes_.push_back(extract_surface(f, D, os.boundary, os.key + ".boundary"));
+        check_contact_facets(rigid_meshes_.back(), spec.file, os.key + ".boundary", "obstacle surface '" + os.boundary + "'");
         contacts_.surfaces.push_back(make_contact_surface(rigid_meshes_.back(), os.boundary, -1, cs.name + ".obstacle"));
         pair.surface_b = static_cast<int>(contacts_.surfaces.size()) - 1;
         pair.mode = ContactMode::kOnePass;  // a rigid surface carries no multipliers of its own

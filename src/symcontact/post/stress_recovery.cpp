@@ -86,7 +86,9 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
   at_nodes.points = reference_nodes(mesh.cell_type);
   at_nodes.weights.assign(mesh.nodes_per_cell(), 1.0);
   const Tabulation tn = tabulate(mesh.cell_type, at_nodes);
-  const Tabulation tq = tabulate(mesh.cell_type, simplex_quadrature(D, cell_order(mesh.cell_type) == 1 ? 0 : 2));
+  const Tabulation tq = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, cell_shape(mesh.cell_type) == CellShape::kTensor
+                                                                    ? stiffness_quadrature_degree(mesh.cell_type)
+                                                                    : (cell_order(mesh.cell_type) == 1 ? 0 : 2)));
 
   dispatch_cell(mesh.cell_type, [&](auto Dc, auto NNc) {
     constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;
