@@ -288,3 +288,20 @@ TEST(Hertz2D, ReferenceGeometryAgreesWithCurrentAtSmallLoads) {
     }
   }
 }
+
+// V1 with quadrilaterals: the cylinder's triangulation recombined into quadrangles (Blossom), Quad4 at
+// h = 0.004 and Quad9 (order 2) at h = 0.008; their contact facets are Line2 and Line3 segments as with
+// triangles. The same closed form and tolerances (expect_v1()).
+TEST(Hertz2D, CylinderOnRigidPlaneQuadrilaterals) {
+  const std::string dir = test_temp_dir("hertz2d_plane_quads");
+  for (const auto& [h, order] : {std::pair<double, int>{0.004, 1}, std::pair<double, int>{0.008, 2}}) {
+    const std::string toml = example_toml("cylinder_on_plane", h, order, dir);
+    write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h) + "Recombine Surface{1};\n");
+    auto c = solve_case(toml, dir);
+    ASSERT_EQ(c->model->bodies()[0]->mesh.cell_type, order == 1 ? CellType::kQuad4 : CellType::kQuad9);
+    const HertzMeasure m = measure(*c, h);
+    std::printf("  %s:", cell_name(c->model->bodies()[0]->mesh.cell_type).c_str());
+    print(m);
+    expect_v1(m);
+  }
+}
