@@ -42,8 +42,8 @@ struct ContactPatchCase {
   /// faces); the lower block's supports as in the two-body case, u_x = 0 at (0, 2) on the same body.
   bool one_body = false;
   std::string geometry = "current";  ///< [[contact]] geometry: "current" or "reference" (small sliding)
-  /// 2D: the blocks meshed with quadrilaterals (Recombine: Quad4, or Quad9 at order 2), by name ("lower",
-  /// "upper", "middle"); the others keep their triangles.
+  /// The blocks meshed with quadrilaterals (2D, Recombine: Quad4, or Quad9 at order 2) or hexahedra (3D,
+  /// n³ transfinite: Hex8 or Hex27), by name ("lower", "upper", "middle"); the others keep their simplices.
   std::vector<std::string> quad_blocks;
   /// With quad_blocks at order 2: the incomplete second order (Mesh.SecondOrderIncomplete = 1: Quad8).
   bool serendipity = false;
@@ -87,7 +87,7 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
 /// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body", "_reference",
-/// "_quad_lower_upper" (+ "8" with serendipity); "3D_" first in 3D): a GoogleTest parameter name.
+/// "_quad_lower_upper" (+ "8" with serendipity; "_hex_…" in 3D); "3D_" first in 3D): a GoogleTest parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing

@@ -89,21 +89,22 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   }
   if (s.dim == 3) {
     // Border edges: edges held by a single facet.
+    const int ne = facet_num_edges(s.facet_type);
     std::map<std::pair<Index, Index>, int> count;
     auto key = [&](Index f, int e) {
-      const Index a = s.facet(f)[triangle_edge(e)[0]], b = s.facet(f)[triangle_edge(e)[1]];
+      const Index a = s.facet(f)[facet_edge(s.facet_type, e)[0]], b = s.facet(f)[facet_edge(s.facet_type, e)[1]];
       return std::make_pair(std::min(a, b), std::max(a, b));
     };
     for (Index f = 0; f < s.num_facets(); ++f)
-      for (int e = 0; e < 3; ++e) ++count[key(f, e)];
-    s.boundary_edge.assign(3 * s.num_facets(), 0);
+      for (int e = 0; e < ne; ++e) ++count[key(f, e)];
+    s.boundary_edge.assign(ne * s.num_facets(), 0);
     s.boundary_vertex.assign(s.num_nodes(), 0);
     for (Index f = 0; f < s.num_facets(); ++f)
-      for (int e = 0; e < 3; ++e)
+      for (int e = 0; e < ne; ++e)
         if (count[key(f, e)] == 1) {
-          s.boundary_edge[3 * f + e] = 1;
-          s.boundary_vertex[s.facet(f)[triangle_edge(e)[0]]] = 1;
-          s.boundary_vertex[s.facet(f)[triangle_edge(e)[1]]] = 1;
+          s.boundary_edge[ne * f + e] = 1;
+          s.boundary_vertex[s.facet(f)[facet_edge(s.facet_type, e)[0]]] = 1;
+          s.boundary_vertex[s.facet(f)[facet_edge(s.facet_type, e)[1]]] = 1;
         }
   }
   s.nodal_area = lumped_areas(s, s.X);
@@ -114,7 +115,7 @@ Eigen::VectorXd lumped_areas(const ContactSurface& s, const Eigen::MatrixXd& x) 
   // A rule exact for the (polynomial, straight-facet) integrand.
   const int npf = s.nodes_per_facet();
   Eigen::VectorXd area = Eigen::VectorXd::Zero(s.num_nodes());
-  const QuadratureRule rule = simplex_quadrature(s.dim - 1, 2 * cell_order(s.facet_type) + 1);
+  const QuadratureRule rule = cell_quadrature(s.facet_type, 2 * cell_order(s.facet_type) + 1);
   Eigen::MatrixXd xf(s.dim, npf);
   std::vector<double> N(npf);
   for (Index f = 0; f < s.num_facets(); ++f) {

@@ -5,7 +5,8 @@
 ///
 /// Layout: surface node k is node `nodes[k]` of its body; `facets` holds num_facets × npf surface-node
 /// indices, each facet oriented so that its normal points out of the body (Mesh::locate_facets()).
-/// 2D facets are Line2/Line3, 3D facets Tri3/Tri6.
+/// 2D facets are Line2/Line3, 3D facets Tri3/Tri6 or Quad4/Quad9 (the faces of Hex8/Hex27 cells; Quad8
+/// faces, whose vertex functions integrate negatively, are refused by the model).
 
 #include <string>
 #include <vector>
@@ -35,7 +36,8 @@ struct ContactSurface {
   /// instead: each facet keeps its own normal up to the corner, and a point whose closest point is the
   /// corner itself takes the normal of the normal cone nearest to the opposite surface's (contact_points.hpp).
   std::vector<char> corner;
-  /// 3D only (empty in 2D): num_facets × 3 flags, 1 when edge e of facet f (closest_point.hpp numbering)
+  /// 3D only (empty in 2D): num_facets × facet_num_edges() flags, 1 when edge e of facet f (closest_point.hpp
+  /// numbering)
   /// belongs to no other facet of the surface. Such edges form the border of the surface, the 3D
   /// analogue of the 2D ends: a projection clamped onto a border edge, or onto a vertex of one, is past
   /// the end of the surface and finds no contact (boundary_vertex).

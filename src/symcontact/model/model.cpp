@@ -336,15 +336,18 @@ int Model::body_index(const std::string& name) const {
 }
 
 namespace {
-/// Contact surfaces are made of segments (2D) or triangles (3D): quadrilateral facets (the faces of
-/// hexahedra, or a rigid surface meshed with quadrangles) are refused with InputError(file, key).
+/// Contact surfaces are made of segments (2D), triangles or 4- and 9-node quadrilaterals (3D): 8-node
+/// quadrilateral facets (the faces of Hex20 cells, or a rigid surface meshed with them), whose vertex
+/// shape functions integrate to negative values (so the weak gap of a vertex has the wrong sign), are
+/// refused with InputError(file, key).
 void check_contact_facets(const Mesh& mesh, const std::string& file, const std::string& key, const std::string& what) {
   const CellType ft = mesh.facet_cell_type();
-  if (cell_shape(ft) != CellShape::kTensor) return;
+  if (ft != CellType::kQuad8) return;
   throw InputError(file, key,
-                   what + " is made of quadrilateral facets (" + cell_name(ft) +
-                       "), and contact surfaces of quadrilaterals are not supported in 3D: mesh the body (or the "
-                       "surface) with tetrahedra (triangles), or use hexahedra only in bodies without contact");
+                   what + " is made of 8-node quadrilateral facets (" + cell_name(ft) +
+                       ", the faces of hex20 cells), which contact does not support: their vertex shape functions "
+                       "integrate to negative values; use the complete second order (hex27: remove "
+                       "Mesh.SecondOrderIncomplete), order 1, or tetrahedra");
 }
 }  // namespace
 
