@@ -234,7 +234,7 @@ std::string contact_patch_name(const ContactPatchCase& c) {
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));
   if (c.one_body) name += "_one_body";
   if (c.geometry != "current") name += "_" + c.geometry;
-  if (!c.quad_blocks.empty()) name += c.dim == 3 ? "_hex" : (c.serendipity ? "_quad8" : "_quad");
+  if (!c.quad_blocks.empty()) name += c.dim == 3 ? (c.serendipity ? "_hex20" : "_hex") : (c.serendipity ? "_quad8" : "_quad");
   for (const std::string& q : c.quad_blocks) name += "_" + q;
   return name;
 }

@@ -45,7 +45,7 @@ struct ContactPatchCase {
   /// The blocks meshed with quadrilaterals (2D, Recombine: Quad4, or Quad9 at order 2) or hexahedra (3D,
   /// n³ transfinite: Hex8 or Hex27), by name ("lower", "upper", "middle"); the others keep their simplices.
   std::vector<std::string> quad_blocks;
-  /// With quad_blocks at order 2: the incomplete second order (Mesh.SecondOrderIncomplete = 1: Quad8).
+  /// With quad_blocks at order 2: the incomplete second order (Mesh.SecondOrderIncomplete = 1: Quad8, Hex20).
   bool serendipity = false;
 };
 
@@ -87,7 +87,8 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
 /// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body", "_reference",
-/// "_quad_lower_upper" (+ "8" with serendipity; "_hex_…" in 3D); "3D_" first in 3D): a GoogleTest parameter name.
+/// "_quad_lower_upper" (+ "8" with serendipity; "_hex_…", "_hex20_…" in 3D); "3D_" first in 3D): a GoogleTest
+/// parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing

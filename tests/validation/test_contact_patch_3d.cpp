@@ -40,8 +40,10 @@ TEST_P(ContactPatch3D, UniformPressureAndExactDisplacements) {
   // Hexahedra where asked (quad_blocks), tetrahedra elsewhere.
   for (const auto& body : solved->model->bodies()) {
     const bool hexes = std::count(pc.quad_blocks.begin(), pc.quad_blocks.end(), body->name) > 0;
-    const symcontact::CellType expected = hexes ? (pc.order == 1 ? symcontact::CellType::kHex8 : symcontact::CellType::kHex27)
-                                                : (pc.order == 1 ? symcontact::CellType::kTet4 : symcontact::CellType::kTet10);
+    const symcontact::CellType expected =
+        hexes ? (pc.order == 1 ? symcontact::CellType::kHex8
+                               : (pc.serendipity ? symcontact::CellType::kHex20 : symcontact::CellType::kHex27))
+              : (pc.order == 1 ? symcontact::CellType::kTet4 : symcontact::CellType::kTet10);
     EXPECT_EQ(body->mesh.cell_type, expected) << body->name;
   }
   const ContactPatchErrors e = contact_patch_errors(pc, *solved);
@@ -59,7 +61,7 @@ TEST_P(ContactPatch3D, UniformPressureAndExactDisplacements) {
 }
 
 namespace {
-// Hexahedra (Hex8, Hex27: quadrilateral contact facets) on one or both cubes, non-matching (3, 4), (4, 3).
+// Hexahedra (Hex8, Hex27, Hex20: quadrilateral contact facets) on one or both cubes, non-matching (3, 4), (4, 3).
 ContactPatchCase hex_patch(int n1, int n2, int order, const char* mode, std::vector<std::string> blocks) {
   ContactPatchCase c = patch(n1, n2, order, mode);
   c.quad_blocks = std::move(blocks);
@@ -73,6 +75,10 @@ INSTANTIATE_TEST_SUITE_P(V3Hex, ContactPatch3D,
                                            hex_patch(3, 4, 1, "symmetric", {"lower"}),
                                            hex_patch(3, 4, 2, "symmetric", {"lower", "upper"}),
                                            hex_patch(4, 3, 2, "one-pass", {"lower"}), [] {
+                                             ContactPatchCase c = hex_patch(3, 4, 2, "symmetric", {"lower", "upper"});
+                                             c.serendipity = true;  // Hex20
+                                             return c;
+                                           }(), [] {
                                              ContactPatchCase c = hex_patch(3, 4, 1, "symmetric", {"lower", "upper"});
                                              c.mu = 0.3;
                                              return c;

@@ -279,7 +279,7 @@ Eigen::Vector2d quad_newton(CellType type, const Eigen::MatrixXd& xf, const Eige
     eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
     const Eigen::Vector3d res = quad_point(type, xf, eta.data(), &d1) - p;
     const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
-    // Second derivatives by central differences of ∂x/∂η: exact, since ∂x/∂η_i of a bilinear or
+    // Second derivatives by central differences of ∂x/∂η: exact, since ∂x/∂η_i of a bilinear, serendipity or
     // biquadratic map is at most quadratic in each variable, and central differences are exact on quadratics.
     Eigen::Matrix2d S;
     for (int j = 0; j < 2; ++j) {
@@ -387,6 +387,7 @@ FacetProjection project_on_facet(CellType type, const Eigen::MatrixXd& xf, const
     case CellType::kTri3: return project_on_tri3(xf, p.head<3>());
     case CellType::kTri6: return project_on_tri6(xf, p.head<3>());
     case CellType::kQuad4:
+    case CellType::kQuad8:
     case CellType::kQuad9: return project_on_quad(type, xf, p.head<3>());
     default: break;
   }

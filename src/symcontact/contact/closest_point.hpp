@@ -1,7 +1,7 @@
 #pragma once
 /// \file closest_point.hpp
 /// Closest-point projection of a point onto one contact facet: Line2/Line3 in 2D, Tri3/Tri6 and
-/// Quad4/Quad9 in 3D. The facet is x(η) = Σ_a N_a(η) x_a, η in the reference cell ([0, 1]; η1, η2 ≥ 0,
+/// Quad4/Quad8/Quad9 in 3D. The facet is x(η) = Σ_a N_a(η) x_a, η in the reference cell ([0, 1]; η1, η2 ≥ 0,
 /// η1 + η2 ≤ 1; or [0, 1]²).
 ///  - Line2: closed form; Line3: safeguarded Newton on the stationarity condition (x(η) − p)·x'(η) = 0
 ///    (Wriggers, Computational Contact Mechanics, 2006, §4.1), compared with the ends.
@@ -12,8 +12,8 @@
 ///    (Gauss–Newton where the Hessian is not positive definite, steps limited), started from the
 ///    projection on the vertex triangle; compared with the closest points of the three boundary edges,
 ///    which are Line3 curves. The interior stationary point wins ties.
-///  - Quad4, Quad9 (bilinear, biquadratic): the same Newton, started from the centre, compared with the
-///    closest points of the four edges (segments, or Line3 curves).
+///  - Quad4, Quad8, Quad9 (bilinear, serendipity, biquadratic): the same Newton, started from the centre,
+///    compared with the closest points of the four edges (segments, or Line3 curves).
 /// The report tells where the closest point is: inside (a true normal projection), on edge e (3D),
 /// or at vertex v. Facet edges are numbered like their edge nodes: triangle e0 = (0, 1), e1 = (1, 2),
 /// e2 = (2, 0); quadrilateral e0 = (0, 1), e1 = (1, 2), e2 = (2, 3), e3 = (3, 0) (facet_edge()).

@@ -83,10 +83,14 @@ BoundingVolumeHierarchy::Box facet_box(CellType type, const Eigen::MatrixXd& xf,
       box.extend(pad3(2.0 * xf.col(nv + e) - 0.5 * (xf.col(ab[0]) + xf.col(ab[1]))));
     }
     // Quad9: the centre's tensor Bézier control point 4c − Σ edge nodes + ¼ Σ vertices (the 1D map of
-    // the edge nodes applied in both directions).
-    if (type == CellType::kQuad9)
-      box.extend(pad3(4.0 * xf.col(8) - (xf.col(4) + xf.col(5) + xf.col(6) + xf.col(7)) +
-                      0.25 * (xf.col(0) + xf.col(1) + xf.col(2) + xf.col(3))));
+    // the edge nodes applied in both directions). A Quad8 facet is the biquadratic one whose centre is
+    // its own point c = x(½, ½) = ½ Σ edge nodes − ¼ Σ vertices: control point Σ edge nodes − ¾ Σ vertices.
+    if (type == CellType::kQuad8 || type == CellType::kQuad9) {
+      const Eigen::VectorXd edges = xf.col(4) + xf.col(5) + xf.col(6) + xf.col(7);
+      const Eigen::VectorXd vertices = xf.col(0) + xf.col(1) + xf.col(2) + xf.col(3);
+      box.extend(pad3(type == CellType::kQuad9 ? Eigen::VectorXd(4.0 * xf.col(8) - edges + 0.25 * vertices)
+                                               : Eigen::VectorXd(edges - 0.75 * vertices)));
+    }
   }
   box.min().array() -= pad;
   box.max().array() += pad;

@@ -335,22 +335,6 @@ int Model::body_index(const std::string& name) const {
   return -1;
 }
 
-namespace {
-/// Contact surfaces are made of segments (2D), triangles or 4- and 9-node quadrilaterals (3D): 8-node
-/// quadrilateral facets (the faces of Hex20 cells, or a rigid surface meshed with them), whose vertex
-/// shape functions integrate to negative values (so the weak gap of a vertex has the wrong sign), are
-/// refused with InputError(file, key).
-void check_contact_facets(const Mesh& mesh, const std::string& file, const std::string& key, const std::string& what) {
-  const CellType ft = mesh.facet_cell_type();
-  if (ft != CellType::kQuad8) return;
-  throw InputError(file, key,
-                   what + " is made of 8-node quadrilateral facets (" + cell_name(ft) +
-                       ", the faces of hex20 cells), which contact does not support: their vertex shape functions "
-                       "integrate to negative values; use the complete second order (hex27: remove "
-                       "Mesh.SecondOrderIncomplete), order 1, or tetrahedra");
-}
-}  // namespace
-
 void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_options) {
   const ProblemSpec& spec = spec_;
   const int D = spec.dim;
@@ -362,7 +346,6 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
       throw InputError(spec.file, key,
                        "body '" + body + "' (mesh " + bodies_[b]->spec->mesh_file + ") has no boundary group '" + group +
                            "'; its groups: " + available_groups(mesh));
-    check_contact_facets(mesh, spec.file, key, "boundary '" + group + "' of body '" + body + "'");
     const std::string name = body + "." + group;
     for (int s = 0; s < static_cast<int>(contacts_.surfaces.size()); ++s)
       if (contacts_.surfaces[s].name == name) return s;
@@ -394,7 +377,6 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
                            "obstacle mesh " + e.file() + (e.key().empty() ? "" : ", " + e.key()) + ": " + e.message());
         }
         rigid_meshes_.push_back(extract_surface(f, D, os.boundary, os.key + ".boundary"));
-        check_contact_facets(rigid_meshes_.back(), spec.file, os.key + ".boundary", "obstacle surface '" + os.boundary + "'");
         contacts_.surfaces.push_back(make_contact_surface(rigid_meshes_.back(), os.boundary, -1, cs.name + ".obstacle"));
         pair.surface_b = static_cast<int>(contacts_.surfaces.size()) - 1;
         pair.mode = ContactMode::kOnePass;  // a rigid surface carries no multipliers of its own

@@ -249,8 +249,8 @@ TEST_F(CliInputErrors, TractionWithBothOrNeitherOfTractionAndTotalForceIsAnInput
 
 // ---- 7. Element types ----
 
-// A recombined block is accepted by `check`; a body half recombined (quadrilaterals and triangles), a mesh of
-// prisms, and a 3D contact on the 8-node faces of Hex20 cells are input errors.
+// A recombined block is accepted by `check`; a body half recombined (quadrilaterals and triangles) and a mesh
+// of prisms are input errors.
 TEST_F(CliInputErrors, ElementTypesAcceptedAndRefused) {
   write("quads.geo", block_geo_with("Plane Surface(1) = {1};", "Plane Surface(1) = {1};\nRecombine Surface{1};"));
   const fs::path quads = write("quads.toml", block_toml("quads.geo"));
@@ -281,17 +281,4 @@ TEST_F(CliInputErrors, ElementTypesAcceptedAndRefused) {
   expect_input_error(write("prisms.toml", symcontact::testing::replaced(solid, "MESH", "prisms.geo") +
                                               "[[body.dirichlet]]\nboundary = \"bottom\"\nux = 0.0\nuy = 0.0\nuz = 0.0\n"),
                      {"prisms.toml", "body[0].mesh", "prisms.geo", "unsupported element type 'Prism 6'"});
-
-  // Hex20 (the incomplete second order): its 8-node faces cannot be contact surfaces.
-  write("cube_hex20.geo", read_text(std::string(SYMCONTACT_TEST_DATA) + "/geo/cube_hexes.geo") +
-                              "\nMesh.SecondOrderIncomplete = 1;\n");
-  std::string hexes = symcontact::testing::replaced(solid, "MESH", "cube_hex20.geo");
-  hexes = symcontact::testing::replaced(hexes, "group = \"block\"", "group = \"cube\"");
-  hexes = symcontact::testing::replaced(hexes, "dimension = 3\n", "dimension = 3\norder = 2\n");
-  expect_input_error(write("hexes.toml", hexes + "[[body.dirichlet]]\nboundary = \"zmax\"\nuz = -0.01\n"
-                                                 "[[contact]]\nname = \"floor\"\na = \"block.zmin\"\n"
-                                                 "[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\n"
-                                                 "normal = [0.0, 0.0, 1.0]\n"),
-                     {"hexes.toml", "contact[0].a", "boundary 'zmin' of body 'block'",
-                      "8-node quadrilateral facets (quad8", "hex27"});
 }

@@ -507,7 +507,7 @@ Eigen::MatrixXd spherical_quad9(double R, const Eigen::Vector3d* v) {
 
 }  // namespace
 
-// A skewed flat Quad4 and a spherical Quad9: the projection is the brute-force minimum, stationary inside
+// A skewed flat Quad4 and a spherical Quad9 (and the Quad8 of its vertices and edge nodes): the projection is the brute-force minimum, stationary inside
 // (the residual normal to both tangents), on an edge (ξ or η at 0 or 1) otherwise, with the edge or vertex
 // reported; a point of the facet projects onto itself.
 TEST(ClosestPointQuad, MatchesSamplingStationaryInsideAndOnTheBorderOutside) {
@@ -518,7 +518,9 @@ TEST(ClosestPointQuad, MatchesSamplingStationaryInsideAndOnTheBorderOutside) {
   const Eigen::MatrixXd q9 = spherical_quad9(1.0, dirs);
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> U(0.0, 1.0);
-  for (const auto& [type, xf] : {std::pair<CellType, Eigen::MatrixXd>{CellType::kQuad4, q4}, {CellType::kQuad9, q9}}) {
+  const Eigen::MatrixXd q8 = q9.leftCols(8);  // the serendipity facet through the same vertices and edge nodes
+  for (const auto& [type, xf] : {std::pair<CellType, Eigen::MatrixXd>{CellType::kQuad4, q4}, {CellType::kQuad8, q8},
+                                 {CellType::kQuad9, q9}}) {
     int interior = 0, boundary = 0;
     for (int trial = 0; trial < 40; ++trial) {
       const Eigen::Vector3d c = surface_at(type, xf, 1.6 * U(rng) - 0.3, 1.6 * U(rng) - 0.3);

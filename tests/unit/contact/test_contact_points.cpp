@@ -23,7 +23,7 @@ struct Faces3D {
   ContactSurface slave, master;
 };
 
-/// `cells`: Tet4 or Tet10 (box_mesh(), triangle faces), or Hex8 or Hex27 (tensor_mesh(), quadrilateral faces).
+/// `cells`: Tet4 or Tet10 (box_mesh(), triangle faces), or Hex8, Hex20, Hex27 (tensor_mesh(), quadrilateral faces).
 Faces3D make_faces(CellType cells, int ns, int nm, double mx0, double mx1, double gap) {
   Faces3D f;
   if (cell_shape(cells) == CellShape::kTensor) {
@@ -100,7 +100,8 @@ TEST_P(MortarCells3D, PastTheBorderOfTheMasterIsNoContact) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactPoints, MortarCells3D,
-                         ::testing::Values(CellType::kTet4, CellType::kTet10, CellType::kHex8, CellType::kHex27),
+                         ::testing::Values(CellType::kTet4, CellType::kTet10, CellType::kHex8, CellType::kHex20,
+                                           CellType::kHex27),
                          [](const ::testing::TestParamInfo<CellType>& p) {
                            if (p.param == CellType::kTet4) return std::string("P1");
                            if (p.param == CellType::kTet10) return std::string("P2");

@@ -166,7 +166,8 @@ TEST(ContactSurface, DiskRimNormalsAreRadial) {
 // ---------------------------------------------------------------------------------------------------
 // 3D surfaces (Tri3, Tri6) and the modified Tri6 test basis.
 
-/// The cells of the box: Tet4, Tet10 (box_mesh()) or Hex8, Hex27 (tensor_mesh(), quadrilateral faces).
+/// The cells of the box: Tet4, Tet10 (box_mesh()) or Hex8, Hex20, Hex27 (tensor_mesh(), quadrilateral faces;
+/// Hex20's Quad8 faces with the modified test basis, whose lumped areas are positive too).
 class ContactSurfaceBox : public ::testing::TestWithParam<CellType> {};
 
 TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
@@ -223,7 +224,8 @@ TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ContactSurface, ContactSurfaceBox,
-                         ::testing::Values(CellType::kTet4, CellType::kTet10, CellType::kHex8, CellType::kHex27),
+                         ::testing::Values(CellType::kTet4, CellType::kTet10, CellType::kHex8, CellType::kHex20,
+                                           CellType::kHex27),
                          [](const ::testing::TestParamInfo<CellType>& p) {
                            if (p.param == CellType::kTet4) return std::string("P1");
                            if (p.param == CellType::kTet10) return std::string("P2");
