@@ -13,7 +13,8 @@ In 2D, `--xlim` and `--ylim` zoom on a window (for example the contact zone); th
 that of the nodes inside the window.
 
 2D: triangles and quadrilaterals, linear or quadratic (quadratic cells are drawn by their vertices).
-3D: tetrahedra (linear or quadratic); the boundary faces are drawn in an orthographic view.
+3D: tetrahedra and hexahedra, linear or quadratic (drawn by their vertices); the boundary faces are drawn
+in an orthographic view.
 
 Needs only python3, numpy and matplotlib (Debian: python3-numpy python3-matplotlib).
 """
@@ -43,9 +44,14 @@ CELL_TYPES = {
     28: (2, 4, 9),   # biquadratic quad
     10: (3, 4, 4),   # tetrahedron
     24: (3, 4, 10),  # quadratic tetrahedron
+    12: (3, 8, 8),   # hexahedron
+    25: (3, 8, 20),  # quadratic hexahedron
+    29: (3, 8, 27),  # triquadratic hexahedron
 }
-# Faces of a tetrahedron (vertex indices) and the vertex opposite each.
+# Faces of a tetrahedron and of a hexahedron (vertex indices) and a vertex off each.
 TET_FACES = (((0, 2, 1), 3), ((0, 1, 3), 2), ((1, 2, 3), 0), ((0, 3, 2), 1))
+HEX_FACES = (((0, 3, 2, 1), 4), ((4, 5, 6, 7), 0), ((0, 1, 5, 4), 3), ((1, 2, 6, 5), 0), ((2, 3, 7, 6), 1),
+             ((3, 0, 4, 7), 1))
 
 
 class VtuError(Exception):
@@ -115,8 +121,8 @@ class Body:
         raise VtuError(f"{self.path}: no point or cell data named {name!r} (available: {', '.join(available)})")
 
     def boundary_polygons(self):
-        """Boundary of the body: 2D -> list of edges (i, j); 3D -> list of (cell, face vertex triple, opposite
-        vertex), the opposite vertex telling which side is outside."""
+        """Boundary of the body: 2D -> list of edges (i, j); 3D -> list of (cell, face vertices (3 or 4), a vertex
+        of the cell off the face), that vertex telling which side is outside."""
         if self.dim == 2:
             count = {}
             for _, verts in self.cells:
@@ -130,10 +136,10 @@ class Body:
         faces = {}
         for idx, verts in self.cells:
             for c, row in zip(idx, verts):
-                for f, opposite in TET_FACES:
-                    tri = (int(row[f[0]]), int(row[f[1]]), int(row[f[2]]))
-                    key = tuple(sorted(tri))
-                    faces[key] = None if key in faces else (int(c), tri, int(row[opposite]))
+                for f, opposite in (TET_FACES if verts.shape[1] == 4 else HEX_FACES):
+                    face = tuple(int(row[k]) for k in f)
+                    key = tuple(sorted(face))
+                    faces[key] = None if key in faces else (int(c), face, int(row[opposite]))
         return [v for v in faces.values() if v is not None]
 
 

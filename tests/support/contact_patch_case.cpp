@@ -85,6 +85,33 @@ std::string contact_patch_geo(int n1, int n2, int dim, int n3, bool one_body) {
 
 namespace {
 
+/// The .geo of the case: contact_patch_geo() with its quad_blocks recombined: 2D surface i + 1 is block i;
+/// in 3D box i + 1 (curves 12i + 1..12i + 12, faces 6i + 1..6i + 6) becomes n_i³ transfinite hexahedra.
+std::string patch_geo(const ContactPatchCase& c) {
+  std::string g = contact_patch_geo(c.n1, c.n2, c.dim, c.n3, c.one_body);
+  const std::vector<std::string> names = block_names(c.n3);
+  const int n[3] = {c.n1, c.n2, c.n3};
+  for (const std::string& q : c.quad_blocks) {
+    const auto it = std::find(names.begin(), names.end(), q);
+    if (it == names.end()) {
+      ADD_FAILURE() << "no block named " << q;
+      continue;
+    }
+    const int i = static_cast<int>(it - names.begin());
+    if (c.dim == 2) {
+      g += "Recombine Surface{" + std::to_string(i + 1) + "};\n";
+      continue;
+    }
+    const std::string curves = std::to_string(12 * i + 1) + ":" + std::to_string(12 * i + 12);
+    const std::string faces = std::to_string(6 * i + 1) + ":" + std::to_string(6 * i + 6);
+    g += "Transfinite Curve{" + curves + "} = " + std::to_string(n[i] + 1) + ";\nTransfinite Surface{" + faces +
+         "};\nRecombine Surface{" + faces + "};\nTransfinite Volume{" + std::to_string(i + 1) +
+         "};\nRecombine Volume{" + std::to_string(i + 1) + "};\n";
+  }
+  if (c.serendipity) g += "Mesh.SecondOrderIncomplete = 1;\n";
+  return g;
+}
+
 /// The problem file of the one-body case (ContactPatchCase::one_body).
 std::string one_body_toml(const ContactPatchCase& c) {
   return "[problem]\ndimension = 2\norder = " + std::to_string(c.order) +
@@ -145,7 +172,7 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
 
 std::unique_ptr<ModelCase> contact_patch_model(const ContactPatchCase& c, const std::filesystem::path& folder,
                                                FixedDofs& fixed) {
-  write_text(folder / "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3, c.one_body));
+  write_text(folder / "blocks.geo", patch_geo(c));
   std::unique_ptr<ModelCase> m = build_model(contact_patch_toml(c), folder);
   m->model->set_step(0);
   fixed = m->model->fixed_dofs(0);
@@ -154,7 +181,7 @@ std::unique_ptr<ModelCase> contact_patch_model(const ContactPatchCase& c, const 
 
 std::unique_ptr<SolvedCase> contact_patch_solve(const ContactPatchCase& c) {
   const std::string dir = test_temp_dir(c.dim == 3 ? "contact_patch_3d" : "contact_patch");
-  write_text(dir, "blocks.geo", contact_patch_geo(c.n1, c.n2, c.dim, c.n3, c.one_body));
+  write_text(dir, "blocks.geo", patch_geo(c));
   return solve_case(contact_patch_toml(c), dir);
 }
 
@@ -207,6 +234,8 @@ std::string contact_patch_name(const ContactPatchCase& c) {
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));
   if (c.one_body) name += "_one_body";
   if (c.geometry != "current") name += "_" + c.geometry;
+  if (!c.quad_blocks.empty()) name += c.dim == 3 ? (c.serendipity ? "_hex20" : "_hex") : (c.serendipity ? "_quad8" : "_quad");
+  for (const std::string& q : c.quad_blocks) name += "_" + q;
   return name;
 }
 

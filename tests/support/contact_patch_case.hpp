@@ -21,6 +21,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "support/model_case.hpp"
 #include "support/solve_case.hpp"
@@ -41,6 +42,11 @@ struct ContactPatchCase {
   /// faces); the lower block's supports as in the two-body case, u_x = 0 at (0, 2) on the same body.
   bool one_body = false;
   std::string geometry = "current";  ///< [[contact]] geometry: "current" or "reference" (small sliding)
+  /// The blocks meshed with quadrilaterals (2D, Recombine: Quad4, or Quad9 at order 2) or hexahedra (3D,
+  /// n³ transfinite: Hex8 or Hex27), by name ("lower", "upper", "middle"); the others keep their simplices.
+  std::vector<std::string> quad_blocks;
+  /// With quad_blocks at order 2: the incomplete second order (Mesh.SecondOrderIncomplete = 1: Quad8, Hex20).
+  bool serendipity = false;
 };
 
 struct ContactPatchErrors {
@@ -80,7 +86,9 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
 /// Solves and measures: contact_patch_errors(c, *contact_patch_solve(c)).
 ContactPatchErrors contact_patch_errors(const ContactPatchCase& c);
 
-/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body", "_reference"; "3D_" first in 3D): a GoogleTest parameter name.
+/// "n4_5_P1_symmetric" ("n4_5_3_…" with a third block; + "_swapped", "_mu0.3", "_one_body", "_reference",
+/// "_quad_lower_upper" (+ "8" with serendipity; "_hex_…", "_hex20_…" in 3D); "3D_" first in 3D): a GoogleTest
+/// parameter name.
 std::string contact_patch_name(const ContactPatchCase& c);
 
 }  // namespace symcontact::testing

@@ -4,6 +4,8 @@
 /// central differences of value(), and the Hessian (applied to random directions) against central
 /// differences of the gradient. Used for every energy term.
 
+#include <optional>
+
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/mesh/mesh.hpp"
 
@@ -21,7 +23,9 @@ FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h =
 
 /// The mesh the derivative checks run on: the rectangle [0, 2] × [0, 1] (4 × 3 squares) or the box
 /// [0, 1] × [0, 1] × [0, 2] (2 × 2 × 3 cubes) of structured.hpp, of `order` 1 or 2, its interior nodes moved
-/// by up to 20 % of the spacing (so that no element is a right-angled copy of another).
-Mesh distorted_mesh(int dim, int order);
+/// by up to 20 % of the spacing (so that no element is a right-angled copy of another). With `tensor`, the
+/// same domain in cells of that quadrilateral or hexahedron type (structured.hpp's tensor_mesh(); `order`
+/// is then the type's): 4 × 3 quadrilaterals, or 2 × 2 × 2 hexahedra (one interior vertex, moved).
+Mesh distorted_mesh(int dim, int order, std::optional<CellType> tensor = {});
 
 }  // namespace symcontact::testing

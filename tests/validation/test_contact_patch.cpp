@@ -38,7 +38,17 @@ ContactPatchCase patch(int n1, int n2, int order, const char* mode, bool one_bod
 
 TEST_P(ContactPatch2D, UniformPressureAndExactDisplacements) {
   const ContactPatchCase pc = GetParam();
-  const ContactPatchErrors e = contact_patch_errors(pc);
+  const auto solved = contact_patch_solve(pc);
+  // Each block has the cells it was meshed with: quadrilaterals where recombined, triangles elsewhere.
+  for (const auto& body : solved->model->bodies()) {
+    const bool quads = std::count(pc.quad_blocks.begin(), pc.quad_blocks.end(), body->name) > 0;
+    const symcontact::CellType expected =
+        quads ? (pc.order == 1 ? symcontact::CellType::kQuad4
+                               : (pc.serendipity ? symcontact::CellType::kQuad8 : symcontact::CellType::kQuad9))
+              : (pc.order == 1 ? symcontact::CellType::kTri3 : symcontact::CellType::kTri6);
+    EXPECT_EQ(body->mesh.cell_type, expected) << body->name;
+  }
+  const ContactPatchErrors e = contact_patch_errors(pc, *solved);
   std::printf("  (%d, %d) P%d %s: displacement error %.2e, pressure error %.2e, %d geometry / %d IPOPT iterations\n",
               pc.n1, pc.n2, pc.order, pc.mode.c_str(), e.displacement, e.pressure, e.geometry_iterations,
               e.ipopt_iterations);
@@ -53,6 +63,26 @@ INSTANTIATE_TEST_SUITE_P(
                       patch(4, 5, 2, "one-pass"), patch(5, 4, 2, "one-pass"),
                       // Matching meshes: the two constraint families are exactly dependent.
                       patch(4, 4, 1, "symmetric"), patch(4, 4, 2, "symmetric")),
+    [](const auto& p) { return contact_patch_name(p.param); });
+
+// Quadrilaterals (Recombine) on one or both sides: Quad4 at order 1, Quad9 (and Quad8 with the incomplete
+// second order) at order 2. Their boundaries are segments like the triangles', so the same exactness holds.
+namespace {
+ContactPatchCase quad_patch(int n1, int n2, int order, const char* mode, std::vector<std::string> blocks,
+                            bool serendipity = false) {
+  ContactPatchCase c = patch(n1, n2, order, mode);
+  c.quad_blocks = std::move(blocks);
+  c.serendipity = serendipity;
+  return c;
+}
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(
+    V3Quads, ContactPatch2D,
+    ::testing::Values(quad_patch(4, 5, 1, "symmetric", {"lower", "upper"}), quad_patch(5, 4, 1, "one-pass", {"upper"}),
+                      quad_patch(4, 5, 1, "symmetric", {"lower"}), quad_patch(4, 5, 2, "symmetric", {"lower", "upper"}),
+                      quad_patch(5, 4, 2, "one-pass", {"lower"}),
+                      quad_patch(4, 5, 2, "symmetric", {"lower", "upper"}, true)),
     [](const auto& p) { return contact_patch_name(p.param); });
 
 class ContactPatchOneBody : public ::testing::TestWithParam<ContactPatchCase> {};

@@ -8,6 +8,7 @@
 // The case itself is tests/support/contact_patch_case.hpp (dim = 3), shared with the 2D tests.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -35,7 +36,17 @@ ContactPatchCase patch(int n1, int n2, int order, const char* mode, double mu = 
 TEST_P(ContactPatch3D, UniformPressureAndExactDisplacements) {
   const ContactPatchCase pc = GetParam();
   const auto t0 = std::chrono::steady_clock::now();
-  const ContactPatchErrors e = contact_patch_errors(pc);
+  const auto solved = contact_patch_solve(pc);
+  // Hexahedra where asked (quad_blocks), tetrahedra elsewhere.
+  for (const auto& body : solved->model->bodies()) {
+    const bool hexes = std::count(pc.quad_blocks.begin(), pc.quad_blocks.end(), body->name) > 0;
+    const symcontact::CellType expected =
+        hexes ? (pc.order == 1 ? symcontact::CellType::kHex8
+                               : (pc.serendipity ? symcontact::CellType::kHex20 : symcontact::CellType::kHex27))
+              : (pc.order == 1 ? symcontact::CellType::kTet4 : symcontact::CellType::kTet10);
+    EXPECT_EQ(body->mesh.cell_type, expected) << body->name;
+  }
+  const ContactPatchErrors e = contact_patch_errors(pc, *solved);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("  3D (%d, %d) P%d %s mu = %.1f: displacement error %.2e, pressure error %.2e, tangential %.2e p,"
               " %d Coulomb / %d geometry / %d IPOPT iterations, %.1f s\n",
@@ -48,6 +59,31 @@ TEST_P(ContactPatch3D, UniformPressureAndExactDisplacements) {
   EXPECT_LT(e.displacement, 1e-7);
   EXPECT_LT(e.tangential, 1e-6);
 }
+
+namespace {
+// Hexahedra (Hex8, Hex27, Hex20: quadrilateral contact facets) on one or both cubes, non-matching (3, 4), (4, 3).
+ContactPatchCase hex_patch(int n1, int n2, int order, const char* mode, std::vector<std::string> blocks) {
+  ContactPatchCase c = patch(n1, n2, order, mode);
+  c.quad_blocks = std::move(blocks);
+  return c;
+}
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(V3Hex, ContactPatch3D,
+                         ::testing::Values(hex_patch(3, 4, 1, "symmetric", {"lower", "upper"}),
+                                           hex_patch(4, 3, 1, "one-pass", {"upper"}),
+                                           hex_patch(3, 4, 1, "symmetric", {"lower"}),
+                                           hex_patch(3, 4, 2, "symmetric", {"lower", "upper"}),
+                                           hex_patch(4, 3, 2, "one-pass", {"lower"}), [] {
+                                             ContactPatchCase c = hex_patch(3, 4, 2, "symmetric", {"lower", "upper"});
+                                             c.serendipity = true;  // Hex20
+                                             return c;
+                                           }(), [] {
+                                             ContactPatchCase c = hex_patch(3, 4, 1, "symmetric", {"lower", "upper"});
+                                             c.mu = 0.3;
+                                             return c;
+                                           }()),
+                         [](const auto& p) { return contact_patch_name(p.param); });
 
 INSTANTIATE_TEST_SUITE_P(V3, ContactPatch3D,
                          ::testing::Values(patch(3, 4, 1, "symmetric"), patch(4, 3, 1, "symmetric"),

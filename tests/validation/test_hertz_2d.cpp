@@ -288,3 +288,61 @@ TEST(Hertz2D, ReferenceGeometryAgreesWithCurrentAtSmallLoads) {
     }
   }
 }
+
+// V1 with quadrilaterals: the cylinder's triangulation recombined into quadrangles (Blossom), Quad4 at
+// h = 0.004 and Quad9 (order 2) at h = 0.008; their contact facets are Line2 and Line3 segments as with
+// triangles. The same closed form and tolerances (expect_v1()).
+TEST(Hertz2D, CylinderOnRigidPlaneQuadrilaterals) {
+  const std::string dir = test_temp_dir("hertz2d_plane_quads");
+  for (const auto& [h, order] : {std::pair<double, int>{0.004, 1}, std::pair<double, int>{0.008, 2}}) {
+    const std::string toml = example_toml("cylinder_on_plane", h, order, dir);
+    write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h) + "Recombine Surface{1};\n");
+    auto c = solve_case(toml, dir);
+    ASSERT_EQ(c->model->bodies()[0]->mesh.cell_type, order == 1 ? CellType::kQuad4 : CellType::kQuad9);
+    const HertzMeasure m = measure(*c, h);
+    std::printf("  %s:", cell_name(c->model->bodies()[0]->mesh.cell_type).c_str());
+    print(m);
+    expect_v1(m);
+  }
+}
+
+// V1 in 3D on hexahedra: the quarter disk recombined and extruded by one layer of Hex27 cells (t = 0.05),
+// u_z = 0 on both faces (plane strain), on the rigid plane y = 0: Quad9 contact facets, curved along the
+// arc, and the 3D mortar integration. The pressure is the same at the three rows of nodes along z, and
+// p0, a and the profile are V1's (those of the Quad9 case above, h = 0.008: p0 −0.27 %, a +3.5 %).
+TEST(Hertz2D, CylinderExtrudedIntoHexahedraMatchesTheLineContact) {
+  const std::string dir = test_temp_dir("hertz2d_hexahedra");
+  const double h = 0.008, t = 0.05;
+  write_text(dir, "cyl3d.geo",
+             wrapper_geo("cylinder_on_plane.geo", h) +
+                 "Recombine Surface{1};\nDelete Physicals;\n"
+                 "out[] = Extrude {0, 0, 0.05} { Surface{1}; Layers{1}; Recombine; };\n"
+                 "Physical Volume(\"cylinder\") = {out[1]};\nPhysical Surface(\"contact\") = {out[2]};\n"
+                 "Physical Surface(\"load\") = {out[3]};\nPhysical Surface(\"symmetry\") = {out[4]};\n"
+                 "Physical Surface(\"faces\") = {1, out[0]};\n");
+  const std::string toml =
+      "[problem]\ndimension = 3\norder = 2\n\n[[body]]\nname = \"cylinder\"\nmesh = \"cyl3d.geo\"\n"
+      "group = \"cylinder\"\n[body.material]\nE = 1.0\nnu = 0.3\n"
+      "[[body.dirichlet]]\nboundary = \"symmetry\"\nux = 0.0\n[[body.dirichlet]]\nboundary = \"faces\"\nuz = 0.0\n"
+      "[[body.pressure]]\nboundary = \"load\"\npressure = 0.005\n\n[[contact]]\nname = \"floor\"\n"
+      "a = \"cylinder.contact\"\n[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\n"
+      "normal = [0.0, 1.0, 0.0]\n";
+  auto c = solve_case(toml, dir);
+  ASSERT_EQ(c->model->bodies()[0]->mesh.cell_type, CellType::kHex27);
+  const HertzMeasure m = measure(*c, h);
+  std::printf("  hex27:");
+  print(m);
+  EXPECT_NEAR(m.p0, p0_ref, 0.03 * p0_ref);
+  EXPECT_NEAR(m.a, a_ref, std::max(0.02 * a_ref, m.h));
+  EXPECT_LT(m.profile_error, 0.03);
+  EXPECT_NEAR(m.force, 0.005 * t, 1e-8 * 0.005 * t);  // the half model's load on its cut of width 1, depth t
+  // Uniform along z: each node's pressure equals that of the node at the same X on the face z = 0.
+  const auto& side = c->contact[0].sides[0];
+  double spread = 0.0;
+  for (Index k = 0; k < side.pressure.size(); ++k)
+    for (Index j = 0; j < side.pressure.size(); ++j)
+      if (std::abs(side.X(0, k) - side.X(0, j)) < 1e-12 && std::abs(side.X(1, k) - side.X(1, j)) < 1e-12)
+        spread = std::max(spread, std::abs(side.pressure[k] - side.pressure[j]));
+  std::printf("  largest pressure difference along z: %.2e of p0\n", spread / p0_ref);
+  EXPECT_LT(spread, 1e-6 * p0_ref);
+}

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -41,7 +42,9 @@ namespace {
 
 AnalysisModel analysis(int dim) { return dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD; }
 
-Mesh block(int dim, int order) {
+/// The block [0, 2] × [0, 1] (× [0, 1]): structured simplices of `order`, or cells of the tensor type `tensor`.
+Mesh block(int dim, int order, std::optional<CellType> tensor = {}) {
+  if (tensor) return tensor_mesh(*tensor, Vec3(0, 0, 0), Vec3(2, 1, 1), dim == 2 ? 8 : 4, dim == 2 ? 4 : 2, 2);
   return dim == 2 ? rectangle_mesh(0, 0, 2, 1, 8, 4, order) : box_mesh(Vec3(0, 0, 0), Vec3(2, 1, 1), 4, 2, 2, order);
 }
 
@@ -115,8 +118,8 @@ VectorXd solve_cantilever(const Mesh& m, const DofMap& dofs, std::unique_ptr<Ene
 /// Stretches the block (length 2 along x) to λ₁ = 1 + k Δ for k = 1..steps (Δ = (stretch − 1)/steps) and
 /// returns the worst relative reaction error; `newton_iterations` gets the total count.
 double uniaxial_stretch_error(const Hyperelastic& mat, int dim, int order, double stretch, int steps,
-                              int& newton_iterations) {
-  const Mesh m = block(dim, order);
+                              int& newton_iterations, std::optional<CellType> tensor = {}) {
+  const Mesh m = block(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const HyperelasticEnergy e(m, dofs, 0, mat, "block");
@@ -218,6 +221,20 @@ TEST(HyperelasticValidation, UniaxialStretchReactionMatchesClosedForm) {
         std::printf("uniaxial stretch to 2, D%d P%d %-38s: max reaction rel. error %.2e, %d Newton iterations / %d steps\n",
                     dim, order, name.c_str(), err, iterations, kSteps);
       }
+}
+
+// The same homogeneous stretch on quadrilaterals and hexahedra of every type (Neo-Hookean): reaction,
+// lateral stretch and recovered fields exact, as on simplices.
+TEST(HyperelasticValidation, UniaxialStretchOnQuadrilateralsAndHexahedra) {
+  const auto mat = materials().front().second;
+  for (CellType t : {CellType::kQuad4, CellType::kQuad8, CellType::kQuad9, CellType::kHex8, CellType::kHex20,
+                     CellType::kHex27}) {
+    int iterations = 0;
+    const double err = uniaxial_stretch_error(mat, cell_dim(t), cell_order(t), 2.0, kSteps, iterations, t);
+    EXPECT_LT(err, 1e-8) << cell_name(t);
+    std::printf("uniaxial stretch to 2, %-5s %-38s: max reaction rel. error %.2e, %d Newton iterations / %d steps\n",
+                cell_name(t).c_str(), materials().front().first.c_str(), err, iterations, kSteps);
+  }
 }
 
 // The globalised Newton method (line search, shifted tangent) solves a large deflection in one load

@@ -1,12 +1,15 @@
-// Manufactured-solution convergence of linear elasticity, 2D (plane strain) and 3D, P1 and P2.
+// Manufactured-solution convergence of linear elasticity, 2D (plane strain) and 3D, P1 and P2 simplices,
+// and quadrilaterals and hexahedra: Q1 (Quad4, Hex8), serendipity (Quad8, Hex20) and Q2 (Quad9, Hex27).
 // Exact field: u_i(x) = A_i Π_d sin(k_id x_d + φ_id); body force b = −div σ(u) with
 // div σ = μ Δu + (λ + μ) ∇(div u); Dirichlet data = u on the whole boundary.
 // Expected rates (Ciarlet, The Finite Element Method for Elliptic Problems, Thm 3.2.5 and §3.2):
-// L2 error O(h^{p+1}), H1 seminorm O(h^p).
+// L2 error O(h^{p+1}), H1 seminorm O(h^p); the same for the serendipity cells, which hold every polynomial of
+// degree p = 2 (Ciarlet §3.2, Thm 3.1.6 for the interpolation on Q_k and serendipity elements).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "symcontact/energy/energy_sum.hpp"
 #include "symcontact/energy/external_load.hpp"
@@ -67,8 +70,14 @@ struct TrigField {
   }
 };
 
-ErrorNorms solve_manufactured(int dim, int order, int n) {
-  const Mesh m = dim == 2 ? rectangle_mesh(0, 0, 1, 1, n, n, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, order);
+/// The unit square or cube: structured simplices of `order`, or n^dim cells of the tensor type `tensor`.
+Mesh unit_mesh(int dim, int order, std::optional<CellType> tensor, int n) {
+  if (tensor) return tensor_mesh(*tensor, Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n);
+  return dim == 2 ? rectangle_mesh(0, 0, 1, 1, n, n, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, order);
+}
+
+ErrorNorms solve_manufactured(int dim, int order, std::optional<CellType> tensor, int n) {
+  const Mesh m = unit_mesh(dim, order, tensor, n);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const auto mat = LinearElastic::from_young_poisson(1.0, 0.3, dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD);
@@ -94,6 +103,7 @@ ErrorNorms solve_manufactured(int dim, int order, int n) {
 struct Study {
   int dim, order;
   std::vector<int> n;
+  std::optional<CellType> tensor;  ///< a quadrilateral or hexahedron type; none: simplices
 };
 
 class ManufacturedConvergence : public ::testing::TestWithParam<Study> {};
@@ -103,8 +113,9 @@ class ManufacturedConvergence : public ::testing::TestWithParam<Study> {};
 TEST_P(ManufacturedConvergence, RatesMatchTheory) {
   const Study st = GetParam();
   std::vector<ErrorNorms> e;
-  for (int n : st.n) e.push_back(solve_manufactured(st.dim, st.order, n));
-  std::printf("  %dD P%d   h        L2 error     rate   H1 error     rate\n", st.dim, st.order);
+  for (int n : st.n) e.push_back(solve_manufactured(st.dim, st.order, st.tensor, n));
+  std::printf("  %dD %s   h        L2 error     rate   H1 error     rate\n", st.dim,
+              st.tensor ? cell_name(*st.tensor).c_str() : ("P" + std::to_string(st.order)).c_str());
   double rate_l2 = 0, rate_h1 = 0;
   for (std::size_t k = 0; k < e.size(); ++k) {
     if (k > 0) {
@@ -121,8 +132,15 @@ TEST_P(ManufacturedConvergence, RatesMatchTheory) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Elasticity, ManufacturedConvergence,
-                         ::testing::Values(Study{2, 1, {8, 16, 32, 64}}, Study{2, 2, {4, 8, 16, 32}},
-                                           Study{3, 1, {4, 8, 16}}, Study{3, 2, {2, 4, 8}}),
+                         ::testing::Values(Study{2, 1, {8, 16, 32, 64}, {}}, Study{2, 2, {4, 8, 16, 32}, {}},
+                                           Study{3, 1, {4, 8, 16}, {}}, Study{3, 2, {2, 4, 8}, {}}),
                          [](const auto& p) {
                            return "D" + std::to_string(p.param.dim) + "P" + std::to_string(p.param.order);
                          });
+
+INSTANTIATE_TEST_SUITE_P(
+    ElasticityTensorCells, ManufacturedConvergence,
+    ::testing::Values(Study{2, 1, {8, 16, 32}, CellType::kQuad4}, Study{2, 2, {4, 8, 16}, CellType::kQuad8},
+                      Study{2, 2, {4, 8, 16}, CellType::kQuad9}, Study{3, 1, {2, 4, 8}, CellType::kHex8},
+                      Study{3, 2, {2, 4, 8}, CellType::kHex20}, Study{3, 2, {2, 4, 8}, CellType::kHex27}),
+    [](const auto& p) { return cell_name(*p.param.tensor); });

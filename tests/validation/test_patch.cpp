@@ -91,6 +91,21 @@ TEST(PatchTest, DistortedStructuredMeshes) {
   }
 }
 
+// Quadrilaterals and hexahedra of every type, interior vertices moved, edge, face and centre nodes on the
+// multilinear map of their cell's vertices (perturb_interior_nodes()).
+TEST(PatchTest, DistortedQuadrilateralsAndHexahedra) {
+  for (CellType t : {CellType::kQuad4, CellType::kQuad8, CellType::kQuad9, CellType::kHex8, CellType::kHex20,
+                     CellType::kHex27}) {
+    const bool plane = cell_dim(t) == 2;
+    Mesh m = plane ? tensor_mesh(t, Vec3(0, 0, 0), Vec3(2, 1, 0), 6, 4) : tensor_mesh(t, Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
+    perturb_interior_nodes(m, plane ? 0.25 : 1.0 / 3, 0.25, 44);
+    const auto [eu, es] = patch_errors(m, plane ? "left" : "xmin");
+    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", cell_name(t).c_str(), eu, es);
+    EXPECT_LT(eu, 1e-10) << cell_name(t);
+    EXPECT_LT(es, 1e-10) << cell_name(t);
+  }
+}
+
 TEST(PatchTest, UnstructuredGmshMeshesIncludingCurvedP2) {
   const std::string geo = std::string(SYMCONTACT_TEST_DATA) + "/geo/";
   for (int order = 1; order <= 2; ++order) {

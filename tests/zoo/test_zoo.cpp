@@ -119,6 +119,26 @@ void expect_header_figures(const std::string& example, const SolvedCase& c) {
     for (const Eigen::VectorXd& r : c.reactions.back()) rx += r[0];
     EXPECT_NEAR(rx, -1.0, 1e-10) << example;
   }
+  if (example == "quad_blocks_2d/quad_blocks.toml") {
+    // Header: the V3 contact patch test on 9-node quadrilaterals, exact to round-off.
+    const ContactPatchErrors e = contact_patch_errors(ContactPatchCase{}, c);
+    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    EXPECT_EQ(c.model->bodies()[0]->mesh.cell_type, CellType::kQuad9) << example;
+    EXPECT_EQ(c.model->bodies()[1]->mesh.cell_type, CellType::kQuad9) << example;
+    EXPECT_LT(e.displacement, 1e-8) << example;
+    EXPECT_LT(e.pressure, 1e-8) << example;
+  }
+  if (example == "hex_blocks_3d/hex_blocks.toml") {
+    // Header: the V3 contact patch test in 3D on 8-node hexahedra, exact to round-off.
+    ContactPatchCase v3;
+    v3.dim = 3;
+    const ContactPatchErrors e = contact_patch_errors(v3, c);
+    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    EXPECT_EQ(c.model->bodies()[0]->mesh.cell_type, CellType::kHex8) << example;
+    EXPECT_EQ(c.model->bodies()[1]->mesh.cell_type, CellType::kHex8) << example;
+    EXPECT_LT(e.displacement, 1e-8) << example;
+    EXPECT_LT(e.pressure, 1e-8) << example;
+  }
   if (example == "cracked_block_2d/cracked_block.toml") {
     // Header: the V3 contact patch test as one body (the same loads and supports), exact to round-off.
     const ContactPatchErrors e = contact_patch_errors(ContactPatchCase{}, c);

@@ -238,7 +238,139 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   return r;
 }
 
+/// x(η) and ∂x/∂η_i (columns of d1) of a quadrilateral facet.
+Eigen::Vector3d quad_point(CellType t, const Eigen::MatrixXd& xf, const double* eta, Eigen::Matrix<double, 3, 2>* d1) {
+  double N[9], dN[18];
+  shape_functions(t, eta, N, dN);
+  Eigen::Vector3d x = Eigen::Vector3d::Zero();
+  if (d1) d1->setZero();
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    x += N[a] * xf.col(a).head<3>();
+    if (d1) {
+      d1->col(0) += dN[2 * a] * xf.col(a).head<3>();
+      d1->col(1) += dN[2 * a + 1] * xf.col(a).head<3>();
+    }
+  }
+  return x;
+}
+
+/// Quadrilateral reference coordinates of the point at parameter t along edge e (from its vertex a to b).
+void quad_edge_point(int e, double t, double* eta) {
+  switch (e) {
+    case 0: eta[0] = t; eta[1] = 0.0; break;
+    case 1: eta[0] = 1.0; eta[1] = t; break;
+    case 2: eta[0] = 1.0 - t; eta[1] = 1.0; break;
+    default: eta[0] = 0.0; eta[1] = 1.0 - t; break;
+  }
+}
+
+bool inside_square(const double* eta) {
+  return eta[0] >= -kInsideTol && eta[1] >= -kInsideTol && eta[0] <= 1 + kInsideTol && eta[1] <= 1 + kInsideTol;
+}
+
+/// Newton on ∇f = 0, f(η) = ½ |x(η) − p|², over the quadrilateral (Gauss–Newton where the Hessian is not
+/// positive definite); `converged` and `local_min` report how it ended.
+Eigen::Vector2d quad_newton(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, bool& converged,
+                            bool& local_min) {
+  Eigen::Vector2d eta(0.5, 0.5);
+  Eigen::Matrix<double, 3, 2> d1, dp, dm;
+  converged = local_min = false;
+  for (int it = 0; it < 40; ++it) {
+    eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
+    const Eigen::Vector3d res = quad_point(type, xf, eta.data(), &d1) - p;
+    const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
+    // Second derivatives by central differences of ∂x/∂η: exact, since ∂x/∂η_i of a bilinear, serendipity or
+    // biquadratic map is at most quadratic in each variable, and central differences are exact on quadratics.
+    Eigen::Matrix2d S;
+    for (int j = 0; j < 2; ++j) {
+      Eigen::Vector2d ep = eta, em = eta;
+      ep[j] += 0.5;
+      em[j] -= 0.5;
+      quad_point(type, xf, ep.data(), &dp);
+      quad_point(type, xf, em.data(), &dm);
+      for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
+    }
+    S = 0.5 * (S + S.transpose());
+    const Eigen::Matrix2d H = d1.transpose() * d1, Hn = H + S;
+    const bool spd = Hn(0, 0) > 0 && Hn.determinant() > 1e-14 * Hn.squaredNorm();
+    const Eigen::Matrix2d& Hs = spd ? Hn : H;
+    if (!(std::abs(Hs.determinant()) > 0)) break;
+    Eigen::Vector2d step = -Hs.inverse() * g;
+    const double len = step.norm();
+    if (len > 0.5) step *= 0.5 / len;
+    eta += step;
+    if (len < 1e-14) {
+      converged = true;
+      local_min = spd;
+      break;
+    }
+    if (it >= 6 && std::min({eta[0], eta[1], 1.0 - eta[0], 1.0 - eta[1]}) < -0.1) break;
+  }
+  return eta;
+}
+
+FacetProjection project_on_quad(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p) {
+  FacetProjection r;
+  r.distance2 = std::numeric_limits<double>::infinity();
+  bool converged = false, local_min = false;
+  const Eigen::Vector2d eta = quad_newton(type, xf, p, converged, local_min);
+  double e[2] = {std::clamp(eta[0], 0.0, 1.0), std::clamp(eta[1], 0.0, 1.0)};
+  const bool inside = converged && inside_square(eta.data());
+  const auto interior = [&] {
+    r.eta[0] = e[0];
+    r.eta[1] = e[1];
+    r.point = quad_point(type, xf, e, nullptr);
+    r.distance2 = (r.point - p).squaredNorm();
+    r.clamped_vertex = r.clamped_edge = -1;
+  };
+  if (inside && local_min) {  // as on a Tri6 (project_on_tri6())
+    interior();
+    return r;
+  }
+  const CellType edge_type = type == CellType::kQuad4 ? CellType::kLine2 : CellType::kLine3;
+  Eigen::MatrixXd xe(xf.rows(), cell_num_nodes(edge_type));
+  for (int k = 0; k < 4; ++k) {
+    xe.col(0) = xf.col(k);
+    xe.col(1) = xf.col((k + 1) % 4);
+    if (edge_type == CellType::kLine3) xe.col(2) = xf.col(4 + k);
+    const FacetProjection q = project_on_line(edge_type, xe, p);
+    if (q.distance2 < r.distance2) {
+      r.distance2 = q.distance2;
+      r.point = q.point;
+      quad_edge_point(k, q.eta[0], r.eta);
+      r.clamped_edge = r.clamped_vertex = -1;
+      if (q.eta[0] <= 0.0) r.clamped_vertex = k;
+      else if (q.eta[0] >= 1.0) r.clamped_vertex = (k + 1) % 4;
+      else r.clamped_edge = k;
+    }
+  }
+  if (inside) {
+    const double d2 = (quad_point(type, xf, e, nullptr) - p).squaredNorm();
+    if (d2 <= r.distance2 * (1 + 1e-14) + 1e-300) interior();
+  }
+  return r;
+}
+
 }  // namespace
+
+int facet_num_edges(CellType t) { return cell_shape(t) == CellShape::kTensor ? 4 : 3; }
+
+const int* facet_edge(CellType t, int e) {
+  static const int quad[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  return cell_shape(t) == CellShape::kTensor ? quad[e] : triangle_edge(e);
+}
+
+bool snap_into_facet(CellType t, double* eta, double tol) {
+  if (cell_shape(t) != CellShape::kTensor) {
+    const bool in = eta[0] >= -tol && eta[1] >= -tol && eta[0] + eta[1] <= 1 + tol;
+    snap_into_triangle(eta);
+    return in;
+  }
+  const bool in = eta[0] >= -tol && eta[1] >= -tol && eta[0] <= 1 + tol && eta[1] <= 1 + tol;
+  eta[0] = std::clamp(eta[0], 0.0, 1.0);
+  eta[1] = std::clamp(eta[1], 0.0, 1.0);
+  return in;
+}
 
 void triangle_edge_point(int e, double t, double* eta) {
   switch (e) {
@@ -254,6 +386,9 @@ FacetProjection project_on_facet(CellType type, const Eigen::MatrixXd& xf, const
     case CellType::kLine3: return project_on_line(type, xf, p);
     case CellType::kTri3: return project_on_tri3(xf, p.head<3>());
     case CellType::kTri6: return project_on_tri6(xf, p.head<3>());
+    case CellType::kQuad4:
+    case CellType::kQuad8:
+    case CellType::kQuad9: return project_on_quad(type, xf, p.head<3>());
     default: break;
   }
   throw std::logic_error("project_on_facet: " + cell_name(type) + " is not a contact facet type");

@@ -77,10 +77,19 @@ BoundingVolumeHierarchy::Box facet_box(CellType type, const Eigen::MatrixXd& xf,
   if (npf > nv) {
     // Edge-midpoint nodes m of edge (a, b): the Bézier control point 2m − (x_a + x_b)/2 bounds the curve.
     static const int line[1][2] = {{0, 1}};
-    static const int tri[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-    for (int e = 0; e < npf - nv; ++e) {
-      const int* ab = nv == 2 ? line[e] : tri[e];
+    const int edges = nv == 2 ? 1 : facet_num_edges(type);
+    for (int e = 0; e < edges; ++e) {
+      const int* ab = nv == 2 ? line[e] : facet_edge(type, e);
       box.extend(pad3(2.0 * xf.col(nv + e) - 0.5 * (xf.col(ab[0]) + xf.col(ab[1]))));
+    }
+    // Quad9: the centre's tensor Bézier control point 4c − Σ edge nodes + ¼ Σ vertices (the 1D map of
+    // the edge nodes applied in both directions). A Quad8 facet is the biquadratic one whose centre is
+    // its own point c = x(½, ½) = ½ Σ edge nodes − ¼ Σ vertices: control point Σ edge nodes − ¾ Σ vertices.
+    if (type == CellType::kQuad8 || type == CellType::kQuad9) {
+      const Eigen::VectorXd edges = xf.col(4) + xf.col(5) + xf.col(6) + xf.col(7);
+      const Eigen::VectorXd vertices = xf.col(0) + xf.col(1) + xf.col(2) + xf.col(3);
+      box.extend(pad3(type == CellType::kQuad9 ? Eigen::VectorXd(4.0 * xf.col(8) - edges + 0.25 * vertices)
+                                               : Eigen::VectorXd(edges - 0.75 * vertices)));
     }
   }
   box.min().array() -= pad;
@@ -129,7 +138,7 @@ Eigen::Vector2d nearest_in_cone(const Eigen::Vector2d& n1, const Eigen::Vector2d
 /// vertex of one (contact_surface.hpp).
 bool past_end(const ContactSurface& s, Index f, const FacetProjection& pr) {
   if (s.dim == 2) return pr.clamped_vertex >= 0 && s.valence[s.facet(f)[pr.clamped_vertex]] <= 1;
-  if (pr.clamped_edge >= 0) return s.boundary_edge[3 * f + pr.clamped_edge] != 0;
+  if (pr.clamped_edge >= 0) return s.boundary_edge[facet_num_edges(s.facet_type) * f + pr.clamped_edge] != 0;
   return pr.clamped_vertex >= 0 && s.boundary_vertex[s.facet(f)[pr.clamped_vertex]] != 0;
 }
 
@@ -230,15 +239,13 @@ bool ray_meets_facet(const MasterGeometry& master, Index f, const Eigen::Vector3
 
 /// Is η in the reference facet (to `tol`)? Clamps it into the facet in any case (near enough to the
 /// nearest point for evaluating normals on the way to a fixed point).
-bool clamp_to_facet(int d, double* eta, double tol) {
-  if (d == 1) {
+bool clamp_to_facet(CellType type, double* eta, double tol) {
+  if (cell_dim(type) == 1) {
     const bool in = eta[0] >= -tol && eta[0] <= 1 + tol;
     eta[0] = std::clamp(eta[0], 0.0, 1.0);
     return in;
   }
-  const bool in = eta[0] >= -tol && eta[1] >= -tol && eta[0] + eta[1] <= 1 + tol;
-  snap_into_triangle(eta);
-  return in;
+  return snap_into_facet(type, eta, tol);
 }
 
 /// The bisector-ray projection (project_to_master(), `ray_normal`): from the closest-point projection in
@@ -271,7 +278,7 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
       double e[2] = {eta[0], eta[1]}, t = theta;
       if (ray_meets_facet(master, f, p, m, e, t)) {
         hit = f;
-        inside = clamp_to_facet(d, e, 1e-10);
+        inside = clamp_to_facet(ms.facet_type, e, 1e-10);
         hit_eta[0] = e[0];
         hit_eta[1] = e[1];
         hit_theta = t;
@@ -286,8 +293,9 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
       segment.max().array() += pad;
       master.tree.for_each_overlap(segment, [&](int k) {
         if (k == f) return;
-        double e[2] = {d == 1 ? 0.5 : 1.0 / 3.0, 1.0 / 3.0}, t = theta;
-        if (!ray_meets_facet(master, k, p, m, e, t) || !clamp_to_facet(d, e, 1e-10)) return;
+        const double start = cell_shape(ms.facet_type) == CellShape::kTensor ? 0.5 : 1.0 / 3.0;
+        double e[2] = {d == 1 ? 0.5 : start, start}, t = theta;
+        if (!ray_meets_facet(master, k, p, m, e, t) || !clamp_to_facet(ms.facet_type, e, 1e-10)) return;
         if (pad3(facet_normal(ms.facet_type, facet_nodes(ms, master.x, k), e)).dot(slave_normal) >= 0) return;
         if (inside && std::abs(t) >= std::abs(hit_theta)) return;
         hit = k;
@@ -413,8 +421,9 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
 std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const Eigen::MatrixXd& xs,
                                             const MasterGeometry& master, const ContactSearchOptions& options) {
   const int npf = slave.nodes_per_facet();
-  // Degree 2·order + 1 per clip triangle (exact for the flat-interface integrand θ φ, of degree
-  // 2·order in ξ), unless gauss_points is given: 2·gauss_points − 1 as on segments.
+  // Degree 2·order + 1 per clip triangle (exact for the flat-interface integrand θ φ: θ linear in ξ,
+  // φ of degree order on a triangle, 2·order on a parallelogram), unless gauss_points is given:
+  // 2·gauss_points − 1 as on segments.
   const int degree = options.gauss_points > 0 ? 2 * options.gauss_points - 1 : 2 * cell_order(slave.facet_type) + 1;
   const QuadratureRule rule = simplex_quadrature(2, degree);
   std::vector<ContactPoint> points, facet_points;
@@ -455,20 +464,83 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
 
 }  // namespace
 
+namespace {
+
+/// The auxiliary plane of a slave facet (current vertices) and the map from it to the facet's reference
+/// coordinates: affine through the vertex triangle (Tri3, Tri6), or the inverse of the bilinear map of
+/// the vertex quadrilateral projected on the plane (Quad4, Quad9), by Newton's method.
+struct AuxiliaryPlane {
+  CellType type;
+  Eigen::Vector3d x0, e1, e2, n0;  ///< origin, in-plane directions, unit normal
+  Eigen::Matrix2d Ginv;            ///< inverse Gram matrix of e1, e2
+  Eigen::Vector2d corner[4];       ///< quadrilaterals: the projected vertices in (e1, e2) coordinates
+
+  /// False when the facet is degenerate (no plane).
+  bool build(CellType t, const Eigen::MatrixXd& xf) {
+    type = t;
+    x0 = xf.col(0);
+    if (cell_shape(t) == CellShape::kTensor) {
+      // The diagonals' cross product: the plane's normal of a warped quadrilateral as of a flat one.
+      e1 = xf.col(1) - x0;
+      e2 = xf.col(3) - x0;
+      n0 = Eigen::Vector3d(xf.col(2) - x0).cross(Eigen::Vector3d(xf.col(3) - xf.col(1)));
+    } else {
+      e1 = xf.col(1) - x0;
+      e2 = xf.col(2) - x0;
+      n0 = e1.cross(e2);
+    }
+    if (!(n0.norm() > 0)) return false;
+    n0.normalize();
+    Eigen::Matrix2d G;
+    G << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
+    if (!(std::abs(G.determinant()) > 0)) return false;
+    Ginv = G.inverse();
+    if (cell_shape(t) == CellShape::kTensor)
+      for (int a = 0; a < 4; ++a) corner[a] = plane(xf.col(a));
+    return true;
+  }
+  /// Coordinates in (e1, e2) of y projected along n0 (the n0 component drops out of the normal equations).
+  Eigen::Vector2d plane(const Eigen::Vector3d& y) const { return Ginv * Eigen::Vector2d((y - x0).dot(e1), (y - x0).dot(e2)); }
+  /// The facet's reference coordinates of y projected along n0.
+  Eigen::Vector2d reference(const Eigen::Vector3d& y) const {
+    const Eigen::Vector2d q = plane(y);
+    if (cell_shape(type) != CellShape::kTensor) return q;
+    Eigen::Vector2d xi(0.5, 0.5);
+    for (int it = 0; it < 30; ++it) {
+      double N[4], dN[8];
+      shape_functions(CellType::kQuad4, xi.data(), N, dN);
+      Eigen::Vector2d r = -q;
+      Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+      for (int a = 0; a < 4; ++a) {
+        r += N[a] * corner[a];
+        J.col(0) += dN[2 * a] * corner[a];
+        J.col(1) += dN[2 * a + 1] * corner[a];
+      }
+      const Eigen::Vector2d step = J.partialPivLu().solve(r);
+      if (!step.allFinite()) break;
+      xi -= step;
+      if (step.norm() < 1e-15) break;
+    }
+    return xi;
+  }
+};
+
+}  // namespace
+
 std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::MatrixXd& xs, Index f,
                                      const MasterGeometry& master, double search) {
   std::vector<MortarCell> cells;
   const ContactSurface& ms = *master.surface;
   const Eigen::MatrixXd xf = facet_nodes(slave, xs, f);
-  // The slave facet's vertex triangle: origin x0, edges e1, e2, unit normal n0 (the auxiliary plane).
-  const Eigen::Vector3d x0 = xf.col(0), e1 = xf.col(1) - x0, e2 = xf.col(2) - x0;
-  Eigen::Vector3d n0 = e1.cross(e2);
-  if (!(n0.norm() > 0)) return cells;
-  n0.normalize();
-  Eigen::Matrix2d G;
-  G << e1.dot(e1), e1.dot(e2), e1.dot(e2), e2.dot(e2);
-  const Eigen::Matrix2d Ginv = G.inverse();
-  const Polygon2 reference = {Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1)};
+  // The slave facet's auxiliary plane: origin, in-plane edges, unit normal n0.
+  AuxiliaryPlane aux;
+  if (!aux.build(slave.facet_type, xf)) return cells;
+  const Eigen::Vector3d& n0 = aux.n0;
+  const bool square = cell_shape(slave.facet_type) == CellShape::kTensor;
+  const Polygon2 reference = square ? Polygon2{Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(1, 1),
+                                               Eigen::Vector2d(0, 1)}
+                                    : Polygon2{Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1)};
+  const int master_vertices = cell_num_vertices(ms.facet_type);
   // The query: the box of the prism swept by the slave facet along ±search n0, i.e. the facet's box
   // padded by search |n0_i| along axis i — not by search in every direction. A master facet that can
   // give a cell within n0-distance `search` lies in that prism; padding the box by `search` laterally
@@ -480,12 +552,15 @@ std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::M
   query.max() += reach;
   master.tree.for_each_overlap(query, [&](int mf) {
     const Index* mn = ms.facet(mf);
-    const Eigen::Vector3d y0 = master.x.col(mn[0]), y1 = master.x.col(mn[1]), y2 = master.x.col(mn[2]);
-    if ((y1 - y0).cross(y2 - y0).dot(n0) >= 0) return;  // not facing the slave facet
-    // Master vertices projected along n0 onto the auxiliary plane, in the slave's reference coordinates
-    // (the component along n0 is orthogonal to e1, e2, so it drops out of the normal equations).
+    Eigen::Vector3d y[4];
+    for (int a = 0; a < master_vertices; ++a) y[a] = master.x.col(mn[a]);
+    // Facing: the master's normal (its diagonals' cross product for a quadrilateral) against n0.
+    const Eigen::Vector3d nm = master_vertices == 4 ? Eigen::Vector3d((y[2] - y[0]).cross(y[3] - y[1]))
+                                                    : Eigen::Vector3d((y[1] - y[0]).cross(y[2] - y[0]));
+    if (nm.dot(n0) >= 0) return;  // not facing the slave facet
+    // Master vertices projected along n0 onto the auxiliary plane, in the slave's reference coordinates.
     Polygon2 poly;
-    for (const Eigen::Vector3d& y : {y0, y1, y2}) poly.push_back(Ginv * Eigen::Vector2d((y - x0).dot(e1), (y - x0).dot(e2)));
+    for (int a = 0; a < master_vertices; ++a) poly.push_back(aux.reference(y[a]));
     const double area = polygon_area(poly);
     if (std::abs(area) < 1e-14) return;
     if (area < 0) std::reverse(poly.begin(), poly.end());
@@ -513,7 +588,7 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
     gauss_legendre_01(default_gauss(slave, options), r.points, r.weights);
     return r;
   }()
-                                     : simplex_quadrature(d, 2 * default_gauss(slave, options) - 1);
+                                     : cell_quadrature(slave.facet_type, 2 * default_gauss(slave, options) - 1);
   std::vector<ContactPoint> points, facet_points;
   std::vector<double> N(npf);
   for (Index f = 0; f < slave.num_facets(); ++f) {

@@ -30,31 +30,35 @@ Eigen::VectorXd facet_normal(CellType type, const Eigen::MatrixXd& xf, const dou
   return t0.cross(t1);
 }
 
+bool has_modified_test_basis(CellType t) { return t == CellType::kTri6 || t == CellType::kQuad8; }
+
 void test_functions(CellType type, const double* xi, double* phi) {
   shape_functions(type, xi, phi, nullptr);
-  if (type != CellType::kTri6) return;
+  if (!has_modified_test_basis(type)) return;
   constexpr double c = kModifiedTri6Coefficient;
-  for (int e = 0; e < 3; ++e) {
-    const int* ab = triangle_edge(e);
-    phi[ab[0]] += c * phi[3 + e];
-    phi[ab[1]] += c * phi[3 + e];
-    phi[3 + e] *= 1.0 - 2.0 * c;
+  const int nv = cell_num_vertices(type);  // edge e's node is nv + e
+  for (int e = 0; e < facet_num_edges(type); ++e) {
+    const int* ab = facet_edge(type, e);
+    phi[ab[0]] += c * phi[nv + e];
+    phi[ab[1]] += c * phi[nv + e];
+    phi[nv + e] *= 1.0 - 2.0 * c;
   }
 }
 
 Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd& F) {
-  if (s.facet_type != CellType::kTri6) return F;
+  if (!has_modified_test_basis(s.facet_type)) return F;
   constexpr double c = kModifiedTri6Coefficient;
+  const int nv = cell_num_vertices(s.facet_type);
   Eigen::MatrixXd out = F;
   // Every edge node once: it belongs to one or two facets, with the same two vertices.
   std::vector<char> done(s.num_nodes(), 0);
   for (Index f = 0; f < s.num_facets(); ++f)
-    for (int e = 0; e < 3; ++e) {
-      const Index m = s.facet(f)[3 + e];
+    for (int e = 0; e < facet_num_edges(s.facet_type); ++e) {
+      const Index m = s.facet(f)[nv + e];
       if (done[m]) continue;
       done[m] = 1;
-      out.col(s.facet(f)[triangle_edge(e)[0]]) += c * F.col(m);
-      out.col(s.facet(f)[triangle_edge(e)[1]]) += c * F.col(m);
+      out.col(s.facet(f)[facet_edge(s.facet_type, e)[0]]) += c * F.col(m);
+      out.col(s.facet(f)[facet_edge(s.facet_type, e)[1]]) += c * F.col(m);
       out.col(m) = (1.0 - 2.0 * c) * F.col(m);
     }
   return out;
@@ -113,21 +117,22 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   }
   if (s.dim == 3) {
     // Border edges: edges held by a single facet.
+    const int ne = facet_num_edges(s.facet_type);
     std::map<std::pair<Index, Index>, int> count;
     auto key = [&](Index f, int e) {
-      const Index a = s.facet(f)[triangle_edge(e)[0]], b = s.facet(f)[triangle_edge(e)[1]];
+      const Index a = s.facet(f)[facet_edge(s.facet_type, e)[0]], b = s.facet(f)[facet_edge(s.facet_type, e)[1]];
       return std::make_pair(std::min(a, b), std::max(a, b));
     };
     for (Index f = 0; f < s.num_facets(); ++f)
-      for (int e = 0; e < 3; ++e) ++count[key(f, e)];
-    s.boundary_edge.assign(3 * s.num_facets(), 0);
+      for (int e = 0; e < ne; ++e) ++count[key(f, e)];
+    s.boundary_edge.assign(ne * s.num_facets(), 0);
     s.boundary_vertex.assign(s.num_nodes(), 0);
     for (Index f = 0; f < s.num_facets(); ++f)
-      for (int e = 0; e < 3; ++e)
+      for (int e = 0; e < ne; ++e)
         if (count[key(f, e)] == 1) {
-          s.boundary_edge[3 * f + e] = 1;
-          s.boundary_vertex[s.facet(f)[triangle_edge(e)[0]]] = 1;
-          s.boundary_vertex[s.facet(f)[triangle_edge(e)[1]]] = 1;
+          s.boundary_edge[ne * f + e] = 1;
+          s.boundary_vertex[s.facet(f)[facet_edge(s.facet_type, e)[0]]] = 1;
+          s.boundary_vertex[s.facet(f)[facet_edge(s.facet_type, e)[1]]] = 1;
         }
   }
   s.nodal_area = lumped_areas(s, s.X);
@@ -139,7 +144,7 @@ Eigen::VectorXd lumped_areas(const ContactSurface& s, const Eigen::MatrixXd& x) 
   // A rule exact for the (polynomial, straight-facet) integrand.
   const int npf = s.nodes_per_facet();
   Eigen::VectorXd area = Eigen::VectorXd::Zero(s.num_nodes());
-  const QuadratureRule rule = simplex_quadrature(s.dim - 1, 2 * cell_order(s.facet_type) + 1);
+  const QuadratureRule rule = cell_quadrature(s.facet_type, 2 * cell_order(s.facet_type) + 1);
   Eigen::MatrixXd xf(s.dim, npf);
   std::vector<double> N(npf);
   for (Index f = 0; f < s.num_facets(); ++f) {

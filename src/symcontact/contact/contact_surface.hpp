@@ -5,7 +5,7 @@
 ///
 /// Layout: surface node k is node `nodes[k]` of its body; `facets` holds num_facets × npf surface-node
 /// indices, each facet oriented so that its normal points out of the body (Mesh::locate_facets()).
-/// 2D facets are Line2/Line3, 3D facets Tri3/Tri6.
+/// 2D facets are Line2/Line3, 3D facets Tri3/Tri6 or Quad4/Quad8/Quad9 (the faces of Hex8/Hex20/Hex27 cells).
 
 #include <string>
 #include <vector>
@@ -35,7 +35,8 @@ struct ContactSurface {
   /// instead: each facet keeps its own normal up to the corner, and a point whose closest point is the
   /// corner itself takes the normal of the normal cone nearest to the opposite surface's (contact_points.hpp).
   std::vector<char> corner;
-  /// 3D only (empty in 2D): num_facets × 3 flags, 1 when edge e of facet f (closest_point.hpp numbering)
+  /// 3D only (empty in 2D): num_facets × facet_num_edges() flags, 1 when edge e of facet f (closest_point.hpp
+  /// numbering)
   /// belongs to no other facet of the surface. Such edges form the border of the surface, the 3D
   /// analogue of the 2D ends: a projection clamped onto a border edge, or onto a vertex of one, is past
   /// the end of the surface and finds no contact (boundary_vertex).
@@ -43,7 +44,7 @@ struct ContactSurface {
   /// 3D only (empty in 2D): 1 for the surface nodes that are vertices of a border edge.
   std::vector<char> boundary_vertex;
   /// ∫_Γ φ_k dS in the reference configuration (lumped area), φ_k the test functions of the gap
-  /// constraints (test_functions(): the shape functions, except on Tri6 facets).
+  /// constraints (test_functions(): the shape functions, except on Tri6 and Quad8 facets).
   Eigen::VectorXd nodal_area;
   /// Mean facet_size() of the facets that contain each surface node (reference configuration).
   Eigen::VectorXd nodal_size;
@@ -89,13 +90,19 @@ Eigen::MatrixXd nodal_normals(const ContactSurface& s, const Eigen::MatrixXd& x)
 /// For any c it still sums to one and is still quadratic; on a flat facet of area A it integrates to
 /// ∫ φ_v = 2cA/3 = 2A/15 and ∫ φ_e = (1 − 2c)A/3 = A/5, all positive for 0 < c < 1/2 (checked in
 /// tests/unit/contact/test_contact_surface.cpp). Geometry and displacements keep the standard N.
+/// Quad8 (serendipity) facets have the same defect, worse: their vertex functions integrate to −A/12 on a
+/// flat facet; the same modification with the same c, each vertex between its two edges, gives
+/// ∫ φ_v = −A/12 + 2cA/3 = A/20 and ∫ φ_e = (1 − 2c)A/3 = A/5.
 void test_functions(CellType type, const double* xi, double* phi);
 
-/// The coefficient c of the modified Tri6 test basis (test_functions()).
+/// Whether test_functions() modifies the shape functions of facets of type t (Tri6, Quad8).
+bool has_modified_test_basis(CellType t);
+
+/// The coefficient c of the modified Tri6 and Quad8 test basis (test_functions()).
 constexpr double kModifiedTri6Coefficient = 0.2;
 
 /// Nodal forces F (dim × n, F_k = ∫ t N_k dS for a traction t) turned into the test basis:
-/// (T F)_i = ∫ t φ_i dS, with φ_i = Σ_k T_ik N_k (test_functions()). The identity except on Tri6 surfaces,
+/// (T F)_i = ∫ t φ_i dS, with φ_i = Σ_k T_ik N_k (test_functions()). The identity except on Tri6 and Quad8 surfaces,
 /// where (T F)_v = F_v + c Σ_{edge nodes e next to v} F_e and (T F)_e = (1 − 2c) F_e. Dividing by the lumped
 /// area nodal_area[i] = ∫ φ_i dS then gives back a uniform traction exactly.
 Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd& F);

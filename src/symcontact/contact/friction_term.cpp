@@ -47,7 +47,7 @@ void add_scaled(std::vector<std::pair<Index, double>>& into, const std::vector<s
   }
 }
 
-/// Nodal points on a Tri6 slave: the maps of the slip's coefficients in the test basis (the header),
+/// Nodal points on a Tri6 or Quad8 slave: the maps of the slip's coefficients in the test basis (the header),
 ///   B̃_v = B_v,   B̃_e = (B_e − c (B_v1 + B_v2)) / (1 − 2c).
 /// A vertex without a point of its own (it projects onto nothing) enters with its slave displacement
 /// against the master's at the edge node's projection: slave part δ_v, master part that of B_e.
@@ -58,16 +58,17 @@ std::vector<SlipColumns> test_basis_columns(const ContactSurface& slave, const D
   std::vector<Index> point_of(slave.num_nodes(), -1);
   for (std::size_t q = 0; q < points.size(); ++q) point_of[points[q].slave_node] = static_cast<Index>(q);
   std::vector<SlipColumns> out = nodal;
+  const int nv = cell_num_vertices(slave.facet_type), npf = slave.nodes_per_facet();
   for (std::size_t q = 0; q < points.size(); ++q) {
     const Index* facet = slave.facet(points[q].slave_facet);
-    const int a = static_cast<int>(std::find(facet, facet + 6, points[q].slave_node) - facet);
-    if (a < 3) continue;  // a vertex: s̃_v = s_v
+    const int a = static_cast<int>(std::find(facet, facet + npf, points[q].slave_node) - facet);
+    if (a < nv) continue;  // a vertex: s̃_v = s_v
     SlipColumns& e = out[q];
     for (std::pair<Index, double>& entry : e.slave) entry.second = entry.second / (1.0 - 2.0 * c);
     for (std::pair<Index, double>& entry : e.master) entry.second = entry.second / (1.0 - 2.0 * c);
     const double w = -c / (1.0 - 2.0 * c);
     for (int end = 0; end < 2; ++end) {
-      const Index v = facet[triangle_edge(a - 3)[end]];
+      const Index v = facet[facet_edge(slave.facet_type, a - nv)[end]];
       if (point_of[v] >= 0) {
         add_scaled(e.slave, nodal[point_of[v]].slave, w);
         add_scaled(e.master, nodal[point_of[v]].master, w);
@@ -92,7 +93,7 @@ FrictionTerm::FrictionTerm(std::string name, const ContactSurface& slave, const 
   for (const ContactPoint& p : points_) columns.push_back(point_columns(slave, master, dofs, p));
   const bool nodal = !points_.empty() && std::all_of(points_.begin(), points_.end(),
                                                      [](const ContactPoint& p) { return p.slave_node >= 0; });
-  if (nodal && slave.facet_type == CellType::kTri6) columns = test_basis_columns(slave, dofs, points_, columns);
+  if (nodal && has_modified_test_basis(slave.facet_type)) columns = test_basis_columns(slave, dofs, points_, columns);
   local_.reserve(points_.size());
   for (std::size_t q = 0; q < points_.size(); ++q) {
     const ContactPoint& p = points_[q];

@@ -11,6 +11,7 @@
 #include "symcontact/contact/closest_point.hpp"
 #include "symcontact/contact/contact_points.hpp"
 #include "symcontact/contact/contact_surface.hpp"
+#include "symcontact/fem/shape_functions.hpp"
 
 namespace symcontact {
 
@@ -81,25 +82,24 @@ struct FacetSearch {
   }
 };
 
-using FacetKey = std::array<Index, 3>;  ///< sorted vertex indices of a cell facet (−1 last in 2D)
-struct FacetKeyHash {
-  std::size_t operator()(const FacetKey& k) const {
-    std::size_t h = 1469598103934665603ull;
-    for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
-    return h;
-  }
-};
 using FacetSet = std::unordered_set<FacetKey, FacetKeyHash>;
 
-/// The vertex facet of cell c opposite its vertex a.
+/// The vertex facet of cell c number f (cell_facet_nodes()).
+FacetKey cell_facet_key(const Mesh& m, Index c, int f) {
+  const int* loc = cell_facet_nodes(m.cell_type, f);
+  const int nfv = cell_num_vertices(facet_type(m.cell_type));
+  Index v[4];
+  for (int i = 0; i < nfv; ++i) v[i] = m.cell(c)[loc[i]];
+  return facet_key(v, nfv);
+}
+
+/// The vertex facet of simplex c opposite its vertex a.
 FacetKey opposite_facet(const Mesh& m, Index c, int a) {
-  FacetKey k{-1, -1, -1};
+  Index v[3];
   int n = 0;
   for (int b = 0; b <= m.dim; ++b)
-    if (b != a) k[n++] = m.cell(c)[b];
-  for (int i = 1; i < m.dim; ++i)  // insertion sort of at most three entries
-    for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
-  return k;
+    if (b != a) v[n++] = m.cell(c)[b];
+  return facet_key(v, m.dim);
 }
 
 /// The cells of a body at node positions X + u, with a hierarchy for point location.
@@ -120,34 +120,79 @@ struct CellSearch {
     bvh.build(boxes);
     FacetSet seen;
     for (Index c = 0; c < m.num_cells(); ++c)
-      for (int a = 0; a <= m.dim; ++a) {
-        const FacetKey k = opposite_facet(m, c, a);
+      for (int f = 0; f < cell_num_facets(m.cell_type); ++f) {
+        const FacetKey k = cell_facet_key(m, c, f);
         if (!seen.insert(k).second) boundary.erase(k);
         else boundary.insert(k);
       }
   }
 
-  /// Whether p lies inside the body: in the closed vertex simplex of some cell (barycentric coordinates
-  /// ≥ −1e-9) and on none of that cell's facets that lie on the body's boundary (a point on a facet or
-  /// edge shared by cells is inside; one on the boundary touches the body, it is not in it).
+  /// Whether p lies inside the body: in the closed vertex cell of some cell (the simplex of its vertices,
+  /// barycentric coordinates ≥ −1e-9; the bilinear or trilinear cell of the vertices of a quadrilateral
+  /// or hexahedron, reference coordinates in [−1e-9, 1 + 1e-9]) and on none of that cell's facets that
+  /// lie on the body's boundary (a point on a facet or edge shared by cells is inside; one on the
+  /// boundary touches the body, it is not in it).
   bool contains(const Eigen::Vector3d& p) const {
-    const int D = mesh->dim;
-    constexpr double eps = 1e-9;
     bool found = false;
     bvh.for_each_overlap(Box(p, p), [&](int c) {
-      if (found) return;
-      const Index* n = mesh->cell(c);
-      Eigen::MatrixXd J(D, D);
-      for (int i = 0; i < D; ++i) J.col(i) = x.col(n[i + 1]) - x.col(n[0]);
-      const Eigen::VectorXd l = J.partialPivLu().solve(p.head(D) - x.col(n[0]));
-      Eigen::VectorXd lambda(D + 1);  // barycentric coordinates of vertices 0..D
-      lambda << 1.0 - l.sum(), l;
-      if (lambda.minCoeff() < -eps) return;
-      for (int a = 0; a <= D; ++a)
-        if (lambda[a] <= eps && boundary.count(opposite_facet(*mesh, c, a))) return;
-      found = true;
+      if (!found) found = cell_shape(mesh->cell_type) == CellShape::kTensor ? in_tensor_cell(c, p) : in_simplex(c, p);
     });
     return found;
+  }
+
+ private:
+  static constexpr double eps = 1e-9;
+
+  bool in_simplex(Index c, const Eigen::Vector3d& p) const {
+    const int D = mesh->dim;
+    const Index* n = mesh->cell(c);
+    Eigen::MatrixXd J(D, D);
+    for (int i = 0; i < D; ++i) J.col(i) = x.col(n[i + 1]) - x.col(n[0]);
+    const Eigen::VectorXd l = J.partialPivLu().solve(p.head(D) - x.col(n[0]));
+    Eigen::VectorXd lambda(D + 1);  // barycentric coordinates of vertices 0..D
+    lambda << 1.0 - l.sum(), l;
+    if (lambda.minCoeff() < -eps) return false;
+    for (int a = 0; a <= D; ++a)
+      if (lambda[a] <= eps && boundary.count(opposite_facet(*mesh, c, a))) return false;
+    return true;
+  }
+
+  /// Reference coordinates ξ of p in the multilinear cell of c's vertices by Newton's method
+  /// (x(ξ) = Σ X_a N_a(ξ) over Quad4 or Hex8 shape functions); then the test of contains(). The facets
+  /// of a Quad4 or Hex8 on which ξ_i = 0 or 1 are found from the vertices' reference coordinates.
+  bool in_tensor_cell(Index c, const Eigen::Vector3d& p) const {
+    const int D = mesh->dim, nv = 1 << D;
+    const CellType linear = D == 2 ? CellType::kQuad4 : CellType::kHex8;
+    const Index* n = mesh->cell(c);
+    Eigen::VectorXd xi = Eigen::VectorXd::Constant(D, 0.5);
+    double N[8], dN[24];
+    for (int it = 0; it < 30; ++it) {
+      shape_functions(linear, xi.data(), N, dN);
+      Eigen::VectorXd r = -p.head(D);
+      Eigen::MatrixXd J = Eigen::MatrixXd::Zero(D, D);
+      for (int a = 0; a < nv; ++a) {
+        r += N[a] * x.col(n[a]);
+        for (int i = 0; i < D; ++i) J.col(i) += dN[a * D + i] * x.col(n[a]);
+      }
+      const Eigen::VectorXd step = J.partialPivLu().solve(r);
+      if (!step.allFinite()) return false;
+      xi -= step;
+      if (step.norm() < 1e-13 || xi.cwiseAbs().maxCoeff() > 1e3) break;
+    }
+    if (xi.minCoeff() < -eps || xi.maxCoeff() > 1.0 + eps) return false;
+    const std::vector<double> ref = reference_nodes(linear);
+    for (int f = 0; f < cell_num_facets(mesh->cell_type); ++f) {
+      // The axis and side of facet f: those all its vertices share.
+      const int* loc = cell_facet_nodes(mesh->cell_type, f);
+      for (int i = 0; i < D; ++i) {
+        bool on = true;
+        for (int k = 1; k < nv / 2; ++k) on = on && ref[loc[k] * D + i] == ref[loc[0] * D + i];
+        if (!on) continue;
+        const double dist = ref[loc[0] * D + i] == 0.0 ? xi[i] : 1.0 - xi[i];
+        if (dist <= eps && boundary.count(cell_facet_key(*mesh, c, f))) return false;
+      }
+    }
+    return true;
   }
 };
 

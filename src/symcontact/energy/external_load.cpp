@@ -10,7 +10,7 @@ namespace symcontact {
 VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const BodyForceFn& b, int degree) {
   const int D = mesh.dim, NN = mesh.nodes_per_cell();
   const Tabulation tab =
-      tabulate(mesh.cell_type, simplex_quadrature(D, degree + cell_order(mesh.cell_type)));
+      tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, degree + cell_order(mesh.cell_type)));
   VectorXd f = VectorXd::Zero(dofs.num_dofs());
   Eigen::MatrixXd X(D, NN);
   double bx[3], xq[3];
@@ -63,7 +63,7 @@ VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, co
   const int D = mesh.dim;
   const CellType ft = mesh.facet_cell_type();
   const int NN = cell_num_nodes(ft);
-  const Tabulation tab = tabulate(ft, simplex_quadrature(D - 1, degree + cell_order(ft)));
+  const Tabulation tab = tabulate(ft, cell_quadrature(ft, degree + cell_order(ft)));
   VectorXd f = VectorXd::Zero(dofs.num_dofs());
   Eigen::MatrixXd X(D, NN);
   double x[3], nrm[3], tv[3], dS;
@@ -86,7 +86,7 @@ double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::Vec
   const int D = mesh.dim;
   const CellType ft = mesh.facet_cell_type();
   const int NN = cell_num_nodes(ft);
-  const Tabulation tab = tabulate(ft, simplex_quadrature(D - 1, degree + cell_order(ft)));
+  const Tabulation tab = tabulate(ft, cell_quadrature(ft, degree + cell_order(ft)));
   Eigen::MatrixXd X(D, NN);
   double x[3], nrm[3], dS, m = 0.0;
   if (normal_integral) normal_integral->setZero(D);

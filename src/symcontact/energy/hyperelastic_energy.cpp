@@ -74,8 +74,7 @@ HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int
   if (mesh.dim != 2 && mesh.dim != 3)
     throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
   // Same rule as LinearElasticEnergy (see the header for why).
-  const int order = cell_order(mesh.cell_type);
-  tab_ = tabulate(mesh.cell_type, simplex_quadrature(mesh.dim, order == 1 ? 0 : 3));
+  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type)));
   // Validates every reference cell once (at u = 0, F = I everywhere).
   for_each_cell<0>(VectorXd::Zero(offset_ + dofs.num_body_dofs(body)), [](const Index*, double, const auto&,
                                                                           const auto&) {});

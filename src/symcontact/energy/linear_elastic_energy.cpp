@@ -22,9 +22,7 @@ LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, i
       label_(std::move(label)) {
   assert(!materials_.empty());
   assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
-  // Degree 2(p−1) integrates the straight-element integrand exactly; P2 gets 3 for curved cells.
-  const int order = cell_order(mesh.cell_type);
-  tab_ = tabulate(mesh.cell_type, simplex_quadrature(mesh.dim, order == 1 ? 0 : 3));
+  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type)));
   for_each_cell([](Index, const Index*, const auto&) {});  // validates every cell once
 }
 

@@ -21,6 +21,12 @@ decltype(auto) dispatch_cell(CellType t, F&& f) {
     case CellType::kTri6: return f(integral_constant<int, 2>{}, integral_constant<int, 6>{});
     case CellType::kTet4: return f(integral_constant<int, 3>{}, integral_constant<int, 4>{});
     case CellType::kTet10: return f(integral_constant<int, 3>{}, integral_constant<int, 10>{});
+    case CellType::kQuad4: return f(integral_constant<int, 2>{}, integral_constant<int, 4>{});
+    case CellType::kQuad8: return f(integral_constant<int, 2>{}, integral_constant<int, 8>{});
+    case CellType::kQuad9: return f(integral_constant<int, 2>{}, integral_constant<int, 9>{});
+    case CellType::kHex8: return f(integral_constant<int, 3>{}, integral_constant<int, 8>{});
+    case CellType::kHex20: return f(integral_constant<int, 3>{}, integral_constant<int, 20>{});
+    case CellType::kHex27: return f(integral_constant<int, 3>{}, integral_constant<int, 27>{});
     default: break;
   }
   throw std::logic_error("dispatch_cell: unsupported cell type " + cell_name(t));

@@ -10,7 +10,7 @@ namespace symcontact {
 ErrorNorms compute_errors(const Mesh& mesh, const DofMap& dofs, int body, const VectorXd& u,
                           const VectorField& exact, const GradientField& exact_gradient) {
   const int D = mesh.dim, NN = mesh.nodes_per_cell();
-  const Tabulation tab = tabulate(mesh.cell_type, simplex_quadrature(D, 2 * cell_order(mesh.cell_type) + 4));
+  const Tabulation tab = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, 2 * cell_order(mesh.cell_type) + 4));
   Eigen::MatrixXd X(D, NN), U(D, NN);
   double ue[3], ge[9];
   ErrorNorms e;

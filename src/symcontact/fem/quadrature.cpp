@@ -1,5 +1,6 @@
 #include "symcontact/fem/quadrature.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -109,6 +110,35 @@ QuadratureRule simplex_quadrature(int dim, int degree) {
     default:
       throw std::invalid_argument("simplex_quadrature: dimension must be 0..3");
   }
+}
+
+QuadratureRule tensor_quadrature(int dim, int degree) {
+  std::vector<double> x, w;
+  gauss_legendre_01(std::max(degree, 0) / 2 + 1, x, w);
+  const int n = static_cast<int>(x.size());
+  int total = 1;
+  for (int i = 0; i < dim; ++i) total *= n;
+  QuadratureRule r;
+  r.dim = dim;
+  for (int q = 0; q < total; ++q) {
+    double weight = 1.0;
+    for (int i = 0, rest = q; i < dim; ++i, rest /= n) {  // ξ_0 fastest
+      r.points.push_back(x[rest % n]);
+      weight *= w[rest % n];
+    }
+    r.weights.push_back(weight);
+  }
+  return r;
+}
+
+QuadratureRule cell_quadrature(CellType t, int degree) {
+  return cell_shape(t) == CellShape::kTensor ? tensor_quadrature(cell_dim(t), degree)
+                                             : simplex_quadrature(cell_dim(t), degree);
+}
+
+int stiffness_quadrature_degree(CellType t) {
+  if (cell_shape(t) == CellShape::kTensor) return 2 * cell_order(t);
+  return cell_order(t) == 1 ? 0 : 3;
 }
 
 }  // namespace symcontact

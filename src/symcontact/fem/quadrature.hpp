@@ -1,15 +1,18 @@
 #pragma once
 /// \file quadrature.hpp
-/// Quadrature rules on the reference simplices:
+/// Quadrature rules on the reference simplices and cubes:
 ///  - line  [0, 1],
 ///  - triangle {ξ, η ≥ 0, ξ + η ≤ 1} (area 1/2),
-///  - tetrahedron {ξ, η, ζ ≥ 0, ξ + η + ζ ≤ 1} (volume 1/6).
+///  - tetrahedron {ξ, η, ζ ≥ 0, ξ + η + ζ ≤ 1} (volume 1/6),
+///  - square [0, 1]² and cube [0, 1]³ (measure 1): Gauss–Legendre tensor products.
 /// Weights sum to the reference measure. Low degrees use the classical symmetric rules (1-point,
 /// 3-point edge-interior, 4-point Keast); higher degrees use collapsed (Duffy) Gauss–Legendre
 /// products, which have positive weights and are exact for any requested total degree
 /// (Stroud, "Approximate calculation of multiple integrals", 1971, §2.4).
 
 #include <vector>
+
+#include "symcontact/mesh/cell_type.hpp"
 
 namespace symcontact {
 
@@ -23,6 +26,20 @@ struct QuadratureRule {
 
 /// A rule on the reference simplex of dimension `dim` exact for polynomials of total degree ≤ `degree`.
 QuadratureRule simplex_quadrature(int dim, int degree);
+
+/// A Gauss–Legendre tensor-product rule on [0, 1]^dim exact for polynomials of degree ≤ `degree` in
+/// each variable separately (degree / 2 + 1 points per direction).
+QuadratureRule tensor_quadrature(int dim, int degree);
+
+/// The rule on the reference cell of `t`: simplex_quadrature() for a simplex, tensor_quadrature() for a
+/// quadrilateral or hexahedron (whose Q_p shape functions have degree p in each variable).
+QuadratureRule cell_quadrature(CellType t, int degree);
+
+/// The degree of the rule that integrates stiffness and elastic energy over a cell of type t: 2(p − 1) for
+/// straight simplices, exact for their polynomial integrand; 3 for P2, whose cells may be curved; 2p per
+/// variable for quadrilaterals and hexahedra (p + 1 Gauss points per direction, full integration,
+/// exact for parallelogram and parallelepiped cells; Hughes, "The finite element method", 2000, §3.8).
+int stiffness_quadrature_degree(CellType t);
 
 /// n-point Gauss–Legendre nodes and weights on [0, 1] (exact to degree 2n − 1).
 void gauss_legendre_01(int n, std::vector<double>& x, std::vector<double>& w);

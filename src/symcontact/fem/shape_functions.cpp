@@ -1,5 +1,6 @@
 #include "symcontact/fem/shape_functions.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace symcontact {
@@ -9,9 +10,87 @@ namespace {
 const int kLineEdges[1][2] = {{0, 1}};
 const int kTriEdges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
 const int kTetEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+
+/// 1D Lagrange polynomial on [0, 1] of order p through the node at c ∈ {−1, 0, 1} (ξ = 0, ½, 1): value
+/// and derivative.
+void lagrange_1d(int p, int c, double x, double& v, double& dv) {
+  if (p == 1) {
+    v = c < 0 ? 1.0 - x : x;
+    dv = c < 0 ? -1.0 : 1.0;
+  } else if (c < 0) {
+    v = (1.0 - x) * (1.0 - 2.0 * x);
+    dv = 4.0 * x - 3.0;
+  } else if (c > 0) {
+    v = x * (2.0 * x - 1.0);
+    dv = 4.0 * x - 1.0;
+  } else {
+    v = 4.0 * x * (1.0 - x);
+    dv = 4.0 - 8.0 * x;
+  }
+}
+
+/// Product Π_i f_i and its derivatives ∂/∂x_k = f'_k Π_{i≠k} f_i over d factors.
+double product(int d, const double* f, const double* df, double* grad) {
+  double v = 1.0;
+  for (int i = 0; i < d; ++i) v *= f[i];
+  for (int k = 0; k < d; ++k) {
+    grad[k] = df[k];
+    for (int i = 0; i < d; ++i)
+      if (i != k) grad[k] *= f[i];
+  }
+  return v;
+}
+
+/// Serendipity Quad8 / Hex20 (see the header) at ξ ∈ [0, 1]^d.
+void serendipity(CellType t, const double* xi, double* N, double* dN) {
+  const int d = cell_dim(t);
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    const int* c = tensor_node_coordinates(t, a);
+    double f[3], df[3], g[3];
+    int zero = -1;  // the direction along which an edge node's coordinate is 0
+    for (int i = 0; i < d; ++i) {
+      const double s = 2.0 * xi[i] - 1.0;
+      if (c[i] == 0) {
+        zero = i;
+        f[i] = 1.0 - s * s;
+        df[i] = -4.0 * s;  // d/dξ = 2 d/ds
+      } else {
+        f[i] = 1.0 + s * c[i];
+        df[i] = 2.0 * c[i];
+      }
+    }
+    double v = product(d, f, df, g);
+    if (zero < 0) {
+      double S = 1.0 - d;
+      for (int i = 0; i < d; ++i) S += (2.0 * xi[i] - 1.0) * c[i];
+      for (int k = 0; k < d; ++k) g[k] = g[k] * S + v * 2.0 * c[k];
+      v *= S;
+    }
+    const double scale = zero < 0 ? std::ldexp(1.0, -d) : std::ldexp(1.0, 1 - d);
+    if (N) N[a] = scale * v;
+    if (dN)
+      for (int k = 0; k < d; ++k) dN[a * d + k] = scale * g[k];
+  }
+}
+
+/// Quad4, Quad9, Hex8, Hex27 and the serendipity Quad8, Hex20 at ξ ∈ [0, 1]^d.
+void tensor_shape_functions(CellType t, const double* xi, double* N, double* dN) {
+  const int d = cell_dim(t), nn = cell_num_nodes(t), p = cell_order(t);
+  if (t == CellType::kQuad8 || t == CellType::kHex20) return serendipity(t, xi, N, dN);
+  for (int a = 0; a < nn; ++a) {
+    double f[3], df[3], g[3];
+    const int* c = tensor_node_coordinates(t, a);
+    for (int i = 0; i < d; ++i) lagrange_1d(p, c[i], xi[i], f[i], df[i]);
+    const double v = product(d, f, df, g);
+    if (N) N[a] = v;
+    if (dN)
+      for (int k = 0; k < d; ++k) dN[a * d + k] = g[k];
+  }
+}
 }  // namespace
 
 void shape_functions(CellType t, const double* xi, double* N, double* dN) {
+  if (cell_shape(t) == CellShape::kTensor) return tensor_shape_functions(t, xi, N, dN);
   const int d = cell_dim(t);
   if (d == 0) {
     if (N) N[0] = 1.0;
@@ -55,6 +134,11 @@ std::vector<double> reference_nodes(CellType t) {
   const int d = cell_dim(t);
   std::vector<double> v;
   if (d == 0) return v;
+  if (cell_shape(t) == CellShape::kTensor) {
+    for (int a = 0; a < cell_num_nodes(t); ++a)
+      for (int i = 0; i < d; ++i) v.push_back(0.5 * (tensor_node_coordinates(t, a)[i] + 1));
+    return v;
+  }
   const int nv = d + 1;
   std::vector<std::vector<double>> verts(nv, std::vector<double>(d, 0.0));
   for (int i = 0; i < d; ++i) verts[i + 1][i] = 1.0;

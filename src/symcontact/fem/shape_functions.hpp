@@ -1,8 +1,15 @@
 #pragma once
 /// \file shape_functions.hpp
-/// Lagrange shape functions on the reference simplices (quadrature.hpp gives the domains), P1 and P2,
-/// with nodes in Gmsh order (cell_type.hpp). Written through the barycentric coordinates
-/// L0 = 1 − Σξ_i, L_i = ξ_i: vertices N_a = L_a (P1) or L_a (2 L_a − 1) (P2), edge (a, b) nodes 4 L_a L_b.
+/// Shape functions on the reference cells (quadrature.hpp gives the domains), with nodes in Gmsh order
+/// (cell_type.hpp).
+///  - Simplices, P1 and P2, written through the barycentric coordinates L0 = 1 − Σξ_i, L_i = ξ_i:
+///    vertices N_a = L_a (P1) or L_a (2 L_a − 1) (P2), edge (a, b) nodes 4 L_a L_b.
+///  - Quad4, Quad9, Hex8, Hex27: tensor products N_a(ξ) = Π_i ℓ_{a_i}(ξ_i) of the 1D Lagrange
+///    polynomials through the node's coordinates (0, 1, or 0 ½ 1).
+///  - Quad8, Hex20 (serendipity), in s_i = 2ξ_i − 1 ∈ [−1, 1] and node coordinates c_i ∈ {−1, 0, 1}:
+///    corners N = 2^{−d} Π(1 + s_i c_i) (Σ s_i c_i − d + 1), edge nodes (c_j = 0)
+///    N = 2^{1−d} (1 − s_j²) Π_{i≠j}(1 + s_i c_i) (Zienkiewicz & Taylor, "The finite element method",
+///    vol. 1, §8.7).
 
 #include <vector>
 

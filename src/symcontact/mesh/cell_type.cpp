@@ -4,47 +4,53 @@
 
 namespace symcontact {
 
+namespace {
+/// Index of a cell type into the tables below (CellType order).
+int ix(CellType t) { return static_cast<int>(t); }
+}  // namespace
+
+CellShape cell_shape(CellType t) { return ix(t) >= ix(CellType::kQuad4) ? CellShape::kTensor : CellShape::kSimplex; }
+
 int cell_dim(CellType t) {
-  switch (t) {
-    case CellType::kPoint1: return 0;
-    case CellType::kLine2:
-    case CellType::kLine3: return 1;
-    case CellType::kTri3:
-    case CellType::kTri6: return 2;
-    case CellType::kTet4:
-    case CellType::kTet10: return 3;
-  }
-  return -1;
+  static const int n[] = {0, 1, 1, 2, 2, 3, 3, 2, 2, 2, 3, 3, 3};
+  return n[ix(t)];
 }
 
 int cell_num_nodes(CellType t) {
-  static const int n[] = {1, 2, 3, 3, 6, 4, 10};
-  return n[static_cast<int>(t)];
+  static const int n[] = {1, 2, 3, 3, 6, 4, 10, 4, 8, 9, 8, 20, 27};
+  return n[ix(t)];
 }
 
 int cell_num_vertices(CellType t) {
-  static const int n[] = {1, 2, 2, 3, 3, 4, 4};
-  return n[static_cast<int>(t)];
+  static const int n[] = {1, 2, 2, 3, 3, 4, 4, 4, 4, 4, 8, 8, 8};
+  return n[ix(t)];
 }
 
 int cell_order(CellType t) {
-  static const int n[] = {0, 1, 2, 1, 2, 1, 2};
-  return n[static_cast<int>(t)];
+  static const int n[] = {0, 1, 2, 1, 2, 1, 2, 1, 2, 2, 1, 2, 2};
+  return n[ix(t)];
 }
 
 std::string cell_name(CellType t) {
-  static const char* n[] = {"point", "line2", "line3", "tri3", "tri6", "tet4", "tet10"};
-  return n[static_cast<int>(t)];
+  static const char* n[] = {"point", "line2", "line3", "tri3",  "tri6",  "tet4", "tet10",
+                            "quad4", "quad8", "quad9", "hex8", "hex20", "hex27"};
+  return n[ix(t)];
 }
 
 CellType facet_type(CellType t) {
   switch (t) {
     case CellType::kLine2:
     case CellType::kLine3: return CellType::kPoint1;
-    case CellType::kTri3: return CellType::kLine2;
-    case CellType::kTri6: return CellType::kLine3;
+    case CellType::kTri3:
+    case CellType::kQuad4: return CellType::kLine2;
+    case CellType::kTri6:
+    case CellType::kQuad8:
+    case CellType::kQuad9: return CellType::kLine3;
     case CellType::kTet4: return CellType::kTri3;
     case CellType::kTet10: return CellType::kTri6;
+    case CellType::kHex8: return CellType::kQuad4;
+    case CellType::kHex20: return CellType::kQuad8;
+    case CellType::kHex27: return CellType::kQuad9;
     default: break;
   }
   throw std::logic_error("facet_type: cell has no facet type");
@@ -61,36 +67,60 @@ CellType cell_type_of(int dim, int order) {
   throw std::logic_error("cell_type_of: unsupported dimension/order");
 }
 
-int gmsh_element_type(CellType t) {
-  static const int n[] = {15, 1, 8, 2, 9, 4, 11};
-  return n[static_cast<int>(t)];
-}
-
-bool from_gmsh_element_type(int g, CellType& out) {
-  switch (g) {
-    case 15: out = CellType::kPoint1; return true;
-    case 1: out = CellType::kLine2; return true;
-    case 8: out = CellType::kLine3; return true;
-    case 2: out = CellType::kTri3; return true;
-    case 9: out = CellType::kTri6; return true;
-    case 4: out = CellType::kTet4; return true;
-    case 11: out = CellType::kTet10; return true;
-    default: return false;
+CellType cell_type_with_facet(CellType facet) {
+  switch (facet) {
+    case CellType::kQuad4: return CellType::kHex8;
+    case CellType::kQuad8: return CellType::kHex20;
+    case CellType::kQuad9: return CellType::kHex27;
+    default: return cell_type_of(cell_dim(facet) + 1, cell_order(facet));
   }
 }
 
+int gmsh_element_type(CellType t) {
+  static const int n[] = {15, 1, 8, 2, 9, 4, 11, 3, 16, 10, 5, 17, 12};
+  return n[ix(t)];
+}
+
+bool from_gmsh_element_type(int g, CellType& out) {
+  for (int k = 0; k <= ix(CellType::kHex27); ++k)
+    if (gmsh_element_type(static_cast<CellType>(k)) == g) {
+      out = static_cast<CellType>(k);
+      return true;
+    }
+  return false;
+}
+
 int vtk_cell_type(CellType t) {
-  static const int n[] = {1, 3, 21, 5, 22, 10, 24};
-  return n[static_cast<int>(t)];
+  static const int n[] = {1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29};
+  return n[ix(t)];
 }
 
 const int* vtk_node_order(CellType t) {
-  static const int ident[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  static const int ident[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13,
+                              14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
   static const int tet10[] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
-  return t == CellType::kTet10 ? tet10 : ident;
+  // VTK edges m01 m12 m23 m30 m45 m56 m67 m74 m04 m15 m26 m37 at their Gmsh positions; VTK faces
+  // ξ = 0 (0 4 7 3), ξ = 1 (1 2 6 5), η = 0 (0 1 5 4), η = 1 (2 3 7 6), ζ = 0 (0 3 2 1), ζ = 1 likewise.
+  static const int hex[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  11, 13, 9,  16, 18,
+                            19, 17, 10, 12, 14, 15, 22, 23, 21, 24, 20, 25, 26};
+  switch (t) {
+    case CellType::kTet10: return tet10;
+    case CellType::kHex20:
+    case CellType::kHex27: return hex;
+    default: return ident;
+  }
 }
 
 int cell_num_facets(CellType t) {
+  switch (t) {
+    case CellType::kQuad4:
+    case CellType::kQuad8:
+    case CellType::kQuad9: return 4;
+    case CellType::kHex8:
+    case CellType::kHex20:
+    case CellType::kHex27: return 6;
+    default: break;
+  }
   switch (cell_dim(t)) {
     case 1: return 2;
     case 2: return 3;
@@ -102,6 +132,8 @@ int cell_num_facets(CellType t) {
 const int* cell_facet_nodes(CellType t, int f) {
   // Triangles: edge f joins v_f and v_{f+1}; its midpoint is node 3+f (m01, m12, m20).
   static const int tri[3][3] = {{0, 1, 3}, {1, 2, 4}, {2, 0, 5}};
+  // Quadrilaterals: edge f joins v_f and v_{f+1 mod 4}; its midpoint is node 4+f.
+  static const int quad[4][3] = {{0, 1, 4}, {1, 2, 5}, {2, 3, 6}, {3, 0, 7}};
   // Tetrahedra (positively oriented: (v1-v0) x (v2-v0) . (v3-v0) > 0). Faces opposite v3, v2, v0, v1,
   // each listed so that its right-hand normal points outwards; midpoints from the Gmsh edge numbering
   // m01=4 m12=5 m20=6 m30=7 m32=8 m31=9.
@@ -111,7 +143,19 @@ const int* cell_facet_nodes(CellType t, int f) {
       {1, 2, 3, 5, 8, 9},  // opposite v0
       {0, 3, 2, 7, 8, 6},  // opposite v1
   };
+  // Hexahedra: the six faces in Gmsh's order, vertices counter-clockwise seen from outside, then the
+  // four edge nodes (Gmsh numbering m01=8 m03=9 m04=10 m12=11 m15=12 m23=13 m26=14 m37=15 m45=16
+  // m47=17 m56=18 m67=19) and the face centre (20..25).
+  static const int hex[6][9] = {
+      {0, 3, 2, 1, 9, 13, 11, 8, 20},    // ζ = 0
+      {0, 1, 5, 4, 8, 12, 16, 10, 21},   // η = 0
+      {0, 4, 7, 3, 10, 17, 15, 9, 22},   // ξ = 0
+      {1, 2, 6, 5, 11, 14, 18, 12, 23},  // ξ = 1
+      {2, 3, 7, 6, 13, 15, 19, 14, 24},  // η = 1
+      {4, 5, 6, 7, 16, 18, 19, 17, 25},  // ζ = 1
+  };
   static const int line[2][1] = {{0}, {1}};
+  if (cell_shape(t) == CellShape::kTensor) return cell_dim(t) == 2 ? quad[f] : hex[f];
   switch (cell_dim(t)) {
     case 1: return line[f];
     case 2: return tri[f];
@@ -119,6 +163,43 @@ const int* cell_facet_nodes(CellType t, int f) {
     default: break;
   }
   throw std::logic_error("cell_facet_nodes: cell has no facets");
+}
+
+const int* tensor_node_coordinates(CellType t, int a) {
+  // Gmsh's Hex27 (gmsh.info, "Node ordering"); the first 20 are Hex20's, the first 8 Hex8's. The
+  // quadrilaterals' first 4 and 8 are Quad4's and Quad8's.
+  static const int hex[27][3] = {
+      {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1},
+      {-1, 1, 1},   {0, -1, -1}, {-1, 0, -1}, {-1, -1, 0}, {1, 0, -1}, {1, -1, 0}, {0, 1, -1},
+      {1, 1, 0},    {-1, 1, 0},  {0, -1, 1},  {-1, 0, 1},  {1, 0, 1},  {0, 1, 1},  {0, 0, -1},
+      {0, -1, 0},   {-1, 0, 0},  {1, 0, 0},   {0, 1, 0},   {0, 0, 1},  {0, 0, 0}};
+  static const int quad[9][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, 0}};
+  if (cell_shape(t) != CellShape::kTensor) throw std::logic_error("tensor_node_coordinates: not a tensor cell");
+  return cell_dim(t) == 2 ? quad[a] : hex[a];
+}
+
+const int* cell_reflection(CellType t) {
+  static const int ident[] = {0, 1, 2};
+  static const int line3[] = {1, 0, 2};
+  static const int tri[] = {0, 2, 1, 5, 4, 3};
+  static const int tet[] = {0, 2, 1, 3, 6, 5, 4, 7, 9, 8};
+  static const int quad[] = {0, 3, 2, 1, 7, 6, 5, 4, 8};
+  // Hexahedra: ξ and η swapped, so v1 <-> v3, v5 <-> v7, with their edges and faces.
+  static const int hex[] = {0,  3,  2,  1,  4,  7,  6,  5,  9,  8,  10, 13, 15, 11,
+                            14, 12, 17, 16, 19, 18, 20, 22, 21, 24, 23, 25, 26};
+  switch (t) {
+    case CellType::kPoint1: return ident;
+    case CellType::kLine2:
+    case CellType::kLine3: return line3;
+    case CellType::kTri3:
+    case CellType::kTri6: return tri;
+    case CellType::kTet4:
+    case CellType::kTet10: return tet;
+    case CellType::kQuad4:
+    case CellType::kQuad8:
+    case CellType::kQuad9: return quad;
+    default: return hex;
+  }
 }
 
 }  // namespace symcontact

@@ -171,7 +171,8 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
         std::vector<double> lc;
         gmsh::model::mesh::getElementProperties(types[b], name, d, o, nn, lc, np);
         throw InputError(path, "", "unsupported element type '" + name +
-                                       "': symcontact uses triangles and tetrahedra (order 1 or 2)");
+                                       "': symcontact uses triangles and quadrilaterals in 2D, tetrahedra and "
+                                       "hexahedra in 3D, of order 1 or 2 (not prisms, pyramids nor order 3 and above)");
       }
       MeshFile::Block blk{ct, {}, {}};
       blk.nodes.reserve(nodes[b].size());
@@ -273,8 +274,10 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   for (const auto& b : *cells) {
     if (cell_dim(b.type) != dim) continue;
     if (have_type && b.type != m.cell_type)
-      throw InputError(file.path, group_key, "the body mixes element types (" + cell_name(m.cell_type) + " and " +
-                                                 cell_name(b.type) + ")");
+      throw InputError(file.path, group_key,
+                       "the body mixes element types (" + cell_name(m.cell_type) + " and " + cell_name(b.type) +
+                           "): a body is meshed with one element type; recombine all of its surfaces (or "
+                           "none), or make each part with its own type a body of its own");
     m.cell_type = b.type;
     have_type = true;
   }
@@ -360,7 +363,7 @@ Mesh extract_surface(const MeshFile& file, int dim, const std::string& group, co
   bool have_type = false;
   for (const auto& b : g->blocks) {
     if (cell_dim(b.type) != dim - 1) continue;
-    const CellType ct = cell_type_of(dim, cell_order(b.type));
+    const CellType ct = cell_type_with_facet(b.type);
     if (have_type && ct != m.cell_type)
       throw InputError(file.path, group_key, "the surface mixes element types");
     m.cell_type = ct;

@@ -48,6 +48,7 @@ std::vector<std::string> Mesh::group_names() const {
 }
 
 double simplex_determinant(const Mesh& m, Index c) {
+  if (cell_shape(m.cell_type) == CellShape::kTensor) return corner_determinant(m, c, 0);
   const Index* n = m.cell(c);
   if (m.dim == 2) {
     const Eigen::Vector2d a = m.x.col(n[1]) - m.x.col(n[0]);
@@ -60,22 +61,32 @@ double simplex_determinant(const Mesh& m, Index c) {
   return a.cross(b).dot(d);
 }
 
-Index Mesh::orient_cells() {
-  static const int tri3[] = {0, 2, 1};
-  static const int tri6[] = {0, 2, 1, 5, 4, 3};
-  static const int tet4[] = {0, 2, 1, 3};
-  static const int tet10[] = {0, 2, 1, 3, 6, 5, 4, 7, 9, 8};
-  const int* perm = nullptr;
-  switch (cell_type) {
-    case CellType::kTri3: perm = tri3; break;
-    case CellType::kTri6: perm = tri6; break;
-    case CellType::kTet4: perm = tet4; break;
-    case CellType::kTet10: perm = tet10; break;
-    default: return 0;
+double corner_determinant(const Mesh& m, Index c, int corner) {
+  if (cell_shape(m.cell_type) == CellShape::kSimplex) return simplex_determinant(m, c);
+  const Index* n = m.cell(c);
+  const auto edge = [&](int to) -> Vec3 {
+    Vec3 e = Vec3::Zero();
+    e.head(m.dim) = m.x.col(n[to]) - m.x.col(n[corner]);
+    return e;
+  };
+  if (m.dim == 2) {  // neighbours v_{a+1} and v_{a−1}: counter-clockwise at every corner
+    const Vec3 a = edge((corner + 1) % 4), b = edge((corner + 3) % 4);
+    return a.x() * b.y() - a.y() * b.x();
   }
+  // Neighbours along ξ, η, ζ of each vertex of the unit cube, and the sign of the reference edges'
+  // determinant there (−1 for each axis along which the vertex is at 1).
+  static const int along[8][3] = {{1, 3, 4}, {0, 2, 5}, {3, 1, 6}, {2, 0, 7},
+                                  {5, 7, 0}, {4, 6, 1}, {7, 5, 2}, {6, 4, 3}};
+  static const double sign[8] = {1, -1, 1, -1, -1, 1, -1, 1};
+  return sign[corner] * edge(along[corner][0]).cross(edge(along[corner][1])).dot(edge(along[corner][2]));
+}
+
+Index Mesh::orient_cells() {
+  if (cell_dim(cell_type) != dim || dim < 2) return 0;
+  const int* perm = cell_reflection(cell_type);
   const int npc = nodes_per_cell();
   Index flipped = 0;
-  std::array<Index, 10> tmp{};
+  std::array<Index, 27> tmp{};
   for (Index c = 0; c < num_cells(); ++c) {
     if (simplex_determinant(*this, c) >= 0) continue;
     Index* n = cells.data() + c * npc;
@@ -98,8 +109,10 @@ void Mesh::check() const {
   // Relative size against the bounding box, so that a tolerance for "degenerate" is scale-free.
   const double diam = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
   const double ref = std::pow(diam, dim);
+  const int corners = cell_shape(cell_type) == CellShape::kTensor ? cell_num_vertices(cell_type) : 1;
   for (Index c = 0; c < num_cells(); ++c) {
-    const double d = simplex_determinant(*this, c);
+    double d = simplex_determinant(*this, c);
+    for (int a = 1; a < corners; ++a) d = std::min(d, corner_determinant(*this, c, a));
     if (!(d > 1e-14 * ref))
       throw InputError("", cell_label(c),
                        d < 0 ? "inverted element (negative Jacobian determinant " + std::to_string(d) + ")"
@@ -107,35 +120,34 @@ void Mesh::check() const {
   }
 }
 
-std::size_t FacetKeyHash::operator()(const std::array<Index, 3>& k) const {
+std::size_t FacetKeyHash::operator()(const FacetKey& k) const {
   std::size_t h = 1469598103934665603ull;  // FNV-1a
   for (Index v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
   return h;
 }
 
-namespace {
-}  // namespace
+FacetKey facet_key(const Index* v, int num_vertices) {
+  FacetKey k{-1, -1, -1, -1};
+  for (int i = 0; i < num_vertices; ++i) k[i] = v[i];
+  for (int i = 1; i < num_vertices; ++i)  // insertion sort of at most four entries
+    for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
+  return k;
+}
 
 void Mesh::locate_facets() {
   const CellType ft = facet_cell_type();
   const int nfv = cell_num_vertices(ft);
   const int npf = cell_num_nodes(ft);
   const int nf = cell_num_facets(cell_type);
-  // Facet lookup keyed by the sorted vertex triple (third entry -1 in 2D): the first cell that has the
+  // Facet lookup keyed by the sorted vertices (facet_key()): the first cell that has the
   // facet, its local number, and the second cell (-1 while there is none: a boundary facet).
   struct Where {
     Index first;
     int facet;
     Index second;
   };
-  std::unordered_map<std::array<Index, 3>, Where, FacetKeyHash> where;
-  auto key_of = [&](const Index* v) {
-    std::array<Index, 3> k{-1, -1, -1};
-    for (int i = 0; i < nfv; ++i) k[i] = v[i];
-    for (int i = 1; i < nfv; ++i)  // insertion sort of at most three entries
-      for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
-    return k;
-  };
+  std::unordered_map<FacetKey, Where, FacetKeyHash> where;
+  auto key_of = [&](const Index* v) { return facet_key(v, nfv); };
   std::vector<Index> fv(npf);
   for (Index c = 0; c < num_cells(); ++c) {
     const Index* n = cell(c);

@@ -7,6 +7,8 @@
 /// node indices, cell after cell, in Gmsh node ordering (cell_type.hpp). Facet groups hold
 /// facets of type facet_type(cell_type) the same way. Every cell is positively oriented (det J > 0
 /// at its vertices); mesh builders reorient cells read with the other orientation.
+/// A facet is keyed by its sorted vertex indices (std::array<Index, 4>, −1 for the entries a segment or
+/// triangle lacks).
 
 #include <array>
 #include <map>
@@ -19,10 +21,15 @@
 namespace symcontact {
 
 /// A named set of boundary facets (a Gmsh physical curve in 2D, surface in 3D).
-/// Hash of a facet's sorted vertex indices (k[2] = −1 for a segment), for unordered maps keyed by facets.
+/// Sorted vertex indices of a facet, −1 after the last (two for a segment, three for a triangle, four for
+/// a quadrilateral).
+using FacetKey = std::array<Index, 4>;
+/// Hash of a FacetKey, for unordered maps keyed by facets.
 struct FacetKeyHash {
-  std::size_t operator()(const std::array<Index, 3>& k) const;
+  std::size_t operator()(const FacetKey& k) const;
 };
+/// The key of the facet whose `num_vertices` vertices are v[0], v[1], ...
+FacetKey facet_key(const Index* v, int num_vertices);
 
 struct FacetGroup {
   std::vector<Index> facets;  ///< num_facets × nodes-per-facet node indices
@@ -81,7 +88,13 @@ struct Mesh {
   Index orient_cells();
 };
 
-/// Signed measure-like determinant of the vertex simplex of cell c (2× area, 6× volume).
+/// Signed measure-like determinant of the vertex simplex of cell c (2× area, 6× volume); for a
+/// quadrilateral or hexahedron, that of the simplex at its vertex 0 (corner_determinant(m, c, 0)).
 double simplex_determinant(const Mesh& m, Index c);
+
+/// Determinant of the edges leaving vertex `corner` of cell c along the reference axes, signed so that
+/// it is positive for a positively oriented cell: the sign of det J at that vertex for a quadrilateral
+/// or hexahedron (corner < cell_num_vertices()). For a simplex, simplex_determinant() at any corner.
+double corner_determinant(const Mesh& m, Index c, int corner);
 
 }  // namespace symcontact

@@ -234,9 +234,9 @@ namespace symcontact {
 
 namespace {
 
-/// Side of the hyperplane through facet vertices k (sorted indices; k[2] = −1 in 2D) on which point r lies:
-/// the sign of det[q − p, (s − p,) r − p].
-int side_of(const Mesh& m, const std::array<Index, 3>& k, const Eigen::VectorXd& r) {
+/// Side of the hyperplane through the first facet vertices of k (sorted indices: two in 2D, three in 3D)
+/// on which point r lies: the sign of det[q − p, (s − p,) r − p].
+int side_of(const Mesh& m, const FacetKey& k, const Eigen::VectorXd& r) {
   const Eigen::VectorXd p = m.x.col(k[0]);
   double d = 0.0;
   if (m.dim == 2) {
@@ -252,7 +252,8 @@ int side_of(const Mesh& m, const std::array<Index, 3>& k, const Eigen::VectorXd&
 }  // namespace
 
 void check_folds(const Mesh& m) {
-  const int nv = m.dim + 1;  // vertices of a simplex
+  const int nv = cell_num_vertices(m.cell_type);
+  const int nfv = cell_num_vertices(facet_type(m.cell_type));
   const int nf = cell_num_facets(m.cell_type);
   Index positive = 0, negative = 0;
   for (Index c = 0; c < m.num_cells(); ++c) (simplex_determinant(m, c) > 0 ? positive : negative) += 1;
@@ -261,20 +262,24 @@ void check_folds(const Mesh& m) {
     Index cell;
     int side;
   };
-  std::unordered_map<std::array<Index, 3>, Seen, FacetKeyHash> seen;
+  std::unordered_map<FacetKey, Seen, FacetKeyHash> seen;
   seen.reserve(static_cast<std::size_t>(m.num_cells()) * nf);
   for (Index c = 0; c < m.num_cells(); ++c) {
     const Index* n = m.cell(c);
     for (int f = 0; f < nf; ++f) {
       const int* loc = cell_facet_nodes(m.cell_type, f);
-      std::array<Index, 3> k{-1, -1, -1};
-      for (int i = 0; i < nv - 1; ++i) k[i] = n[loc[i]];
-      for (int i = 1; i < nv - 1; ++i)  // insertion sort of at most three entries
-        for (int j = i; j > 0 && k[j - 1] > k[j]; --j) std::swap(k[j - 1], k[j]);
-      Index opposite = -1;  // the vertex of the cell not on facet f
+      Index fv[4];
+      for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
+      const FacetKey k = facet_key(fv, nfv);
+      // The centroid of the cell's vertices not on facet f (the opposite vertex of a simplex).
+      Eigen::VectorXd opposite = Eigen::VectorXd::Zero(m.dim);
+      int off = 0;
       for (int a = 0; a < nv; ++a)
-        if (std::find(k.begin(), k.begin() + (nv - 1), n[a]) == k.begin() + (nv - 1)) opposite = n[a];
-      const int side = side_of(m, k, m.x.col(opposite));
+        if (std::find(k.begin(), k.begin() + nfv, n[a]) == k.begin() + nfv) {
+          opposite += m.x.col(n[a]);
+          ++off;
+        }
+      const int side = side_of(m, k, opposite / off);
       auto [it, inserted] = seen.emplace(k, Seen{c, side});
       if (inserted || side == 0 || it->second.side != side) continue;
       // Both cells on the same side of their common facet: they overlap. Name the one whose orientation

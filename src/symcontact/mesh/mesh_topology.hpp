@@ -54,12 +54,12 @@ std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double rela
 void check_topology(const Mesh& m, const TopologyAllowances& allow = {});
 
 /// Throws InputError(file = "", key = cell_label(), message) when two cells that share a facet (an edge in 2D,
-/// a face in 3D) lie on the same side of it (their opposite vertices on the same side of the facet's line or
-/// plane): the mesh folds over itself there, whatever the orientation convention of the file. Run on the
+/// a face in 3D) lie on the same side of it (the centroids of their vertices off the facet on the same side
+/// of the line or plane through its first sorted vertices): the mesh folds over itself there, whatever the orientation convention of the file. Run on the
 /// cells as read, before Mesh::orient_cells(), so that the message can name the cell whose orientation
 /// (sign of simplex_determinant()) differs from the majority of the body's cells — the folded one; a mesh
 /// with every cell of one sign, or a region of the other sign bounded by no fold (another surface meshed
-/// the other way round), passes. Vertex simplices only (edge nodes of quadratic cells are not examined).
+/// the other way round), passes. Vertices only (edge and face nodes of quadratic cells are not examined).
 /// O(cells) expected (hash of facets).
 void check_folds(const Mesh& m);
 

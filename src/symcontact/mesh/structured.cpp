@@ -107,6 +107,67 @@ Mesh box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order)
   return order == 2 ? elevate_to_p2(m) : m;
 }
 
+Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
+  if (cell_shape(type) != CellShape::kTensor) throw std::invalid_argument("tensor_mesh: expects a tensor cell type");
+  const int D = cell_dim(type), q = cell_order(type), npc = cell_num_nodes(type);
+  const int n[3] = {nx, ny, D == 3 ? nz : 1};
+  for (int i = 0; i < D; ++i)
+    if (n[i] < 1) throw std::invalid_argument("tensor_mesh: divisions must be >= 1");
+  // A lattice of q·n + 1 points per direction; the cells' nodes are the lattice points at
+  // q·(cell index) + q·(c + 1)/2, c ∈ {−1, 0, 1} their reference coordinates. Unused points are dropped.
+  const Index m0 = q * n[0] + 1, m1 = q * n[1] + 1, m2 = D == 3 ? q * n[2] + 1 : 1;
+  std::vector<Index> index(static_cast<std::size_t>(m0 * m1 * m2), -1);
+  Mesh m;
+  m.dim = D;
+  m.cell_type = type;
+  std::vector<Index> lattice;
+  const auto point = [&](const int* cell, const int* c) {
+    Index l[3] = {0, 0, 0};
+    for (int i = 0; i < D; ++i) l[i] = q * cell[i] + q * (c[i] + 1) / 2;
+    const Index p = (l[2] * m1 + l[1]) * m0 + l[0];
+    if (index[p] < 0) {
+      index[p] = static_cast<Index>(lattice.size());
+      lattice.push_back(p);
+    }
+    return index[p];
+  };
+  int cell[3] = {0, 0, 0};
+  for (cell[2] = 0; cell[2] < n[2]; ++cell[2])
+    for (cell[1] = 0; cell[1] < n[1]; ++cell[1])
+      for (cell[0] = 0; cell[0] < n[0]; ++cell[0])
+        for (int a = 0; a < npc; ++a) m.cells.push_back(point(cell, tensor_node_coordinates(type, a)));
+  m.x.resize(D, static_cast<Index>(lattice.size()));
+  for (std::size_t k = 0; k < lattice.size(); ++k) {
+    const Index l[3] = {lattice[k] % m0, (lattice[k] / m0) % m1, lattice[k] / (m0 * m1)};
+    for (int i = 0; i < D; ++i) m.x(i, static_cast<Index>(k)) = lo[i] + (hi[i] - lo[i]) * l[i] / (q * n[i]);
+  }
+  // Boundary facets: local facet f of the cells on its side (cell_facet_nodes() order: quadrilateral
+  // η = 0, ξ = 1, η = 1, ξ = 0; hexahedron ζ = 0, η = 0, ξ = 0, ξ = 1, η = 1, ζ = 1).
+  static const int quad_side[4][2] = {{1, 0}, {0, 1}, {1, 1}, {0, 0}};  // (axis, side)
+  static const int hex_side[6][2] = {{2, 0}, {1, 0}, {0, 0}, {0, 1}, {1, 1}, {2, 1}};
+  static const char* quad_names[2][2] = {{"left", "right"}, {"bottom", "top"}};
+  static const char* hex_names[3][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}, {"zmin", "zmax"}};
+  const int npf = cell_num_nodes(facet_type(type));
+  for (Index c = 0; c < m.num_cells(); ++c) {
+    const Index ijk[3] = {c % n[0], (c / n[0]) % n[1], c / (n[0] * n[1])};
+    for (int f = 0; f < cell_num_facets(type); ++f) {
+      const int axis = D == 2 ? quad_side[f][0] : hex_side[f][0], side = D == 2 ? quad_side[f][1] : hex_side[f][1];
+      if (ijk[axis] != (side == 0 ? 0 : n[axis] - 1)) continue;
+      auto& facets = m.facet_groups[D == 2 ? quad_names[axis][side] : hex_names[axis][side]].facets;
+      const int* loc = cell_facet_nodes(type, f);
+      for (int a = 0; a < npf; ++a) facets.push_back(m.cell(c)[loc[a]]);
+    }
+  }
+  if (D == 2) {
+    m.node_groups["corner_ll"] = {m.cell(0)[0]};
+    m.node_groups["corner_lr"] = {m.cell(n[0] - 1)[1]};
+  } else {
+    m.node_groups["origin"] = {m.cell(0)[0]};
+  }
+  m.locate_facets();
+  return m;
+}
+
 Mesh elevate_to_p2(const Mesh& p1) {
   if (p1.cell_type != CellType::kTri3 && p1.cell_type != CellType::kTet4)
     throw std::invalid_argument("elevate_to_p2: expects a Tri3 or Tet4 mesh");
@@ -158,6 +219,28 @@ Mesh elevate_to_p2(const Mesh& p1) {
   return m;
 }
 
+namespace {
+/// Puts the non-vertex nodes of quadrilaterals and hexahedra at the multilinear map of their cell's
+/// vertices: x = Σ_v X_v Π_i (ξ_i or 1 − ξ_i), ξ = (c + 1)/2 the node's reference point.
+void reset_tensor_nodes(Mesh& mesh) {
+  const int D = mesh.dim, nv = cell_num_vertices(mesh.cell_type);
+  for (Index c = 0; c < mesh.num_cells(); ++c) {
+    const Index* n = mesh.cell(c);
+    for (int a = nv; a < mesh.nodes_per_cell(); ++a) {
+      const int* ca = tensor_node_coordinates(mesh.cell_type, a);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(D);
+      for (int v = 0; v < nv; ++v) {
+        const int* cv = tensor_node_coordinates(mesh.cell_type, v);
+        double w = 1.0;
+        for (int i = 0; i < D; ++i) w *= cv[i] > 0 ? 0.5 * (ca[i] + 1) : 0.5 * (1 - ca[i]);
+        x += w * mesh.x.col(n[v]);
+      }
+      mesh.x.col(n[a]) = x;
+    }
+  }
+}
+}  // namespace
+
 void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned seed) {
   std::vector<char> on_boundary(mesh.num_nodes(), 0);
   for (const auto& [name, g] : mesh.facet_groups)
@@ -171,7 +254,9 @@ void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned see
   for (Index v = 0; v < mesh.num_nodes(); ++v)
     if (!on_boundary[v] && is_vertex[v])
       for (int i = 0; i < mesh.dim; ++i) mesh.x(i, v) += U(rng);
-  if (cell_order(mesh.cell_type) == 2) {
+  if (cell_shape(mesh.cell_type) == CellShape::kTensor) {
+    reset_tensor_nodes(mesh);
+  } else if (cell_order(mesh.cell_type) == 2) {
     static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
     static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
     const bool tri = mesh.dim == 2;

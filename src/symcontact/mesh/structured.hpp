@@ -1,11 +1,13 @@
 #pragma once
 /// \file structured.hpp
-/// Structured simplex meshes of rectangles and boxes, for tests and benchmarks (no Gmsh needed).
+/// Structured meshes of rectangles and boxes, for tests and benchmarks (no Gmsh needed).
 ///  - rectangle_mesh: nx × ny squares, each cut into two triangles along alternating diagonals;
 ///    facet groups "left", "right", "bottom", "top"; node groups "corner_ll" (x0, y0), "corner_lr".
 ///  - box_mesh: nx × ny × nz cubes, each cut into six tetrahedra (Kuhn/Freudenthal split, conforming);
 ///    facet groups "xmin", "xmax", "ymin", "ymax", "zmin", "zmax"; node group "origin".
 /// Order 2 adds edge-midpoint nodes (elevate_to_p2()).
+///  - tensor_mesh: nx × ny rectangles or nx × ny × nz boxes, one quadrilateral or hexahedron each, of any
+///    of their types (Quad4/8/9, Hex8/20/27), with the groups of rectangle_mesh (2D) or box_mesh (3D).
 
 #include "symcontact/mesh/mesh.hpp"
 
@@ -14,13 +16,17 @@ namespace symcontact {
 Mesh rectangle_mesh(double x0, double y0, double x1, double y1, int nx, int ny, int order = 1);
 Mesh box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order = 1);
 
+/// `type` a quadrilateral (lo, hi in the plane, nz ignored) or hexahedron type.
+Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, int nz = 1);
+
 /// Adds a node at the midpoint of every edge and turns Tri3/Tet4 cells (and their facet groups)
 /// into Tri6/Tet10 with Gmsh node ordering. Node groups keep their vertex nodes.
 Mesh elevate_to_p2(const Mesh& p1);
 
 /// Moves every node not on a facet group by a random offset of at most `amplitude` × the local
 /// spacing `h` in each coordinate (deterministic for a given seed); P2 edge nodes are then reset to the
-/// midpoints of their (straight) edges. For patch tests on distorted meshes.
+/// midpoints of their (straight) edges, and the edge, face and centre nodes of a quadrilateral or
+/// hexahedron to the multilinear map of its vertices. For patch tests on distorted meshes.
 void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned seed);
 
 }  // namespace symcontact

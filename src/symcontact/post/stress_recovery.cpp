@@ -86,7 +86,11 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
   at_nodes.points = reference_nodes(mesh.cell_type);
   at_nodes.weights.assign(mesh.nodes_per_cell(), 1.0);
   const Tabulation tn = tabulate(mesh.cell_type, at_nodes);
-  const Tabulation tq = tabulate(mesh.cell_type, simplex_quadrature(D, cell_order(mesh.cell_type) == 1 ? 0 : 2));
+  // Cell averages: degree 2(p − 1) on simplices (exact for straight ones), the stiffness rule on
+  // quadrilaterals and hexahedra.
+  const CellType t = mesh.cell_type;
+  const int degree = cell_shape(t) == CellShape::kTensor ? stiffness_quadrature_degree(t) : 2 * (cell_order(t) - 1);
+  const Tabulation tq = tabulate(t, cell_quadrature(t, degree));
 
   dispatch_cell(mesh.cell_type, [&](auto Dc, auto NNc) {
     constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;

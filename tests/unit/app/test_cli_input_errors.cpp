@@ -246,3 +246,39 @@ TEST_F(CliInputErrors, TractionWithBothOrNeitherOfTractionAndTotalForceIsAnInput
 }
 
 }  // namespace
+
+// ---- 7. Element types ----
+
+// A recombined block is accepted by `check`; a body half recombined (quadrilaterals and triangles) and a mesh
+// of prisms are input errors.
+TEST_F(CliInputErrors, ElementTypesAcceptedAndRefused) {
+  write("quads.geo", block_geo_with("Plane Surface(1) = {1};", "Plane Surface(1) = {1};\nRecombine Surface{1};"));
+  const fs::path quads = write("quads.toml", block_toml("quads.geo"));
+  const CliResult checked = run("check " + shell_quote(quads.string()));
+  EXPECT_EQ(checked.exit_code, 0) << checked.output;
+  EXPECT_NE(checked.output.find("quad4 cells"), std::string::npos) << checked.output;
+
+  // The block split at x = 1 into two surfaces of one physical group, only the left one recombined.
+  write("mixed.geo", "Point(1) = {0, 0, 0, 0.25}; Point(2) = {1, 0, 0, 0.25}; Point(3) = {2, 0, 0, 0.25};\n"
+                     "Point(4) = {2, 1, 0, 0.25}; Point(5) = {1, 1, 0, 0.25}; Point(6) = {0, 1, 0, 0.25};\n"
+                     "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5}; Line(5) = {5, 6};\n"
+                     "Line(6) = {6, 1}; Line(7) = {2, 5};\n"
+                     "Curve Loop(1) = {1, 7, 5, 6}; Plane Surface(1) = {1};\n"
+                     "Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};\nRecombine Surface{1};\n"
+                     "Physical Surface(\"block\") = {1, 2};\nPhysical Curve(\"bottom\") = {1, 2};\n"
+                     "Physical Curve(\"top\") = {4, 5};\n");
+  expect_input_error(write("mixed.toml", block_toml("mixed.geo")),
+                     {"mixed.toml", "body[0].group", "mixed.geo", "mixes element types", "quad4", "tri3"});
+
+  write("prisms.geo", "Point(1) = {0, 0, 0, 0.5}; Point(2) = {1, 0, 0, 0.5}; Point(3) = {0, 1, 0, 0.5};\n"
+                      "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 1};\n"
+                      "Curve Loop(1) = {1, 2, 3}; Plane Surface(1) = {1};\n"
+                      "out[] = Extrude {0, 0, 1} { Surface{1}; Layers{2}; Recombine; };\n"
+                      "Physical Volume(\"block\") = {out[1]};\nPhysical Surface(\"bottom\") = {1};\n"
+                      "Physical Surface(\"top\") = {out[0]};\n");
+  const std::string solid = "[problem]\ndimension = 3\n\n[[body]]\nname = \"block\"\nmesh = \"MESH\"\ngroup = \"block\"\n"
+                            "[body.material]\nE = 1.0\nnu = 0.3\n";
+  expect_input_error(write("prisms.toml", symcontact::testing::replaced(solid, "MESH", "prisms.geo") +
+                                              "[[body.dirichlet]]\nboundary = \"bottom\"\nux = 0.0\nuy = 0.0\nuz = 0.0\n"),
+                     {"prisms.toml", "body[0].mesh", "prisms.geo", "unsupported element type 'Prism 6'"});
+}

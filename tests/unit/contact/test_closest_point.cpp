@@ -258,7 +258,7 @@ namespace {
 Eigen::Vector3d surface_at(CellType t, const Eigen::MatrixXd& xf, double e1, double e2,
                            Eigen::Matrix<double, 3, 2>* d = nullptr) {
   const double eta[2] = {e1, e2};
-  double N[6], dN[12];
+  double N[9], dN[18];
   shape_functions(t, eta, N, dN);
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   if (d) d->setZero();
@@ -461,5 +461,106 @@ TEST(ClosestPointTri6, PointOnTheCurvedFacetHasZeroDistance) {
     EXPECT_NEAR(r.distance2, 0.0, 1e-26);
     EXPECT_NEAR(r.eta[0], e[0], 1e-12);
     EXPECT_NEAR(r.eta[1], e[1], 1e-12);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Quadrilaterals (3D): the faces of Hex8 and Hex27 cells.
+
+namespace {
+
+/// Minimum of |x(η) − p|² over a grid of [0, 1]², refined around the best sample (brute force).
+double sampled_min_distance2_quad(CellType t, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, double* eta_min) {
+  double best = std::numeric_limits<double>::infinity(), b1 = 0, b2 = 0;
+  const int n = 300;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double d2 = (surface_at(t, xf, double(i) / n, double(j) / n) - p).squaredNorm();
+      if (d2 < best) best = d2, b1 = double(i) / n, b2 = double(j) / n;
+    }
+  double h = 1.0 / n;
+  for (int level = 0; level < 30; ++level, h *= 0.5) {
+    const double c1 = b1, c2 = b2;
+    for (int i = -4; i <= 4; ++i)
+      for (int j = -4; j <= 4; ++j) {
+        const double e1 = std::clamp(c1 + 0.25 * i * h, 0.0, 1.0), e2 = std::clamp(c2 + 0.25 * j * h, 0.0, 1.0);
+        const double d2 = (surface_at(t, xf, e1, e2) - p).squaredNorm();
+        if (d2 < best) best = d2, b1 = e1, b2 = e2;
+      }
+  }
+  eta_min[0] = b1;
+  eta_min[1] = b2;
+  return best;
+}
+
+/// A Quad9 on the sphere of radius R about the origin: vertices at the given directions (counter-clockwise
+/// seen from outside), edge nodes and centre on the sphere above the chord midpoints and the vertices' mean.
+Eigen::MatrixXd spherical_quad9(double R, const Eigen::Vector3d* v) {
+  Eigen::MatrixXd xf(3, 9);
+  for (int k = 0; k < 4; ++k) {
+    xf.col(k) = R * v[k].normalized();
+    xf.col(4 + k) = R * (v[k].normalized() + v[(k + 1) % 4].normalized()).normalized();
+  }
+  xf.col(8) = R * (v[0].normalized() + v[1].normalized() + v[2].normalized() + v[3].normalized()).normalized();
+  return xf;
+}
+
+}  // namespace
+
+// A skewed flat Quad4 and a spherical Quad9 (and the Quad8 of its vertices and edge nodes): the projection is the brute-force minimum, stationary inside
+// (the residual normal to both tangents), on an edge (ξ or η at 0 or 1) otherwise, with the edge or vertex
+// reported; a point of the facet projects onto itself.
+TEST(ClosestPointQuad, MatchesSamplingStationaryInsideAndOnTheBorderOutside) {
+  Eigen::MatrixXd q4(3, 4);
+  q4 << 0, 1.2, 1.4, 0.1, 0, 0.1, 1.1, 0.9, 0, 0, 0.1, 0.05;
+  const Eigen::Vector3d dirs[4] = {Eigen::Vector3d(1, 0.1, 0.1), Eigen::Vector3d(0.2, 1, 0.1),
+                                   Eigen::Vector3d(0.1, 0.6, 1), Eigen::Vector3d(0.8, 0.1, 1)};
+  const Eigen::MatrixXd q9 = spherical_quad9(1.0, dirs);
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  const Eigen::MatrixXd q8 = q9.leftCols(8);  // the serendipity facet through the same vertices and edge nodes
+  for (const auto& [type, xf] : {std::pair<CellType, Eigen::MatrixXd>{CellType::kQuad4, q4}, {CellType::kQuad8, q8},
+                                 {CellType::kQuad9, q9}}) {
+    int interior = 0, boundary = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+      const Eigen::Vector3d c = surface_at(type, xf, 1.6 * U(rng) - 0.3, 1.6 * U(rng) - 0.3);
+      const Eigen::Vector3d p = type == CellType::kQuad4 ? Eigen::Vector3d(c + Eigen::Vector3d(0, 0, U(rng) - 0.5))
+                                                         : Eigen::Vector3d((0.7 + 0.6 * U(rng)) * c.normalized());
+      const FacetProjection r = project_on_facet(type, xf, p);
+      double eta_ref[2];
+      const double d2_ref = sampled_min_distance2_quad(type, xf, p, eta_ref);
+      EXPECT_NEAR(r.distance2, d2_ref, 1e-10) << cell_name(type) << " trial " << trial;
+      EXPECT_LE(r.distance2, d2_ref + 1e-13) << cell_name(type) << " trial " << trial;
+      EXPECT_NEAR((surface_at(type, xf, r.eta[0], r.eta[1]) - r.point).norm(), 0.0, 1e-14);
+      if (r.inside()) {
+        ++interior;
+        Eigen::Matrix<double, 3, 2> d;
+        const Eigen::Vector3d x = surface_at(type, xf, r.eta[0], r.eta[1], &d);
+        EXPECT_NEAR((x - p).dot(d.col(0)), 0.0, 1e-12) << cell_name(type) << " trial " << trial;
+        EXPECT_NEAR((x - p).dot(d.col(1)), 0.0, 1e-12) << cell_name(type) << " trial " << trial;
+      } else {
+        ++boundary;
+        const double to_border = std::min({r.eta[0], r.eta[1], 1 - r.eta[0], 1 - r.eta[1]});
+        EXPECT_NEAR(to_border, 0.0, 1e-14) << cell_name(type) << " trial " << trial;
+        // The reported edge or vertex holds η: edge e0 at η2 = 0, e1 at η1 = 1, e2 at η2 = 1, e3 at η1 = 0.
+        const double vertex[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        if (r.clamped_edge >= 0) {
+          const int e = r.clamped_edge;
+          EXPECT_EQ(r.eta[e % 2 == 0 ? 1 : 0], e == 1 || e == 2 ? 1.0 : 0.0) << "edge " << e;
+        } else {
+          ASSERT_GE(r.clamped_vertex, 0);
+          EXPECT_EQ(r.eta[0], vertex[r.clamped_vertex][0]);
+          EXPECT_EQ(r.eta[1], vertex[r.clamped_vertex][1]);
+        }
+      }
+    }
+    EXPECT_GT(interior, 5) << cell_name(type);
+    EXPECT_GT(boundary, 5) << cell_name(type);
+    const Eigen::Vector3d on = surface_at(type, xf, 0.3, 0.7);
+    const FacetProjection r = project_on_facet(type, xf, on);
+    EXPECT_TRUE(r.inside());
+    EXPECT_NEAR(r.distance2, 0.0, 1e-26);
+    EXPECT_NEAR(r.eta[0], 0.3, 1e-12);
+    EXPECT_NEAR(r.eta[1], 0.7, 1e-12);
   }
 }

@@ -23,10 +23,16 @@ struct Faces3D {
   ContactSurface slave, master;
 };
 
-Faces3D make_faces(int order, int ns, int nm, double mx0, double mx1, double gap) {
+/// `cells`: Tet4 or Tet10 (box_mesh(), triangle faces), or Hex8, Hex20, Hex27 (tensor_mesh(), quadrilateral faces).
+Faces3D make_faces(CellType cells, int ns, int nm, double mx0, double mx1, double gap) {
   Faces3D f;
-  f.lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), ns, ns, 1, order);
-  f.upper = box_mesh(Vec3(mx0, 0, gap), Vec3(mx1, 1, gap + 0.5), nm, nm + 1, 1, order);
+  if (cell_shape(cells) == CellShape::kTensor) {
+    f.lower = tensor_mesh(cells, Vec3(0, 0, -0.5), Vec3(1, 1, 0), ns, ns, 1);
+    f.upper = tensor_mesh(cells, Vec3(mx0, 0, gap), Vec3(mx1, 1, gap + 0.5), nm, nm + 1, 1);
+  } else {
+    f.lower = box_mesh(Vec3(0, 0, -0.5), Vec3(1, 1, 0), ns, ns, 1, cell_order(cells));
+    f.upper = box_mesh(Vec3(mx0, 0, gap), Vec3(mx1, 1, gap + 0.5), nm, nm + 1, 1, cell_order(cells));
+  }
   f.slave = make_contact_surface(f.lower, "zmax", 0, "lower.top");
   f.master = make_contact_surface(f.upper, "zmin", 1, "upper.bottom");
   return f;
@@ -34,7 +40,7 @@ Faces3D make_faces(int order, int ns, int nm, double mx0, double mx1, double gap
 
 }  // namespace
 
-class MortarCells3D : public ::testing::TestWithParam<int> {};
+class MortarCells3D : public ::testing::TestWithParam<CellType> {};
 
 TEST_P(MortarCells3D, CellAreasSumToTheSlaveFacetAreaWhenTheMasterCoversIt) {
   const Faces3D f = make_faces(GetParam(), 3, 4, -0.1, 1.1, 0.02);
@@ -45,7 +51,8 @@ TEST_P(MortarCells3D, CellAreasSumToTheSlaveFacetAreaWhenTheMasterCoversIt) {
       EXPECT_GE(c.master_facet, 0);
       area += polygon_area(c.polygon);
     }
-    EXPECT_NEAR(area, 0.5, 1e-13) << "slave facet " << k;  // the whole reference triangle
+    // The whole reference triangle (1/2) or square (1).
+    EXPECT_NEAR(area, cell_shape(GetParam()) == CellShape::kTensor ? 1.0 : 0.5, 1e-13) << "slave facet " << k;
   }
   // The points' weights then add up to the face area, and their gaps are the separation.
   ContactSearchOptions opt;
@@ -92,8 +99,14 @@ TEST_P(MortarCells3D, PastTheBorderOfTheMasterIsNoContact) {
   EXPECT_TRUE(project_to_master(mg, Eigen::Vector3d(0.8, 0.5, 0.0), ns, 0.1, cp));
 }
 
-INSTANTIATE_TEST_SUITE_P(ContactPoints, MortarCells3D, ::testing::Values(1, 2),
-                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
+INSTANTIATE_TEST_SUITE_P(ContactPoints, MortarCells3D,
+                         ::testing::Values(CellType::kTet4, CellType::kTet10, CellType::kHex8, CellType::kHex20,
+                                           CellType::kHex27),
+                         [](const ::testing::TestParamInfo<CellType>& p) {
+                           if (p.param == CellType::kTet4) return std::string("P1");
+                           if (p.param == CellType::kTet10) return std::string("P2");
+                           return cell_name(p.param);
+                         });
 
 // A 2D master with a right-angled corner (the top and left sides of the square [0, 1]², group
 // "top_left"): the corner node is a vertex of the polygon (ContactSurface::corner). The averaged nodal

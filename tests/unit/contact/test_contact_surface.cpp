@@ -166,15 +166,19 @@ TEST(ContactSurface, DiskRimNormalsAreRadial) {
 // ---------------------------------------------------------------------------------------------------
 // 3D surfaces (Tri3, Tri6) and the modified Tri6 test basis.
 
-class ContactSurfaceBox : public ::testing::TestWithParam<int> {};
+/// The cells of the box: Tet4, Tet10 (box_mesh()) or Hex8, Hex20, Hex27 (tensor_mesh(), quadrilateral faces;
+/// Hex20's Quad8 faces with the modified test basis, whose lumped areas are positive too).
+class ContactSurfaceBox : public ::testing::TestWithParam<CellType> {};
 
 TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
-  const int order = GetParam();
-  const Mesh m = box_mesh(Vec3(0, 0, 0), Vec3(2, 1, 0.5), 4, 3, 2, order);
+  const CellType cells = GetParam();
+  const bool hex = cell_shape(cells) == CellShape::kTensor;
+  const Mesh m = hex ? tensor_mesh(cells, Vec3(0, 0, 0), Vec3(2, 1, 0.5), 4, 3, 2)
+                     : box_mesh(Vec3(0, 0, 0), Vec3(2, 1, 0.5), 4, 3, 2, cell_order(cells));
   for (const char* name : {"zmax", "zmin", "xmax", "ymin"}) {
     const ContactSurface s = make_contact_surface(m, name, 0, name);
     EXPECT_EQ(s.dim, 3);
-    EXPECT_EQ(s.facet_type, order == 1 ? CellType::kTri3 : CellType::kTri6);
+    EXPECT_EQ(s.facet_type, facet_type(cells));
     const std::string g = name;
     const int axis = g[0] - 'x';
     const double sign = g.substr(1) == "max" ? 1.0 : -1.0;
@@ -182,13 +186,13 @@ TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
     const Eigen::MatrixXd n = nodal_normals(s, s.X);
     for (Index k = 0; k < s.num_nodes(); ++k)
       EXPECT_NEAR((n.col(k) - sign * Eigen::Vector3d::Unit(axis)).norm(), 0.0, 1e-14) << name;
-    // Facet normals are outward with norm dS/dξ = 2 × facet area.
+    // Facet normals are outward with norm dS/dξ = 2 × facet area (a triangle), the facet area (a rectangle).
     double area = 0.0;
     for (Index f = 0; f < s.num_facets(); ++f) {
       const double xi[2] = {0.2, 0.3};
       const Eigen::VectorXd nf = facet_normal(s.facet_type, facet_coords(s, s.X, f), xi);
       EXPECT_GT(sign * nf[axis], 0.0);
-      area += 0.5 * nf.norm();
+      area += (hex ? 1.0 : 0.5) * nf.norm();
     }
     // Lumped areas: all positive (P2 too, with the modified test basis), summing to the face area.
     const double face = (axis == 0 ? 1 * 0.5 : axis == 1 ? 2 * 0.5 : 2 * 1);
@@ -196,12 +200,15 @@ TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
     EXPECT_NEAR(s.nodal_area.sum(), face, 1e-13);
     EXPECT_GT(s.nodal_area.minCoeff(), 0.0);
     // Border: the edges on the face's perimeter, and their vertices.
-    ASSERT_EQ(s.boundary_edge.size(), 3 * static_cast<std::size_t>(s.num_facets()));
+    const int ne = facet_num_edges(s.facet_type);
+    ASSERT_EQ(s.boundary_edge.size(), ne * static_cast<std::size_t>(s.num_facets()));
     double border = 0.0;
     for (Index f = 0; f < s.num_facets(); ++f)
-      for (int e = 0; e < 3; ++e)
-        if (s.boundary_edge[3 * f + e])
-          border += (s.X.col(s.facet(f)[triangle_edge(e)[0]]) - s.X.col(s.facet(f)[triangle_edge(e)[1]])).norm();
+      for (int e = 0; e < ne; ++e)
+        if (s.boundary_edge[ne * f + e])
+          border += (s.X.col(s.facet(f)[facet_edge(s.facet_type, e)[0]]) -
+                     s.X.col(s.facet(f)[facet_edge(s.facet_type, e)[1]]))
+                        .norm();
     const double perimeter = axis == 0 ? 3.0 : axis == 1 ? 5.0 : 6.0;
     EXPECT_NEAR(border, perimeter, 1e-13) << name;
     const Eigen::VectorXd lo = s.X.rowwise().minCoeff(), hi = s.X.rowwise().maxCoeff();
@@ -216,8 +223,14 @@ TEST_P(ContactSurfaceBox, OutwardNormalsBorderAndAreas) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(ContactSurface, ContactSurfaceBox, ::testing::Values(1, 2),
-                         [](const ::testing::TestParamInfo<int>& p) { return "P" + std::to_string(p.param); });
+INSTANTIATE_TEST_SUITE_P(ContactSurface, ContactSurfaceBox,
+                         ::testing::Values(CellType::kTet4, CellType::kTet10, CellType::kHex8, CellType::kHex20,
+                                           CellType::kHex27),
+                         [](const ::testing::TestParamInfo<CellType>& p) {
+                           if (p.param == CellType::kTet4) return std::string("P1");
+                           if (p.param == CellType::kTet10) return std::string("P2");
+                           return cell_name(p.param);
+                         });
 
 TEST(ContactSurfaceTestBasis, ModifiedTri6BasisIsAPartitionOfUnityWithPositiveIntegrals) {
   // A curved Tri6 (edge nodes lifted) and a flat one: Σ φ_a = 1 everywhere, ∫ φ_a > 0 for every a, and on

@@ -1,6 +1,8 @@
 // Finite-difference checks of every energy term (STYLE.md §5), through the shared helper.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <random>
 
 #include "support/finite_difference.hpp"
@@ -24,13 +26,14 @@ VectorXd random_vector(Index n, unsigned seed, double scale = 1.0) {
 
 struct Case {
   int dim, order;
+  std::optional<CellType> tensor;  ///< a quadrilateral or hexahedron type; none: simplices
 };
 class EnergyDerivatives : public ::testing::TestWithParam<Case> {};
 }  // namespace
 
 TEST_P(EnergyDerivatives, LinearElasticGradientAndHessian) {
-  const auto [dim, order] = GetParam();
-  const Mesh m = distorted_mesh(dim, order);
+  const auto [dim, order, tensor] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const auto mat = LinearElastic::from_young_poisson(3.0, 0.3, dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD);
@@ -41,8 +44,8 @@ TEST_P(EnergyDerivatives, LinearElasticGradientAndHessian) {
 }
 
 TEST_P(EnergyDerivatives, LoadsAndSumGradientAndHessian) {
-  const auto [dim, order] = GetParam();
-  const Mesh m = distorted_mesh(dim, order);
+  const auto [dim, order, tensor] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   EnergySum sum;
@@ -67,8 +70,8 @@ TEST_P(EnergyDerivatives, LoadsAndSumGradientAndHessian) {
 }
 
 TEST_P(EnergyDerivatives, RigidMotionsCostNoEnergy) {
-  const auto [dim, order] = GetParam();
-  const Mesh m = distorted_mesh(dim, order);
+  const auto [dim, order, tensor] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const auto mat = LinearElastic::from_young_poisson(1.0, 0.3, dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD);
@@ -91,8 +94,12 @@ TEST_P(EnergyDerivatives, RigidMotionsCostNoEnergy) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllElements, EnergyDerivatives,
-                         ::testing::Values(Case{2, 1}, Case{2, 2}, Case{3, 1}, Case{3, 2}),
+                         ::testing::Values(Case{2, 1, {}}, Case{2, 2, {}}, Case{3, 1, {}}, Case{3, 2, {}},
+                                           Case{2, 1, CellType::kQuad4}, Case{2, 2, CellType::kQuad8},
+                                           Case{2, 2, CellType::kQuad9}, Case{3, 1, CellType::kHex8},
+                                           Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27}),
                          [](const auto& p) {
+                           if (p.param.tensor) return cell_name(*p.param.tensor);
                            return "D" + std::to_string(p.param.dim) + "P" + std::to_string(p.param.order);
                          });
 

@@ -4,6 +4,8 @@
 // the cell.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include <cmath>
 #include <random>
 #include <string>
@@ -37,6 +39,7 @@ VectorXd moderate_displacement(const Mesh& m, const DofMap& dofs, double scale, 
 
 struct Case {
   int dim, order;
+  std::optional<CellType> tensor;  ///< a quadrilateral or hexahedron type; none: simplices
 };
 class HyperelasticEnergyDerivatives : public ::testing::TestWithParam<Case> {};
 
@@ -45,8 +48,8 @@ AnalysisModel analysis(int dim) { return dim == 2 ? AnalysisModel::kPlaneStrain 
 }  // namespace
 
 TEST_P(HyperelasticEnergyDerivatives, GradientAndHessianMatchFiniteDifferences) {
-  const auto [dim, order] = GetParam();
-  const Mesh m = distorted_mesh(dim, order);
+  const auto [dim, order, tensor] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   for (HyperelasticLaw law : {HyperelasticLaw::kNeoHookean, HyperelasticLaw::kMooneyRivlin}) {
@@ -62,8 +65,8 @@ TEST_P(HyperelasticEnergyDerivatives, GradientAndHessianMatchFiniteDifferences) 
 }
 
 TEST_P(HyperelasticEnergyDerivatives, SmallStrainLimitIsTheLinearStiffness) {
-  const auto [dim, order] = GetParam();
-  const Mesh m = distorted_mesh(dim, order);
+  const auto [dim, order, tensor] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const LinearElasticEnergy lin(m, dofs, 0, LinearElastic::from_young_poisson(3.0, 0.3, analysis(dim)), "lin");
@@ -90,8 +93,8 @@ TEST_P(HyperelasticEnergyDerivatives, SmallStrainLimitIsTheLinearStiffness) {
 }
 
 TEST_P(HyperelasticEnergyDerivatives, InvertedElementThrowsEvaluationErrorNamingTheCell) {
-  const auto [dim, order] = GetParam();
-  const Mesh m = distorted_mesh(dim, order);
+  const auto [dim, order, tensor] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const HyperelasticEnergy e(m, dofs, 0, Hyperelastic::from_young_poisson(HyperelasticLaw::kNeoHookean, 3.0, 0.3),
@@ -114,7 +117,11 @@ TEST_P(HyperelasticEnergyDerivatives, InvertedElementThrowsEvaluationErrorNaming
 }
 
 INSTANTIATE_TEST_SUITE_P(AllCells, HyperelasticEnergyDerivatives,
-                         ::testing::Values(Case{2, 1}, Case{2, 2}, Case{3, 1}, Case{3, 2}),
+                         ::testing::Values(Case{2, 1, {}}, Case{2, 2, {}}, Case{3, 1, {}}, Case{3, 2, {}},
+                                           Case{2, 1, CellType::kQuad4}, Case{2, 2, CellType::kQuad8},
+                                           Case{2, 2, CellType::kQuad9}, Case{3, 1, CellType::kHex8},
+                                           Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27}),
                          [](const ::testing::TestParamInfo<Case>& c) {
+                           if (c.param.tensor) return cell_name(*c.param.tensor);
                            return "D" + std::to_string(c.param.dim) + "P" + std::to_string(c.param.order);
                          });

@@ -63,3 +63,33 @@ TEST(Quadrature, PointsInsideAndWeightsPositive) {
       }
     }
 }
+
+// Tensor rules on [0, 1]^dim: exact for Π x_i^{a_i} with every a_i ≤ degree, ∫ = Π 1 / (a_i + 1); the
+// next degree in one variable is not integrated exactly (so the point count is the smallest).
+TEST(Quadrature, TensorRulesExactPerVariable) {
+  for (int dim = 2; dim <= 3; ++dim)
+    for (int degree = 0; degree <= 6; ++degree) {
+      const QuadratureRule r = tensor_quadrature(dim, degree);
+      const auto integral = [&](const int* a) {
+        double q = 0.0;
+        for (int p = 0; p < r.size(); ++p) {
+          double v = r.weights[p];
+          for (int i = 0; i < dim; ++i) v *= std::pow(r.point(p)[i], a[i]);
+          q += v;
+        }
+        return q;
+      };
+      const int top = degree | 1;  // an odd degree 2n − 1 is the rule's true exactness
+      for (int e = 0; e < (dim == 3 ? (top + 1) * (top + 1) * (top + 1) : (top + 1) * (top + 1)); ++e) {
+        const int a[3] = {e % (top + 1), (e / (top + 1)) % (top + 1), e / ((top + 1) * (top + 1))};
+        double exact = 1.0;
+        for (int i = 0; i < dim; ++i) exact /= a[i] + 1;
+        EXPECT_NEAR(integral(a), exact, 1e-14) << dim << "D degree " << degree;
+      }
+      const int over[3] = {top + 1, 0, 0};
+      EXPECT_GT(std::abs(integral(over) - 1.0 / (top + 2)), 1e-8) << dim << "D degree " << degree;
+    }
+  EXPECT_EQ(cell_quadrature(CellType::kQuad4, stiffness_quadrature_degree(CellType::kQuad4)).size(), 4);
+  EXPECT_EQ(cell_quadrature(CellType::kHex27, stiffness_quadrature_degree(CellType::kHex27)).size(), 27);
+  EXPECT_EQ(cell_quadrature(CellType::kTri6, 3).size(), simplex_quadrature(2, 3).size());
+}

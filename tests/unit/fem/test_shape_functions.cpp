@@ -7,8 +7,9 @@
 using namespace symcontact;
 
 namespace {
-const CellType kAll[] = {CellType::kLine2, CellType::kLine3, CellType::kTri3,
-                         CellType::kTri6,  CellType::kTet4,  CellType::kTet10};
+const CellType kAll[] = {CellType::kLine2, CellType::kLine3, CellType::kTri3,  CellType::kTri6,
+                         CellType::kTet4,  CellType::kTet10, CellType::kQuad4, CellType::kQuad8,
+                         CellType::kQuad9, CellType::kHex8,  CellType::kHex20, CellType::kHex27};
 
 std::vector<double> random_point(int d, std::mt19937& rng) {
   std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -62,5 +63,38 @@ TEST(ShapeFunctions, ReproduceLinearFieldsAndGradientsMatchFiniteDifferences) {
         for (int a = 0; a < n; ++a) EXPECT_NEAR(dN[a * d + i], (Np[a] - Nm[a]) / (2 * h), 1e-8) << cell_name(t);
       }
     }
+  }
+}
+
+// Order-2 cells reproduce every quadratic ξ_i ξ_j (complete P2: Σ_a N_a ξ_{a,i} ξ_{a,j} = ξ_i ξ_j); Quad9 and
+// Hex27 also reproduce the full tensor product Π ξ_i², which Quad8 and Hex20 (serendipity) do not.
+TEST(ShapeFunctions, QuadraticCompletenessAndTensorProducts) {
+  std::mt19937 rng(5);
+  const CellType order2[] = {CellType::kTri6,  CellType::kTet10, CellType::kQuad8,
+                             CellType::kQuad9, CellType::kHex20, CellType::kHex27};
+  for (CellType t : order2) {
+    const int n = cell_num_nodes(t), d = cell_dim(t);
+    const auto nodes = reference_nodes(t);
+    std::vector<double> N(n);
+    const auto x = random_point(d, rng);
+    shape_functions(t, x.data(), N.data(), nullptr);
+    for (int i = 0; i < d; ++i)
+      for (int j = i; j < d; ++j) {
+        double v = 0;
+        for (int a = 0; a < n; ++a) v += N[a] * nodes[a * d + i] * nodes[a * d + j];
+        EXPECT_NEAR(v, x[i] * x[j], 1e-14) << cell_name(t);
+      }
+    if (cell_shape(t) != CellShape::kTensor) continue;
+    double v = 0, exact = 1;
+    for (int a = 0; a < n; ++a) {
+      double m = N[a];
+      for (int i = 0; i < d; ++i) m *= nodes[a * d + i] * nodes[a * d + i];
+      v += m;
+    }
+    for (int i = 0; i < d; ++i) exact *= x[i] * x[i];
+    if (t == CellType::kQuad9 || t == CellType::kHex27)
+      EXPECT_NEAR(v, exact, 1e-14) << cell_name(t);
+    else
+      EXPECT_GT(std::abs(v - exact), 1e-6) << cell_name(t);
   }
 }

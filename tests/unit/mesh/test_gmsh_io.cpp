@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-
 #include "support/temp_folder.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/external_load.hpp"
@@ -148,4 +147,67 @@ TEST(GmshIo, MeshSizeAboveTheCellLimitIsRefusedNamingItsKey) {
   }
   opt.max_predicted_cells = 0;  // no limit (--allow-large-mesh)
   EXPECT_NO_THROW(read_mesh_file(kGeo + "square.geo", opt));
+}
+
+// A recombined .geo gives quadrilaterals: Quad4 at order 1; at order 2 Gmsh makes Quad9 (complete), or Quad8
+// when the file sets Mesh.SecondOrderIncomplete = 1. Edge nodes of the rim lie on the circle.
+TEST(GmshIo, RecombinedSurfaceGivesQuadrilaterals) {
+  MeshReadOptions opt;
+  opt.dim = 2;
+  const Mesh q4 = extract_body(read_mesh_file(kGeo + "disk_quads.geo", opt), 2, "disk", "g");
+  EXPECT_EQ(q4.cell_type, CellType::kQuad4);
+  EXPECT_NEAR(facet_group_measure(q4, q4.facet_groups.at("rim")), 2 * M_PI, 0.1);
+  opt.order = 2;
+  const Mesh q9 = extract_body(read_mesh_file(kGeo + "disk_quads.geo", opt), 2, "disk", "g");
+  EXPECT_EQ(q9.cell_type, CellType::kQuad9);
+  EXPECT_NEAR(facet_group_measure(q9, q9.facet_groups.at("rim")), 2 * M_PI, 1e-3);
+  const auto& rim = q9.facet_groups.at("rim");
+  for (Index k = 0; k < q9.num_facets(rim); ++k) EXPECT_NEAR(q9.x.col(rim.facets[3 * k + 2]).norm(), 1.0, 1e-10);
+  const symcontact::testing::TempFolder tmp;
+  const std::string incomplete =
+      tmp.write("disk_quad8.geo", symcontact::testing::read_text(kGeo + "disk_quads.geo") +
+                                      "\nMesh.SecondOrderIncomplete = 1;\n").string();
+  const Mesh q8 = extract_body(read_mesh_file(incomplete, opt), 2, "disk", "g");
+  EXPECT_EQ(q8.cell_type, CellType::kQuad8);
+  EXPECT_EQ(q8.num_cells(), q9.num_cells());
+}
+
+TEST(GmshIo, RecombinedVolumeGivesHexahedra) {
+  const CellType expected[3] = {CellType::kHex8, CellType::kHex27, CellType::kHex20};
+  const symcontact::testing::TempFolder tmp;
+  for (int k = 0; k < 3; ++k) {
+    MeshReadOptions opt;
+    opt.dim = 3;
+    opt.order = k == 0 ? 1 : 2;
+    std::string path = kGeo + "cube_hexes.geo";
+    if (k == 2)  // Hex20: the incomplete (serendipity) second order
+      path = tmp.write("cube_hex20.geo", symcontact::testing::read_text(path) + "\nMesh.SecondOrderIncomplete = 1;\n")
+                 .string();
+    const Mesh m = extract_body(read_mesh_file(path, opt), 3, "cube", "g");
+    EXPECT_EQ(m.cell_type, expected[k]);
+    EXPECT_EQ(m.num_cells(), 27);
+    EXPECT_EQ(m.facet_cell_type(), facet_type(expected[k]));
+    for (const char* face : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
+      ASSERT_TRUE(m.facet_groups.count(face)) << face;
+      Eigen::VectorXd n;
+      EXPECT_NEAR(facet_group_measure(m, m.facet_groups.at(face), &n), 1.0, 1e-12) << face;
+      EXPECT_NEAR(n.norm(), 1.0, 1e-12) << face;
+    }
+    EXPECT_NEAR(facet_group_measure(m, m.facet_groups.at("xmax"), nullptr), 1.0, 1e-12);
+  }
+}
+
+TEST(GmshIo, BodyMixingTrianglesAndQuadrilateralsIsRefusedNamingBoth) {
+  MeshReadOptions opt;
+  opt.dim = 2;
+  const MeshFile f = read_mesh_file(kGeo + "square_mixed.geo", opt);
+  try {
+    extract_body(f, 2, "block", "body[0].group");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "body[0].group");
+    EXPECT_NE(e.message().find("mixes element types"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("quad4"), std::string::npos) << e.message();
+    EXPECT_NE(e.message().find("tri3"), std::string::npos) << e.message();
+  }
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/energy/external_load.hpp"
 
 using namespace symcontact;
 
@@ -57,4 +58,36 @@ TEST(Mesh, FacetNotOnBoundaryIsRejected) {
   // The interior vertical edge x = 1 is shared by two cells.
   m.facet_groups["inside"].facets = {1, 4};
   EXPECT_THROW(m.locate_facets(), InputError);
+}
+
+// Quadrilateral and hexahedral meshes: the cells tile the box (measures add up), pass Mesh::check(), have
+// outward boundary groups of the right measure, and orient_cells() turns a reflected cell back.
+TEST(StructuredMesh, TensorMeshesOfEveryType) {
+  for (CellType t : {CellType::kQuad4, CellType::kQuad8, CellType::kQuad9, CellType::kHex8, CellType::kHex20,
+                     CellType::kHex27}) {
+    const int D = cell_dim(t);
+    Mesh m = tensor_mesh(t, Vec3(0, 0, 0), Vec3(2, 1, 3), 3, 2, 2);
+    EXPECT_NO_THROW(m.check()) << cell_name(t);
+    EXPECT_EQ(m.num_cells(), D == 2 ? 6 : 12);
+    const double volume = D == 2 ? 2.0 : 6.0;
+    DofMap dofs(D);
+    dofs.add_body(m.num_nodes());
+    const VectorXd f = body_force_vector(m, dofs, 0, [&](const double*, double* b) { b[0] = 1, b[1] = 0, b[2] = 0; });
+    double total = 0;
+    for (Index v = 0; v < m.num_nodes(); ++v) total += f[dofs.dof(0, v, 0)];
+    EXPECT_NEAR(total, volume, 1e-12) << cell_name(t);
+    const char* side = D == 2 ? "right" : "xmax";
+    Eigen::VectorXd n;
+    EXPECT_NEAR(facet_group_measure(m, m.facet_groups.at(side), &n), D == 2 ? 1.0 : 3.0, 1e-12) << cell_name(t);
+    EXPECT_NEAR(n[0], D == 2 ? 1.0 : 3.0, 1e-12) << cell_name(t);
+    // Reflect cell 0: it is now negative and is turned back.
+    const int* p = cell_reflection(t);
+    std::vector<Index> c0(m.cell(0), m.cell(0) + m.nodes_per_cell());
+    for (int a = 0; a < m.nodes_per_cell(); ++a) m.cells[a] = c0[p[a]];
+    EXPECT_LT(simplex_determinant(m, 0), 0.0) << cell_name(t);
+    EXPECT_EQ(m.orient_cells(), 1);
+    EXPECT_NO_THROW(m.check()) << cell_name(t);
+    perturb_interior_nodes(m, 0.5, 0.2, 7);
+    EXPECT_NO_THROW(m.check()) << cell_name(t);
+  }
 }

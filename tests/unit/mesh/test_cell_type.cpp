@@ -1,0 +1,104 @@
+#include "symcontact/mesh/cell_type.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "symcontact/fem/shape_functions.hpp"
+
+using namespace symcontact;
+
+namespace {
+const CellType kTensor[] = {CellType::kQuad4, CellType::kQuad8, CellType::kQuad9,
+                            CellType::kHex8,  CellType::kHex20, CellType::kHex27};
+
+Eigen::VectorXd ref_point(CellType t, int a) {
+  const std::vector<double> r = reference_nodes(t);
+  const int d = cell_dim(t);
+  return Eigen::Map<const Eigen::VectorXd>(r.data() + a * d, d);
+}
+}  // namespace
+
+TEST(CellType, GmshNumbersRoundTrip) {
+  for (int k = 0; k <= static_cast<int>(CellType::kHex27); ++k) {
+    const auto t = static_cast<CellType>(k);
+    CellType back;
+    ASSERT_TRUE(from_gmsh_element_type(gmsh_element_type(t), back));
+    EXPECT_EQ(back, t);
+  }
+  CellType none;
+  EXPECT_FALSE(from_gmsh_element_type(6, none));  // prism
+  EXPECT_FALSE(from_gmsh_element_type(7, none));  // pyramid
+}
+
+// The reflection maps each node to the node at the mirrored reference point (ξ ↔ η swapped).
+TEST(CellType, ReflectionSwapsTheFirstTwoReferenceAxes) {
+  for (CellType t : kTensor) {
+    const int* p = cell_reflection(t);
+    for (int a = 0; a < cell_num_nodes(t); ++a) {
+      Eigen::VectorXd x = ref_point(t, a);
+      std::swap(x[0], x[1]);
+      EXPECT_LT((ref_point(t, p[a]) - x).norm(), 1e-15) << cell_name(t) << " node " << a;
+    }
+  }
+}
+
+// Facet f's nodes lie on one face of the reference cell, in the facet type's own order (vertices, edge
+// midpoints, centre), and the facet's right-hand normal points out of the cell.
+TEST(CellType, FacetsAreOrderedAndOutward) {
+  for (CellType t : kTensor) {
+    const CellType ft = facet_type(t);
+    const int d = cell_dim(t);
+    Eigen::VectorXd centre = Eigen::VectorXd::Constant(d, 0.5);
+    for (int f = 0; f < cell_num_facets(t); ++f) {
+      const int* loc = cell_facet_nodes(t, f);
+      const int nfv = cell_num_vertices(ft);
+      // Node k of the facet is at the facet-reference point of node k, mapped by the facet's vertices.
+      const std::vector<double> fr = reference_nodes(ft);
+      std::vector<double> N(cell_num_nodes(ft));
+      for (int k = 0; k < cell_num_nodes(ft); ++k) {
+        const CellType linear = d == 2 ? CellType::kLine2 : CellType::kQuad4;
+        shape_functions(linear, fr.data() + k * (d - 1), N.data(), nullptr);
+        Eigen::VectorXd x = Eigen::VectorXd::Zero(d);
+        for (int v = 0; v < nfv; ++v) x += N[v] * ref_point(t, loc[v]);
+        EXPECT_LT((ref_point(t, loc[k]) - x).norm(), 1e-15) << cell_name(t) << " facet " << f << " node " << k;
+      }
+      Eigen::VectorXd normal(d);
+      if (d == 2) {
+        const Eigen::VectorXd e = ref_point(t, loc[1]) - ref_point(t, loc[0]);
+        normal << e[1], -e[0];
+      } else {
+        const Eigen::Vector3d a = ref_point(t, loc[1]) - ref_point(t, loc[0]);
+        const Eigen::Vector3d b = ref_point(t, loc[3]) - ref_point(t, loc[0]);
+        normal = a.cross(b);
+      }
+      EXPECT_GT(normal.dot(ref_point(t, loc[0]) - centre), 0.0) << cell_name(t) << " facet " << f;
+    }
+  }
+}
+
+// VTK's node k of a Hex27 (VTK_TRIQUADRATIC_HEXAHEDRON, vtkTriQuadraticHexahedron.h) is the centroid of
+// the VTK vertices listed here; vtk_node_order() must pick the Gmsh node at that point.
+TEST(CellType, VtkOrderOfHexahedraMatchesVtkDefinition) {
+  const std::vector<std::vector<int>> vtk27 = {
+      {0}, {1}, {2}, {3}, {4}, {5}, {6}, {7}, {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4},
+      {0, 4}, {1, 5}, {2, 6}, {3, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 2, 6, 7}, {0, 1, 2, 3},
+      {4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
+  for (CellType t : {CellType::kHex20, CellType::kHex27, CellType::kQuad8, CellType::kQuad9}) {
+    const int* order = vtk_node_order(t);
+    for (int k = 0; k < cell_num_nodes(t); ++k) {
+      // Quadrilaterals: VTK_QUADRATIC_QUAD and VTK_BIQUADRATIC_QUAD list vertices, edges m01 m12 m23 m30, centre.
+      const std::vector<int> quad_def[9] = {{0}, {1}, {2}, {3}, {0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 1, 2, 3}};
+      const std::vector<int>& def = cell_dim(t) == 3 ? vtk27[k] : quad_def[k];
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(cell_dim(t));
+      for (int v : def) x += ref_point(t, v) / static_cast<double>(def.size());
+      EXPECT_LT((ref_point(t, order[k]) - x).norm(), 1e-15) << cell_name(t) << " VTK node " << k;
+    }
+  }
+  EXPECT_EQ(vtk_cell_type(CellType::kQuad4), 9);
+  EXPECT_EQ(vtk_cell_type(CellType::kQuad8), 23);
+  EXPECT_EQ(vtk_cell_type(CellType::kQuad9), 28);
+  EXPECT_EQ(vtk_cell_type(CellType::kHex8), 12);
+  EXPECT_EQ(vtk_cell_type(CellType::kHex20), 25);
+  EXPECT_EQ(vtk_cell_type(CellType::kHex27), 29);
+}
