@@ -6,12 +6,14 @@
 ///   SymcontactError (base) ← InputError (2: file, key, message), SolveError (3), InternalError (4).
 
 #include <cmath>
+#include <cstdlib>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include "problem.hpp"
 #include "study_run.hpp"
+#include "symcontact/core/blas_threads.hpp"
 #include "symcontact/core/error.hpp"
 
 namespace py = pybind11;
@@ -84,6 +86,7 @@ PYBIND11_MODULE(_symcontact, m) {
       .def("get", &Problem::get, py::arg("key"))
       .def("set", &Problem::set, py::arg("key"), py::arg("value"))
       .def("remove", &Problem::remove, py::arg("key"))
+      .def("update", &Problem::update, py::arg("changes"))
       .def("__contains__", &Problem::contains)
       .def("to_dict", &Problem::as_dict)
       .def_property_readonly("toml", &Problem::toml_text)
@@ -95,7 +98,13 @@ PYBIND11_MODULE(_symcontact, m) {
   m.def(
       "run",
       [](const Problem& problem, const py::object& out_dir, const py::object& progress, double mesh_size,
-         bool allow_large_mesh, bool allow_geo_commands, bool write_vtu, const std::string& verbosity) {
+         bool allow_large_mesh, bool allow_geo_commands, bool write_vtu, const std::string& verbosity, int threads) {
+        // BLAS threads as the command line sets them (--threads; default 1 unless OPENBLAS_NUM_THREADS is
+        // set): the same thread count gives the same sums, so the same digits as `symcontact run`.
+        if (threads > 0)
+          set_blas_threads(threads);
+        else if (!std::getenv("OPENBLAS_NUM_THREADS"))
+          set_blas_threads(1);
         StudyOptions o;
         o.files = out_dir.is_none() ? OutputFiles::kNone : OutputFiles::kWrite;
         if (!out_dir.is_none()) o.out_dir = py::str(out_dir);
@@ -112,5 +121,5 @@ PYBIND11_MODULE(_symcontact, m) {
       },
       py::arg("problem"), py::arg("out_dir") = py::none(), py::arg("progress") = py::none(),
       py::arg("mesh_size") = 0.0, py::arg("allow_large_mesh") = false, py::arg("allow_geo_commands") = false,
-      py::arg("write_vtu") = true, py::arg("verbosity") = "quiet");
+      py::arg("write_vtu") = true, py::arg("verbosity") = "quiet", py::arg("threads") = 0);
 }

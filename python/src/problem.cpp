@@ -65,6 +65,22 @@ void Problem::remove(const std::string& key_path) {
   change_and_validate([&] { remove_node(doc_, path); });
 }
 
+void Problem::update(const py::dict& changes) {
+  std::vector<std::pair<std::vector<PathPart>, std::unique_ptr<toml::node>>> edits;
+  for (auto item : changes) {
+    const std::string key = py::str(item.first);
+    edits.emplace_back(split_key_path(key), item.second.is_none() ? nullptr : to_toml(item.second, key));
+  }
+  change_and_validate([&] {
+    for (auto& [path, value] : edits) {
+      if (value)
+        set_node(doc_, path, std::move(value));
+      else
+        remove_node(doc_, path);
+    }
+  });
+}
+
 std::string Problem::toml_text() const {
   std::ostringstream os;
   os << doc_;

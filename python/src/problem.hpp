@@ -27,6 +27,10 @@ class Problem {
   bool contains(const std::string& key_path) const;
   void set(const std::string& key_path, const pybind11::handle& value);
   void remove(const std::string& key_path);
+  /// Several changes, key path → value (None: remove the key), validated once after all of them: for
+  /// changes that are only valid together (steps.load_factors and every `factors` array, a friction law
+  /// and its coefficient). All or nothing.
+  void update(const pybind11::dict& changes);
 
   /// The document as TOML text (toml++'s formatting: keys sorted, comments dropped).
   std::string toml_text() const;

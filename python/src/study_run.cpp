@@ -23,20 +23,23 @@ struct Gathered {
   std::vector<std::vector<Eigen::MatrixXd>> stress;         ///< [body][step] 6 × n
   std::vector<std::vector<Eigen::VectorXd>> von_mises;      ///< [body][step] n
   std::vector<std::vector<ContactTable>> tables;            ///< [pair][step]
+  std::vector<std::string> pair_names;
+
+  void start(const Model& model) {
+    dim = model.dim();
+    for (const auto& b : model.bodies()) {
+      body_names.push_back(b->name);
+      nodes.push_back(b->mesh.x);
+    }
+    displacement.resize(body_names.size());
+    stress.resize(body_names.size());
+    von_mises.resize(body_names.size());
+    tables.resize(model.contacts().pairs.size());
+    for (std::size_t p = 0; p < tables.size(); ++p) pair_names.push_back(model.contacts().pairs[p].name);
+  }
 
   void add(const StepRecord& r) {
     const auto& bodies = r.model.bodies();
-    if (body_names.empty()) {
-      dim = r.model.dim();
-      for (const auto& b : bodies) {
-        body_names.push_back(b->name);
-        nodes.push_back(b->mesh.x);
-      }
-      displacement.resize(bodies.size());
-      stress.resize(bodies.size());
-      von_mises.resize(bodies.size());
-      tables.resize(r.contact.size());
-    }
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       displacement[b].push_back(r.fields[b].displacement.topRows(dim));
       stress[b].push_back(r.fields[b].stress);
@@ -102,11 +105,11 @@ py::dict results_dict(const Gathered& g, const RunResult& r) {
   }
   out["bodies"] = bodies;
   py::list pairs;
-  for (const auto& steps : g.tables) {
+  for (std::size_t p = 0; p < g.tables.size(); ++p) {
     py::dict pair;
-    pair["name"] = steps.empty() ? std::string() : steps.front().pair;
+    pair["name"] = g.pair_names[p];
     py::list ts;
-    for (const ContactTable& t : steps) ts.append(table_dict(t));
+    for (const ContactTable& t : g.tables[p]) ts.append(table_dict(t));
     pair["steps"] = ts;
     pairs.append(pair);
   }
@@ -129,6 +132,7 @@ py::dict run_study(const Problem& problem, const StudyOptions& options) {
   }
   Gathered gathered;
   const py::object progress = options.progress;
+  opt.on_model = [&](const Model& model) { gathered.start(model); };
   opt.on_step = [&](const StepRecord& r) {
     gathered.add(r);
     if (progress.is_none()) return;

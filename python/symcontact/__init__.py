@@ -56,6 +56,11 @@ class Problem:
     def remove(self, key):
         self._doc.remove(key)
 
+    def update(self, changes=None, **keys):
+        """Several changes checked together (all or nothing): {key: value}, a value None removes the key.
+        For changes only valid together, e.g. steps.load_factors and every `factors` array."""
+        self._doc.update(dict(changes or {}, **keys))
+
     def __getitem__(self, key):
         return self._doc.get(key)
 
@@ -93,7 +98,7 @@ class Problem:
         return self._doc.num_steps
 
     def run(self, out_dir=None, progress=None, *, mesh_size=None, allow_large_mesh=False,
-            allow_geo_commands=False, write_vtu=True, verbosity="quiet", check=True):
+            allow_geo_commands=False, write_vtu=True, verbosity="quiet", threads=None, check=True):
         """Solves the problem and returns a Result.
 
         out_dir: None (default) writes nothing; a folder gets what `symcontact run --out` writes.
@@ -101,12 +106,14 @@ class Problem:
           raises ends the run and propagates).
         mesh_size, allow_large_mesh, allow_geo_commands: as the command line's options.
         verbosity: "quiet", "normal", "verbose" or "debug" (the log on stderr).
+        threads: BLAS threads of the factorisations, as the command line's --threads (default: 1, or
+          OPENBLAS_NUM_THREADS when set; for a process-wide setting).
         check: a failed solve raises SolveError (its `result` holds the finished steps); False returns
           the Result with status "solve_failed".
         """
         raw = _symcontact.run(self._doc, None if out_dir is None else os.fspath(out_dir), progress,
                               0.0 if mesh_size is None else float(mesh_size), allow_large_mesh,
-                              allow_geo_commands, write_vtu, verbosity)
+                              allow_geo_commands, write_vtu, verbosity, 0 if threads is None else int(threads))
         result = Result(raw)
         if check and result.status != "ok":
             error = SolveError(result.message)

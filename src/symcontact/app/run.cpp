@@ -305,6 +305,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   std::unique_ptr<Model> model = Model::build(spec, log, times, options.meshing);
   check_setup(*model);
   const DofMap& dofs = model->dofs();
+  if (options.on_model) options.on_model(*model);
 
   const bool write_files = options.files == OutputFiles::kWrite;
   if (write_files) {

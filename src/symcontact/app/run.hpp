@@ -60,6 +60,8 @@ struct RunOptions {
   /// Called after each finished load step; an exception it throws ends the run and propagates (as an
   /// internal error for summary.json, which then says "internal_error").
   std::function<void(const StepRecord&)> on_step;
+  /// Called once the model is built and checked, before the first step (and before the output folder).
+  std::function<void(const Model&)> on_model;
   MeshingOverrides meshing;   ///< --mesh-size (> 0 overrides problem.mesh_size) and the meshing limits
   bool write_vtu = true;      ///< and the problem's output.vtu
   /// kStopCleanly installs the handlers once the output folder exists (before, a signal ends the
