@@ -22,3 +22,19 @@ def cli():
         return subprocess.run([path, *map(str, args)], capture_output=True, text=True)
 
     return run
+
+
+def ink(png):
+    """The fraction of a picture's pixels that are not the white background (0: an empty picture)."""
+    import matplotlib.image
+
+    pixels = matplotlib.image.imread(str(png))[..., :3]
+    return float((pixels.min(axis=-1) < 0.9).mean())
+
+
+def run_python(script, *args, cwd=None):
+    """Runs a Python script of the repository with this interpreter and the module of this build."""
+    import sys
+
+    return subprocess.run([sys.executable, str(script), *map(str, args)], capture_output=True, text=True,
+                          cwd=cwd, env=dict(os.environ, MPLBACKEND="Agg"))
