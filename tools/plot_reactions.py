@@ -78,7 +78,8 @@ def main(argv=None):
     ap.add_argument("--steady", nargs=2, type=int, default=None, metavar=("FIRST", "LAST"),
                     help="steps over which the mean |R_x / R_y| is printed")
     ap.add_argument("--ratio", type=float, default=None, metavar="MU",
-                    help="add a panel with |R_x / R_y| and a dashed line at MU")
+                    help="add a panel with the ratio |R_t / R_n| and a dashed line at MU")
+    ap.add_argument("--ratio-label", default=None, help="legend of that line (default: friction coefficient MU)")
     ap.add_argument("--title", default=None, help="picture title")
     args = ap.parse_args(argv)
     if args.labels is not None and len(args.labels) != len(args.files):
@@ -129,7 +130,8 @@ def main(argv=None):
     if ax_ratio is None:
         ax.set_xlabel("load step")
     else:
-        ax_ratio.axhline(args.ratio, color="k", ls="--", lw=1, label=f"friction coefficient {args.ratio:g}")
+        ax_ratio.axhline(args.ratio, color="k", ls="--", lw=1,
+                         label=args.ratio_label or f"friction coefficient {args.ratio:g}")
         ax_ratio.set_xlabel("load step")
         ax_ratio.set_ylabel(ratio_name)
         ax_ratio.grid(True, alpha=0.3)
