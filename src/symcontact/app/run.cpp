@@ -239,6 +239,19 @@ void add_solver_statistics(Json& js, const SolveReport* contact, const Equilibri
   js["num_free_dofs"] = static_cast<double>(r.num_free);
 }
 
+/// The progress line's account of a step: the contact solve's iterations (`contact` not null) or Newton's.
+std::string progress_text(const SolveReport* contact, const EquilibriumReport& newton) {
+  std::ostringstream s;
+  if (contact)
+    s << "geometry iterations " << contact->geometry_iterations << ", IPOPT iterations " << contact->ipopt_iterations
+      << (contact->coulomb_iterations ? ", Coulomb iterations " + std::to_string(contact->coulomb_iterations)
+                                      : std::string())
+      << (contact->cuts ? ", " + std::to_string(contact->substeps.size()) + " sub-steps" : std::string());
+  else
+    s << "iterations " << newton.iterations << ", residual " << newton.residual;
+  return s.str();
+}
+
 /// The reactions of summary.json: ∇E(u) at the Dirichlet boundaries' nodes, per boundary.
 Json reactions_json(const Model& model, const FixedDofs& fixed, const VectorXd& u) {
   VectorXd g = VectorXd::Zero(model.dofs().num_dofs());
@@ -434,15 +447,9 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     summary["steps"].push_back(js);
     result.steps_done = step + 1;
     write_summary();
-    std::ostringstream s;
-    if (has_contact)
-      s << "geometry iterations " << lrep.geometry_iterations << ", IPOPT iterations " << lrep.ipopt_iterations
-        << (lrep.coulomb_iterations ? ", Coulomb iterations " + std::to_string(lrep.coulomb_iterations) : std::string())
-        << (lrep.cuts ? ", " + std::to_string(lrep.substeps.size()) + " sub-steps" : std::string());
-    else
-      s << "iterations " << rep.iterations << ", residual " << rep.residual;
-    if (options.on_step) options.on_step(StepRecord{step + 1, nsteps, *model, js, fields, tables, s.str()});
-    log.progress("load step", step + 1, nsteps, s.str() + clock.suffix(step + 1, nsteps));
+    const std::string text = progress_text(has_contact ? &lrep : nullptr, rep);
+    if (options.on_step) options.on_step(StepRecord{step + 1, nsteps, *model, js, fields, tables, text});
+    log.progress("load step", step + 1, nsteps, text + clock.suffix(step + 1, nsteps));
   }
   summary["status"] = "ok";
   write_summary();
