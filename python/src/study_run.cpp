@@ -135,9 +135,10 @@ py::dict run_study(const Problem& problem, const StudyOptions& options) {
   opt.on_model = [&](const Model& model) { gathered.start(model); };
   opt.on_step = [&](const StepRecord& r) {
     gathered.add(r);
-    if (progress.is_none()) return;
     py::gil_scoped_acquire gil;
-    progress(r.step, r.num_steps, r.progress);
+    // Ctrl-C (SIGINT: Python's handler only sets a flag while the solve runs) ends the run after the step.
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    if (!progress.is_none()) progress(r.step, r.num_steps, r.progress);
   };
   const Logger log(std::cerr, options.verbosity);
   RunResult result;

@@ -29,8 +29,8 @@ struct StudyOptions {
 ///   XY YZ XZ), von_mises (steps × n)}],
 ///   contact: [{name, steps: [{columns: [names in CSV order], side, surface, status (lists of str),
 ///   node (int array), <numeric column>: float array, ...}]}].
-/// Input errors raise InputError before any folder is created; an exception of the progress callback
-/// ends the run and propagates.
+/// Input errors raise InputError before any folder is created; an exception of the progress callback, or
+/// a KeyboardInterrupt from Ctrl-C (checked after each load step), ends the run and propagates.
 pybind11::dict run_study(const Problem& problem, const StudyOptions& options);
 
 }  // namespace symcontact::python

@@ -150,3 +150,21 @@ def test_input_errors_leave_no_folder(tmp_path):
         symcontact.Problem(INCLINED).run(out_dir=tmp_path / "file")
     with pytest.raises(symcontact.InputError, match="mesh_size"):
         symcontact.Problem(INCLINED).run(mesh_size=-1)
+
+
+def test_ctrl_c_during_a_solve_ends_the_run_after_its_step():
+    import os
+    import signal
+
+    problem = symcontact.Problem(INCLINED)
+    problem["problem.mesh_size"] = 0.1
+    steps = []
+
+    def interrupt_during_step_3(step, n, message):
+        steps.append(step)
+        if step == 2:  # SIGINT as Ctrl-C sends it, while step 3 is being solved (the GIL released)
+            threading.Timer(0.02, os.kill, (os.getpid(), signal.SIGINT)).start()
+
+    with pytest.raises(KeyboardInterrupt):
+        problem.run(progress=interrupt_during_step_3)
+    assert steps[:2] == [1, 2] and len(steps) <= 4  # not the 10 steps of the whole run
