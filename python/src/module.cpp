@@ -33,7 +33,7 @@ py::object new_exception(py::module_& m, const char* name, py::handle base, int 
 }
 
 /// Raises an instance of `type` with message `what` and the attributes `attrs`.
-void raise(const py::object& type, const std::string& what, const py::dict& attrs) {
+void raise(py::handle type, const std::string& what, const py::dict& attrs) {
   py::object exc = type(what);
   for (auto item : attrs) exc.attr(item.first) = item.second;
   PyErr_SetObject(type.ptr(), exc.ptr());
@@ -52,15 +52,20 @@ Verbosity verbosity_of(const std::string& name) {
 PYBIND11_MODULE(_symcontact, m) {
   m.doc() = "symcontact: frictional contact by interior point (the compiled part; import symcontact)";
   m.attr("__version__") = SYMCONTACT_VERSION;
+  // The types live as long as the module's attributes; the handles below (used by the translator) hold no
+  // reference of their own, so that nothing is released after the interpreter has finalised.
   py::object base = new_exception(m, "SymcontactError", PyExc_Exception, kExitInternalError,
                                   "An error of symcontact; `exit_code` is the command line's exit code for it.");
-  static py::object input_error = new_exception(
-      m, "InputError", base, kExitInputError,
-      "Bad input (exit code 2): `file`, `key` and `message` as in the command line's 'FILE: KEY: message'.");
-  static py::object solve_error =
-      new_exception(m, "SolveError", base, kExitSolveError, "A solve that failed (exit code 3).");
-  static py::object internal_error =
-      new_exception(m, "InternalError", base, kExitInternalError, "An error of symcontact itself (exit code 4).");
+  static py::handle input_error =
+      new_exception(m, "InputError", base, kExitInputError,
+                    "Bad input (exit code 2): `file`, `key` and `message` as in the command line's "
+                    "'FILE: KEY: message'.")
+          .release();
+  static py::handle solve_error =
+      new_exception(m, "SolveError", base, kExitSolveError, "A solve that failed (exit code 3).").release();
+  static py::handle internal_error =
+      new_exception(m, "InternalError", base, kExitInternalError, "An error of symcontact itself (exit code 4).")
+          .release();
 
   py::register_exception_translator([](std::exception_ptr p) {
     try {
