@@ -31,8 +31,9 @@ class SummaryError(Exception):
     pass
 
 
-def reaction_history(path, body, boundary):
-    """[(step, R_x, R_y)] of one summary.json: the summed reactions of `body` (on `boundary`, if given)."""
+def reaction_vectors(path, body, boundary):
+    """[(step, R)] of one summary.json, R the summed reaction vector (2 or 3 components) of `body` (on
+    `boundary`, if given)."""
     try:
         with open(path) as f:
             summary = json.load(f)
@@ -43,23 +44,25 @@ def reaction_history(path, body, boundary):
         raise SummaryError(f"{path}: no steps (status {summary.get('status')!r})")
     out = []
     for k, step in enumerate(steps):
-        rx = ry = 0.0
-        found = False
+        total = None
         for r in step.get("reactions", []):
             if r.get("body") != body or (boundary and r.get("boundary") != boundary):
                 continue
             force = r.get("force") or []
             if len(force) < 2:
                 raise SummaryError(f"{path}: steps[{k}].reactions: a force with fewer than 2 components")
-            rx += force[0]
-            ry += force[1]
-            found = True
-        if not found:
+            total = list(force) if total is None else [a + b for a, b in zip(total, force)]
+        if total is None:
             names = sorted({(r.get("body"), r.get("boundary")) for r in step.get("reactions", [])})
             raise SummaryError(f"{path}: steps[{k}]: no reaction of body {body!r}"
                                + (f" on {boundary!r}" if boundary else "") + f" (reactions: {names})")
-        out.append((int(step.get("step", k + 1)), rx, ry))
+        out.append((int(step.get("step", k + 1)), total))
     return out
+
+
+def reaction_history(path, body, boundary):
+    """[(step, R_x, R_y)] of one summary.json: the summed reactions of `body` (on `boundary`, if given)."""
+    return [(step, r[0], r[1]) for step, r in reaction_vectors(path, body, boundary)]
 
 
 def reaction_ratios(path, body, boundary):

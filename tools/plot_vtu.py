@@ -14,7 +14,10 @@ that of the nodes inside the window.
 
 2D: triangles and quadrilaterals, linear or quadratic (quadratic cells are drawn by their vertices).
 3D: tetrahedra and hexahedra, linear or quadratic (drawn by their vertices); the boundary faces are drawn
-in an orthographic view.
+in an orthographic view. Below it, when the files carry contact results (point data "contact_status",
+written for runs with [[contact]]), each body's contact face, which the bodies hide from each other in the
+main view: its boundary faces whose nodes all lie on a contact surface, deformed, seen from outside the
+body along their mean outward normal, on the same colour scale.
 
 Needs only python3, numpy and matplotlib (Debian: python3-numpy python3-matplotlib).
 """
@@ -245,6 +248,52 @@ def draw_3d(ax, bodies, fields, scale, norm, cmap):
     return pc
 
 
+def outward_faces(x, faces):
+    """[(cell, vertex triple, outward normal)] of 3D boundary faces at positions x."""
+    out = []
+    for cell, tri, opposite in faces:
+        p = x[list(tri)]
+        normal = np.cross(p[1] - p[0], p[2] - p[0])
+        if normal @ (p[0] - x[opposite]) < 0.0:
+            normal = -normal
+        out.append((cell, tri, normal))
+    return out
+
+
+def contact_faces(body):
+    """The boundary faces of a 3D body whose vertices all lie on a contact surface (contact_status >= 0)."""
+    status = body.point_data.get("contact_status")
+    if status is None:
+        return []
+    return [f for f in body.boundary_polygons() if all(status[k] >= 0 for k in f[1])]
+
+
+def draw_contact_face(ax, body, faces, field, scale, norm, cmap):
+    """The faces, deformed, seen from outside the body along their mean outward normal n."""
+    values, where = field
+    x = body.points[:, :3] + scale * body.u[:, :3]
+    oriented = outward_faces(x, faces)
+    n = sum(f[2] for f in oriented)
+    n = n / np.linalg.norm(n)
+    # e1: the face's direction of largest spread in the plane normal to n, its largest component positive.
+    pts = x[sorted({k for _, tri, _ in oriented for k in tri})]
+    pts = pts - pts.mean(axis=0)
+    pts = pts - np.outer(pts @ n, n)
+    e1 = np.linalg.svd(pts, full_matrices=False)[2][0]
+    if e1[np.argmax(np.abs(e1))] < 0:
+        e1 = -e1
+    e2 = np.cross(n, e1)  # (e1, e2, n) right-handed: the viewer is on the +n side
+    polys = [[(q @ e1, q @ e2) for q in x[list(tri)]] for _, tri, _ in oriented]
+    colours = [values[list(tri)].mean() if where == "point" else values[cell] for cell, tri, _ in oriented]
+    ax.add_collection(PolyCollection(polys, array=np.asarray(colours), cmap=cmap, norm=norm, edgecolors="k",
+                                     linewidths=0.15))
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.set_axis_off()
+    ax.set_title(f"contact face of {body.name}, seen from outside along n = ({n[0]:.2g}, {n[1]:.2g}, {n[2]:.2g})",
+                 fontsize=9)
+
+
 def _limits(text):
     try:
         lo, hi = (float(v) for v in text.split(","))
@@ -315,7 +364,16 @@ def main(argv=None):
     norm = matplotlib.colors.Normalize(vmin=lo, vmax=hi)
     cmap = plt.get_cmap("viridis")
 
-    fig, ax = plt.subplots(figsize=(8, 6), dpi=120)
+    faces = [contact_faces(b) for b in bodies] if dim == 3 else []
+    with_faces = [(b, f, field) for b, f, field in zip(bodies, faces, fields) if f]
+    if with_faces:
+        fig = plt.figure(figsize=(8, 9), dpi=120)
+        grid = fig.add_gridspec(1 + len(with_faces), 1, height_ratios=[2.4] + [1.0] * len(with_faces))
+        ax = fig.add_subplot(grid[0])
+        for k, (b, f, field) in enumerate(with_faces):
+            draw_contact_face(fig.add_subplot(grid[1 + k]), b, f, field, scale, norm, cmap)
+    else:
+        fig, ax = plt.subplots(figsize=(8, 6), dpi=120)
     draw = draw_2d if dim == 2 else draw_3d
     mappable = draw(ax, bodies, fields, scale, norm, cmap)
     ax.set_aspect("equal")
@@ -334,7 +392,8 @@ def main(argv=None):
     x_lo, x_hi = ax.get_xlim()
     y_lo, y_hi = ax.get_ylim()
     aspect = (y_hi - y_lo) / max(x_hi - x_lo, 1e-300)
-    fig.set_size_inches(8.0, float(np.clip(6.4 * aspect + 1.6, 3.0, 9.0)))
+    height = float(np.clip(6.4 * aspect + 1.6, 3.0, 9.0))
+    fig.set_size_inches(8.0, height * (1.0 + 0.4 * len(with_faces)))
     cax = make_axes_locatable(ax).append_axes("right", size="3%", pad=0.15)
     fig.colorbar(mappable, cax=cax, label=args.field)
     title = args.title or ", ".join(b.name for b in bodies)

@@ -19,6 +19,7 @@
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/setup_checks.hpp"
 #include "symcontact/post/contact_results.hpp"
+#include "symcontact/post/contact_table.hpp"
 #include "symcontact/post/step_checks.hpp"
 #include "symcontact/post/stress_recovery.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
@@ -51,58 +52,25 @@ std::string step_file(const std::string& body, int step, const char* ext = "vtu"
   return body + buf;
 }
 
-void write_contact_csv(const Model& model, const ContactPairResult& r, const std::vector<Eigen::VectorXd>& accumulated,
-                       const std::string& path) {
+/// Writes `table` as CSV (contact_table.hpp gives the columns): numbers with 17 significant digits, NaN as
+/// "nan" (numpy reads it).
+void write_contact_csv(const ContactTable& table, const std::string& path) {
   write_file_atomically(path, [&](std::ostream& os) {
-    const int D = model.dim();
-    const char* xyz[] = {"x", "y", "z"};
     os << "side,surface,node";
-    for (int i = 0; i < D; ++i) os << ',' << xyz[i];
-    for (int i = 0; i < D; ++i) os << ',' << xyz[i] << "_ref";
-    os << ",gap,pressure,current_pressure";
-    for (int i = 0; i < D; ++i) os << ",t" << xyz[i];
-    for (int i = 0; i < D; ++i) os << ",f" << xyz[i];
-    for (int i = 0; i < D; ++i) os << ",fn_" << xyz[i];
-    for (int i = 0; i < D; ++i) os << ",slip_" << xyz[i];
-    os << ",accumulated_slip";
-    for (int i = 0; i < D; ++i) os << ",u" << xyz[i];
-    if (D == 2) os << ",t_tangential,slip_tangential";
+    for (const std::string& name : table.numeric_names) os << ',' << name;
     os << ",status\n";
     os.precision(17);
-    static const char* status[] = {"open", "contact", "slip"};
-    for (std::size_t side = 0; side < r.sides.size(); ++side) {
-      const auto& sr = r.sides[side];
-      const ContactSurface& s = model.contacts().surfaces[sr.surface];
-      const bool friction = std::isfinite(sr.slip.maxCoeff()) || sr.slip.array().isFinite().any();
-      for (Index k = 0; k < s.num_nodes(); ++k) {
-        os << (side == 0 ? "a" : "b") << ',' << s.name << ',' << s.nodes[k] + 1;
-        for (int i = 0; i < D; ++i) os << ',' << sr.x(i, k);
-        for (int i = 0; i < D; ++i) os << ',' << sr.X(i, k);
-        // Undefined values (no projection, no friction on this side) are written "nan" (numpy reads it).
-        const auto cell = [&os](double v) {
-          os << ',';
-          if (std::isnan(v))
-            os << "nan";
-          else
-            os << v;
-        };
-        cell(sr.gap[k]);
-        cell(sr.pressure[k]);
-        cell(sr.current_pressure[k]);
-        for (int i = 0; i < D; ++i) cell(sr.tangential(i, k));
-        for (int i = 0; i < D; ++i) cell(sr.force(i, k));
-        for (int i = 0; i < D; ++i) cell(sr.normal_part(i, k));
-        for (int i = 0; i < D; ++i) cell(sr.slip(i, k));
-        const bool has_acc = side < accumulated.size() && accumulated[side].size() > k && friction;
-        cell(has_acc ? accumulated[side][k] : std::nan(""));
-        for (int i = 0; i < D; ++i) cell(sr.displacement(i, k));
-        if (D == 2) {
-          cell(sr.tangential_along[k]);
-          cell(sr.slip_along[k]);
-        }
-        const int st = sr.status[k];
-        os << ',' << (st == 1 && friction ? "stick" : status[st]) << '\n';
+    for (Index row = 0; row < table.rows(); ++row) {
+      os << table.side[row] << ',' << table.surface[row] << ',' << table.node[row];
+      for (Index c = 0; c < table.numeric.cols(); ++c) {
+        const double v = table.numeric(row, c);
+        os << ',';
+        if (std::isnan(v))
+          os << "nan";
+        else
+          os << v;
       }
+      os << ',' << table.status[row] << '\n';
     }
   });
 }
@@ -206,12 +174,14 @@ void write_body_vtu(const Body& body, const BodyFields& f, const std::string& pa
   w.write(path);
 }
 
-/// The "contact" entry of a step in summary.json, one object per pair, and each pair's contact CSV in
-/// `out_dir`; adds the step's slip to `accumulated_slip` (per pair, per side: Σ over steps of
-/// |slip increment| at each node).
+/// The "contact" entry of a step in summary.json, one object per pair, each pair's contact table in `tables`
+/// and, with OutputFiles::kWrite, its CSV in the output folder; adds the step's slip to `accumulated_slip`
+/// (per pair, per side: Σ over steps of |slip increment| at each node).
 Json contact_step_json(const Model& model, const std::vector<ContactPairResult>& cres, int step,
-                       const std::string& out_dir, std::vector<std::vector<Eigen::VectorXd>>& accumulated_slip) {
+                       const RunOptions& options, std::vector<std::vector<Eigen::VectorXd>>& accumulated_slip,
+                       std::vector<ContactTable>& tables) {
   Json pairs = Json::array();
+  tables.clear();
   accumulated_slip.resize(cres.size());
   for (std::size_t pi = 0; pi < cres.size(); ++pi) {
     const auto& r = cres[pi];
@@ -234,8 +204,10 @@ Json contact_step_json(const Model& model, const std::vector<ContactPairResult>&
     jp["max_pressure"] = r.max_pressure;
     jp[model.dim() == 2 ? "contact_length" : "contact_area"] = r.contact_measure;
     const std::string csv = "contact_" + step_file(r.name, step + 1, "csv");
-    write_contact_csv(model, r, accumulated_slip[pi], (std::filesystem::path(out_dir) / csv).string());
-    jp["csv"] = csv;
+    tables.push_back(contact_table(model.contacts().surfaces, model.dim(), r, accumulated_slip[pi]));
+    if (options.files == OutputFiles::kWrite)
+      write_contact_csv(tables.back(), (std::filesystem::path(options.out_dir) / csv).string());
+    jp["csv"] = csv;  // named also when not written, so that the summary is the same either way
     pairs.push_back(jp);
   }
   return pairs;
@@ -265,6 +237,19 @@ void add_solver_statistics(Json& js, const SolveReport* contact, const Equilibri
   js["ipopt_status"] = r.ipopt_status;
   js["num_constraints"] = static_cast<double>(r.num_constraints);
   js["num_free_dofs"] = static_cast<double>(r.num_free);
+}
+
+/// The progress line's account of a step: the contact solve's iterations (`contact` not null) or Newton's.
+std::string progress_text(const SolveReport* contact, const EquilibriumReport& newton) {
+  std::ostringstream s;
+  if (contact)
+    s << "geometry iterations " << contact->geometry_iterations << ", IPOPT iterations " << contact->ipopt_iterations
+      << (contact->coulomb_iterations ? ", Coulomb iterations " + std::to_string(contact->coulomb_iterations)
+                                      : std::string())
+      << (contact->cuts ? ", " + std::to_string(contact->substeps.size()) + " sub-steps" : std::string());
+  else
+    s << "iterations " << newton.iterations << ", residual " << newton.residual;
+  return s.str();
 }
 
 /// The reactions of summary.json: ∇E(u) at the Dirichlet boundaries' nodes, per boundary.
@@ -333,25 +318,30 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   std::unique_ptr<Model> model = Model::build(spec, log, times, options.meshing);
   check_setup(*model);
   const DofMap& dofs = model->dofs();
+  if (options.on_model) options.on_model(*model);
 
-  ensure_directory(options.out_dir);
-  const int stale = remove_stale_temporaries(options.out_dir);
-  if (stale > 0) log.detail("removed " + std::to_string(stale) + " temporary files left by an earlier run");
+  const bool write_files = options.files == OutputFiles::kWrite;
+  if (write_files) {
+    ensure_directory(options.out_dir);
+    const int stale = remove_stale_temporaries(options.out_dir);
+    if (stale > 0) log.detail("removed " + std::to_string(stale) + " temporary files left by an earlier run");
+  }
   if (options.signals == SignalHandling::kStopCleanly) install_interrupt_handlers();
   const std::string summary_path = (fs::path(options.out_dir) / "summary.json").string();
   PvdCollection pvd((fs::path(options.out_dir) / "results.pvd").string());
-  const bool vtu = options.write_vtu && spec.output.vtu;
+  const bool vtu = write_files && options.write_vtu && spec.output.vtu;
 
+  RunResult result;
   Json summary = summary_header(spec, *model);
   auto write_summary = [&]() {
     summary["timings"] = timings_json(times);
     summary["wall_time"] = wall_seconds() - t_start;
-    if (spec.output.summary)
+    result.summary = summary;
+    if (write_files && spec.output.summary)
       write_file_atomically(summary_path, [&](std::ostream& os) { os << summary.dump(2) << '\n'; });
   };
   write_summary();
 
-  RunResult result;
   const SummaryOnError on_error(summary, write_summary, result.steps_done);
   VectorXd u = VectorXd::Zero(dofs.num_dofs());
   std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
@@ -366,7 +356,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     result.signal = status == RunStatus::kInterrupted ? interrupt_signal() : 0;
     summary["status"] = status == RunStatus::kInterrupted ? "interrupted" : "solve_failed";
     summary["message"] = message;
-    if (status == RunStatus::kSolveFailed) {
+    if (status == RunStatus::kSolveFailed && write_files) {
       Json failed = Json::array();
       for (int b = 0; b < dofs.num_bodies(); ++b) {
         const Body& body = *model->bodies()[b];
@@ -426,10 +416,11 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     st.merge(has_contact ? lrep.times : rep.times);
     add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);
     std::vector<ContactPairResult> cres;
+    std::vector<ContactTable> tables;
     if (has_contact) {
       ScopedPhase t(st, "output");
       cres = contact_results(model->contacts(), dofs, u, lrep);
-      js["contact"] = contact_step_json(*model, cres, step, options.out_dir, accumulated_slip);
+      js["contact"] = contact_step_json(*model, cres, step, options, accumulated_slip, tables);
     }
     js["reactions"] = reactions_json(*model, fixed, u);
     const VectorXd f = model->external_load();
@@ -456,14 +447,9 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     summary["steps"].push_back(js);
     result.steps_done = step + 1;
     write_summary();
-    std::ostringstream s;
-    if (has_contact)
-      s << "geometry iterations " << lrep.geometry_iterations << ", IPOPT iterations " << lrep.ipopt_iterations
-        << (lrep.coulomb_iterations ? ", Coulomb iterations " + std::to_string(lrep.coulomb_iterations) : std::string())
-        << (lrep.cuts ? ", " + std::to_string(lrep.substeps.size()) + " sub-steps" : std::string());
-    else
-      s << "iterations " << rep.iterations << ", residual " << rep.residual;
-    log.progress("load step", step + 1, nsteps, s.str() + clock.suffix(step + 1, nsteps));
+    const std::string text = progress_text(has_contact ? &lrep : nullptr, rep);
+    if (options.on_step) options.on_step(StepRecord{step + 1, nsteps, *model, js, fields, tables, text});
+    log.progress("load step", step + 1, nsteps, text + clock.suffix(step + 1, nsteps));
   }
   summary["status"] = "ok";
   write_summary();

@@ -3,7 +3,8 @@
 /// The run driver behind `symcontact run`: builds the model, solves the load steps in order and
 /// writes results as each step finishes.
 ///
-/// Outputs in `out_dir` (created only once the model has been built without input errors):
+/// Outputs in `out_dir` (created only once the model has been built without input errors; none with
+/// OutputFiles::kNone):
 ///  - `<body>_<step>.vtu` per body and load step (displacement, strain, stress, von Mises),
 ///  - `results.pvd`, a ParaView collection over the steps (one part per body), rewritten after each step,
 ///  - `summary.json`: status, sizes, per step the reactions on every Dirichlet boundary, iterations and
@@ -28,6 +29,8 @@
 #include "symcontact/io/json_writer.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/problem_spec.hpp"
+#include "symcontact/post/contact_table.hpp"
+#include "symcontact/post/stress_recovery.hpp"
 #include "symcontact/solvers/frictional_contact.hpp"
 
 namespace symcontact {
@@ -35,8 +38,30 @@ namespace symcontact {
 /// What SIGINT and SIGTERM do during a run: the default (end the process at once), or stop cleanly.
 enum class SignalHandling { kDefault, kStopCleanly };
 
+/// Whether a run writes its output folder (the files listed above) or only reports (RunOptions::on_step,
+/// RunResult::summary): the command line always writes, the Python module lets its caller choose.
+enum class OutputFiles { kWrite, kNone };
+
+/// What a run reports after each finished load step, before the progress line (references valid during
+/// the call only).
+struct StepRecord {
+  int step = 0;                               ///< 1-based
+  int num_steps = 0;
+  const Model& model;
+  const Json& summary_step;                   ///< the step's entry of summary.json "steps"
+  const std::vector<BodyFields>& fields;      ///< per body: displacement, strain, stress, von Mises, J
+  const std::vector<ContactTable>& contact;   ///< per pair: the table of its contact CSV
+  const std::string& progress;                ///< the text of the step's progress line
+};
+
 struct RunOptions {
-  std::string out_dir;        ///< output folder
+  std::string out_dir;        ///< output folder (OutputFiles::kWrite)
+  OutputFiles files = OutputFiles::kWrite;
+  /// Called after each finished load step; an exception it throws ends the run and propagates (as an
+  /// internal error for summary.json, which then says "internal_error").
+  std::function<void(const StepRecord&)> on_step;
+  /// Called once the model is built and checked, before the first step (and before the output folder).
+  std::function<void(const Model&)> on_model;
   MeshingOverrides meshing;   ///< --mesh-size (> 0 overrides problem.mesh_size) and the meshing limits
   bool write_vtu = true;      ///< and the problem's output.vtu
   /// kStopCleanly installs the handlers once the output folder exists (before, a signal ends the
@@ -51,6 +76,7 @@ struct RunResult {
   std::string message;
   int steps_done = 0;
   int signal = 0;  ///< kInterrupted: the signal received (SIGINT, SIGTERM)
+  Json summary;    ///< summary.json as written last (also with OutputFiles::kNone)
 };
 
 /// summary.json's last word when an exception other than a failed solve leaves the run (an internal error:

@@ -1130,11 +1130,14 @@ void check_ipopt_section(const ProblemSpec& spec) {
 }
 
 ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir) {
-  return Reader(file_name, base_dir).read(parse_toml(toml_text, file_name));
+  return read_problem_table(parse_toml(toml_text, file_name), file_name, base_dir);
 }
 
-ProblemSpec read_problem_file(const std::string& path) {
-  std::error_code ec;
+ProblemSpec read_problem_table(const toml::table& root, const std::string& file_name, const std::string& base_dir) {
+  return Reader(file_name, base_dir).read(root);
+}
+
+std::string read_problem_text(const std::string& path) {
   // Only a regular file of bounded size: a FIFO would block, /dev/zero would never end.
   if (const std::string problem = input_file_problem(path, kMaxProblemFileBytes); !problem.empty())
     throw InputError(path, "", "cannot open the problem file: it " + problem);
@@ -1143,11 +1146,19 @@ ProblemSpec read_problem_file(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path, "", "error while reading the problem file");
+  return text.str();
+}
 
+std::string problem_folder(const std::string& path) {
+  std::error_code ec;
   fs::path folder = fs::path(path).parent_path();
   if (folder.empty()) folder = ".";
   const fs::path absolute = fs::absolute(folder, ec);
-  ProblemSpec spec = parse_problem(text.str(), path, (ec ? folder : absolute).lexically_normal().string());
+  return (ec ? folder : absolute).lexically_normal().string();
+}
+
+ProblemSpec read_problem_file(const std::string& path) {
+  ProblemSpec spec = parse_problem(read_problem_text(path), path, problem_folder(path));
   check_ipopt_section(spec);
   return spec;
 }

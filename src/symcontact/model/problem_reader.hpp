@@ -34,6 +34,8 @@
 
 #include <string>
 
+#include <toml++/toml.h>
+
 #include "symcontact/model/problem_spec.hpp"
 
 namespace symcontact {
@@ -51,5 +53,16 @@ void check_ipopt_section(const ProblemSpec& spec);
 /// ProblemSpec::file; relative mesh paths are resolved against `base_dir` (a folder; "" means the
 /// current folder). Throws InputError on the first error found.
 ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir);
+
+/// parse_problem() on a document already parsed (parse_toml(), toml_parse.hpp): the same checks and
+/// messages. For callers that edit a problem as a TOML document (the Python module).
+ProblemSpec read_problem_table(const toml::table& root, const std::string& file_name, const std::string& base_dir);
+
+/// The text of the problem file at `path`, after the checks of read_problem_file() on the file itself
+/// (a regular file of at most 64 MiB, readable). Throws InputError(path, "", ...).
+std::string read_problem_text(const std::string& path);
+
+/// The folder read_problem_file() resolves `path`'s mesh paths against: its parent folder, absolute.
+std::string problem_folder(const std::string& path);
 
 }  // namespace symcontact
