@@ -82,9 +82,9 @@ FacetProjection project_on_line(CellType t, const Eigen::MatrixXd& xf, const Eig
 /// Barycentric tolerance of "inside" for triangles: a point on an edge up to round-off is inside.
 constexpr double kInsideTol = 1e-12;
 
-/// x(η), ∂x/∂η_i (columns of d1) of a triangle facet.
-Eigen::Vector3d triangle_point(CellType t, const Eigen::MatrixXd& xf, const double* eta, Eigen::Matrix<double, 3, 2>* d1) {
-  double N[6], dN[12];
+/// x(η), ∂x/∂η_i (columns of d1) of a triangle or quadrilateral facet.
+Eigen::Vector3d facet_point(CellType t, const Eigen::MatrixXd& xf, const double* eta, Eigen::Matrix<double, 3, 2>* d1) {
+  double N[9], dN[18];
   shape_functions(t, eta, N, dN);
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
   if (d1) d1->setZero();
@@ -136,7 +136,7 @@ FacetProjection interior_projection(CellType type, const Eigen::MatrixXd& xf, co
   snap_into_triangle(eta);
   r.eta[0] = eta[0];
   r.eta[1] = eta[1];
-  r.point = triangle_point(type, xf, eta, nullptr);
+  r.point = facet_point(type, xf, eta, nullptr);
   r.distance2 = (r.point - p).squaredNorm();
   return r;
 }
@@ -171,7 +171,7 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   bool converged = false, local_min = false;
   for (int it = 0; it < 40; ++it) {
     eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
-    const Eigen::Vector3d x = triangle_point(CellType::kTri6, xf, eta.data(), &d1);
+    const Eigen::Vector3d x = facet_point(CellType::kTri6, xf, eta.data(), &d1);
     const Eigen::Vector3d res = x - p;
     const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
     Eigen::Matrix2d H = d1.transpose() * d1;
@@ -181,8 +181,8 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
       Eigen::Vector2d ep = eta, em = eta;
       ep[j] += 0.5;
       em[j] -= 0.5;
-      triangle_point(CellType::kTri6, xf, ep.data(), &dp);
-      triangle_point(CellType::kTri6, xf, em.data(), &dm);
+      facet_point(CellType::kTri6, xf, ep.data(), &dp);
+      facet_point(CellType::kTri6, xf, em.data(), &dm);
       for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
     }
     S = 0.5 * (S + S.transpose());
@@ -225,7 +225,7 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   }
   if (inside) {
     snap_into_triangle(e);
-    const Eigen::Vector3d x = triangle_point(CellType::kTri6, xf, e, nullptr);
+    const Eigen::Vector3d x = facet_point(CellType::kTri6, xf, e, nullptr);
     const double d2 = (x - p).squaredNorm();
     if (d2 <= r.distance2 * (1 + 1e-14) + 1e-300) {
       r.eta[0] = e[0];
@@ -236,22 +236,6 @@ FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d
     }
   }
   return r;
-}
-
-/// x(η) and ∂x/∂η_i (columns of d1) of a quadrilateral facet.
-Eigen::Vector3d quad_point(CellType t, const Eigen::MatrixXd& xf, const double* eta, Eigen::Matrix<double, 3, 2>* d1) {
-  double N[9], dN[18];
-  shape_functions(t, eta, N, dN);
-  Eigen::Vector3d x = Eigen::Vector3d::Zero();
-  if (d1) d1->setZero();
-  for (int a = 0; a < cell_num_nodes(t); ++a) {
-    x += N[a] * xf.col(a).head<3>();
-    if (d1) {
-      d1->col(0) += dN[2 * a] * xf.col(a).head<3>();
-      d1->col(1) += dN[2 * a + 1] * xf.col(a).head<3>();
-    }
-  }
-  return x;
 }
 
 /// Quadrilateral reference coordinates of the point at parameter t along edge e (from its vertex a to b).
@@ -277,7 +261,7 @@ Eigen::Vector2d quad_newton(CellType type, const Eigen::MatrixXd& xf, const Eige
   converged = local_min = false;
   for (int it = 0; it < 40; ++it) {
     eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
-    const Eigen::Vector3d res = quad_point(type, xf, eta.data(), &d1) - p;
+    const Eigen::Vector3d res = facet_point(type, xf, eta.data(), &d1) - p;
     const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
     // Second derivatives by central differences of ∂x/∂η: exact, since ∂x/∂η_i of a bilinear, serendipity or
     // biquadratic map is at most quadratic in each variable, and central differences are exact on quadratics.
@@ -286,8 +270,8 @@ Eigen::Vector2d quad_newton(CellType type, const Eigen::MatrixXd& xf, const Eige
       Eigen::Vector2d ep = eta, em = eta;
       ep[j] += 0.5;
       em[j] -= 0.5;
-      quad_point(type, xf, ep.data(), &dp);
-      quad_point(type, xf, em.data(), &dm);
+      facet_point(type, xf, ep.data(), &dp);
+      facet_point(type, xf, em.data(), &dm);
       for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
     }
     S = 0.5 * (S + S.transpose());
@@ -319,7 +303,7 @@ FacetProjection project_on_quad(CellType type, const Eigen::MatrixXd& xf, const 
   const auto interior = [&] {
     r.eta[0] = e[0];
     r.eta[1] = e[1];
-    r.point = quad_point(type, xf, e, nullptr);
+    r.point = facet_point(type, xf, e, nullptr);
     r.distance2 = (r.point - p).squaredNorm();
     r.clamped_vertex = r.clamped_edge = -1;
   };
@@ -345,7 +329,7 @@ FacetProjection project_on_quad(CellType type, const Eigen::MatrixXd& xf, const 
     }
   }
   if (inside) {
-    const double d2 = (quad_point(type, xf, e, nullptr) - p).squaredNorm();
+    const double d2 = (facet_point(type, xf, e, nullptr) - p).squaredNorm();
     if (d2 <= r.distance2 * (1 + 1e-14) + 1e-300) interior();
   }
   return r;
