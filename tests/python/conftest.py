@@ -11,7 +11,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 EXAMPLES = ROOT / "examples"
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")  # one pytest process per test file (CTest)
 def cli():
     """Runs the command-line program: cli("run", file, "--out", dir) -> CompletedProcess."""
     path = os.environ.get("SYMCONTACT_CLI")

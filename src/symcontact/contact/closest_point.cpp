@@ -162,43 +162,60 @@ FacetProjection project_on_tri3(const Eigen::MatrixXd& xf, const Eigen::Vector3d
   return r;
 }
 
+/// The curvature part S_ij = (x − p) · x_,ij of the Hessian of f(η) = ½ |x(η) − p|², res = x(η) − p, by
+/// central differences of ∂x/∂η with step 1/2 (exact where ∂x/∂η_i is at most quadratic in η_j).
+Eigen::Matrix2d curvature_term(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector2d& eta,
+                               const Eigen::Vector3d& res) {
+  Eigen::Matrix<double, 3, 2> dp, dm;
+  Eigen::Matrix2d S;
+  for (int j = 0; j < 2; ++j) {
+    Eigen::Vector2d ep = eta, em = eta;
+    ep[j] += 0.5;
+    em[j] -= 0.5;
+    facet_point(type, xf, ep.data(), &dp);
+    facet_point(type, xf, em.data(), &dm);
+    for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
+  }
+  return 0.5 * (S + S.transpose());
+}
+
+/// One Newton step on ∇f = 0 with gradient g, Gauss–Newton part H = JᵀJ and curvature part S: the full
+/// Hessian H + S where it is positive definite, H alone elsewhere (away from a minimum); steps longer than
+/// 1/2 are shortened to it. Returns false when the loop is to stop: a singular Hessian, or a step below
+/// 1e-14 (then `converged`, and `local_min` when the full Hessian was used).
+bool newton_step(const Eigen::Vector2d& g, const Eigen::Matrix2d& H, const Eigen::Matrix2d& S, Eigen::Vector2d& eta,
+                 bool& converged, bool& local_min) {
+  const Eigen::Matrix2d Hn = H + S;
+  const bool spd = Hn(0, 0) > 0 && Hn.determinant() > 1e-14 * Hn.squaredNorm();
+  const Eigen::Matrix2d& Hs = spd ? Hn : H;
+  if (!(std::abs(Hs.determinant()) > 0)) return false;
+  Eigen::Vector2d step = -Hs.inverse() * g;
+  const double len = step.norm();
+  if (len > 0.5) step *= 0.5 / len;
+  eta += step;
+  if (len < 1e-14) {
+    converged = true;
+    local_min = spd;
+    return false;
+  }
+  return true;
+}
+
 FacetProjection project_on_tri6(const Eigen::MatrixXd& xf, const Eigen::Vector3d& p) {
   FacetProjection r;
   r.distance2 = std::numeric_limits<double>::infinity();
   // Interior: Newton on ∇f = 0, f(η) = ½ |x(η) − p|², from the vertex triangle's foot point.
   Eigen::Vector2d eta = plane_coordinates(xf, p);
-  Eigen::Matrix<double, 3, 2> d1, dp, dm;
+  Eigen::Matrix<double, 3, 2> d1;
   bool converged = false, local_min = false;
   for (int it = 0; it < 40; ++it) {
     eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
     const Eigen::Vector3d x = facet_point(CellType::kTri6, xf, eta.data(), &d1);
     const Eigen::Vector3d res = x - p;
     const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
-    Eigen::Matrix2d H = d1.transpose() * d1;
     // Second derivatives x_,ij: ∂x/∂η_i is linear in η, so a central difference of it is exact.
-    Eigen::Matrix2d S;
-    for (int j = 0; j < 2; ++j) {
-      Eigen::Vector2d ep = eta, em = eta;
-      ep[j] += 0.5;
-      em[j] -= 0.5;
-      facet_point(CellType::kTri6, xf, ep.data(), &dp);
-      facet_point(CellType::kTri6, xf, em.data(), &dm);
-      for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
-    }
-    S = 0.5 * (S + S.transpose());
-    const Eigen::Matrix2d Hn = H + S;
-    const bool spd = Hn(0, 0) > 0 && Hn.determinant() > 1e-14 * Hn.squaredNorm();
-    const Eigen::Matrix2d& Hs = spd ? Hn : H;  // Gauss–Newton away from a minimum
-    if (!(std::abs(Hs.determinant()) > 0)) break;
-    Eigen::Vector2d step = -Hs.inverse() * g;
-    const double len = step.norm();
-    if (len > 0.5) step *= 0.5 / len;
-    eta += step;
-    if (len < 1e-14) {
-      converged = true;
-      local_min = spd;
+    if (!newton_step(g, d1.transpose() * d1, curvature_term(CellType::kTri6, xf, eta, res), eta, converged, local_min))
       break;
-    }
     // Heading well outside the facet: the boundary decides, no need to converge out there.
     if (it >= 6 && std::min({eta[0], eta[1], 1.0 - eta[0] - eta[1]}) < -0.1) break;
   }
@@ -257,7 +274,7 @@ bool inside_square(const double* eta) {
 Eigen::Vector2d quad_newton(CellType type, const Eigen::MatrixXd& xf, const Eigen::Vector3d& p, bool& converged,
                             bool& local_min) {
   Eigen::Vector2d eta(0.5, 0.5);
-  Eigen::Matrix<double, 3, 2> d1, dp, dm;
+  Eigen::Matrix<double, 3, 2> d1;
   converged = local_min = false;
   for (int it = 0; it < 40; ++it) {
     eta = eta.cwiseMax(-0.5).cwiseMin(1.5);
@@ -265,29 +282,7 @@ Eigen::Vector2d quad_newton(CellType type, const Eigen::MatrixXd& xf, const Eige
     const Eigen::Vector2d g(res.dot(d1.col(0)), res.dot(d1.col(1)));
     // Second derivatives by central differences of ∂x/∂η: exact, since ∂x/∂η_i of a bilinear, serendipity or
     // biquadratic map is at most quadratic in each variable, and central differences are exact on quadratics.
-    Eigen::Matrix2d S;
-    for (int j = 0; j < 2; ++j) {
-      Eigen::Vector2d ep = eta, em = eta;
-      ep[j] += 0.5;
-      em[j] -= 0.5;
-      facet_point(type, xf, ep.data(), &dp);
-      facet_point(type, xf, em.data(), &dm);
-      for (int i = 0; i < 2; ++i) S(i, j) = res.dot(dp.col(i) - dm.col(i));
-    }
-    S = 0.5 * (S + S.transpose());
-    const Eigen::Matrix2d H = d1.transpose() * d1, Hn = H + S;
-    const bool spd = Hn(0, 0) > 0 && Hn.determinant() > 1e-14 * Hn.squaredNorm();
-    const Eigen::Matrix2d& Hs = spd ? Hn : H;
-    if (!(std::abs(Hs.determinant()) > 0)) break;
-    Eigen::Vector2d step = -Hs.inverse() * g;
-    const double len = step.norm();
-    if (len > 0.5) step *= 0.5 / len;
-    eta += step;
-    if (len < 1e-14) {
-      converged = true;
-      local_min = spd;
-      break;
-    }
+    if (!newton_step(g, d1.transpose() * d1, curvature_term(type, xf, eta, res), eta, converged, local_min)) break;
     if (it >= 6 && std::min({eta[0], eta[1], 1.0 - eta[0], 1.0 - eta[1]}) < -0.1) break;
   }
   return eta;
