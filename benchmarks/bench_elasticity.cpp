@@ -28,7 +28,7 @@
 ///   OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 symcontact-bench --case hertz3d --h 0.04 0.02 0.01 --csv h3d.csv
 ///
 /// `inclined` solves the inclined interface with Coulomb friction mu = 0.2 (examples/inclined_2d,
-/// docs/validation.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
+/// docs/validation-friction.md V5; ten load steps, each a Coulomb fixed point) at the element sizes --h (default
 /// 0.025 0.0125 0.00625 0.003125 0.0015625: 5.6e3 to 1.3e6 DOFs) against the same floor (bench_inclined.hpp):
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact-bench --case inclined --h 0.05 0.025

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Sliding on an inclined interface: |R_x / R_y| against the friction coefficient mu (docs/validation.md, V5).
+"""Sliding on an inclined interface: |R_x / R_y| against the friction coefficient mu (docs/validation-friction.md, V5).
 
 What it solves. examples/inclined_2d/inclined_reference.toml (two elastic blocks cut by the line
 y = 0.45 + 0.1 x, tan(a) = 0.1; the top pressed down, then pushed up the slope; Coulomb friction; contact

@@ -99,7 +99,7 @@ def test_plot_reactions_3d_takes_the_normal_and_tangential_components(inclined_3
     assert out.returncode == 0, out.stderr
     assert "normal component y, tangential xz" in out.stdout
     ratio = float(out.stdout.split("over steps 8-10 = ")[1].split()[0])
-    assert abs(ratio / 0.306122 - 1) < 0.005  # docs/validation.md V5, 3D: -0.15 %
+    assert abs(ratio / 0.306122 - 1) < 0.005  # docs/validation-friction.md V5, 3D: -0.15 %
     assert ink(png) > 0.02
 
 

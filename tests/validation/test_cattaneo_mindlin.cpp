@@ -15,7 +15,7 @@
 // The closed form is a half-space one, with small strains (here of order p0/E* = a/R). The finite cylinders
 // depart from it in the stick zone: its relief μp − q falls short of the closed form's
 // μp0 (c/a) sqrt(1 − x²/c²) by 1.2 % of μp0 at x = 0 for a/R = 0.11, 0.5 % at 0.055, 0.1 % at 0.028, the
-// same a/h (1.3, 0.9, 0.1 % at half the h; docs/validation.md, V8). Refining h does not remove it, and q(x)
+// same a/h (1.3, 0.9, 0.1 % at half the h; docs/validation-friction.md, V8). Refining h does not remove it, and q(x)
 // is held to VALIDATION.md's 2 % of μp0 at the two smaller a/R only (and on matching meshes: see kCases).
 // Checked at every tangential step:
 //  - the stick zone, by the law itself (nodes of the upper surface with |q| < μp, to 1e-3 of μp: a slipping
