@@ -6,19 +6,21 @@
 #   the validation suite runs the same problems (Ironing2D.*);
 # - the crushed ring at order 2, without and with Coulomb friction: 40 finite-strain load steps on 2,592
 #   nodes, the last three with the bore closed (about 35 s and 60 s of CPU in Release).
-set(zoo_slow_cases "ExampleAsShipped.SolvesAndPassesItsChecks/ironing_2d_ironing"
-                   "ExampleAsShipped.SolvesAndPassesItsChecks/ironing_2d_ironing_mu0_3"
-                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2"
-                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2_coulomb")
-foreach(case IN LISTS zoo_slow_cases)
+# Each with its Release seconds as COST: CTest starts the longest first (the reason: long_tests.cmake).
+set(zoo_slow_cases "ExampleAsShipped.SolvesAndPassesItsChecks/ironing_2d_ironing" 90
+                   "ExampleAsShipped.SolvesAndPassesItsChecks/ironing_2d_ironing_mu0_3" 700
+                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2" 35
+                   "ExampleVariant.SolvesAndPassesItsChecks/crushed_ring_2d_ring_order2_coulomb" 90)
+while(zoo_slow_cases)
+  list(POP_FRONT zoo_slow_cases case seconds)
   set(found FALSE)
   foreach(test IN LISTS symcontact_zoo_tests_TESTS)
     if(test MATCHES "^Zoo/${case}( |$)")
-      set_tests_properties("${test}" PROPERTIES LABELS "zoo;zoo_slow")
+      set_tests_properties("${test}" PROPERTIES LABELS "zoo;zoo_slow" COST ${seconds})
       set(found TRUE)
     endif()
   endforeach()
   if(NOT found AND symcontact_zoo_tests_TESTS)
     message(FATAL_ERROR "tests/zoo_slow.cmake: no zoo test for the case '${case}'")
   endif()
-endforeach()
+endwhile()
