@@ -44,8 +44,8 @@ TEST_P(EnergyDerivatives, LinearElasticGradientAndHessian) {
 }
 
 TEST_P(EnergyDerivatives, LoadsAndSumGradientAndHessian) {
-  const auto [dim, order, tensor] = GetParam();
-  const Mesh m = distorted_mesh(dim, order, tensor);
+  const int dim = GetParam().dim;  // not a structured binding: the lambdas below capture it (C++17)
+  const Mesh m = distorted_mesh(dim, GetParam().order, GetParam().tensor);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   EnergySum sum;
