@@ -85,7 +85,8 @@ ErrorNorms solve_manufactured(int dim, int order, std::optional<CellType> tensor
   EnergySum energy;
   energy.add(std::make_unique<LinearElasticEnergy>(m, dofs, 0, mat, "cube"));
   energy.add(std::make_unique<LinearLoad>(
-      "b", body_force_vector(m, dofs, 0, [&](const double* x, double* b) { u.body_force(x, mat.lambda, mat.mu, b); }, 4)));
+      "b", body_force_vector(m, dofs, 0, [&](const double* x, double* b) { u.body_force(x, mat.lambda, mat.mu, b); },
+                                 AnalysisModel::kPlaneStrain, 4)));
   FixedDofs fixed;
   for (const auto& [name, g] : m.facet_groups)
     for (Index v : g.facets) {

@@ -82,7 +82,29 @@ void expect_rigid_rotation(const SolvedCase& c) {
 }
 
 /// The closed-form figures an example's header states, where it states one.
+/// examples/oring_axisymmetric/oring.toml, as its header states: the lid force (whole ring) at 10 % and 20 %
+/// squeeze, to 2 %; the ring in axial equilibrium between the lid and the groove; the groove's walls untouched
+/// (the ring laterally unrestrained, as in Lindley's measurements the header compares with).
+void expect_oring(const SolvedCase& c) {
+  const char* example = "oring_axisymmetric/oring.toml";
+  const double lid10 = -c.reactions.at(4).at(0)[1], lid20 = -c.reactions.back().at(0)[1];
+  const ContactPairResult& lid = c.contact.at(0);
+  const ContactPairResult& groove = c.contact.at(1);
+  const ContactSideResult& ring_in_groove = groove.sides.at(0);
+  double highest = 0.0;  // the highest ring node in contact with the groove (status 1 or 2: contact_results.hpp)
+  for (Index k = 0; k < ring_in_groove.status.size(); ++k)
+    if (ring_in_groove.status[k] != 0) highest = std::max(highest, ring_in_groove.x(1, k));
+  std::printf("%s: lid force %.3f N at 10 %% squeeze, %.3f N at 20 %%; lid and groove axial forces on the ring "
+              "%.6f and %.6f; highest node on the groove %.3f\n",
+              example, lid10, lid20, lid.total_force[1], groove.total_force[1], highest);
+  EXPECT_NEAR(lid10, 20.8, 0.02 * 20.8) << example;
+  EXPECT_NEAR(lid20, 57.3, 0.02 * 57.3) << example;
+  EXPECT_NEAR(lid.total_force[1], -groove.total_force[1], 1e-6 * lid20) << example;
+  EXPECT_LT(highest, 0.2) << example;  // the bottom only (the walls rise from z = 0 to 1.6)
+}
+
 void expect_header_figures(const std::string& example, const SolvedCase& c) {
+  if (example == "oring_axisymmetric/oring.toml") expect_oring(c);
   if (example == "bimaterial_2d/bimaterial.toml") {
     // Header: u_x(tip) = t (L1 / E1 + L2 / E2) = 1/200 + 1/10, to round-off.
     const double exact = 1.0 / 200.0 + 1.0 / 10.0, tip = largest_ux(c);

@@ -33,7 +33,20 @@ const char* model_name(AnalysisModel m) {
   switch (m) {
     case AnalysisModel::kPlaneStrain: return "plane_strain";
     case AnalysisModel::kPlaneStress: return "plane_stress";
+    case AnalysisModel::kAxisymmetric: return "axisymmetric";
     case AnalysisModel::kThreeD: return "3d";
+  }
+  return "";
+}
+
+/// What the forces of the outputs (reactions, loads, contact forces) are: per unit thickness of a plane
+/// section, for the whole ring of an axisymmetric one (2π r in every integral), or the 3D body's own.
+const char* force_basis(AnalysisModel m) {
+  switch (m) {
+    case AnalysisModel::kPlaneStrain:
+    case AnalysisModel::kPlaneStress: return "per_unit_thickness";
+    case AnalysisModel::kAxisymmetric: return "whole_ring";
+    case AnalysisModel::kThreeD: return "total";
   }
   return "";
 }
@@ -279,6 +292,7 @@ Json summary_header(const ProblemSpec& spec, const Model& model) {
   summary["status"] = "running";
   summary["dimension"] = spec.dim;
   summary["model"] = model_name(spec.model);
+  summary["forces"] = force_basis(spec.model);
   summary["order"] = spec.order;
   summary["num_dofs"] = static_cast<double>(dofs.num_dofs());
   Json bodies = Json::array();

@@ -410,7 +410,7 @@ std::vector<ContactPoint> contact_points_2d(const ContactSurface& slave, const E
       if (!project_to_master(master, p, ns, reach, cp, false, options.bisector_ray ? &ray : nullptr)) return;
       cp.slave_facet = f;
       cp.xi[0] = xi;
-      cp.weight = w * facet_normal(slave.facet_type, Xf, &xi).norm();
+      cp.weight = w * surface_measure(slave, Xf, &xi);
       facet_points.push_back(cp);
     });
     append_whole_facet(facet_points, search, points);
@@ -452,7 +452,7 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
           cp.slave_facet = f;
           cp.xi[0] = xi[0];
           cp.xi[1] = xi[1];
-          cp.weight = rule.weights[q] * jac * facet_normal(slave.facet_type, Xf, xi).norm();
+          cp.weight = rule.weights[q] * jac * surface_measure(slave, Xf, xi);
           facet_points.push_back(cp);
         }
       }
@@ -607,7 +607,7 @@ std::vector<ContactPoint> contact_points(const ContactSurface& slave, const Eige
       ContactPoint cp;
       cp.slave_facet = f;
       for (int i = 0; i < d; ++i) cp.xi[i] = xi[i];
-      cp.weight = rule.weights[q] * facet_normal(slave.facet_type, Xf, xi).norm();
+      cp.weight = rule.weights[q] * surface_measure(slave, Xf, xi);
       cp.x = p;
       cp.xbar = xbar;
       cp.normal = n;

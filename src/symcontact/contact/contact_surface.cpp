@@ -32,33 +32,58 @@ Eigen::VectorXd facet_normal(CellType type, const Eigen::MatrixXd& xf, const dou
 
 bool has_modified_test_basis(CellType t) { return t == CellType::kTri6 || t == CellType::kQuad8; }
 
-void test_functions(CellType type, const double* xi, double* phi) {
-  shape_functions(type, xi, phi, nullptr);
-  if (!has_modified_test_basis(type)) return;
+bool has_modified_test_basis(const ContactSurface& s) {
+  return has_modified_test_basis(s.facet_type) ||
+         (s.facet_type == CellType::kLine3 && s.model == AnalysisModel::kAxisymmetric);
+}
+
+int basis_num_edges(CellType t) { return t == CellType::kLine3 ? 1 : facet_num_edges(t); }
+
+const int* basis_edge(CellType t, int e) {
+  static const int segment[2] = {0, 1};
+  return t == CellType::kLine3 ? segment : facet_edge(t, e);
+}
+
+namespace {
+
+/// φ = T N in place (the modification of test_functions()).
+void modify_test_functions(CellType type, double* phi) {
   constexpr double c = kModifiedTri6Coefficient;
   const int nv = cell_num_vertices(type);  // edge e's node is nv + e
-  for (int e = 0; e < facet_num_edges(type); ++e) {
-    const int* ab = facet_edge(type, e);
+  for (int e = 0; e < basis_num_edges(type); ++e) {
+    const int* ab = basis_edge(type, e);
     phi[ab[0]] += c * phi[nv + e];
     phi[ab[1]] += c * phi[nv + e];
     phi[nv + e] *= 1.0 - 2.0 * c;
   }
 }
 
+}  // namespace
+
+void test_functions(CellType type, const double* xi, double* phi) {
+  shape_functions(type, xi, phi, nullptr);
+  if (has_modified_test_basis(type)) modify_test_functions(type, phi);
+}
+
+void test_functions(const ContactSurface& s, const double* xi, double* phi) {
+  shape_functions(s.facet_type, xi, phi, nullptr);
+  if (has_modified_test_basis(s)) modify_test_functions(s.facet_type, phi);
+}
+
 Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd& F) {
-  if (!has_modified_test_basis(s.facet_type)) return F;
+  if (!has_modified_test_basis(s)) return F;
   constexpr double c = kModifiedTri6Coefficient;
   const int nv = cell_num_vertices(s.facet_type);
   Eigen::MatrixXd out = F;
   // Every edge node once: it belongs to one or two facets, with the same two vertices.
   std::vector<char> done(s.num_nodes(), 0);
   for (Index f = 0; f < s.num_facets(); ++f)
-    for (int e = 0; e < facet_num_edges(s.facet_type); ++e) {
+    for (int e = 0; e < basis_num_edges(s.facet_type); ++e) {
       const Index m = s.facet(f)[nv + e];
       if (done[m]) continue;
       done[m] = 1;
-      out.col(s.facet(f)[facet_edge(s.facet_type, e)[0]]) += c * F.col(m);
-      out.col(s.facet(f)[facet_edge(s.facet_type, e)[1]]) += c * F.col(m);
+      out.col(s.facet(f)[basis_edge(s.facet_type, e)[0]]) += c * F.col(m);
+      out.col(s.facet(f)[basis_edge(s.facet_type, e)[1]]) += c * F.col(m);
       out.col(m) = (1.0 - 2.0 * c) * F.col(m);
     }
   return out;
@@ -88,11 +113,13 @@ Eigen::VectorXd mean_facet_size_at_nodes(const ContactSurface& s) {
 
 }  // namespace
 
-ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name) {
+ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name,
+                                    AnalysisModel model) {
   const FacetGroup& g = mesh.facet_groups.at(group);
   ContactSurface s;
   s.name = name;
   s.body = body;
+  s.model = model;
   s.dim = mesh.dim;
   s.facet_type = mesh.facet_cell_type();
   const int nv = cell_num_vertices(s.facet_type);
@@ -150,12 +177,22 @@ Eigen::VectorXd lumped_areas(const ContactSurface& s, const Eigen::MatrixXd& x) 
   for (Index f = 0; f < s.num_facets(); ++f) {
     for (int a = 0; a < npf; ++a) xf.col(a) = x.col(s.facet(f)[a]);
     for (int q = 0; q < rule.size(); ++q) {
-      test_functions(s.facet_type, rule.point(q), N.data());
-      const double J = facet_normal(s.facet_type, xf, rule.point(q)).norm();
+      test_functions(s, rule.point(q), N.data());
+      const double J = surface_measure(s, xf, rule.point(q));
       for (int a = 0; a < npf; ++a) area[s.facet(f)[a]] += rule.weights[q] * J * N[a];
     }
   }
   return area;
+}
+
+double surface_measure(const ContactSurface& s, const Eigen::MatrixXd& xf, const double* xi) {
+  const double ds = facet_normal(s.facet_type, xf, xi).norm();
+  if (s.model != AnalysisModel::kAxisymmetric) return ds;
+  double N[9];  // at most 9 nodes on a facet (Quad9)
+  shape_functions(s.facet_type, xi, N, nullptr);
+  double r = 0.0;
+  for (int a = 0; a < s.nodes_per_facet(); ++a) r += xf(0, a) * N[a];
+  return section_measure(s.model, r) * ds;
 }
 
 Eigen::MatrixXd current_positions(const ContactSurface& s, const DofMap& dofs, const VectorXd& u) {

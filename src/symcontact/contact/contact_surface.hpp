@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "symcontact/core/types.hpp"
+#include "symcontact/fem/analysis_model.hpp"
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/mesh/mesh.hpp"
 
@@ -43,6 +44,9 @@ struct ContactSurface {
   std::vector<char> boundary_edge;
   /// 3D only (empty in 2D): 1 for the surface nodes that are vertices of a border edge.
   std::vector<char> boundary_vertex;
+  /// kAxisymmetric: the surface is the (r, z) trace of a surface of revolution, and every integral over it
+  /// has dS = 2π r ds (surface_measure(); analysis_model.hpp). Any other model: dS as the facets give it.
+  AnalysisModel model = AnalysisModel::kPlaneStrain;
   /// ∫_Γ φ_k dS in the reference configuration (lumped area), φ_k the test functions of the gap
   /// constraints (test_functions(): the shape functions, except on Tri6 and Quad8 facets).
   Eigen::VectorXd nodal_area;
@@ -62,7 +66,8 @@ constexpr double kCornerAngleDegrees = 45.0;
 
 /// The surface of facet group `group` of `mesh`, owned by `body` (−1: rigid). Throws
 /// std::out_of_range if the group does not exist (the caller turns it into an InputError with its key).
-ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name);
+ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, int body, const std::string& name,
+                                    AnalysisModel model = AnalysisModel::kPlaneStrain);
 
 /// Size of facet f of s: the largest distance between two of its vertices (reference configuration).
 double facet_size(const ContactSurface& s, Index f);
@@ -93,16 +98,35 @@ Eigen::MatrixXd nodal_normals(const ContactSurface& s, const Eigen::MatrixXd& x)
 /// Quad8 (serendipity) facets have the same defect, worse: their vertex functions integrate to −A/12 on a
 /// flat facet; the same modification with the same c, each vertex between its two edges, gives
 /// ∫ φ_v = −A/12 + 2cA/3 = A/20 and ∫ φ_e = (1 − 2c)A/3 = A/5.
+///
+/// Axisymmetric Line3 facets have the defect too, where the surface meets the axis: a vertex at r = 0
+/// has ∫ N_v 2πr ds = 2πh² ∫₀¹ (1 − ξ)(1 − 2ξ) ξ dξ = 0, so its lumped area and its gap row vanish (the
+/// row's coefficients sum to zero: it would constrain a curvature of the gap, not the gap). The same
+/// modification, the segment being one edge, gives it ∫ φ_v 2πr ds = 2πc h²/3 > 0; an axisymmetric
+/// surface of Line3 facets uses it on every facet (test_functions(const ContactSurface&, …)).
 void test_functions(CellType type, const double* xi, double* phi);
+/// The test functions of surface s: those of its facet type, and the modified basis on the Line3 facets of
+/// an axisymmetric surface.
+void test_functions(const ContactSurface& s, const double* xi, double* phi);
 
 /// Whether test_functions() modifies the shape functions of facets of type t (Tri6, Quad8).
 bool has_modified_test_basis(CellType t);
+/// Whether the test functions of surface s are modified: its facets are Tri6 or Quad8, or it is an
+/// axisymmetric surface of Line3 facets.
+bool has_modified_test_basis(const ContactSurface& s);
+
+/// The edges of a facet type that carry an edge node in the modified test basis: a Line3 segment is one
+/// edge, a Tri6 or Quad8 facet has facet_num_edges(); edge e has the local vertices basis_edge(t, e) and
+/// the edge node cell_num_vertices(t) + e.
+int basis_num_edges(CellType t);
+const int* basis_edge(CellType t, int e);
 
 /// The coefficient c of the modified Tri6 and Quad8 test basis (test_functions()).
 constexpr double kModifiedTri6Coefficient = 0.2;
 
 /// Nodal forces F (dim × n, F_k = ∫ t N_k dS for a traction t) turned into the test basis:
-/// (T F)_i = ∫ t φ_i dS, with φ_i = Σ_k T_ik N_k (test_functions()). The identity except on Tri6 and Quad8 surfaces,
+/// (T F)_i = ∫ t φ_i dS, with φ_i = Σ_k T_ik N_k (test_functions()). The identity except where
+/// has_modified_test_basis(s) (Tri6 and Quad8 surfaces, axisymmetric Line3 ones),
 /// where (T F)_v = F_v + c Σ_{edge nodes e next to v} F_e and (T F)_e = (1 − 2c) F_e. Dividing by the lumped
 /// area nodal_area[i] = ∫ φ_i dS then gives back a uniform traction exactly.
 Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd& F);
@@ -110,6 +134,10 @@ Eigen::MatrixXd test_basis_forces(const ContactSurface& s, const Eigen::MatrixXd
 /// Unnormalised outward normal of facet geometry `xf` (dim × npf) at reference point ξ; its norm is the
 /// surface Jacobian dS/dξ. In 2D, for a facet traversed with the body on its left, n = (t_y, −t_x).
 Eigen::VectorXd facet_normal(CellType type, const Eigen::MatrixXd& xf, const double* xi);
+
+/// The surface element of s at reference point xi of a facet with nodes xf (dim × npf): |facet_normal()|,
+/// times 2π r(xi) when s.model is axisymmetric (dS = 2π r ds).
+double surface_measure(const ContactSurface& s, const Eigen::MatrixXd& xf, const double* xi);
 
 /// 2D: the outward unit normals of the two facets at each vertex node for node positions `x` (dim × n),
 /// 4 × num_nodes: rows 0–1 of the facet that ends at the node (its local node 1), rows 2–3 of the one that

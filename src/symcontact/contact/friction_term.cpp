@@ -68,7 +68,7 @@ std::vector<SlipColumns> test_basis_columns(const ContactSurface& slave, const D
     for (std::pair<Index, double>& entry : e.master) entry.second = entry.second / (1.0 - 2.0 * c);
     const double w = -c / (1.0 - 2.0 * c);
     for (int end = 0; end < 2; ++end) {
-      const Index v = facet[facet_edge(slave.facet_type, a - nv)[end]];
+      const Index v = facet[basis_edge(slave.facet_type, a - nv)[end]];
       if (point_of[v] >= 0) {
         add_scaled(e.slave, nodal[point_of[v]].slave, w);
         add_scaled(e.master, nodal[point_of[v]].master, w);
@@ -93,7 +93,7 @@ FrictionTerm::FrictionTerm(std::string name, const ContactSurface& slave, const 
   for (const ContactPoint& p : points_) columns.push_back(point_columns(slave, master, dofs, p));
   const bool nodal = !points_.empty() && std::all_of(points_.begin(), points_.end(),
                                                      [](const ContactPoint& p) { return p.slave_node >= 0; });
-  if (nodal && has_modified_test_basis(slave.facet_type)) columns = test_basis_columns(slave, dofs, points_, columns);
+  if (nodal && has_modified_test_basis(slave)) columns = test_basis_columns(slave, dofs, points_, columns);
   local_.reserve(points_.size());
   for (std::size_t q = 0; q < points_.size(); ++q) {
     const ContactPoint& p = points_[q];

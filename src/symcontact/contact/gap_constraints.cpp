@@ -57,7 +57,7 @@ GapConstraints assemble_gap_constraints(const ContactSurface& slave, const Conta
       cur_master = p.master_facet;
     }
     shape_functions(slave.facet_type, p.xi, N.data(), nullptr);
-    test_functions(slave.facet_type, p.xi, phi.data());
+    test_functions(slave, p.xi, phi.data());
     if (master) shape_functions(master->facet_type, p.eta, M.data(), nullptr);
     const Index* sn = slave.facet(p.slave_facet);
     // Reference positions of the slave point and of the projection: b collects the u-independent part.

@@ -7,10 +7,17 @@
 
 namespace symcontact {
 
-VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const BodyForceFn& b, int degree) {
+namespace {
+/// The quadrature degree of a load integral: `degree` + the cell's order, + 1 for the factor r.
+int load_degree(AnalysisModel model, int degree, CellType t) {
+  return degree + cell_order(t) + (model == AnalysisModel::kAxisymmetric ? 1 : 0);
+}
+}  // namespace
+
+VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const BodyForceFn& b,
+                           AnalysisModel model, int degree) {
   const int D = mesh.dim, NN = mesh.nodes_per_cell();
-  const Tabulation tab =
-      tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, degree + cell_order(mesh.cell_type)));
+  const Tabulation tab = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, load_degree(model, degree, mesh.cell_type)));
   VectorXd f = VectorXd::Zero(dofs.num_dofs());
   Eigen::MatrixXd X(D, NN);
   double bx[3], xq[3];
@@ -24,7 +31,7 @@ VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const
       const Eigen::VectorXd x = X * N;
       for (int i = 0; i < D; ++i) xq[i] = x[i];
       b(xq, bx);
-      const double w = tab.rule.weights[q] * J.determinant();
+      const double w = tab.rule.weights[q] * J.determinant() * section_measure(model, x[0]);
       for (int a = 0; a < NN; ++a)
         for (int i = 0; i < D; ++i) f[dofs.dof(body, n[a], i)] += w * N[a] * bx[i];
     }
@@ -59,11 +66,11 @@ void facet_point(const Eigen::MatrixXd& X, const double* Nq, const double* dNq, 
 }  // namespace
 
 VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, const FacetGroup& group,
-                              const TractionFn& t, int degree) {
+                              const TractionFn& t, AnalysisModel model, int degree) {
   const int D = mesh.dim;
   const CellType ft = mesh.facet_cell_type();
   const int NN = cell_num_nodes(ft);
-  const Tabulation tab = tabulate(ft, cell_quadrature(ft, degree + cell_order(ft)));
+  const Tabulation tab = tabulate(ft, cell_quadrature(ft, load_degree(model, degree, ft)));
   VectorXd f = VectorXd::Zero(dofs.num_dofs());
   Eigen::MatrixXd X(D, NN);
   double x[3], nrm[3], tv[3], dS;
@@ -73,7 +80,7 @@ VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, co
     for (int q = 0; q < tab.rule.size(); ++q) {
       facet_point(X, tab.N_at(q), tab.dN_at(q), D, NN, x, nrm, dS);
       t(x, nrm, tv);
-      const double w = tab.rule.weights[q] * dS;
+      const double w = tab.rule.weights[q] * dS * section_measure(model, x[0]);
       const double* N = tab.N_at(q);
       for (int a = 0; a < NN; ++a)
         for (int i = 0; i < D; ++i) f[dofs.dof(body, n[a], i)] += w * N[a] * tv[i];
@@ -82,11 +89,12 @@ VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, co
   return f;
 }
 
-double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral, int degree) {
+double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral,
+                           AnalysisModel model, int degree) {
   const int D = mesh.dim;
   const CellType ft = mesh.facet_cell_type();
   const int NN = cell_num_nodes(ft);
-  const Tabulation tab = tabulate(ft, cell_quadrature(ft, degree + cell_order(ft)));
+  const Tabulation tab = tabulate(ft, cell_quadrature(ft, load_degree(model, degree, ft)));
   Eigen::MatrixXd X(D, NN);
   double x[3], nrm[3], dS, m = 0.0;
   if (normal_integral) normal_integral->setZero(D);
@@ -95,9 +103,10 @@ double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::Vec
     for (int a = 0; a < NN; ++a) X.col(a) = mesh.x.col(n[a]);
     for (int q = 0; q < tab.rule.size(); ++q) {
       facet_point(X, tab.N_at(q), tab.dN_at(q), D, NN, x, nrm, dS);
-      m += tab.rule.weights[q] * dS;
+      const double w = tab.rule.weights[q] * dS * section_measure(model, x[0]);
+      m += w;
       if (normal_integral)
-        for (int i = 0; i < D; ++i) (*normal_integral)[i] += tab.rule.weights[q] * dS * nrm[i];
+        for (int i = 0; i < D; ++i) (*normal_integral)[i] += w * nrm[i];
     }
   }
   return m;

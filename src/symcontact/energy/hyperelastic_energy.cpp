@@ -55,26 +55,65 @@ int hyperelastic_element(const Eigen::Matrix<double, D, NN>& X, const Eigen::Mat
   return -1;
 }
 
+/// The axisymmetric kernel (D = 2; header: F with F_θθ = 1 + u_r/R, weights × 2πR), same contract.
+template <int NN, int What>
+int hyperelastic_element_axisymmetric(const Eigen::Matrix<double, 2, NN>& X, const Eigen::Matrix<double, 2, NN>& U,
+                                      const Tabulation& tab, const Hyperelastic& material, double& e,
+                                      Eigen::Matrix<double, 2 * NN, 1>& g,
+                                      Eigen::Matrix<double, 2 * NN, 2 * NN>& K) {
+  e = 0.0;
+  if constexpr (What >= 1) g.setZero();
+  if constexpr (What >= 2) K.setZero();
+  Eigen::Matrix<double, NN, 2> G;
+  Eigen::Matrix3d P;
+  Eigen::Matrix<double, 9, 9> A;
+  Eigen::Matrix<double, 9, 2 * NN> B = Eigen::Matrix<double, 9, 2 * NN>::Zero();  // ∂ vec F / ∂u, row 3i + J
+  for (int q = 0; q < tab.rule.size(); ++q) {
+    const double det = physical_gradients<2, NN>(X, tab.dN_at(q), G);
+    if (!(det > 0)) return q;
+    const Eigen::Map<const Eigen::Matrix<double, NN, 1>> N(tab.N_at(q));
+    const double R = X.row(0).dot(N);
+    if (!(R > 0)) return q;
+    const double w = tab.rule.weights[q] * det * section_measure(AnalysisModel::kAxisymmetric, R);
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    H.topLeftCorner<2, 2>() = U * G;
+    H(2, 2) = U.row(0).dot(N) / R;
+    e += w * material.evaluate_displacement_gradient<3>(H, What >= 1 ? &P : nullptr, What >= 2 ? &A : nullptr);
+    if constexpr (What >= 1) {
+      for (int b = 0; b < NN; ++b) {
+        for (int k = 0; k < 2; ++k)
+          for (int L = 0; L < 2; ++L) B(3 * k + L, 2 * b + k) = G(b, L);
+        B(8, 2 * b) = N[b] / R;
+      }
+      const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> P_rows = P;  // vec P in the rows' order 3i + J
+      g.noalias() += w * B.transpose() * Eigen::Map<const Eigen::Matrix<double, 9, 1>>(P_rows.data());
+    }
+    if constexpr (What >= 2) K.noalias() += w * B.transpose() * A * B;
+  }
+  return -1;
+}
+
 }  // namespace
 
 HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
-                                       const Hyperelastic& material, std::string label)
-    : HyperelasticEnergy(mesh, dofs, body, std::vector<Hyperelastic>{material}, {}, std::move(label)) {}
+                                       const Hyperelastic& material, std::string label, AnalysisModel model)
+    : HyperelasticEnergy(mesh, dofs, body, std::vector<Hyperelastic>{material}, {}, std::move(label), model) {}
 
 HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body,
                                        std::vector<Hyperelastic> materials, std::vector<int> cell_material,
-                                       std::string label)
+                                       std::string label, AnalysisModel model)
     : mesh_(mesh),
       offset_(dofs.offset(body)),
       materials_(std::move(materials)),
       cell_material_(std::move(cell_material)),
-      label_(std::move(label)) {
+      label_(std::move(label)),
+      model_(model) {
   assert(!materials_.empty());
   assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
   if (mesh.dim != 2 && mesh.dim != 3)
     throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
   // Same rule as LinearElasticEnergy (see the header for why).
-  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type)));
+  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type, model)));
   // Validates every reference cell once (at u = 0, F = I everywhere).
   for_each_cell<0>(VectorXd::Zero(offset_ + dofs.num_body_dofs(body)), [](const Index*, double, const auto&,
                                                                           const auto&) {});
@@ -103,13 +142,16 @@ void HyperelasticEnergy::for_each_cell(const VectorXd& u, Fn&& f) const {
         int bad = -1;
         try {
           const Hyperelastic& material = materials_[cell_material_.empty() ? 0 : cell_material_[c]];
-          bad = hyperelastic_element<D, NN, What>(X, U, tab_, material, e, g, K);
+          if constexpr (D == 2)
+            bad = model_ == AnalysisModel::kAxisymmetric
+                      ? hyperelastic_element_axisymmetric<NN, What>(X, U, tab_, material, e, g, K)
+                      : hyperelastic_element<D, NN, What>(X, U, tab_, material, e, g, K);
+          else
+            bad = hyperelastic_element<D, NN, What>(X, U, tab_, material, e, g, K);
         } catch (const EvaluationError& err) {
           throw EvaluationError(name() + ": " + mesh_.cell_label(c) + ": " + err.what());
         }
-        if (bad >= 0)
-          throw InputError("", label_ + ": " + mesh_.cell_label(c),
-                           "inverted or degenerate element (Jacobian determinant <= 0 inside the cell)");
+        if (bad >= 0) throw InputError("", label_ + ": " + mesh_.cell_label(c), bad_cell_message(model_));
         f(static_cast<const Index*>(dofs), e, g, K);
       }
     }

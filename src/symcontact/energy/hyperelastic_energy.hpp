@@ -9,6 +9,12 @@
 ///   K_(a,i),(b,k) = Σ_q w_q A_iJkL G_aJ G_bL,  A = ∂P/∂F,
 /// local DOF (a, i) at row D·a + i (node-major, as DofMap). Summed over J, L.
 ///
+/// Axisymmetric (D = 2, x = r; analysis_model.hpp): F is the 3 × 3 gradient with the (r, z) block I + ∇_X u
+/// and F_θθ = 1 + u_r / R (R the reference radius; Bonet & Wood 2008, §9.3 on axisymmetric kinematics),
+/// ψ the 3D law, and every weight is multiplied by 2π R. With B the 9 × 2NN matrix of ∂F/∂u (column
+/// (b, k): G_b in row k of the (r, z) block, and N_b / R at θθ for k = r):
+///   f = Σ_q w_q Bᵀ vec P,  K = Σ_q w_q Bᵀ A B.
+///
 /// Quadrature: the same rule as LinearElasticEnergy — degree 0 (one point) for P1, where F is constant
 /// on a cell so every integrand is exact; degree 3 = 2(p−1) + 1 for P2: ψ(F) is not a polynomial, but its
 /// small-strain limit (the linear stiffness integrand, degree 2(p−1) = 2 on straight cells) is then
@@ -25,6 +31,7 @@
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/fem/shape_functions.hpp"
+#include "symcontact/fem/analysis_model.hpp"
 #include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/mesh/mesh.hpp"
 
@@ -32,13 +39,15 @@ namespace symcontact {
 
 class HyperelasticEnergy : public EnergyTerm {
  public:
-  /// `label` names the body in messages. The mesh must be 2D (plane strain) or 3D and outlive the term.
+  /// `label` names the body in messages. The mesh must be 2D (plane strain, or axisymmetric when `model`
+  /// says so) or 3D and outlive the term.
   HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, const Hyperelastic& material,
-                     std::string label);
+                     std::string label, AnalysisModel model = AnalysisModel::kPlaneStrain);
   /// A body of several materials: cell c has the law materials[cell_material[c]] (`materials` non-empty;
   /// `cell_material` empty, for one law everywhere, or one index per cell).
   HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int body, std::vector<Hyperelastic> materials,
-                     std::vector<int> cell_material, std::string label);
+                     std::vector<int> cell_material, std::string label,
+                     AnalysisModel model = AnalysisModel::kPlaneStrain);
   std::string name() const override { return "hyperelastic(" + label_ + ")"; }
   double value(const VectorXd& u) const override;
   void add_gradient(const VectorXd& u, VectorXd& g) const override;
@@ -56,6 +65,7 @@ class HyperelasticEnergy : public EnergyTerm {
   std::vector<Hyperelastic> materials_;
   std::vector<int> cell_material_;
   std::string label_;
+  AnalysisModel model_;
   Tabulation tab_;
 };
 

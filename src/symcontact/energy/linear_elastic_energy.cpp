@@ -22,7 +22,8 @@ LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, i
       label_(std::move(label)) {
   assert(!materials_.empty());
   assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
-  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type)));
+  const AnalysisModel model = materials_.front().model;
+  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type, model)));
   for_each_cell([](Index, const Index*, const auto&) {});  // validates every cell once
 }
 
@@ -36,9 +37,9 @@ void LinearElasticEnergy::for_each_cell(F&& f) const {
       const Index* n = mesh_.cell(c);
       const auto X = gather_coordinates<D, NN>(mesh_.x, n);
       const LinearElastic& m = materials_[cell_material_.empty() ? 0 : cell_material_[c]];
-      if (linear_elastic_stiffness<D, NN>(X, tab_, m.lambda, m.mu, K) >= 0)
+      if (linear_elastic_stiffness<D, NN>(X, tab_, m.lambda, m.mu, m.model, K) >= 0)
         throw InputError("", label_ + ": " + mesh_.cell_label(c),
-                         "inverted or degenerate element (Jacobian determinant <= 0 inside the cell)");
+                         bad_cell_message(m.model));
       for (int a = 0; a < NN; ++a)
         for (int i = 0; i < D; ++i) dofs[D * a + i] = offset_ + D * n[a] + i;
       f(c, static_cast<const Index*>(dofs), K);

@@ -2,7 +2,9 @@
 /// \file linear_elastic_energy.hpp
 /// Strain energy of one linear-elastic body, E(u) = ½ a(u, u) = ½ uᵀ K u (talk eq. 4–5).
 /// Element stiffnesses are recomputed at every call (no per-cell storage). Each cell has its own law:
-/// materials[cell_material[c]] (one law for all cells when cell_material is empty).
+/// materials[cell_material[c]] (one law for all cells when cell_material is empty). The materials' model
+/// (LinearElastic::model, the same for all) chooses the kinematics: axisymmetric adds the hoop strain and
+/// integrates over the whole ring (elastic_kernel.hpp).
 
 #include <string>
 #include <vector>

@@ -136,9 +136,10 @@ QuadratureRule cell_quadrature(CellType t, int degree) {
                                              : simplex_quadrature(cell_dim(t), degree);
 }
 
-int stiffness_quadrature_degree(CellType t) {
-  if (cell_shape(t) == CellShape::kTensor) return 2 * cell_order(t);
-  return cell_order(t) == 1 ? 0 : 3;
+int stiffness_quadrature_degree(CellType t, AnalysisModel model) {
+  const int extra = model == AnalysisModel::kAxisymmetric ? 2 : 0;
+  if (cell_shape(t) == CellShape::kTensor) return 2 * cell_order(t) + extra;
+  return (cell_order(t) == 1 ? 0 : 3) + extra;
 }
 
 }  // namespace symcontact

@@ -12,6 +12,7 @@
 
 #include <vector>
 
+#include "symcontact/fem/analysis_model.hpp"
 #include "symcontact/mesh/cell_type.hpp"
 
 namespace symcontact {
@@ -39,7 +40,10 @@ QuadratureRule cell_quadrature(CellType t, int degree);
 /// straight simplices, exact for their polynomial integrand; 3 for P2, whose cells may be curved; 2p per
 /// variable for quadrilaterals and hexahedra (p + 1 Gauss points per direction, full integration,
 /// exact for parallelogram and parallelepiped cells; Hughes, "The finite element method", 2000, §3.8).
-int stiffness_quadrature_degree(CellType t);
+/// Axisymmetric models (analysis_model.hpp) use 2 more: the integrand gains the factor r and the hoop
+/// terms N_a N_b / r, and a one-point rule on a linear triangle would leave a zero-energy rotation of each
+/// cell (its hoop strain vanishing at the centroid only; Zienkiewicz & Taylor vol. 1, §5.3).
+int stiffness_quadrature_degree(CellType t, AnalysisModel model = AnalysisModel::kPlaneStrain);
 
 /// n-point Gauss–Legendre nodes and weights on [0, 1] (exact to degree 2n − 1).
 void gauss_legendre_01(int n, std::vector<double>& x, std::vector<double>& w);

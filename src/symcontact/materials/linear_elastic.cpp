@@ -21,6 +21,7 @@ Eigen::Matrix3d LinearElastic::stress(const Eigen::Matrix3d& eps) const {
   Eigen::Matrix3d s;
   switch (model) {
     case AnalysisModel::kThreeD:
+    case AnalysisModel::kAxisymmetric:  // strain(2, 2) = ε_θθ; the (r, z) block and σ_θθ as in 3D
       s = lambda * eps.trace() * Eigen::Matrix3d::Identity() + 2.0 * mu * eps;
       break;
     case AnalysisModel::kPlaneStrain: {

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "symcontact/materials/analysis_model.hpp"
+#include "symcontact/fem/analysis_model.hpp"
 
 namespace symcontact {
 
@@ -19,7 +19,8 @@ struct LinearElastic {
   /// Requires E > 0 and −1 < ν < 0.5 (checked by the problem reader; asserted here).
   static LinearElastic from_young_poisson(double young, double poisson, AnalysisModel model);
 
-  /// Full 3 × 3 stress from the in-plane (2D) or full (3D) small strain, including σ_zz in 2D.
+  /// Full 3 × 3 stress from the in-plane (2D) or full (3D) small strain, including σ_zz in 2D. Axisymmetric:
+  /// the strain holds ε_θθ at (2, 2), and the stress σ_θθ there.
   Eigen::Matrix3d stress(const Eigen::Matrix3d& strain) const;
 };
 

@@ -94,7 +94,24 @@ TopologyAllowances topology_allowances(const ProblemSpec& spec, const BodySpec& 
 std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs, int b) {
   if (body.hyperelastic.empty())
     return std::make_unique<LinearElasticEnergy>(body.mesh, dofs, b, body.materials, body.cell_material, body.name);
-  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, body.hyperelastic, body.cell_material, body.name);
+  return std::make_unique<HyperelasticEnergy>(body.mesh, dofs, b, body.hyperelastic, body.cell_material, body.name,
+                                              body.materials.front().model);
+}
+
+/// An axisymmetric section lies in r = x ≥ 0: throws InputError(problem file, the body's mesh key) naming
+/// the node farthest on the other side. A node at −1e-12 × the section's width counts as on the axis.
+void check_axisymmetric_section(const ProblemSpec& spec, const BodySpec& bs, const Mesh& mesh) {
+  if (spec.model != AnalysisModel::kAxisymmetric || mesh.num_nodes() == 0) return;
+  Index worst = 0;
+  for (Index v = 1; v < mesh.num_nodes(); ++v)
+    if (mesh.x(0, v) < mesh.x(0, worst)) worst = v;
+  const double width = mesh.x.row(0).maxCoeff() - mesh.x.row(0).minCoeff();
+  if (mesh.x(0, worst) >= -1e-12 * width) return;
+  std::ostringstream s;
+  s << "body '" << bs.name << "' (mesh " << bs.mesh_file << ") has a node at x = r = " << mesh.x(0, worst)
+    << " (y = " << mesh.x(1, worst) << "); an axisymmetric section (problem.model = \"axisymmetric\") lies in "
+    << "x >= 0, the axis of revolution being x = 0";
+  throw InputError(spec.file, bs.key + ".mesh", s.str());
 }
 
 /// The laws of a body's materials (Body::materials, Body::hyperelastic).
@@ -195,6 +212,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
                          "body '" + bs.name + "', mesh " + bs.mesh_file + ": " + (e.key().empty() ? "" : e.key() + ": ") +
                              e.message());
       }
+      check_axisymmetric_section(spec, bs, body->mesh);
       set_material_laws(spec, *body);
       assign_cell_materials(spec, *body);
       m->dofs_.add_body(body->mesh.num_nodes());
@@ -272,10 +290,15 @@ void Model::add_surface_load(int b, const std::string& group, const std::string&
   const Mesh& mesh = body.mesh;
   const DofMap& dofs = dofs_;
   // f(t)_(a,i) = ∫_Γ t_i(X, t) N_a: t_i = v_i(X, t) for a traction, −p(X, t) n_i for a pressure.
-  auto assemble = [&mesh, &dofs, &g, b, D, v, kind](double t) {
-    return boundary_load_vector(mesh, dofs, b, g, [&](const double* x, const double* n, double* out) {
-      for (int i = 0; i < D; ++i) out[i] = kind == SurfaceLoad::kPressure ? -v[0].at(x, D, t) * n[i] : v[i].at(x, D, t);
-    });
+  const AnalysisModel model = spec_.model;
+  auto assemble = [&mesh, &dofs, &g, b, D, v, kind, model](double t) {
+    return boundary_load_vector(
+        mesh, dofs, b, g,
+        [&](const double* x, const double* n, double* out) {
+          for (int i = 0; i < D; ++i)
+            out[i] = kind == SurfaceLoad::kPressure ? -v[0].at(x, D, t) * n[i] : v[i].at(x, D, t);
+        },
+        model);
   };
   auto* term = energy_.add(std::make_unique<LinearLoad>(body.name + "." + name + "." + group, assemble(1.0)));
   loads_.push_back({term, factors, any_expression ? std::function<VectorXd(double)>(assemble) : nullptr});
@@ -307,16 +330,18 @@ void Model::add_loads(int b) {
   };
   if (!bs.body_force.empty()) {
     const std::vector<double> bf = bs.body_force;
-    add("body_force", body_force_vector(body.mesh, dofs_, b, [&](const double*, double* out) {
-          for (int i = 0; i < D; ++i) out[i] = bf[i];
-        }), bs.body_force_factors);
+    add("body_force",
+        body_force_vector(
+            body.mesh, dofs_, b, [&](const double*, double* out) { for (int i = 0; i < D; ++i) out[i] = bf[i]; },
+            spec.model),
+        bs.body_force_factors);
   }
   for (const auto& ts : bs.tractions) {
     std::vector<LoadValue> tv = ts.traction;
     if (ts.input == TractionInput::kTotalForce) {
       // t = F / |Γ_h| with |Γ_h| from boundary_load_vector()'s own quadrature: Σ f = F to round-off.
       const FacetGroup& g = require_facets(spec, body, ts.group, ts.key + ".boundary");
-      const double measure = facet_group_measure(body.mesh, g);
+      const double measure = facet_group_measure(body.mesh, g, nullptr, spec.model);
       for (LoadValue& c : tv) c.number /= measure;
     }
     add_surface_load(b, ts.group, ts.key, tv, ts.factors, SurfaceLoad::kTraction);
@@ -349,7 +374,7 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
     const std::string name = body + "." + group;
     for (int s = 0; s < static_cast<int>(contacts_.surfaces.size()); ++s)
       if (contacts_.surfaces[s].name == name) return s;
-    contacts_.surfaces.push_back(make_contact_surface(mesh, group, b, name));
+    contacts_.surfaces.push_back(make_contact_surface(mesh, group, b, name, spec_.model));
     return static_cast<int>(contacts_.surfaces.size()) - 1;
   };
   auto vec3 = [&](const std::vector<double>& v) {
@@ -377,7 +402,8 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
                            "obstacle mesh " + e.file() + (e.key().empty() ? "" : ", " + e.key()) + ": " + e.message());
         }
         rigid_meshes_.push_back(extract_surface(f, D, os.boundary, os.key + ".boundary"));
-        contacts_.surfaces.push_back(make_contact_surface(rigid_meshes_.back(), os.boundary, -1, cs.name + ".obstacle"));
+        contacts_.surfaces.push_back(
+            make_contact_surface(rigid_meshes_.back(), os.boundary, -1, cs.name + ".obstacle", spec_.model));
         pair.surface_b = static_cast<int>(contacts_.surfaces.size()) - 1;
         pair.mode = ContactMode::kOnePass;  // a rigid surface carries no multipliers of its own
         pair.slave_is_b = false;

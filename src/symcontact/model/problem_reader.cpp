@@ -379,11 +379,14 @@ class Reader {
         spec.model = AnalysisModel::kPlaneStrain;
       } else if (spec.dim == 2 && model == "plane_stress") {
         spec.model = AnalysisModel::kPlaneStress;
+      } else if (spec.dim == 2 && model == "axisymmetric") {
+        spec.model = AnalysisModel::kAxisymmetric;
       } else if (spec.dim == 3 && model == "3d") {
         spec.model = AnalysisModel::kThreeD;
       } else if (spec.dim == 2) {
         fail("problem.model",
-             "expected \"plane_strain\" or \"plane_stress\" (problem.dimension = 2), got " + in_quotes(model));
+             "expected \"plane_strain\", \"plane_stress\" or \"axisymmetric\" (problem.dimension = 2), got " +
+                 in_quotes(model));
       } else {
         fail("problem.model", "expected \"3d\" (problem.dimension = 3), got " + in_quotes(model));
       }
@@ -623,7 +626,8 @@ class Reader {
     }
     if (spec.model == AnalysisModel::kPlaneStress) {
       fail(model_key, "the hyperelastic model " + in_quotes(material.model) +
-                          " needs problem.model = \"plane_strain\" (or dimension = 3), got \"plane_stress\"");
+                          " needs problem.model = \"plane_strain\" or \"axisymmetric\" (or dimension = 3), got "
+                          "\"plane_stress\"");
     }
     const bool neo = material.model == "neo_hookean";
     const std::vector<std::string_view> own =

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "symcontact/contact/contact_geometry.hpp"
-#include "symcontact/materials/analysis_model.hpp"
+#include "symcontact/fem/analysis_model.hpp"
 #include "symcontact/solvers/subproblem_solver.hpp"
 
 namespace symcontact {

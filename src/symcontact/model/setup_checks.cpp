@@ -60,10 +60,20 @@ std::string mode_name(int dim, int j) {
   return dim == 2 ? "rotation about z" : std::string("rotation about ") + xyz[j - dim];
 }
 
-/// The rigid motions that G (Σ rowᵀ row of the constraints, nm × nm) leaves free, by name: first the single
-/// motions (a translation or a rotation about the centroid) that nothing resists, then, when the null space
-/// of G holds more, "a combination of ..." naming the motions of one more null vector. Empty when none.
-std::string free_motions(const Eigen::MatrixXd& G, int dim) {
+/// The rigid motions of a body, as indices j of rigid_mode(): every translation and rotation, but for an
+/// axisymmetric section only the translation along the axis (y): a radial motion strains the hoop.
+std::vector<int> rigid_motions(AnalysisModel model, int dim) {
+  if (model == AnalysisModel::kAxisymmetric) return {1};
+  std::vector<int> all(dim == 2 ? 3 : 6);
+  for (int j = 0; j < static_cast<int>(all.size()); ++j) all[j] = j;
+  return all;
+}
+
+/// The rigid motions `modes` (rigid_motions()) that G (Σ rowᵀ row of the constraints, over those modes) leaves
+/// free, by name: first the single motions (a translation or a rotation about the centroid) that nothing
+/// resists, then, when the null space of G holds more, "a combination of ..." naming the motions of one more
+/// null vector. Empty when none.
+std::string free_motions(const Eigen::MatrixXd& G, int dim, const std::vector<int>& modes) {
   const int nm = static_cast<int>(G.rows());
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(G);
   const double top = eig.eigenvalues().maxCoeff();
@@ -78,7 +88,7 @@ std::string free_motions(const Eigen::MatrixXd& G, int dim) {
     if (!(G(j, j) > small)) {
       single[j] = 1;
       ++count;
-      out += (out.empty() ? "" : "; ") + mode_name(dim, j);
+      out += (out.empty() ? "" : "; ") + mode_name(dim, modes[j]);
     }
   if (static_cast<int>(null.size()) > count) {
     // A null vector with the single free motions taken out.
@@ -92,7 +102,7 @@ std::string free_motions(const Eigen::MatrixXd& G, int dim) {
     std::string combination;
     for (int k = 0; k < nm; ++k)
       if (std::abs(best[k]) > 0.1 * best.cwiseAbs().maxCoeff())
-        combination += (combination.empty() ? "" : " + ") + mode_name(dim, k);
+        combination += (combination.empty() ? "" : " + ") + mode_name(dim, modes[k]);
     out += (out.empty() ? "" : "; ") + ("a combination of " + combination);
   }
   return out;
@@ -100,7 +110,8 @@ std::string free_motions(const Eigen::MatrixXd& G, int dim) {
 
 void check_rigid_motions(const Model& model) {
   const int D = model.dim();
-  const int nm = D == 2 ? 3 : 6;
+  const std::vector<int> modes = rigid_motions(model.spec().model, D);
+  const int nm = static_cast<int>(modes.size());
   const DofMap& dofs = model.dofs();
   const ContactSet& cs = model.contacts();
   const FixedDofs fixed = model.fixed_dofs(0);
@@ -114,7 +125,7 @@ void check_rigid_motions(const Model& model) {
     Eigen::MatrixXd G = Eigen::MatrixXd::Zero(nm, nm);  // Σ rowᵀ row over the constraints that resist
     auto add_row = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& direction) {
       Eigen::VectorXd row(nm);
-      for (int j = 0; j < nm; ++j) row[j] = rigid_mode(D, j, x, c, L).dot(direction);
+      for (int j = 0; j < nm; ++j) row[j] = rigid_mode(D, modes[j], x, c, L).dot(direction);
       G += row * row.transpose();
     };
     for (Index v = 0; v < body.mesh.num_nodes(); ++v)
@@ -134,7 +145,7 @@ void check_rigid_motions(const Model& model) {
             add_row(surf.X.col(k), n.col(k));
         }
       }
-    const std::string motion = free_motions(G, D);
+    const std::string motion = free_motions(G, D, modes);
     if (motion.empty()) continue;
     throw InputError(model.spec().file, body.spec->key,
                      "body '" + body.name + "': rigid motion left free: " + motion +

@@ -54,7 +54,7 @@ BodyFields recover_fields(const Body& body, const DofMap& dofs, int b, const Vec
     for (const LinearElastic& m : body.materials) laws.push_back(linear_point_law(m));
   else
     for (const Hyperelastic& m : body.hyperelastic) laws.push_back(hyperelastic_point_law(m));
-  return recover_fields(body.mesh, dofs, b, laws, body.cell_material, u);
+  return recover_fields(body.mesh, dofs, b, laws, body.cell_material, u, body.materials.front().model);
 }
 
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const PointLaw& law, const VectorXd& u) {
@@ -62,7 +62,7 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
 }
 
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const std::vector<PointLaw>& laws,
-                          const std::vector<int>& cell_law, const VectorXd& u) {
+                          const std::vector<int>& cell_law, const VectorXd& u, AnalysisModel model) {
   assert(!laws.empty());
   assert(cell_law.empty() || static_cast<Index>(cell_law.size()) == mesh.num_cells());
   BodyFields f;
@@ -97,10 +97,15 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
     Eigen::Matrix<double, NN, DD> G;
     Eigen::Matrix<double, DD, NN> U;
     const PointLaw* law = &laws[0];
-    auto state_at = [&](const Eigen::Matrix<double, DD, NN>& X, const double* dN, double& det) {
-      det = physical_gradients<DD, NN>(X, dN, G);
+    auto state_at = [&](const Eigen::Matrix<double, DD, NN>& X, const Tabulation& tab, int point, double& det) {
+      det = physical_gradients<DD, NN>(X, tab.dN_at(point), G);
       Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
       if (det > 0) H.topLeftCorner<DD, DD>() = U * G;  // ∇_X u
+      if (model == AnalysisModel::kAxisymmetric && det > 0) {
+        const Eigen::Map<const Eigen::Matrix<double, NN, 1>> N(tab.N_at(point));
+        const double R = X.row(0).dot(N);
+        H(2, 2) = R > 0 ? U.row(0).dot(N) / R : H(0, 0);
+      }
       return (*law)(H);
     };
     for (Index c = 0; c < nc; ++c) {
@@ -111,7 +116,7 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
       double det = 0.0, vol = 0.0, J_avg = 0.0;
       Eigen::Matrix3d sig_avg = Eigen::Matrix3d::Zero();
       for (int q = 0; q < tq.rule.size(); ++q) {
-        const PointState s = state_at(X, tq.dN_at(q), det);
+        const PointState s = state_at(X, tq, q, det);
         sig_avg += tq.rule.weights[q] * det * s.stress;
         J_avg += tq.rule.weights[q] * det * s.volume_ratio;
         vol += tq.rule.weights[q] * det;
@@ -124,7 +129,7 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
       f.cell_von_mises[c] = von_mises(sig_avg);
       f.cell_volume_ratio[c] = J_avg;
       for (int a = 0; a < NN; ++a) {
-        const PointState s = state_at(X, tn.dN_at(a), det);
+        const PointState s = state_at(X, tn, a, det);
         f.strain.col(n[a]) += vol * to_voigt6(s.strain);
         f.stress.col(n[a]) += vol * to_voigt6(s.stress);
         f.volume_ratio[n[a]] += vol * s.volume_ratio;

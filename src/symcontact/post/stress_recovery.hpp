@@ -6,6 +6,8 @@
 ///    cell measure (a simple, local recovery; contact tractions are never taken from these).
 /// Tensors are 6 components in ParaView's order XX, YY, ZZ, XY, YZ, XZ. In 2D the strain is the in-plane
 /// strain (ε_zz reported as 0) and σ_zz follows the model (λ tr ε in plane strain, 0 in plane stress).
+/// Axisymmetric: XX, YY, ZZ, XY are rr, zz, θθ, rz, and H has H_θθ = u_r / R at (2, 2) (on the axis, R = 0,
+/// its limit ∂u_r/∂r, u_r being 0 there by symmetry).
 ///
 /// What is reported at a point comes from a PointLaw, evaluated on the displacement gradient H = ∇_X u
 /// (3 × 3, zero third row and column in 2D):
@@ -58,7 +60,8 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
 /// stresses of the cells around it, whatever their law (the nodal stress jumps there; the cell values do not
 /// mix).
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const std::vector<PointLaw>& laws,
-                          const std::vector<int>& cell_law, const VectorXd& u);
+                          const std::vector<int>& cell_law, const VectorXd& u,
+                          AnalysisModel model = AnalysisModel::kPlaneStrain);
 /// The linear-elastic case (ε, σ = C : ε).
 BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const LinearElastic& material,
                           const VectorXd& u);
