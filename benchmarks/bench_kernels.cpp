@@ -59,7 +59,7 @@ void element_stiffness(benchmark::State& state, CellType t) {
     Eigen::Matrix<double, D * NN, D * NN> K;
     for (auto _ : state) {
       benchmark::DoNotOptimize(X.data());
-      int bad = symcontact::linear_elastic_stiffness<D, NN>(X, tab, mat.lambda, mat.mu, K);
+      int bad = symcontact::linear_elastic_stiffness<D, NN>(X, tab, mat.lambda, mat.mu, mat.model, K);
       benchmark::DoNotOptimize(bad);
       benchmark::DoNotOptimize(K.data());
       benchmark::ClobberMemory();
@@ -78,7 +78,7 @@ void element_scatter(benchmark::State& state, CellType t) {
         symcontact::tabulate(t, symcontact::simplex_quadrature(D, quadrature_degree(t)));
     const auto mat = material(D);
     Eigen::Matrix<double, n, n> K;
-    symcontact::linear_elastic_stiffness<D, NN>(sample_element<D, NN>(t), tab, mat.lambda, mat.mu, K);
+    symcontact::linear_elastic_stiffness<D, NN>(sample_element<D, NN>(t), tab, mat.lambda, mat.mu, mat.model, K);
     // A few thousand distinct elements' worth of DOFs, all free, scattered far apart like a real mesh.
     constexpr int kElements = 4096;
     std::vector<symcontact::Index> free_index(static_cast<std::size_t>(kElements) * n);

@@ -21,3 +21,30 @@ set_tests_properties("Ironing2D.FrictionalRunsThroughEveryStepWithoutPenetration
 #   sanitised.
 set_tests_properties("Hertz3D.TwoElasticSpheresP2" "SelfContact3D.HairpinEqualsHalfModelOnARigidPlane"
                      PROPERTIES LABELS "validation;asan_slow")
+#
+# The longest of the rest (20-80 s each sanitised), each with a smaller sibling that runs the same code
+# sanitised:
+# - Hertz2D.CylinderExtrudedIntoHexahedra…: Hex27 contact with curved Quad9 facets; the V3Hex patch tests run
+#   Hex27/Quad9 contact.
+# - Elasticity/ManufacturedConvergence…/D3P1 and D3P2: refinement studies on 3D meshes; the 2D studies and the
+#   3D P1/P2 derivative checks (unit) run.
+# - Stacked/StackedBlocks…/3D_n3_5_4_P2_symmetric: the 3D P1 stacks and the 3D P2 contact patch tests run.
+# - FrictionExamples/Units…/inclined_3d_inclined_toml_L3_F0: the 2D unit changes run, and InclinedInterface3D
+#   solves the same 3D problem.
+# Parameterised tests carry their parameter in their discovered name (see zoo_slow.cmake): matched by prefix.
+set_tests_properties("Hertz2D.CylinderExtrudedIntoHexahedraMatchesTheLineContact" PROPERTIES LABELS "validation;asan_slow")
+foreach(prefix "Elasticity/ManufacturedConvergence.RatesMatchTheory/D3P1"
+               "Elasticity/ManufacturedConvergence.RatesMatchTheory/D3P2"
+               "Stacked/StackedBlocks.UniformPressureAtBothInterfacesAndOrderIndependent/3D_n3_5_4_P2_symmetric"
+               "FrictionExamples/Units.RescaledProblemGivesTheSameDimensionlessAnswer/inclined_3d_inclined_toml_L3_F0")
+  set(found FALSE)
+  foreach(test IN LISTS symcontact_validation_tests_TESTS)
+    if(test MATCHES "^${prefix}( |$)")
+      set_tests_properties("${test}" PROPERTIES LABELS "validation;asan_slow")
+      set(found TRUE)
+    endif()
+  endforeach()
+  if(NOT found AND symcontact_validation_tests_TESTS)
+    message(FATAL_ERROR "tests/asan_slow.cmake: no validation test named '${prefix}'")
+  endif()
+endforeach()
