@@ -84,8 +84,8 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
 /// InputError(file, key = `group_key`) when the group is absent or empty, and InputError(file, ...)
 /// for a fault of the body's mesh: check_folds() on the cells as read, before they are oriented (a cell
 /// folded over its neighbour), Mesh::check() (a non-finite coordinate, a degenerate element), check_topology() (coincident nodes that make a crack, a body in several pieces,
-/// unless `allow` declares them: mesh_topology.hpp) and Mesh::locate_facets() (a group facet inside the body or
-/// off it).
+/// unless `allow` declares them: mesh_topology.hpp) and Mesh::locate_facets() (a group facet that is a facet of no
+/// cell; a group inside the body becomes a node group, Mesh::interior_facet_groups).
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key,
                   const TopologyAllowances& allow = {});
 

@@ -162,6 +162,7 @@ void Mesh::locate_facets() {
         it->second.second = c;  // interior facet: seen twice
     }
   }
+  std::vector<std::string> interior;
   for (auto& [name, g] : facet_groups) {
     const Index m = num_facets(g);
     g.cell.assign(m, -1);
@@ -175,12 +176,15 @@ void Mesh::locate_facets() {
         throw InputError("", name,
                          facet + " of this group is not a facet of any element of the body, so not on its boundary "
                                  "(a boundary group must be made of facets of the body's boundary)");
-      if (it->second.second >= 0)
-        throw InputError("", name,
-                         facet + " of this group is shared by " + cell_label(it->second.first) + " and " +
-                             cell_label(it->second.second) +
-                             ": it lies inside the body, not on its boundary (a boundary group, such as a "
-                             "contact surface, a load or a support, must be made of facets of the body's boundary)");
+      if (it->second.second >= 0) {
+        interior_facet_groups[name] =
+            facet + " of this group is shared by " + cell_label(it->second.first) + " and " +
+            cell_label(it->second.second) +
+            ": it lies inside the body, not on its boundary (a boundary group, such as a contact surface or a "
+            "load, must be made of facets of the body's boundary; a Dirichlet condition may hold its nodes)";
+        interior.push_back(name);
+        break;
+      }
       const Index c = it->second.first;
       const int f = it->second.facet;
       const int* loc = cell_facet_nodes(cell_type, f);
@@ -188,6 +192,11 @@ void Mesh::locate_facets() {
       g.cell[k] = c;
       g.local_facet[k] = f;
     }
+  }
+  for (const std::string& name : interior) {
+    node_groups[name] = group_nodes(name);
+    node_group_dims[name] = dim - 1;
+    facet_groups.erase(name);
   }
 }
 

@@ -53,6 +53,10 @@ struct Mesh {
   std::map<std::string, int> node_group_dims;
   /// Physical groups of cells (of dimension `dim`) restricted to this mesh: cell indices, increasing.
   std::map<std::string, std::vector<Index>> cell_groups;
+  /// Groups of facets (dimension dim − 1) with a facet inside the body (shared by two cells), moved out of
+  /// facet_groups by locate_facets() into node_groups: why each cannot be a boundary group, for the message of
+  /// a contact surface or a load that names it. A Dirichlet condition may still hold its nodes.
+  std::map<std::string, std::string> interior_facet_groups;
 
   Index num_nodes() const { return x.cols(); }
   int nodes_per_cell() const { return cell_num_nodes(cell_type); }
@@ -73,9 +77,10 @@ struct Mesh {
   std::vector<std::string> group_names() const;
 
   /// Finds, for every facet of every group, the cell it bounds and its local facet number, and
-  /// reorders its nodes to the outward orientation of that cell. Throws InputError(file="", key=group)
-  /// when a facet is not on the boundary of this body: shared by two cells (inside the body; the
-  /// message names both) or a facet of no cell. The facet is named by its element tag (FacetGroup::tags).
+  /// reorders its nodes to the outward orientation of that cell. A group with a facet shared by two cells
+  /// (inside the body) becomes a node group and is listed in interior_facet_groups, with a reason naming
+  /// that facet (by its element tag, FacetGroup::tags) and both cells. Throws InputError(file="", key=group)
+  /// when a facet is a facet of no cell.
   void locate_facets();
 
   /// Checks the mesh: finite coordinates, node indices in range, no cell with a non-positive

@@ -34,11 +34,13 @@ std::string available_groups(const Mesh& m) {
 
 const FacetGroup& require_facets(const ProblemSpec& spec, const Body& b, const std::string& group,
                                  const std::string& key) {
+  const std::string where = "body '" + b.name + "' (mesh " + b.spec->mesh_file + ")";
+  if (auto in = b.mesh.interior_facet_groups.find(group); in != b.mesh.interior_facet_groups.end())
+    throw InputError(spec.file, key, where + ", group '" + group + "': " + in->second);
   auto it = b.mesh.facet_groups.find(group);
   if (it == b.mesh.facet_groups.end())
     throw InputError(spec.file, key,
-                     "body '" + b.name + "' (mesh " + b.spec->mesh_file + ") has no boundary group '" + group +
-                         "'; its groups: " + available_groups(b.mesh));
+                     where + " has no boundary group '" + group + "'; its groups: " + available_groups(b.mesh));
   return it->second;
 }
 
@@ -367,10 +369,7 @@ void Model::build_contacts(const Logger& log, const MeshReadOptions& mesh_option
     const int b = body_index(body);
     if (b < 0) throw InputError(spec.file, key, "no body named '" + body + "'");
     const Mesh& mesh = bodies_[b]->mesh;
-    if (!mesh.facet_groups.count(group))
-      throw InputError(spec.file, key,
-                       "body '" + body + "' (mesh " + bodies_[b]->spec->mesh_file + ") has no boundary group '" + group +
-                           "'; its groups: " + available_groups(mesh));
+    require_facets(spec, *bodies_[b], group, key);
     const std::string name = body + "." + group;
     for (int s = 0; s < static_cast<int>(contacts_.surfaces.size()); ++s)
       if (contacts_.surfaces[s].name == name) return s;

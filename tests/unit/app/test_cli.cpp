@@ -238,8 +238,27 @@ TEST_F(Cli, ContactSurfaceInsideTheBodyIsAnInputError) {
       "normal = [0.0, 1.0]\n";
   const fs::path f = write("inside.toml", problem_toml(test_mesh("interior_facet_group.msh"), "square", "0.3",
                                                        kClampBottom + kPressTop + contact));
-  expect_input_error(f, {"inside.toml", "body[0].mesh", "body 'block'", "interior_facet_group.msh", "diagonal",
+  expect_input_error(f, {"inside.toml", "contact[0].a", "body 'block'", "interior_facet_group.msh", "'diagonal'",
                          "element 3 of this group is shared by element 4 and element 5", "not on its boundary"});
+  // The same group as a traction boundary: refused under that key.
+  const std::string load = "[[body.traction]]\nboundary = \"diagonal\"\ntraction = [0.0, -1.0]\n\n";
+  const fs::path t = write("inside_load.toml", problem_toml(test_mesh("interior_facet_group.msh"), "square", "0.3",
+                                                            kClampBottom + load));
+  expect_input_error(t, {"inside_load.toml", "body[0].traction[0].boundary", "'diagonal'", "not on its boundary"});
+}
+
+TEST_F(Cli, FacetGroupInsideTheBodyIsAllowedUnusedOrForDirichlet) {
+  // A mesh with an interface curve inside the body (two materials, a line of sensors) is a valid mesh: the
+  // group is refused only where a boundary is needed, and a Dirichlet condition may hold its nodes.
+  const fs::path f = write("unused.toml", problem_toml(test_mesh("interior_facet_group.msh"), "square", "0.3",
+                                                       kClampBottom + kPressTop));
+  CliResult r = run("check " + shell_quote(f.string()));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const std::string hold = "[[body.dirichlet]]\nboundary = \"diagonal\"\nux = 0.0\nuy = 0.0\n\n";
+  const fs::path g = write("held.toml", problem_toml(test_mesh("interior_facet_group.msh"), "square", "0.3",
+                                                     hold + kPressTop));
+  r = run("run " + shell_quote(g.string()) + " -o " + shell_quote((dir_ / "held_out").string()));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
 }  // namespace

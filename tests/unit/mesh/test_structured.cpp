@@ -53,10 +53,18 @@ TEST(Mesh, CheckRejectsDegenerateCellNamingIt) {
   }
 }
 
-TEST(Mesh, FacetNotOnBoundaryIsRejected) {
+TEST(Mesh, FacetInsideTheBodyMakesANodeGroupAndOneOfNoCellIsRejected) {
   Mesh m = rectangle_mesh(0, 0, 2, 1, 2, 1, 1);
-  // The interior vertical edge x = 1 is shared by two cells.
+  // The interior vertical edge x = 1 is shared by two cells: no longer a boundary group, its nodes kept.
   m.facet_groups["inside"].facets = {1, 4};
+  ASSERT_NO_THROW(m.locate_facets());
+  EXPECT_EQ(m.facet_groups.count("inside"), 0u);
+  EXPECT_EQ(m.node_groups.at("inside"), (std::vector<Index>{1, 4}));
+  ASSERT_EQ(m.interior_facet_groups.count("inside"), 1u);
+  EXPECT_NE(m.interior_facet_groups.at("inside").find("inside the body"), std::string::npos);
+  EXPECT_EQ(m.facet_groups.count("bottom"), 1u);
+  // The segment from node 0 at (0, 0) to node 5 at (2, 1) is an edge of no cell.
+  m.facet_groups["diagonal"].facets = {0, 5};
   EXPECT_THROW(m.locate_facets(), InputError);
 }
 
