@@ -4,8 +4,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <cctype>
 #include <map>
+#include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -15,22 +18,28 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Multiplies the number, or every number of the array, at `key` of `t` (absent: nothing).
-void scale_key(toml::table& t, const std::string& key, double factor) {
+/// Gives `put` the value `e` × factor: a number, or an expression rewritten by scale_expression().
+template <class Put>
+void put_scaled(const toml::node& e, const std::string& key, double factor, double length, const Put& put) {
+  if (const auto x = e.value<double>())
+    put(*x * factor);
+  else if (const auto text = e.value<std::string>())
+    put(scale_expression(*text, factor, length));
+  else
+    throw std::runtime_error("rescale_problem: " + key + " holds neither a number nor an expression");
+}
+
+/// Multiplies the value, or every value of the array, at `key` of `t` (absent: nothing) by `factor`; an
+/// expression is rewritten for coordinates × `length` as well (scale_expression()).
+void scale_key(toml::table& t, const std::string& key, double factor, double length = 1.0) {
   toml::node* n = t.get(key);
-  if (!n || factor == 1.0) return;
-  if (auto v = n->value<double>()) {
-    t.insert_or_assign(key, *v * factor);
-  } else if (toml::array* a = n->as_array()) {
+  if (!n || (factor == 1.0 && length == 1.0)) return;
+  if (toml::array* a = n->as_array()) {
     toml::array scaled;
-    for (const toml::node& e : *a) {
-      const auto x = e.value<double>();
-      if (!x) throw std::runtime_error("rescale_problem: " + key + " holds a non-number");
-      scaled.push_back(*x * factor);
-    }
+    for (const toml::node& e : *a) put_scaled(e, key, factor, length, [&](auto v) { scaled.push_back(v); });
     t.insert_or_assign(key, std::move(scaled));
   } else {
-    throw std::runtime_error("rescale_problem: " + key + " is neither a number nor an array of numbers");
+    put_scaled(*n, key, factor, length, [&](auto v) { t.insert_or_assign(key, v); });
   }
 }
 
@@ -48,8 +57,11 @@ struct MeshSettings {
 };
 
 /// Meshes (.geo) or reads (.msh) `in` and writes it to `out` with coordinates × `length`.
-void write_scaled_mesh(const std::string& in, const std::string& out, const MeshSettings& m, double length) {
-  gmsh::initialize(0, nullptr, false);
+void write_scaled_mesh(const std::string& in, const std::string& out, const MeshSettings& m, double length,
+                       const std::vector<std::string>& gmsh_args) {
+  std::vector<char*> argv{const_cast<char*>("gmsh")};
+  for (const std::string& a : gmsh_args) argv.push_back(const_cast<char*>(a.c_str()));
+  gmsh::initialize(static_cast<int>(argv.size()), argv.data(), false);
   try {
     gmsh::option::setNumber("General.Terminal", 0);
     gmsh::open(in);
@@ -73,18 +85,31 @@ void write_scaled_mesh(const std::string& in, const std::string& out, const Mesh
   gmsh::finalize();
 }
 
-/// Replaces the mesh path at `key` by a scaled copy in `out_dir` (one per distinct source file).
+/// Replaces the mesh path of `t` by a scaled copy in `out_dir` (one per distinct source file and
+/// mesh_parameters), meshed with its `mesh_parameters` (as Gmsh's -setnumber), which then leave the table.
 void rescale_mesh_key(toml::table& t, const fs::path& base, const fs::path& out_dir, const MeshSettings& m,
                       double length, std::map<std::string, std::string>& written) {
   const auto name = t["mesh"].value<std::string>();
   if (!name) return;
   const fs::path src = fs::weakly_canonical(base / *name);
-  auto [it, fresh] = written.try_emplace(src.string(), "");
+  std::vector<std::string> args;
+  if (const toml::table* p = t["mesh_parameters"].as_table()) {
+    for (const auto& [k, v] : *p) {
+      std::ostringstream value;
+      value.precision(17);
+      value << v.value<double>().value_or(0.0);
+      args.insert(args.end(), {"-setnumber", std::string(k.str()), value.str()});
+    }
+  }
+  std::string key = src.string();
+  for (const std::string& a : args) key += " " + a;
+  auto [it, fresh] = written.try_emplace(key, "");
   if (fresh) {
     it->second = "mesh" + std::to_string(written.size()) + "_" + src.stem().string() + ".msh";
-    write_scaled_mesh(src.string(), (out_dir / it->second).string(), m, length);
+    write_scaled_mesh(src.string(), (out_dir / it->second).string(), m, length, args);
   }
   t.insert_or_assign("mesh", it->second);
+  t.erase("mesh_parameters");
 }
 
 }  // namespace
@@ -155,6 +180,36 @@ std::string write_variant(const std::string& problem_path, const ProblemVariant&
   return out.string();
 }
 
+std::string scale_expression(const std::string& text, double factor, double length) {
+  std::ostringstream out;
+  out.precision(17);
+  out << factor << "*(";
+  const auto is_name = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t i = 0; i < text.size();) {
+    if (!is_name(text[i])) {
+      out << text[i++];
+      continue;
+    }
+    // A number (with its exponent: "2e-3") or a name, whole.
+    std::size_t j = i;
+    if (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.') {
+      while (j < text.size() && (is_name(text[j]) || text[j] == '.' ||
+                                 ((text[j] == '-' || text[j] == '+') && (text[j - 1] == 'e' || text[j - 1] == 'E'))))
+        ++j;
+    } else {
+      while (j < text.size() && is_name(text[j])) ++j;
+    }
+    const std::string token = text.substr(i, j - i);
+    if (token == "x" || token == "y" || token == "z")
+      out << "(" << token << "/" << length << ")";
+    else
+      out << token;
+    i = j;
+  }
+  out << ")";
+  return out.str();
+}
+
 std::string rescale_problem(const std::string& problem_path, const UnitChange& change, const std::string& out_dir) {
   toml::table root = parse_problem_file(problem_path);
   fs::create_directories(out_dir);
@@ -171,19 +226,23 @@ std::string rescale_problem(const std::string& problem_path, const UnitChange& c
   for_each_table(root, "body", [&](toml::table& body) {
     rescale_mesh_key(body, base, out_dir, m, L, written);
     scale_key(body, "body_force", B);
-    if (toml::table* mat = body["material"].as_table())
-      for (const char* k : {"E", "mu", "lambda", "c1", "c2", "kappa"}) scale_key(*mat, k, S);
+    // One material table, or one per region ([[body.material]]).
+    const auto scale_material = [&](toml::table& mat) {
+      for (const char* k : {"E", "mu", "lambda", "c1", "c2", "kappa"}) scale_key(mat, k, S);
+    };
+    if (toml::table* mat = body["material"].as_table()) scale_material(*mat);
+    for_each_table(body, "material", scale_material);
     for_each_table(body, "dirichlet", [&](toml::table& d) {
-      for (const char* k : {"ux", "uy", "uz"}) scale_key(d, k, L);
+      for (const char* k : {"ux", "uy", "uz"}) scale_key(d, k, L, L);
     });
     // A resultant or point force: [force] in 3D, [force / length] (per unit thickness) in 2D.
     const double F = m.dim == 3 ? S * L * L : S * L;
     for_each_table(body, "traction", [&](toml::table& d) {
-      scale_key(d, "traction", S);
+      scale_key(d, "traction", S, L);
       scale_key(d, "total_force", F);
     });
     for_each_table(body, "point_load", [&](toml::table& d) { scale_key(d, "force", F); });
-    for_each_table(body, "pressure", [&](toml::table& d) { scale_key(d, "pressure", S); });
+    for_each_table(body, "pressure", [&](toml::table& d) { scale_key(d, "pressure", S, L); });
   });
   for_each_table(root, "contact", [&](toml::table& c) {
     for (const char* k : {"search_distance", "alpha"}) scale_key(c, k, L);

@@ -9,11 +9,14 @@
 ///   [length]                 ux uy uz, mesh_size, search_distance, alpha, obstacle point / center / radius
 ///   [stress] = F / L²        E, mu and lambda of a material, c1 c2 kappa, traction, pressure, Tresca tau
 ///   [force] / [length]³      body_force
-/// and dimensionless keys (nu, Coulomb mu, normal, factors, tolerances, [ipopt]) are left as they are. In
+/// and dimensionless keys (nu, Coulomb mu, normal, factors, tolerances, [ipopt]) are left as they are. An
+/// expression (docs/loads.md) of a Dirichlet value, a pressure or a traction is rewritten by
+/// scale_expression(): its value × the key's factor, its coordinates x, y, z in the new lengths. In
 /// 2D, forces are per unit thickness, so reactions scale as force / length there and as force in 3D.
 ///
 /// The meshes are written anew, as ASCII MSH 4.1 files with their coordinates multiplied by `length`: a
-/// `.geo` is meshed by Gmsh first, at the problem's order and mesh_size, and written with its elements as
+/// `.geo` is meshed by Gmsh first, at the problem's order, mesh_size and the body's mesh_parameters (which then
+/// leave the problem), and written with its elements as
 /// meshed (P2 edge nodes where Gmsh placed them). Calling it with length = force = 1 gives the reference
 /// the rescaled problem is compared with: both then solve the very same mesh.
 
@@ -37,6 +40,11 @@ struct ProblemVariant {
   /// elements by `If (!Exists(h)) h = …; EndIf`.
   std::string geo_definitions;
 };
+
+/// The expression f(x, y, z, t) of a value in the old units rewritten for the new ones: factor · f(x/length,
+/// y/length, z/length, t), as text ("1000*(0.1*(x/1000)*t)" for f = "0.1*x*t", factor = length = 1e3). The
+/// names x, y and z are replaced where they stand alone, never inside a longer name or a number.
+std::string scale_expression(const std::string& text, double factor, double length);
 
 /// Writes `out_dir`/problem.toml: the problem with every mesh path made absolute and `variant` applied; the
 /// meshes are not copied. Returns its path. Throws std::runtime_error when the problem cannot be read.

@@ -15,10 +15,13 @@
 #include <string>
 
 #include "support/rescale_problem.hpp"
+#include "symcontact/core/expression.hpp"
 #include "support/solve_case.hpp"
 
 namespace symcontact::testing {
 namespace {
+
+namespace fs = std::filesystem;
 
 struct UnitsCase {
   std::string example;  ///< under examples/
@@ -97,6 +100,45 @@ INSTANTIATE_TEST_SUITE_P(
                       UnitsCase{"friction_block/block.toml", 1e3, 1.0},
                       UnitsCase{"inclined_3d/inclined.toml", 1e3, 1.0}),
     case_name);
+
+// An expression's value in the new units at the new coordinates of a point is its old value there times the
+// key's factor; numbers with exponents and names holding x, y or z are left whole.
+TEST(RescaleProblem, GivesTheOldValueTimesTheFactorAtTheScaledPoint) {
+  const double L = 1e3, factor = 1e-6;
+  for (const std::string text : {"0.1*x*t", "2e-3*x + exp(y)*t - 1.5E+2*z", "max(x, 1e-1)*sin(pi*z) + sqrt(abs(y))",
+                                 "(cos(pi/6*t) - 1)*x - sin(pi/6*t)*y", "x>0.5 ? y^2 : -z"}) {
+    const Expression before(text), after(scale_expression(text, factor, L));
+    for (const double p : {0.25, 0.75, 1.5}) {
+      const double x = p, y = 0.5 * p + 0.1, z = 1.0 - p, t = 0.3 * p;
+      const double want = factor * before(x, y, z, t);
+      EXPECT_NEAR(after(L * x, L * y, L * z, t), want, 1e-13 * std::abs(want)) << text << " -> " << after.text();
+    }
+  }
+}
+
+// The expression-driven rigid rotation (Dirichlet values as expressions of x, y and t) in millimetres turns
+// the block the same way.
+TEST(RescaleProblem, RotationByExpressionsInMillimetres) {
+  const std::string dir = test_temp_dir("units_expr");
+  const auto ref = solve_in("rotation_2d/rotation.toml", UnitChange{}, dir + "ref");
+  const auto mm = solve_in("rotation_2d/rotation.toml", UnitChange{1e3, 1.0}, dir + "mm");
+  ASSERT_EQ(ref->u.size(), mm->u.size());
+  ASSERT_GT(ref->u.norm(), 0.0);
+  EXPECT_LE((mm->u / 1e3 - ref->u).norm(), 1e-8 * ref->u.norm());
+}
+
+// A .geo meshed with the problem's mesh_parameters (h = 0.1, not the file's own 0.2): the same mesh, in mm.
+TEST(RescaleProblem, MeshParametersGiveTheSameMeshInMillimetres) {
+  const std::string dir = test_temp_dir("units_params");
+  const auto ref = solve_in("bimaterial_2d/bimaterial.toml", UnitChange{}, dir + "ref");
+  const auto mm = solve_in("bimaterial_2d/bimaterial.toml", UnitChange{1e3, 1.0}, dir + "mm");
+  const std::string shipped = std::string(SYMCONTACT_EXAMPLES) + "/bimaterial_2d/bimaterial.toml";
+  const auto as_shipped = solve_case(read_text(shipped), fs::path(shipped).parent_path().string());
+  ASSERT_EQ(ref->u.size(), as_shipped->u.size());
+  ASSERT_EQ(ref->u.size(), mm->u.size());
+  ASSERT_GT(ref->u.norm(), 0.0);
+  EXPECT_LE((mm->u / 1e3 - ref->u).norm(), 1e-8 * ref->u.norm());
+}
 
 }  // namespace
 }  // namespace symcontact::testing
