@@ -427,6 +427,11 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     js["load_factor"] = spec.load_factors[step];
     js["equilibrium_residual"] = checks.equilibrium;  // post/step_checks.hpp
     js["max_penetration_ratio"] = checks.penetration;
+    js["warnings"] = Json::array();
+    for (const std::string& w : checks.warnings) {
+      log.warning("load step " + std::to_string(step + 1) + ": " + w);
+      js["warnings"].push_back(w);
+    }
     st.merge(has_contact ? lrep.times : rep.times);
     add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);
     std::vector<ContactPairResult> cres;

@@ -297,4 +297,26 @@ std::vector<Penetration> find_penetrations(const ContactSet& contacts, const std
   return out;
 }
 
+std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
+                                                      const VectorXd& u) {
+  const VectorXd g = lin.A * u + lin.b;
+  const auto& families = contacts.families();
+  std::vector<Penetration> out(families.size());
+  std::vector<Eigen::VectorXd> h(families.size());
+  for (Index r = 0; r < g.size(); ++r) {
+    const int f = lin.row_family[r];
+    const ContactFamily& fam = families[f];
+    if (contacts.pairs[fam.pair].geometry != ContactGeometry::kReference || !(lin.row_support[r] > 0)) continue;
+    if (h[f].size() == 0) h[f] = nodal_sizes(contacts.surfaces[fam.slave]);
+    Penetration& deepest = out[f];
+    const Index k = lin.row_node[r];
+    const double depth = -g[r] / lin.row_support[r];
+    if (depth > 0 && depth / h[f][k] > deepest.ratio()) {
+      deepest = Penetration{fam.pair, fam.slave, fam.master, k, depth, h[f][k], false};
+    }
+  }
+  out.erase(std::remove_if(out.begin(), out.end(), [](const Penetration& p) { return p.node < 0; }), out.end());
+  return out;
+}
+
 }  // namespace symcontact

@@ -66,6 +66,15 @@ std::vector<Penetration> find_penetrations(const ContactSet& contacts, const std
                                            const DofMap& dofs, const VectorXd& u,
                                            double relative_tolerance = kPenetrationRelativeTolerance);
 
+/// For every family of a pair in ContactGeometry::kReference (small sliding), the node of largest violation of
+/// the linearised gap its solve enforces: depth = −g_i(u) / s_i, g = A u + b the rows of `lin` (frozen at the
+/// reference configuration, gap_constraints.hpp) and s_i their supports Σ w φ_i, so that g_i / s_i is the
+/// nodal average gap; size = the longest reference facet of the slave surface at the node. Pairs in
+/// ContactGeometry::kCurrent are skipped: find_penetrations() measures them in the deformed configuration,
+/// which for a small-sliding pair tells how far the motion is from small sliding, not whether its solve held.
+std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
+                                                      const VectorXd& u);
+
 /// Signed distance of each point (columns of `points`, dim × n) to the nearest facet of surface `s` (node
 /// positions x, dim × num_nodes), found over the whole surface with a bounding-volume hierarchy, the sign
 /// by that facet's unit normal (facet_normal()) at the closest point; NaN where the closest point is not

@@ -30,17 +30,9 @@ void check_finite(const Model& model, const VectorXd& u, const VectorXd& g,
     throw SolveError("check of the answer: a contact multiplier is not a finite number");
 }
 
-/// The largest depth / h over the pairs' nodes; throws when one exceeds the tolerance.
-double check_penetration(const Model& model, const VectorXd& u) {
-  std::vector<const Mesh*> meshes;
-  for (const auto& b : model.bodies()) meshes.push_back(&b->mesh);
+/// "node N of 'surface' is D inside body 'B' (P % of the element size h": what and where a penetration is.
+std::string describe(const Model& model, const Penetration& p, const char* inside) {
   const ContactSet& cs = model.contacts();
-  const std::vector<Penetration> found = find_penetrations(cs, meshes, model.dofs(), u);
-  double worst = 0.0;
-  for (const Penetration& p : found) worst = std::max(worst, p.ratio());
-  auto it = std::find_if(found.begin(), found.end(), [](const Penetration& p) { return p.exceeds(); });
-  if (it == found.end()) return worst;
-  const Penetration& p = *it;
   const ContactSurface& slave = cs.surfaces[p.slave];
   std::string into = "the obstacle";
   if (p.master >= 0) {
@@ -49,14 +41,52 @@ double check_penetration(const Model& model, const VectorXd& u) {
   }
   std::ostringstream s;
   s.precision(4);
-  s << "check of the answer: contact '" << cs.pairs[p.pair].name << "': "
+  s << "contact '" << cs.pairs[p.pair].name << "': "
     << model.bodies()[slave.body]->mesh.node_label(slave.nodes[p.node]) << " of '" << slave.name << "' is "
-    << p.depth << (p.passed_through ? " behind " : " inside ") << into << " ("
-    << 100.0 * p.depth / p.size << " % of the element size " << p.size << "; at most "
-    << 100.0 * kPenetrationRelativeTolerance
-    << " % is tolerated): the bodies went through each other, the contact was not enforced (the search "
-       "distance may be smaller than the motion of a step: more load steps or a larger search_distance)";
-  throw SolveError(s.str());
+    << p.depth << (p.passed_through ? " behind " : inside) << into << " (" << 100.0 * p.depth / p.size
+    << " % of the element size " << p.size << "; at most " << 100.0 * kPenetrationRelativeTolerance
+    << " % is tolerated)";
+  return s.str();
+}
+
+bool small_sliding(const Model& model, const Penetration& p) {
+  return model.contacts().pairs[p.pair].geometry == ContactGeometry::kReference;
+}
+
+/// The largest depth / h over the pairs' nodes; throws when one exceeds the tolerance. A pair in
+/// ContactGeometry::kReference is held to its linearised gaps (the constraint its solve enforces); its depth
+/// in the deformed configuration beyond the tolerance is a warning: the motion is not small sliding.
+double check_penetration(const Model& model, const VectorXd& u, const ContactState& contact,
+                         std::vector<std::string>& warnings) {
+  std::vector<const Mesh*> meshes;
+  for (const auto& b : model.bodies()) meshes.push_back(&b->mesh);
+  const ContactSet& cs = model.contacts();
+  const std::vector<Penetration> deformed = find_penetrations(cs, meshes, model.dofs(), u);
+  const std::vector<Penetration> linearized = find_linearized_penetrations(cs, contact.linearization, u);
+  double worst = 0.0;
+  std::vector<char> warned(cs.pairs.size(), 0);
+  for (const Penetration& p : deformed) {
+    if (small_sliding(model, p) && p.exceeds() && !warned[p.pair]++)
+      warnings.push_back(describe(model, p, " inside ") +
+                         " in the deformed configuration: the contact has geometry = \"reference\" (small sliding), "
+                         "whose gaps are those of the reference configuration, and the surfaces moved too far for "
+                         "it; geometry = \"current\" follows the motion");
+    if (!small_sliding(model, p)) worst = std::max(worst, p.ratio());
+  }
+  for (const Penetration& p : linearized) worst = std::max(worst, p.ratio());
+  for (const Penetration& p : deformed) {
+    if (small_sliding(model, p) || !p.exceeds()) continue;
+    throw SolveError("check of the answer: " + describe(model, p, " inside ") +
+                     ": the bodies went through each other, the contact was not enforced (the search distance may "
+                     "be smaller than the motion of a step: more load steps or a larger search_distance)");
+  }
+  for (const Penetration& p : linearized) {
+    if (!p.exceeds()) continue;
+    throw SolveError("check of the answer: " + describe(model, p, " behind its linearised gap to ") +
+                     " (geometry = \"reference\": the gap of the reference configuration plus the linearised "
+                     "motion): the small-sliding contact was not enforced");
+  }
+  return worst;
 }
 
 /// The floor of body b's force scale (step_checks.hpp): kRoundOffStrain × (λ + 2μ) × L^(dim−1), L the
@@ -125,7 +155,7 @@ StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDo
   }
   check_finite(model, u, g, contact);
   StepCheckFigures f;
-  if (contact) f.penetration = check_penetration(model, u);
+  if (contact) f.penetration = check_penetration(model, u, *contact, f.warnings);
   f.equilibrium = check_equilibrium(model, u, g, fixed, contact);
   return f;
 }

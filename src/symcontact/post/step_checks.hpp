@@ -8,7 +8,10 @@
 /// 2. **Penetration** (contact/penetration.hpp): no contact node lies deeper than
 ///    kPenetrationRelativeTolerance × h (25 % of the local element size) inside the other body of its pair,
 ///    behind the other surface after starting in front of it, or behind an analytic obstacle. Global: not
-///    limited to the contact search's distance or active set.
+///    limited to the contact search's distance or active set. A pair in small sliding (geometry =
+///    "reference") is held instead to the gaps its solve enforces, linearised at the reference configuration
+///    (find_linearized_penetrations()); its depth in the deformed configuration beyond the tolerance is a
+///    warning (StepCheckFigures::warnings), for it then measures the model's assumption, not the solve.
 /// 3. **Equilibrium of each body**: on the free DOFs of body b, r = ∇E(u) + ∇j(u) − Aᵀμ (E the bodies'
 ///    energy: elastic minus the loads' work; j the regularised friction terms of the last solve; A, μ the
 ///    gap constraints of the last geometry iteration and their multipliers), and
@@ -25,6 +28,7 @@
 /// the run turns it into exit 3 with the finished steps kept.
 
 #include <string>
+#include <vector>
 
 #include "symcontact/contact/contact_state.hpp"
 #include "symcontact/model/model.hpp"
@@ -42,6 +46,8 @@ constexpr double kRoundOffStrain = 1e-8;
 struct StepCheckFigures {
   double equilibrium = 0.0;
   double penetration = 0.0;
+  /// What holds but should be known: a small-sliding pair whose bodies overlap in the deformed configuration.
+  std::vector<std::string> warnings;
 };
 
 /// Runs the checks on a load step's solution u, with the Dirichlet conditions `fixed` of the step

@@ -166,4 +166,34 @@ TEST_F(CliChecks, BodiesOverlappingAtTheStartAreRefused) {
       "case.toml", {"contact[0]: contact 'stack': the bodies overlap at the start", " lies 0.5 inside"});
 }
 
+/// disk_in_bowl.geo's disk in a bowl of radius 2 (an analytic circle, inside), slid sideways by 0.5 along the
+/// bowl's bottom tangent and pressed down by 0.003 at its top, with the contact's `geometry` as given.
+std::string disk_in_bowl(const std::string& geometry) {
+  return kProblem2d + "[steps]\ncount = 2\n\n" +
+         body_toml("disk", kGeo + "disk_in_bowl.geo", "disk", "E = 1000.0, nu = 0.3",
+                   dirichlet_toml("disk_top", "ux = 0.5\nuy = -0.003\n")) +
+         "[[contact]]\nname = \"seat\"\na = \"disk.disk_bottom\"\ngeometry = \"" + geometry +
+         "\"\n[contact.obstacle]\ntype = \"circle\"\ncenter = [0.0, 2.0]\nradius = 2.0\ninside = true\n";
+}
+
+TEST_F(CliChecks, SmallSlidingBeyondItsAssumptionIsAWarningNotAFailure) {
+  // Small sliding holds the disk to the bowl's gaps and normals at the start: it slides along the bottom's
+  // tangent and ends 0.5² / 4 ≈ 0.06 inside the rising bowl (3 elements deep). That is the model the user
+  // chose, solved correctly (its linearised gaps hold): the run is ok and says where the assumption broke.
+  write_case(disk_in_bowl("reference"));
+  CliResult r = run("run case.toml --out out");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  expect_all_in(r.output, {"warning: load step 2: contact 'seat'", "of 'disk.disk_bottom' is", "inside the obstacle",
+                           "in the deformed configuration", "geometry = \"reference\" (small sliding)",
+                           "geometry = \"current\" follows the motion"});
+  expect_all_in(summary(), {"\"status\": \"ok\"", "\"warnings\": [\n", "in the deformed configuration"});
+  // Finite sliding follows the bowl up: no warning, and every step's list of warnings is empty.
+  write_case(disk_in_bowl("current"));
+  r = run("run case.toml --out out");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_EQ(summary().find("deformed configuration"), std::string::npos);
+  EXPECT_NE(summary().find("\"warnings\": []"), std::string::npos);
+}
+
 }  // namespace

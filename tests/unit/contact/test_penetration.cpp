@@ -86,6 +86,27 @@ TEST(Penetration, BodyPushedRightThroughTheOtherIsFound) {
   }
 }
 
+// Small sliding: the gaps the solve enforces, linearised at the reference configuration. Pressing the upper
+// square 0.1 down is a linearised gap of −0.1 at every node, both sides (40 % of h); sliding it sideways by
+// half its width changes no linearised gap. A pair in the current geometry is not measured this way.
+TEST(Penetration, SmallSlidingPairIsMeasuredOnItsLinearisedGaps) {
+  TwoSquares s;
+  s.contacts.pairs[0].geometry = ContactGeometry::kReference;
+  const ContactLinearization lin = s.contacts.linearize(s.dofs, VectorXd::Zero(s.dofs.num_dofs()));
+  const auto pressed = find_linearized_penetrations(s.contacts, lin, s.upper_moved(-0.1));
+  ASSERT_EQ(pressed.size(), 2u);
+  for (const auto& p : pressed) {
+    EXPECT_NEAR(p.depth, 0.1, 1e-12);
+    EXPECT_NEAR(p.size, 0.25, 1e-12);
+    EXPECT_TRUE(p.exceeds());
+  }
+  VectorXd slid = s.upper_moved(0.0);
+  for (Index v = 0; v < s.upper.num_nodes(); ++v) slid[s.dofs.dof(1, v, 0)] = 0.5;
+  EXPECT_LT(worst_ratio(find_linearized_penetrations(s.contacts, lin, slid)), 1e-12);
+  s.contacts.pairs[0].geometry = ContactGeometry::kCurrent;
+  EXPECT_TRUE(find_linearized_penetrations(s.contacts, lin, s.upper_moved(-0.1)).empty());
+}
+
 TEST(Penetration, AnalyticObstacleDepthIsTheSignedDistance) {
   TwoSquares s;
   ContactSet plane;
