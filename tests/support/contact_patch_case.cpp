@@ -112,16 +112,41 @@ std::string patch_geo(const ContactPatchCase& c) {
   return g;
 }
 
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+bool second_material(const ContactPatchCase& c) { return c.upper_E != 1.0 || c.upper_nu != kNu; }
+
+/// Which nodes of `body` belong to the upper block of the two-block case: its every node when the body is
+/// "upper", the nodes of the cells of group "upper" when it is the one body of both (coincident nodes at
+/// y = 1 are the two blocks' own), none otherwise.
+std::vector<char> upper_block_nodes(const ContactPatchCase& c, const Body& body) {
+  const Mesh& mesh = body.mesh;
+  std::vector<char> upper(mesh.num_nodes(), body.name == "upper" && c.n3 == 0);
+  auto it = mesh.cell_groups.find("upper");
+  if (c.one_body && it != mesh.cell_groups.end())
+    for (Index cell : it->second)
+      for (int a = 0; a < mesh.nodes_per_cell(); ++a) upper[mesh.cell(cell)[a]] = 1;
+  return upper;
+}
+
 /// The problem file of the one-body case (ContactPatchCase::one_body).
 std::string one_body_toml(const ContactPatchCase& c) {
+  const std::string materials =
+      !second_material(c) ? "[body.material]\nE = 1.0\nnu = 0.3\n"
+                          : "[[body.material]]\ngroup = \"lower\"\nE = 1.0\nnu = 0.3\n[[body.material]]\ngroup = "
+                            "\"upper\"\nE = " + number(c.upper_E) + "\nnu = " + number(c.upper_nu) + "\n";
   return "[problem]\ndimension = 2\norder = " + std::to_string(c.order) +
-         "\n\n[[body]]\nname = \"blocks\"\nmesh = \"blocks.geo\"\ngroup = \"blocks\"\n"
-         "[body.material]\nE = 1.0\nnu = 0.3\n"
+         "\n\n[[body]]\nname = \"blocks\"\nmesh = \"blocks.geo\"\ngroup = \"blocks\"\n" + materials +
          "[[body.dirichlet]]\nboundary = \"bottom\"\nuy = 0.0\n"
          "[[body.dirichlet]]\nboundary = \"origin\"\nux = 0.0\n"
          "[[body.dirichlet]]\nboundary = \"upper_corner\"\nux = 0.0\n"
          "[[body.pressure]]\nboundary = \"top\"\npressure = 0.01\n"
-         "[[contact]]\nname = \"interface\"\na = \"blocks.interface\"\nb = \"blocks.interface\"\n";
+         "[[contact]]\nname = \"interface\"\na = \"blocks.interface\"\nb = \"blocks.interface\"\n" +
+         (c.geometry != "current" ? "geometry = \"" + c.geometry + "\"\n" : std::string());
 }
 
 }  // namespace
@@ -131,8 +156,10 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
   const std::vector<std::string> names = block_names(c.n3);
   const std::size_t nb = names.size();
   auto body = [&](std::size_t i) {
+    const bool upper = names[i] == "upper" && c.n3 == 0;
     std::string t = "\n[[body]]\nname = \"" + names[i] + "\"\nmesh = \"blocks.geo\"\ngroup = \"" + names[i] +
-                    "\"\n[body.material]\nE = 1.0\nnu = 0.3\n";
+                    "\"\n[body.material]\nE = " + number(upper ? c.upper_E : 1.0) +
+                    "\nnu = " + number(upper ? c.upper_nu : kNu) + "\n";
     if (i == 0) {
       t += c.dim == 3 ? "[[body.dirichlet]]\nboundary = \"bottom\"\nuz = 0.0\n"
                         "[[body.dirichlet]]\nboundary = \"origin\"\nux = 0.0\nuy = 0.0\n"
@@ -198,10 +225,17 @@ ContactPatchErrors contact_patch_errors(const ContactPatchCase& c, const SolvedC
   Eigen::Vector3d total_load = Eigen::Vector3d::Zero();
   for (int b = 0; b < m.dofs().num_bodies(); ++b) {
     const Mesh& mesh = m.bodies()[b]->mesh;
+    const std::vector<char> upper = upper_block_nodes(c, *m.bodies()[b]);
     for (Index v = 0; v < mesh.num_nodes(); ++v) {
       Eigen::Vector3d exact;
       if (c.dim == 2) {
-        exact << kNu * (1 + kNu) * kP * mesh.x(0, v), -(1 - kNu * kNu) * kP * mesh.x(1, v), 0.0;
+        // E = 1, ν below y = 1; above it, in the upper block, E_u and ν_u (ContactPatchCase::upper_E).
+        const double x = mesh.x(0, v), y = mesh.x(1, v);
+        if (upper[v])
+          exact << c.upper_nu * (1 + c.upper_nu) * kP * x / c.upper_E,
+              -(1 - kNu * kNu) * kP - (1 - c.upper_nu * c.upper_nu) * kP * (y - 1) / c.upper_E, 0.0;
+        else
+          exact << kNu * (1 + kNu) * kP * x, -(1 - kNu * kNu) * kP * y, 0.0;
       } else {
         exact << kNu * kP * mesh.x(0, v), kNu * kP * mesh.x(1, v), -kP * mesh.x(2, v);
       }
@@ -233,6 +267,7 @@ std::string contact_patch_name(const ContactPatchCase& c) {
   if (c.swap) name += "_swapped";
   if (c.mu >= 0) name += "_mu" + std::to_string(static_cast<int>(std::lround(10 * c.mu)));
   if (c.one_body) name += "_one_body";
+  if (second_material(c)) name += c.upper_nu == kNu ? "_soft_upper" : "_soft_upper_same_spread";
   if (c.geometry != "current") name += "_" + c.geometry;
   if (!c.quad_blocks.empty()) name += c.dim == 3 ? (c.serendipity ? "_hex20" : "_hex") : (c.serendipity ? "_quad8" : "_quad");
   for (const std::string& q : c.quad_blocks) name += "_" + q;

@@ -41,6 +41,13 @@ struct ContactPatchCase {
   /// there (coincident where the divisions meet), held by one self-contact pair on the group "interface" (both
   /// faces); the lower block's supports as in the two-body case, u_x = 0 at (0, 2) on the same body.
   bool one_body = false;
+  /// 2D, two blocks: Young's modulus and Poisson's ratio of the upper block (the lower's are 1 and 0.3). With
+  /// one_body, a second material of the same body on the cells of "upper" ([[body.material]] per group). The
+  /// exact field is then the same in the lower block and, in the upper one, u_x = ν_u (1 + ν_u) p x / E_u,
+  /// u_y = −(1 − ν²) p − (1 − ν_u²) p (y − 1) / E_u. Unless ν_u (1 + ν_u) / E_u = ν (1 + ν), the blocks spread
+  /// sideways by different amounts: a frictionless slip, exact in small sliding only (geometry =
+  /// "reference"), since in the current geometry the wider block's edge then overhangs the other's.
+  double upper_E = 1.0, upper_nu = 0.3;
   std::string geometry = "current";  ///< [[contact]] geometry: "current" or "reference" (small sliding)
   /// The blocks meshed with quadrilaterals (2D, Recombine: Quad4, or Quad9 at order 2) or hexahedra (3D,
   /// n³ transfinite: Hex8 or Hex27), by name ("lower", "upper", "middle"); the others keep their simplices.

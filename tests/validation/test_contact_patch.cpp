@@ -5,7 +5,8 @@
 // Exact: σ_yy = −p, contact pressure p, u_y = −(1 − ν²) p y / E, u_x = ν (1 + ν) p x / E.
 // The same blocks as ONE body whose two blocks touch at y = 1 (their own nodes there, coincident where the
 // divisions meet), held together by a self-contact on the group holding both faces: the same exact answer
-// (V3OneBody: the mesh checks allow the cut and the two pieces, mesh/mesh_topology.hpp).
+// (V3OneBody: the mesh checks allow the cut and the two pieces, mesh/mesh_topology.hpp), also with the upper
+// block of a second, softer material of the same body (its exact field: contact_patch_case.hpp).
 // The case itself (geometry, problem file, errors) is tests/support/contact_patch_case.hpp, shared with
 // the frictional variant (test_contact_patch_friction.cpp).
 #include <gtest/gtest.h>
@@ -85,6 +86,21 @@ INSTANTIATE_TEST_SUITE_P(
                       quad_patch(4, 5, 2, "symmetric", {"lower", "upper"}, true)),
     [](const auto& p) { return contact_patch_name(p.param); });
 
+namespace {
+/// E_u = 0.1 and ν_u (1 + ν_u) / E_u = ν (1 + ν) / E: the same lateral strain as the lower block, so no slip.
+ContactPatchCase soft_upper(ContactPatchCase c) {
+  c.upper_E = 0.1;
+  c.upper_nu = 0.5 * (std::sqrt(1 + 4 * c.upper_E * 0.3 * 1.3) - 1);
+  return c;
+}
+/// E_u = 0.1, ν_u = 0.3: the upper block spreads ten times more; small sliding (contact_patch_case.hpp).
+ContactPatchCase sliding_soft_upper(ContactPatchCase c) {
+  c.upper_E = 0.1;
+  c.geometry = "reference";
+  return c;
+}
+}  // namespace
+
 class ContactPatchOneBody : public ::testing::TestWithParam<ContactPatchCase> {};
 
 TEST_P(ContactPatchOneBody, UniformPressureAndExactDisplacements) {
@@ -109,7 +125,16 @@ INSTANTIATE_TEST_SUITE_P(V3OneBody, ContactPatchOneBody,
                          ::testing::Values(patch(4, 5, 1, "symmetric", true), patch(5, 4, 1, "symmetric", true),
                                            patch(4, 5, 2, "symmetric", true), patch(5, 4, 2, "symmetric", true),
                                            // Matching divisions: every interface node has a twin.
-                                           patch(4, 4, 1, "symmetric", true), patch(4, 4, 2, "symmetric", true)),
+                                           patch(4, 4, 1, "symmetric", true), patch(4, 4, 2, "symmetric", true),
+                                           // The upper block of a second, ten times softer material that
+                                           // spreads sideways as much as the lower block (ν_u below).
+                                           soft_upper(patch(4, 5, 1, "symmetric", true)),
+                                           soft_upper(patch(5, 4, 2, "symmetric", true)),
+                                           soft_upper(patch(4, 4, 2, "symmetric", true)),
+                                           // The same E_u with ν = 0.3: the blocks slide on each other, an
+                                           // exact answer of small sliding.
+                                           sliding_soft_upper(patch(4, 5, 1, "symmetric", true)),
+                                           sliding_soft_upper(patch(5, 4, 2, "symmetric", true))),
                          [](const auto& p) { return contact_patch_name(p.param); });
 
 // Small sliding ([[contact]] geometry = "reference", contact/contact_geometry.hpp): the linearised gap
