@@ -31,12 +31,15 @@ set_tests_properties("Hertz3D.TwoElasticSpheresP2" "SelfContact3D.HairpinEqualsH
 # - Stacked/StackedBlocks…/3D_n3_5_4_P2_symmetric: the 3D P1 stacks and the 3D P2 contact patch tests run.
 # - FrictionExamples/Units…/inclined_3d_inclined_toml_L3_F0: the 2D unit changes run, and InclinedInterface3D
 #   solves the same 3D problem.
+# - FrictionalIroning/Units…: 2 × 52 finite-strain frictional steps (about 6 min of CPU in Release); the other
+#   unit changes run sanitised.
 # Parameterised tests carry their parameter in their discovered name (see zoo_slow.cmake): matched by prefix.
 set_tests_properties("Hertz2D.CylinderExtrudedIntoHexahedraMatchesTheLineContact" PROPERTIES LABELS "validation;asan_slow")
 foreach(prefix "Elasticity/ManufacturedConvergence.RatesMatchTheory/D3P1"
                "Elasticity/ManufacturedConvergence.RatesMatchTheory/D3P2"
                "Stacked/StackedBlocks.UniformPressureAtBothInterfacesAndOrderIndependent/3D_n3_5_4_P2_symmetric"
-               "FrictionExamples/Units.RescaledProblemGivesTheSameDimensionlessAnswer/inclined_3d_inclined_toml_L3_F0")
+               "FrictionExamples/Units.RescaledProblemGivesTheSameDimensionlessAnswer/inclined_3d_inclined_toml_L3_F0"
+               "FrictionalIroning/Units.RescaledProblemGivesTheSameDimensionlessAnswer/ironing_2d_ironing_mu0_3_toml_L3_F0")
   set(found FALSE)
   foreach(test IN LISTS symcontact_validation_tests_TESTS)
     if(test MATCHES "^${prefix}( |$)")

@@ -161,6 +161,8 @@ std::string write_variant(const std::string& problem_path, const ProblemVariant&
     if (variant.order > 0) p->insert_or_assign("order", variant.order);
     if (variant.mesh_size > 0) p->insert_or_assign("mesh_size", variant.mesh_size);
   }
+  if (toml::table* steps = root["steps"].as_table(); steps && variant.step_count > 0)
+    steps->insert_or_assign("count", variant.step_count);
   std::map<std::string, std::string> wrapped;
   for_each_table(root, "body", [&](toml::table& body) {
     make_mesh_path_absolute(body, base);

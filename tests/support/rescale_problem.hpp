@@ -35,6 +35,9 @@ struct ProblemVariant {
   int order = 0;           ///< > 0: [problem] order
   double coulomb_mu = -1;  ///< ≥ 0: every [[contact]] with Coulomb friction of this μ (its tau and alpha dropped)
   double mesh_size = 0;    ///< > 0: [problem] mesh_size (the largest element size of .geo meshes)
+  /// > 0: [steps] count, for the first steps of a problem whose loads are given at step numbers (`factors`
+  /// with `at`), which the count leaves as they are.
+  int step_count = 0;
   /// Non-empty: Gmsh statements read before each `.geo` mesh of a body (a wrapper `.geo` in the variant's
   /// folder that sets them and then Includes the original), e.g. "h = 0.04;" for a file that sizes its
   /// elements by `If (!Exists(h)) h = …; EndIf`.
