@@ -90,6 +90,19 @@ void write_contact_csv(const ContactTable& table, const std::string& path) {
 
 }  // namespace
 
+namespace {
+
+/// Whether a hyperelastic body takes part in a problem with Coulomb friction.
+bool finite_strain_coulomb(const ProblemSpec& spec) {
+  bool hyperelastic = false, coulomb = false;
+  for (const BodySpec& b : spec.bodies)
+    for (const MaterialSpec& m : b.materials) hyperelastic = hyperelastic || m.model != "linear_elastic";
+  for (const ContactSpec& c : spec.contacts) coulomb = coulomb || c.friction == "coulomb";
+  return hyperelastic && coulomb;
+}
+
+}  // namespace
+
 FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
   FrictionalOptions f;
   ContactSolveOptions& o = f.contact;
@@ -102,6 +115,9 @@ FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
   o.ipopt.string_options = spec.contact_solver.ipopt_string;
   o.ipopt.numeric_options = spec.contact_solver.ipopt_numeric;
   o.ipopt.integer_options = spec.contact_solver.ipopt_integer;
+  // As an [ipopt] tol of the problem file (which it does not override): IPOPT's acceptable_tol keeps
+  // following IpoptOptions::tolerance.
+  if (finite_strain_coulomb(spec)) o.ipopt.numeric_options.emplace("tol", kFiniteStrainCoulombIpoptTolerance);
   f.coulomb_tolerance = spec.contact_solver.coulomb_tolerance;
   f.max_coulomb_iterations = spec.contact_solver.max_coulomb_iterations;
   return f;
