@@ -86,10 +86,10 @@ BoundingVolumeHierarchy::Box facet_box(CellType type, const Eigen::MatrixXd& xf,
     // the edge nodes applied in both directions). A Quad8 facet is the biquadratic one whose centre is
     // its own point c = x(½, ½) = ½ Σ edge nodes − ¼ Σ vertices: control point Σ edge nodes − ¾ Σ vertices.
     if (type == CellType::kQuad8 || type == CellType::kQuad9) {
-      const Eigen::VectorXd edges = xf.col(4) + xf.col(5) + xf.col(6) + xf.col(7);
-      const Eigen::VectorXd vertices = xf.col(0) + xf.col(1) + xf.col(2) + xf.col(3);
-      box.extend(pad3(type == CellType::kQuad9 ? Eigen::VectorXd(4.0 * xf.col(8) - edges + 0.25 * vertices)
-                                               : Eigen::VectorXd(edges - 0.75 * vertices)));
+      const Eigen::VectorXd edge_sum = xf.col(4) + xf.col(5) + xf.col(6) + xf.col(7);
+      const Eigen::VectorXd vertex_sum = xf.col(0) + xf.col(1) + xf.col(2) + xf.col(3);
+      box.extend(pad3(type == CellType::kQuad9 ? Eigen::VectorXd(4.0 * xf.col(8) - edge_sum + 0.25 * vertex_sum)
+                                               : Eigen::VectorXd(edge_sum - 0.75 * vertex_sum)));
     }
   }
   box.min().array() -= pad;
