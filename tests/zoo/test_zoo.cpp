@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <filesystem>
 #include <limits>
 #include <ostream>
@@ -267,18 +268,18 @@ INSTANTIATE_TEST_SUITE_P(Zoo, ExampleVariant, ::testing::ValuesIn(variants()), v
 namespace symcontact::testing {
 namespace {
 
-/// |R_x / R_y| of the "upper_top" reactions at the last step of a summary.json written by `symcontact run`.
-double last_step_ratio(const std::string& summary_path) {
+/// The reaction on `boundary` at the last step of a summary.json (its components summed over the entries of
+/// that boundary: one per Dirichlet condition on it).
+Eigen::Vector2d last_step_reaction(const std::string& summary_path, const std::string& boundary) {
   const std::string text = read_text(summary_path);
-  const std::regex entry(R"re("boundary": "upper_top",\s*"force": \[\s*([-+0-9.eE]+),\s*([-+0-9.eE]+))re");
+  const std::regex entry("\"boundary\": \"" + boundary +
+                         R"re(",\s*"force": \[\s*([-+0-9.eE]+),\s*([-+0-9.eE]+))re");
   const std::size_t last = text.rfind("\"step\":");
-  double rx = 0, ry = 0;
+  Eigen::Vector2d r = Eigen::Vector2d::Zero();
   for (auto it = std::sregex_iterator(text.begin() + static_cast<std::ptrdiff_t>(last), text.end(), entry);
-       it != std::sregex_iterator(); ++it) {
-    rx += std::stod((*it)[1]);
-    ry += std::stod((*it)[2]);
-  }
-  return std::abs(rx / ry);
+       it != std::sregex_iterator(); ++it)
+    r += Eigen::Vector2d(std::stod((*it)[1]), std::stod((*it)[2]));
+  return r;
 }
 
 /// Whether this CPU can execute OpenBLAS's kernel family `kernel` (SkylakeX needs AVX-512, Haswell and Zen
@@ -291,11 +292,8 @@ bool cpu_runs(const std::string& kernel) {
   return __builtin_cpu_supports("avx");
 }
 
-// The demo's three cases under each of OpenBLAS's x86-64 kernel families that this CPU can execute
-// (OPENBLAS_CORETYPE, read when the library loads, hence one process per run): all finish and agree on
-// |R_x/R_y| to 1e-6.
-TEST(OpenBlasKernels, InclinedInterfaceAgreesUnderEveryKernel) {
-  const std::string dir = test_temp_dir("kernels");
+/// The kernel families of OPENBLAS_CORETYPE that this CPU can execute (at least two, asserted by the caller).
+std::vector<std::string> runnable_kernels() {
   std::vector<std::string> kernels;
   for (const char* k : {"Haswell", "SkylakeX", "Zen", "Sandybridge"}) {
     if (cpu_runs(k))
@@ -303,20 +301,44 @@ TEST(OpenBlasKernels, InclinedInterfaceAgreesUnderEveryKernel) {
     else
       std::printf("OPENBLAS_CORETYPE=%s: not run, this CPU cannot execute that kernel family\n", k);
   }
+  return kernels;
+}
+
+/// Runs `example` with `symcontact run` under each kernel family (OPENBLAS_CORETYPE is read when the library
+/// loads, hence one process per run) and expects `measure` of its summary.json to agree to 1e-6 relative.
+void expect_same_under_every_kernel(const std::string& example, const std::string& dir, const char* what,
+                                    const std::function<double(const std::string&)>& measure) {
+  const std::vector<std::string> kernels = runnable_kernels();
   ASSERT_GE(kernels.size(), 2u);
-  for (const char* example : {"inclined_2d/inclined_mu0.toml", "inclined_2d/inclined_mu0.1.toml", "inclined_2d/inclined.toml"}) {
-    double reference = 0;
-    for (const std::string& kernel : kernels) {
-      const std::string out = dir + kernel + "_" + fs::path(example).stem().string();
-      const std::string cmd = std::string("OPENBLAS_CORETYPE=") + kernel + " '" + SYMCONTACT_CLI + "' run '" +
-                              example_path(example) + "' --out '" + out + "' -q";
-      ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-      const double ratio = last_step_ratio(out + "/summary.json");
-      std::printf("%s under %s: |Rx/Ry| = %.9f\n", example, kernel.c_str(), ratio);
-      if (reference == 0) reference = ratio;
-      EXPECT_NEAR(ratio, reference, 1e-6 * reference) << example << " under " << kernel;
-    }
+  double reference = 0;
+  for (const std::string& kernel : kernels) {
+    const std::string out = dir + kernel + "_" + fs::path(example).stem().string();
+    const std::string cmd = std::string("OPENBLAS_CORETYPE=") + kernel + " '" + SYMCONTACT_CLI + "' run '" +
+                            example_path(example) + "' --out '" + out + "' -q";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    const double value = measure(out + "/summary.json");
+    std::printf("%s under %s: %s = %.9f\n", example.c_str(), kernel.c_str(), what, value);
+    if (reference == 0) reference = value;
+    EXPECT_NEAR(value, reference, 1e-6 * std::abs(reference)) << example << " under " << kernel;
   }
+}
+
+// The demo's three inclined cases under each of OpenBLAS's x86-64 kernel families that this CPU can execute:
+// all finish and agree on |R_x/R_y| to 1e-6.
+TEST(OpenBlasKernels, InclinedInterfaceAgreesUnderEveryKernel) {
+  const std::string dir = test_temp_dir("kernels");
+  for (const char* example : {"inclined_2d/inclined_mu0.toml", "inclined_2d/inclined_mu0.1.toml", "inclined_2d/inclined.toml"})
+    expect_same_under_every_kernel(example, dir, "|Rx/Ry|", [](const std::string& summary) {
+      const Eigen::Vector2d r = last_step_reaction(summary, "upper_top");
+      return std::abs(r.x() / r.y());
+    });
+}
+
+// The demo's axisymmetric O-ring (Mooney-Rivlin, Coulomb, a meshed rigid groove) likewise: its lid force at
+// 20 % squeeze agrees to 1e-6.
+TEST(OpenBlasKernels, AxisymmetricORingAgreesUnderEveryKernel) {
+  expect_same_under_every_kernel("oring_axisymmetric/oring.toml", test_temp_dir("kernels_oring"), "lid force",
+                                 [](const std::string& summary) { return last_step_reaction(summary, "lid_top").y(); });
 }
 
 }  // namespace
