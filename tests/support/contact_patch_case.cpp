@@ -181,13 +181,8 @@ std::string contact_patch_toml(const ContactPatchCase& c) {
     if (c.mode == "one-pass") t += "slave = \"b\"\n";
     if (c.geometry != "current") t += "geometry = \"" + c.geometry + "\"\n";
     if (c.mu >= 0) {
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "friction = \"coulomb\"\nmu = %.17g\n", c.mu);
-      t += buf;
-      if (c.alpha > 0) {
-        std::snprintf(buf, sizeof buf, "alpha = %.17g\n", c.alpha);
-        t += buf;
-      }
+      t += "friction = \"coulomb\"\nmu = " + number(c.mu) + "\n";
+      if (c.alpha > 0) t += "alpha = " + number(c.alpha) + "\n";
     }
     return t;
   };

@@ -88,10 +88,6 @@ void write_contact_csv(const ContactTable& table, const std::string& path) {
   });
 }
 
-}  // namespace
-
-namespace {
-
 /// Whether a hyperelastic body takes part in a problem with Coulomb friction.
 bool finite_strain_coulomb(const ProblemSpec& spec) {
   bool hyperelastic = false, coulomb = false;

@@ -30,7 +30,7 @@ void check_finite(const Model& model, const VectorXd& u, const VectorXd& g,
     throw SolveError("check of the answer: a contact multiplier is not a finite number");
 }
 
-/// "node N of 'surface' is D inside body 'B' (P % of the element size h": what and where a penetration is.
+/// "contact 'C': node N of 'S' is D inside body 'B' (P % of the element size h; ...)": what and where.
 std::string describe(const Model& model, const Penetration& p, const char* inside) {
   const ContactSet& cs = model.contacts();
   const ContactSurface& slave = cs.surfaces[p.slave];
@@ -66,25 +66,25 @@ double check_penetration(const Model& model, const VectorXd& u, const ContactSta
   double worst = 0.0;
   std::vector<char> warned(cs.pairs.size(), 0);
   for (const Penetration& p : deformed) {
-    if (small_sliding(model, p) && p.exceeds() && !warned[p.pair]++)
+    if (!small_sliding(model, p)) {
+      if (p.exceeds())
+        throw SolveError("check of the answer: " + describe(model, p, " inside ") +
+                         ": the bodies went through each other, the contact was not enforced (the search distance "
+                         "may be smaller than the motion of a step: more load steps or a larger search_distance)");
+      worst = std::max(worst, p.ratio());
+    } else if (p.exceeds() && !warned[p.pair]++) {
       warnings.push_back(describe(model, p, " inside ") +
                          " in the deformed configuration: the contact has geometry = \"reference\" (small sliding), "
                          "whose gaps are those of the reference configuration, and the surfaces moved too far for "
                          "it; geometry = \"current\" follows the motion");
-    if (!small_sliding(model, p)) worst = std::max(worst, p.ratio());
-  }
-  for (const Penetration& p : linearized) worst = std::max(worst, p.ratio());
-  for (const Penetration& p : deformed) {
-    if (small_sliding(model, p) || !p.exceeds()) continue;
-    throw SolveError("check of the answer: " + describe(model, p, " inside ") +
-                     ": the bodies went through each other, the contact was not enforced (the search distance may "
-                     "be smaller than the motion of a step: more load steps or a larger search_distance)");
+    }
   }
   for (const Penetration& p : linearized) {
-    if (!p.exceeds()) continue;
-    throw SolveError("check of the answer: " + describe(model, p, " behind its linearised gap to ") +
-                     " (geometry = \"reference\": the gap of the reference configuration plus the linearised "
-                     "motion): the small-sliding contact was not enforced");
+    if (p.exceeds())
+      throw SolveError("check of the answer: " + describe(model, p, " behind its linearised gap to ") +
+                       " (geometry = \"reference\": the gap of the reference configuration plus the linearised "
+                       "motion): the small-sliding contact was not enforced");
+    worst = std::max(worst, p.ratio());
   }
   return worst;
 }
