@@ -100,7 +100,7 @@ TEST_P(Units, RescaledProblemGivesTheSameDimensionlessAnswer) {
 }
 
 // m–N–Pa → mm–N–MPa (stresses × 1e-6), lengths × 1e3 with forces × 1e6 (stresses unchanged), and a
-// shrink (lengths × 1e-2, forces × 1e3).
+// shrink (lengths × 1e-2, forces × 1e3); the O-ring, written in mm–N–MPa, in m–N–Pa.
 INSTANTIATE_TEST_SUITE_P(
     FrictionExamples, Units,
     ::testing::Values(UnitsCase{"inclined_2d/inclined_mu0.1.toml", 1e3, 1.0},
@@ -109,7 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
                       UnitsCase{"inclined_2d/inclined.toml", 1e-2, 1e3},
                       UnitsCase{"friction_block/block.toml", 1e3, 1.0},
                       UnitsCase{"inclined_3d/inclined.toml", 1e3, 1.0},
-                      UnitsCase{"inclined_2d/inclined_reference.toml", 1e3, 1.0}),
+                      UnitsCase{"inclined_2d/inclined_reference.toml", 1e3, 1.0},
+                      UnitsCase{"oring_axisymmetric/oring.toml", 1e-3, 1.0}),
     case_name);
 
 // The frictional ironing's first 52 of 110 finite-strain steps (the die pressed in, sticking, and coming
