@@ -238,10 +238,10 @@ TEST(InclinedInterface, InexactInnerSolvesAndPredictorKeepTheAnswer) {
 }
 
 // The solves of a load step leave the interior out of date and the step completes u once
-// (FrictionalOptions::lazy_interior): the same answer as expanding after every solve, to round-off, and a u in
+// (ContactSolveOptions::lazy_interior, on in FrictionalOptions::contact): the same answer as expanding after every solve, to round-off, and a u in
 // equilibrium away from the contact surfaces.
 TEST(InclinedInterface, LazyInteriorKeepsTheAnswer) {
-  const auto eager = solve_inclined("inclined.toml", 0.1, kExampleDir, [](FrictionalOptions& o) { o.lazy_interior = false; });
+  const auto eager = solve_inclined("inclined.toml", 0.1, kExampleDir, [](FrictionalOptions& o) { o.contact.lazy_interior = false; });
   const auto lazy = solve_inclined("inclined.toml", 0.1);
   ASSERT_EQ(eager.size(), 10u);
   ASSERT_EQ(lazy.size(), eager.size());

@@ -89,7 +89,9 @@ struct ContactSolveOptions {
   /// u whole (one backward solve). Each geometry iteration and each solve otherwise expands the interior by one
   /// backward solve with the factor, which nothing between two Tresca solves of a Coulomb fixed point reads
   /// (pressures and slips live on the surfaces, the next search too). Its fixed point's change is then that of
-  /// B (the interior does not move). Needs `workspace`.
+  /// B (the interior does not move). Needs `workspace`. Off by default, so a lone solve returns u whole; the
+  /// Coulomb loop's options turn it on (FrictionalOptions::contact), and a caller that solves once with a copy
+  /// of those turns it off again.
   bool lazy_interior = false;
 };
 

@@ -223,7 +223,6 @@ void CoulombFixedPoint::solve(double threshold_change) {
   ContactSolveOptions o = inner_;
   if (inexact_) o.loose_geometry_tolerance = options_.inner_tolerance_factor * threshold_change;
   o.same_loads = same_loads_;
-  o.lazy_interior = options_.lazy_interior;  // solve_contact applies it where it condenses (workspace, linear elasticity)
   SolveReport r =
       solve_contact(energy_, fixed_, contacts_, dofs_, u_, o, log_, any_friction_ ? &rep_.friction_state : nullptr);
   same_loads_ = true;  // the later solves of this call: the same load step, whose load part is now known

@@ -34,7 +34,10 @@
 namespace symcontact {
 
 struct FrictionalOptions {
-  ContactSolveOptions contact;
+  /// The Tresca solves' options. Their lazy_interior is on here: the solves of a load step leave u's interior
+  /// out of date (where they condense: a workspace and linear elasticity) and u is made whole once, at the end
+  /// of the step — one backward solve per load step instead of one per solve. Off only to compare.
+  ContactSolveOptions contact = lazy_interior_options();
   double coulomb_tolerance = 1e-6;
   int max_coulomb_iterations = 50;
   /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is
@@ -55,10 +58,6 @@ struct FrictionalOptions {
   /// and its tolerances are the same. (Loads other than Dirichlet values are assumed to follow the same
   /// proportion; where they do not, the start is merely worse.)
   bool extrapolate = true;
-  /// The solves of a load step leave u's interior out of date (ContactSolveOptions::lazy_interior; needs
-  /// contact.workspace and linear elasticity) and u is made whole once, at the end of the step: one backward
-  /// solve per load step instead of one per solve. Off only to compare.
-  bool lazy_interior = true;
   /// A fixed point that stagnates (FixedPointMonitor: no new low of the change in six iterations — a cycle, or
   /// the noise floor of the inner solves) has its inner solves tightened, at most twice (IPOPT's tolerance
   /// × 1e-2 and the geometry tolerance × 0.1 each time, inexact solves off). Stagnated after that, its
@@ -66,6 +65,13 @@ struct FrictionalOptions {
   /// solve converged and the friction law holds to this relative tolerance: max |μ p − τ| ≤ it × max τ.
   /// Otherwise the step fails (SolveError naming what was tried).
   double stagnation_acceptance = 1e-4;
+
+ private:
+  static ContactSolveOptions lazy_interior_options() {
+    ContactSolveOptions o;
+    o.lazy_interior = true;
+    return o;
+  }
 };
 
 /// u: on entry the start of the step (also the reference of the slip increments), on exit the solution. The
