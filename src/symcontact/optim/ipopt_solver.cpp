@@ -569,9 +569,16 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   const double c_ref = setup.scales.length * smallest_row_scale(A);
   set_default(*app, "constr_viol_tol", 1e-4 * c_ref);
   set_default(*app, "acceptable_constr_viol_tol", 1e-2 * c_ref);
-  // Acceptable termination: after 10 iterations stuck within max(tol, min(1e-6, 1e4·tol)).
-  set_default(*app, "acceptable_tol", std::max(options.tolerance, std::min(1e-6, 1e4 * options.tolerance)));
+  // Acceptable termination: after 10 iterations within a = max(tol, min(1e-6, 1e4·tol)) whose scaled objective
+  // also changes by less than a² (of max(1, |f̃|): IPOPT's rule). Near a minimiser the objective lies above its minimum by about ½ δᵀH⁻¹δ for a
+  // dual infeasibility δ, i.e. δ² in the scaled problem (∇²f̃ of order 1): an objective still changing by more
+  // is still on its way, and a warm start that is already within a (common when the force scale is set by a
+  // stiff body, far above the contact forces) would otherwise end after ten such iterations, at its first
+  // trial accuracy. Iterates at the noise floor change the objective by round-off and still end acceptably.
+  const double acceptable = std::max(options.tolerance, std::min(1e-6, 1e4 * options.tolerance));
+  set_default(*app, "acceptable_tol", acceptable);
   set_default(*app, "acceptable_iter", 10);
+  set_default(*app, "acceptable_obj_change_tol", acceptable * acceptable);
   set_default(*app, "nlp_scaling_method", std::string("user-scaling"));
   // IPOPT relaxes every bound by 1e-8·max(1, |bound|) by default, which would let active contact
   // constraints end at c = −1e-8 (in units of x): a visible penetration. Keep the constraints exact.
