@@ -28,15 +28,18 @@ double p0_of(double P) { return 3 * P / (2 * M_PI * a_of(P) * a_of(P)); }
 
 struct Hertz3DMeasure {
   double h = 0, p0 = 0, a = 0, force = 0, load = 0, seconds = 0;
+  CellType cell = CellType::kTet4;  ///< of the sphere's mesh
   double a_current = 0;  ///< the same edge measured at the nodes' current positions
 };
 
 /// The example at element size h near the contact and order `order`; `obstacle`, when given, replaces the
-/// example's [contact.obstacle] table.
-Hertz3DMeasure solve_sphere(double h, int order, const std::string& dir, const std::string& obstacle = "") {
+/// example's [contact.obstacle] table; `geo_options`, Gmsh commands run before the example's .geo.
+Hertz3DMeasure solve_sphere(double h, int order, const std::string& dir, const std::string& obstacle = "",
+                            const std::string& geo_options = "") {
   char buf[64];
   std::snprintf(buf, sizeof buf, "h = %.6g;\n", h);
-  write_text(dir, "sphere.geo", std::string(buf) + "Include \"" + kExamples + "/sphere_on_plane.geo\";\n");
+  write_text(dir, "sphere.geo",
+             std::string(buf) + geo_options + "Include \"" + kExamples + "/sphere_on_plane.geo\";\n");
   std::string toml = read_text(kExamples + "/sphere_on_plane.toml");
   toml.replace(toml.find("sphere_on_plane.geo"), 19, "sphere.geo");
   toml.replace(toml.find("order = 1"), 9, "order = " + std::to_string(order));
@@ -57,6 +60,7 @@ Hertz3DMeasure solve_sphere(double h, int order, const std::string& dir, const s
   // The applied load: 4 × the resultant of the pressure on the (meshed) cut, pointing down.
   const VectorXd f = c->model->external_load();
   const Mesh& mesh = c->model->bodies()[0]->mesh;
+  m.cell = mesh.cell_type;
   for (Index v = 0; v < mesh.num_nodes(); ++v) m.load -= 4 * f[c->model->dofs().dof(0, v, 2)];
   return m;
 }
@@ -90,6 +94,37 @@ TEST(Hertz3D, SphereOnRigidPlaneP1) {
   // The contact radius converges (p0 is already at the finite-sphere level, ~1 % above the half-space
   // closed form, measured 0.26 % / 0.65 % / 0.98 % / 0.89 % at h = 0.04 / 0.02 / 0.014 / 0.01).
   EXPECT_LT(std::abs(ms[1].a - a_of(ms[1].load)), std::abs(ms[0].a - a_of(ms[0].load)));
+}
+
+// All-hexahedral meshes of the same sphere: Gmsh splits each tetrahedron into four hexahedra
+// (Mesh.SubdivisionAlgorithm = 2), so the contact surface is made of quadrilaterals (issue: quadrilaterals and
+// hexahedra). The split halves every edge, so "one element" of the tolerance on a is h / 2. Hex8 at two sizes,
+// the contact radius converging; Hex27 on a coarser mesh.
+const char* const kAllHexahedra = "Mesh.SubdivisionAlgorithm = 2;\n";
+
+Hertz3DMeasure solve_sphere_on_hexahedra(double h, int order, const std::string& dir) {
+  Hertz3DMeasure m = solve_sphere(h, order, dir, "", kAllHexahedra);
+  m.h = h / 2;
+  return m;
+}
+
+TEST(Hertz3D, SphereOnRigidPlaneHex8) {
+  const std::string dir = test_temp_dir("hertz3d_hex8");
+  std::vector<Hertz3DMeasure> ms;
+  for (double h : {0.04, 0.02}) {
+    ms.push_back(solve_sphere_on_hexahedra(h, 1, dir));
+    print("Hex8", ms.back());
+    EXPECT_EQ(ms.back().cell, CellType::kHex8);
+    expect_hertz(ms.back());
+  }
+  EXPECT_LT(std::abs(ms[1].a - a_of(ms[1].load)), std::abs(ms[0].a - a_of(ms[0].load)));
+}
+
+TEST(Hertz3D, SphereOnRigidPlaneHex27) {
+  const Hertz3DMeasure m = solve_sphere_on_hexahedra(0.08, 2, test_temp_dir("hertz3d_hex27"));
+  print("Hex27", m);
+  EXPECT_EQ(m.cell, CellType::kHex27);
+  expect_hertz(m);
 }
 
 TEST(Hertz3D, SphereOnRigidPlaneP2) {
