@@ -7,6 +7,7 @@ set(long_tests
   "Ironing2D.FrictionalRunsThroughEveryStepWithoutPenetrationOrOscillation" 200
   "Ironing2D.FrictionlessRunsThroughEveryStepWithoutPenetrationOrOscillation" 85
   "Hertz3D.TwoElasticSpheresP2" 35
+  "Hertz3D.SphereOnRigidPlaneHex8" 24
   "SelfContact3D.HairpinEqualsHalfModelOnARigidPlane" 25)
 while(long_tests)
   list(POP_FRONT long_tests name seconds)
