@@ -462,6 +462,74 @@ ProblemScales problem_scales(const VectorXd& x0, const VectorXd& g0, const Spars
   return s;
 }
 
+/// symcontact's IPOPT options (before the user's): output, linear solver, tolerances on the scaled problem and the
+/// absolute checks rescaled to mean the same (see the header), exact constraints, and a warm start's small pushes.
+void set_defaults(Ipopt::IpoptApplication& app, const IpoptOptions& options, const ConstrainedProblem& problem,
+                  const ProblemScales& scales, bool warm) {
+  const SparseMatrix& A = problem.constraint_matrix();
+  const double g_ref = scales.force, e_ref = scales.force * scales.length;
+  set_default(app, "sb", std::string("yes"));  // no banner
+  set_default(app, "print_level", std::max(0, std::min(options.print_level, 12)));
+  if (!options.output_file.empty()) {
+    set_default(app, "output_file", options.output_file);
+    set_default(app, "file_print_level", std::min(12, std::max(5, options.print_level)));
+  }
+  set_default(app, "linear_solver", std::string("mumps"));
+  if (problem.hessian_is_dense()) {
+    // A full Hessian block (the condensed problem, the dual on symmetric pairs): no fill to reduce and nothing
+    // for MUMPS's maximum-transversal permutation and scaling to find, yet its analysis runs them at every
+    // IPOPT call on the (n + m)-row KKT pattern. They are turned off and the ordering is plain AMD: a cheaper
+    // analysis, with the same iterates (on the inclined interface with Coulomb friction: the same IPOPT
+    // iterations and |R_x/R_y| to 9 digits).
+    set_default(app, "mumps_permuting_scaling", 0);
+    set_default(app, "mumps_scaling", 0);
+    set_default(app, "mumps_pivot_order", 0);
+  }
+  set_default(app, "mu_strategy", std::string("adaptive"));
+  set_default(app, "max_iter", options.max_iterations);
+  set_default(app, "tol", options.tolerance);
+  // Absolute checks on the unscaled problem, rescaled to mean what IPOPT's defaults (1, 1e-4, 1e10,
+  // 1e-2) mean on the dimensionless one: the unscaled dual infeasibility is a force (× g_ref), the
+  // unscaled complementarity g_i λ_i an energy (× g_ref ℓ).
+  set_default(app, "dual_inf_tol", 1.0 * g_ref);
+  set_default(app, "compl_inf_tol", 1e-4 * e_ref);
+  set_default(app, "acceptable_dual_inf_tol", 1e10 * g_ref);
+  set_default(app, "acceptable_compl_inf_tol", 1e-2 * e_ref);
+  // The unscaled constraint violation: row i in units of ℓ max_j |A_ij|; the smallest row's unit makes every
+  // row at least as strict as IPOPT's 1e-4 (1e-2 acceptable) on the dimensionless problem.
+  const double c_ref = scales.length * smallest_row_scale(A);
+  set_default(app, "constr_viol_tol", 1e-4 * c_ref);
+  set_default(app, "acceptable_constr_viol_tol", 1e-2 * c_ref);
+  // Acceptable termination: after 10 iterations within a = max(tol, min(1e-6, 1e4·tol)) whose scaled objective
+  // also changes by less than a² (of max(1, |f̃|): IPOPT's rule). Near a minimiser the objective lies above its
+  // minimum by about ½ δᵀH⁻¹δ for a dual infeasibility δ, i.e. δ² in the scaled problem (∇²f̃ of order 1): an
+  // objective still changing by more is still on its way, and a warm start that is already within a (common
+  // when the force scale is set by a stiff body, far above the contact forces) would otherwise end after ten
+  // such iterations, at its first trial accuracy. Iterates at the noise floor change the objective by round-off
+  // and still end acceptably.
+  const double acceptable = std::max(options.tolerance, std::min(1e-6, 1e4 * options.tolerance));
+  set_default(app, "acceptable_tol", acceptable);
+  set_default(app, "acceptable_iter", 10);
+  set_default(app, "acceptable_obj_change_tol", acceptable * acceptable);
+  set_default(app, "nlp_scaling_method", std::string("user-scaling"));
+  // IPOPT relaxes every bound by 1e-8·max(1, |bound|) by default, which would let active contact
+  // constraints end at c = −1e-8 (in units of x): a visible penetration. Keep the constraints exact.
+  set_default(app, "bound_relax_factor", 0.0);
+  set_default(app, "jac_c_constant", std::string("yes"));
+  set_default(app, "jac_d_constant", std::string("yes"));
+  if (problem.hessian_is_constant()) set_default(app, "hessian_constant", std::string("yes"));
+  if (warm) {
+    // Start at (x0, μ0) itself: push slacks and multipliers off their bounds only a little.
+    set_default(app, "warm_start_init_point", std::string("yes"));
+    set_default(app, "warm_start_bound_push", 1e-9);
+    set_default(app, "warm_start_bound_frac", 1e-9);
+    set_default(app, "warm_start_slack_bound_push", 1e-9);
+    set_default(app, "warm_start_slack_bound_frac", 1e-9);
+    set_default(app, "warm_start_mult_bound_push", 1e-9);
+    set_default(app, "mu_init", 1e-9);  // only used by mu_strategy = monotone
+  }
+}
+
 /// The sizes solve_with_ipopt() is given, checked: std::invalid_argument naming the first that does not fit.
 void check_arguments(const ConstrainedProblem& problem, const VectorXd& x0, bool warm, const VectorXd* multipliers0,
                      const VectorXd* bound_multipliers0) {
@@ -526,7 +594,6 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
     setup.scales = problem_scales(x0, g0, setup.hessian0);
   }
   result.scales = setup.scales;
-  const double g_ref = setup.scales.force, e_ref = setup.scales.force * setup.scales.length;
 
   // Console output only when asked for: no console journal at all at print level 0, so not even
   // IPOPT's messages about rejected options reach stdout.
@@ -536,66 +603,7 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(print_level > 0);
   app->RethrowNonIpoptException(true);  // our std::logic_error etc. must not be swallowed
 
-  // ---- defaults ----
-  set_default(*app, "sb", std::string("yes"));  // no banner
-  set_default(*app, "print_level", std::max(0, std::min(options.print_level, 12)));
-  if (!options.output_file.empty()) {
-    set_default(*app, "output_file", options.output_file);
-    set_default(*app, "file_print_level", std::min(12, std::max(5, options.print_level)));
-  }
-  set_default(*app, "linear_solver", std::string("mumps"));
-  if (problem.hessian_is_dense()) {
-    // A full Hessian block (the condensed problem, the dual on symmetric pairs): no fill to reduce and nothing
-    // for MUMPS's maximum-transversal permutation and scaling to find, yet its analysis runs them at every
-    // IPOPT call on the (n + m)-row KKT pattern. They are turned off and the ordering is plain AMD: a cheaper
-    // analysis, with the same iterates (on the inclined interface with Coulomb friction: the same IPOPT
-    // iterations and |R_x/R_y| to 9 digits).
-    set_default(*app, "mumps_permuting_scaling", 0);
-    set_default(*app, "mumps_scaling", 0);
-    set_default(*app, "mumps_pivot_order", 0);
-  }
-  set_default(*app, "mu_strategy", std::string("adaptive"));
-  set_default(*app, "max_iter", options.max_iterations);
-  set_default(*app, "tol", options.tolerance);
-  // Absolute checks on the unscaled problem, rescaled to mean what IPOPT's defaults (1, 1e-4, 1e10,
-  // 1e-2) mean on the dimensionless one: the unscaled dual infeasibility is a force (× g_ref), the
-  // unscaled complementarity g_i λ_i an energy (× g_ref ℓ).
-  set_default(*app, "dual_inf_tol", 1.0 * g_ref);
-  set_default(*app, "compl_inf_tol", 1e-4 * e_ref);
-  set_default(*app, "acceptable_dual_inf_tol", 1e10 * g_ref);
-  set_default(*app, "acceptable_compl_inf_tol", 1e-2 * e_ref);
-  // The unscaled constraint violation: row i in units of ℓ max_j |A_ij|; the smallest row's unit makes every
-  // row at least as strict as IPOPT's 1e-4 (1e-2 acceptable) on the dimensionless problem.
-  const double c_ref = setup.scales.length * smallest_row_scale(A);
-  set_default(*app, "constr_viol_tol", 1e-4 * c_ref);
-  set_default(*app, "acceptable_constr_viol_tol", 1e-2 * c_ref);
-  // Acceptable termination: after 10 iterations within a = max(tol, min(1e-6, 1e4·tol)) whose scaled objective
-  // also changes by less than a² (of max(1, |f̃|): IPOPT's rule). Near a minimiser the objective lies above its minimum by about ½ δᵀH⁻¹δ for a
-  // dual infeasibility δ, i.e. δ² in the scaled problem (∇²f̃ of order 1): an objective still changing by more
-  // is still on its way, and a warm start that is already within a (common when the force scale is set by a
-  // stiff body, far above the contact forces) would otherwise end after ten such iterations, at its first
-  // trial accuracy. Iterates at the noise floor change the objective by round-off and still end acceptably.
-  const double acceptable = std::max(options.tolerance, std::min(1e-6, 1e4 * options.tolerance));
-  set_default(*app, "acceptable_tol", acceptable);
-  set_default(*app, "acceptable_iter", 10);
-  set_default(*app, "acceptable_obj_change_tol", acceptable * acceptable);
-  set_default(*app, "nlp_scaling_method", std::string("user-scaling"));
-  // IPOPT relaxes every bound by 1e-8·max(1, |bound|) by default, which would let active contact
-  // constraints end at c = −1e-8 (in units of x): a visible penetration. Keep the constraints exact.
-  set_default(*app, "bound_relax_factor", 0.0);
-  set_default(*app, "jac_c_constant", std::string("yes"));
-  set_default(*app, "jac_d_constant", std::string("yes"));
-  if (problem.hessian_is_constant()) set_default(*app, "hessian_constant", std::string("yes"));
-  if (warm) {
-    // Start at (x0, μ0) itself: push slacks and multipliers off their bounds only a little.
-    set_default(*app, "warm_start_init_point", std::string("yes"));
-    set_default(*app, "warm_start_bound_push", 1e-9);
-    set_default(*app, "warm_start_bound_frac", 1e-9);
-    set_default(*app, "warm_start_slack_bound_push", 1e-9);
-    set_default(*app, "warm_start_slack_bound_frac", 1e-9);
-    set_default(*app, "warm_start_mult_bound_push", 1e-9);
-    set_default(*app, "mu_init", 1e-9);  // only used by mu_strategy = monotone
-  }
+  set_defaults(*app, options, problem, setup.scales, warm);
 
   // ---- user options, last so that they override ----
   set_user_options(*app, options);
