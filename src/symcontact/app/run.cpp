@@ -323,6 +323,42 @@ Json summary_header(const ProblemSpec& spec, const Model& model) {
   return summary;
 }
 
+/// The last iterate of a failed step, one VTU per body whose fields are finite (not part of the collection);
+/// returns the names written.
+Json write_failed_iterates(const Model& model, const VectorXd& u, int step, const std::string& out_dir) {
+  Json failed = Json::array();
+  for (int b = 0; b < model.dofs().num_bodies(); ++b) {
+    const Body& body = *model.bodies()[b];
+    const BodyFields f = body_fields(body, model.dofs(), b, u);
+    if (!first_non_finite(f).empty()) continue;
+    const std::string name = body.name + "_failed_step" + std::to_string(step + 1) + ".vtu";
+    write_body_vtu(body, f, (std::filesystem::path(out_dir) / name).string());
+    failed.push_back(name);
+  }
+  return failed;
+}
+
+/// One VTU per body for load step `step` (0-based), with the contact fields when `contact` is given, added
+/// to the collection, which is written anew.
+void write_step_vtu(const Model& model, const std::vector<BodyFields>& fields,
+                    const std::vector<ContactPairResult>* contact,
+                    const std::vector<std::vector<Eigen::VectorXd>>& accumulated_slip, int step,
+                    const std::string& out_dir, PvdCollection& pvd) {
+  for (int b = 0; b < model.dofs().num_bodies(); ++b) {
+    const Body& body = *model.bodies()[b];
+    const std::string name = step_file(body.name, step + 1);
+    const std::string path = (std::filesystem::path(out_dir) / name).string();
+    if (contact) {
+      const BodyContactFields cf = body_contact_fields(model, b, *contact, accumulated_slip);
+      write_body_vtu(body, fields[b], path, &cf);
+    } else {
+      write_body_vtu(body, fields[b], path);
+    }
+    pvd.add(step + 1, b, name, body.name);
+  }
+  pvd.write();
+}
+
 }  // namespace
 
 SummaryOnError::~SummaryOnError() {
@@ -382,18 +418,8 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     result.signal = status == RunStatus::kInterrupted ? interrupt_signal() : 0;
     summary["status"] = status == RunStatus::kInterrupted ? "interrupted" : "solve_failed";
     summary["message"] = message;
-    if (status == RunStatus::kSolveFailed && write_files) {
-      Json failed = Json::array();
-      for (int b = 0; b < dofs.num_bodies(); ++b) {
-        const Body& body = *model->bodies()[b];
-        const BodyFields f = body_fields(body, dofs, b, u);
-        if (!first_non_finite(f).empty()) continue;
-        const std::string name = body.name + "_failed_step" + std::to_string(step + 1) + ".vtu";
-        write_body_vtu(body, f, (fs::path(options.out_dir) / name).string());
-        failed.push_back(name);
-      }
-      summary["failed_iterate_files"] = failed;
-    }
+    if (status == RunStatus::kSolveFailed && write_files)
+      summary["failed_iterate_files"] = write_failed_iterates(*model, u, step, options.out_dir);
     write_summary();
     return result;
   };
@@ -460,18 +486,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     js["applied_load"] = to_vector(applied);
     if (vtu) {
       ScopedPhase t(st, "output");
-      for (int b = 0; b < dofs.num_bodies(); ++b) {
-        const Body& body = *model->bodies()[b];
-        const std::string name = step_file(body.name, step + 1);
-        if (has_contact) {
-          const BodyContactFields cf = body_contact_fields(*model, b, cres, accumulated_slip);
-          write_body_vtu(body, fields[b], (fs::path(options.out_dir) / name).string(), &cf);
-        } else {
-          write_body_vtu(body, fields[b], (fs::path(options.out_dir) / name).string());
-        }
-        pvd.add(step + 1, b, name, body.name);
-      }
-      pvd.write();
+      write_step_vtu(*model, fields, has_contact ? &cres : nullptr, accumulated_slip, step, options.out_dir, pvd);
     }
     js["timings"] = timings_json(st);
     times.merge(st);
