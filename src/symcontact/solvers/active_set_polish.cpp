@@ -108,6 +108,58 @@ std::unique_ptr<AlignedMatrix> dense_lower(const SparseMatrix& lower) {
   return d;
 }
 
+/// The range-space step on the sparse path, Δ = M⁻¹ (A_Sᵀ λ − ĝ) with (A_S M⁻¹ A_Sᵀ) λ = A_S M⁻¹ ĝ − c_S (see
+/// solve_on_set), λ in the least-squares, minimum-norm sense. Column by column: a multi-column solve goes
+/// through BLAS-3 kernels whose rounding depends on buffer alignment, and the same input must give the same
+/// digits.
+void range_space_step(const SpdFactor& chol, const SparseMatrix& AS, const VectorXd& cS, const VectorXd& ghat,
+                      VectorXd& dx, VectorXd& lambda) {
+  const MatrixXd At = MatrixXd(AS.transpose());
+  MatrixXd MinvAt(At.rows(), At.cols());
+  for (Index j = 0; j < At.cols(); ++j) MinvAt.col(j) = chol.solve(VectorXd(At.col(j)));
+  const MatrixXd S = AS * MinvAt;
+  const VectorXd rhs = AS * chol.solve(VectorXd(ghat)) - cS;
+  // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z
+  // are formed, and solve() must use that same rank (set afterwards, solve() read coefficients
+  // compute() never wrote: uninitialised memory, found by the ASan build of the V5 tests).
+  Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
+  cod.setThreshold(1e-12);
+  cod.compute(S);
+  lambda = cod.solve(rhs);
+  dx = MinvAt * lambda - chol.solve(VectorXd(ghat));
+}
+
+/// The method of multipliers on the set S with M = H + ρ A_Sᵀ A_S factorised (`chol`): x += M⁻¹(−(g − A_Sᵀ ν) −
+/// ρ A_Sᵀ c_S), ν −= ρ c_S(x), g kept as the gradient by g += H Δ (`hessian_times` adds H Δ). One step when S
+/// is empty. Returns false when the violation stops falling (40 iterations without a 1 % gain: the rows are
+/// inconsistent, the set must change instead).
+template <class HessianTimes>
+bool multiplier_method(const SpdFactor& chol, const HessianTimes& hessian_times, const SparseMatrix& AS,
+                       const VectorXd& bS, double rho, double xscale0, VectorXd& g, VectorXd& xs, VectorXd& nu,
+                       int& iterations) {
+  double best = std::numeric_limits<double>::infinity();
+  int since_progress = 0;
+  for (int it = 0; it < (AS.rows() > 0 ? 400 : 1); ++it) {
+    const VectorXd cS = AS * xs + bS;
+    const VectorXd dx = chol.solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
+    xs += dx;
+    hessian_times(dx, g);
+    ++iterations;
+    if (AS.rows() == 0) break;
+    const VectorXd cS1 = AS * xs + bS;
+    nu -= rho * cS1;
+    const double viol = cS1.lpNorm<Eigen::Infinity>();
+    if (viol <= 1e-14 * xscale0 && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0) break;
+    if (viol < 0.99 * best) {
+      best = viol;
+      since_progress = 0;
+    } else if (++since_progress >= 40) {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// The equality-constrained solve on a fixed set S: Newton steps on f (one for a quadratic f), each
 /// solved directly (range space, `direct`) or by the method of multipliers, with M = H + ρ A_Sᵀ A_S
 /// (H alone when S is empty).
@@ -205,51 +257,20 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
         nu = lambda;
         ++iterations;
       } else {
-      // Column by column: a multi-column solve goes through BLAS-3 kernels whose rounding depends on
-      // buffer alignment, and the same input must give the same digits.
-      const MatrixXd At = MatrixXd(AS.transpose());
-      MatrixXd MinvAt(At.rows(), At.cols());
-      for (Index j = 0; j < At.cols(); ++j) MinvAt.col(j) = chol.solve(VectorXd(At.col(j)));
-      const MatrixXd S = AS * MinvAt;
-      const VectorXd rhs = AS * chol.solve(VectorXd(ghat)) - cS;
-      // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z
-      // are formed, and solve() must use that same rank (set afterwards, solve() read coefficients
-      // compute() never wrote: uninitialised memory, found by the ASan build of the V5 tests).
-      Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod;
-      cod.setThreshold(1e-12);
-      cod.compute(S);
-      const VectorXd lambda = cod.solve(rhs);
-      const VectorXd dx = MinvAt * lambda - chol.solve(VectorXd(ghat));
-      xs += dx;
-      nu = lambda;
-      ++iterations;
+        VectorXd dx, lambda;
+        range_space_step(chol, AS, cS, ghat, dx, lambda);
+        xs += dx;
+        nu = lambda;
+        ++iterations;
       }
     } else {
-    double best = std::numeric_limits<double>::infinity();
-    int since_progress = 0;
-    for (int it = 0; it < (AS.rows() > 0 ? 400 : 1); ++it) {
-      const VectorXd cS = AS * xs + bS;
-      const VectorXd dx = chol.solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
-      xs += dx;
-      if (dense)
-        symmetric_multiply_add(*Hd, dx, g);
-      else
-        g += H.selfadjointView<Eigen::Lower>() * dx;
-      ++iterations;
-      if (AS.rows() == 0) break;
-      const VectorXd cS1 = AS * xs + bS;
-      nu -= rho * cS1;
-      const double viol = cS1.lpNorm<Eigen::Infinity>();
-      if (viol <= 1e-14 * xscale0 && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0) break;
-      // Stop when the violation no longer falls (inconsistent rows: the set must change instead).
-      if (viol < 0.99 * best) {
-        best = viol;
-        since_progress = 0;
-      } else if (++since_progress >= 40) {
-        stalled = true;
-        break;
-      }
-    }
+      const auto hessian_times = [&](const VectorXd& dx, VectorXd& out) {
+        if (dense)
+          symmetric_multiply_add(*Hd, dx, out);
+        else
+          out += H.selfadjointView<Eigen::Lower>() * dx;
+      };
+      stalled = !multiplier_method(chol, hessian_times, AS, bS, rho, xscale0, g, xs, nu, iterations);
     }
     // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
     // steps on f cannot change that, and the caller's rounds decide what to drop.
