@@ -6,36 +6,32 @@ namespace symcontact {
 
 namespace {
 /// Index of a cell type into the tables below (CellType order).
-int ix(CellType t) { return static_cast<int>(t); }
+constexpr int ix(CellType t) { return static_cast<int>(t); }
+
+/// What the functions below return for each type, in CellType order.
+struct CellFacts {
+  const char* name;
+  int dim, nodes, vertices, order;
+};
+constexpr CellFacts kFacts[] = {
+    {"point", 0, 1, 1, 0}, {"line2", 1, 2, 2, 1}, {"line3", 1, 3, 2, 2},   {"tri3", 2, 3, 3, 1},
+    {"tri6", 2, 6, 3, 2},  {"tet4", 3, 4, 4, 1},  {"tet10", 3, 10, 4, 2},  {"quad4", 2, 4, 4, 1},
+    {"quad8", 2, 8, 4, 2}, {"quad9", 2, 9, 4, 2}, {"hex8", 3, 8, 8, 1},    {"hex20", 3, 20, 8, 2},
+    {"hex27", 3, 27, 8, 2}};
+static_assert(sizeof(kFacts) / sizeof(kFacts[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
 }  // namespace
 
 CellShape cell_shape(CellType t) { return ix(t) >= ix(CellType::kQuad4) ? CellShape::kTensor : CellShape::kSimplex; }
 
-int cell_dim(CellType t) {
-  static const int n[] = {0, 1, 1, 2, 2, 3, 3, 2, 2, 2, 3, 3, 3};
-  return n[ix(t)];
-}
+int cell_dim(CellType t) { return kFacts[ix(t)].dim; }
 
-int cell_num_nodes(CellType t) {
-  static const int n[] = {1, 2, 3, 3, 6, 4, 10, 4, 8, 9, 8, 20, 27};
-  return n[ix(t)];
-}
+int cell_num_nodes(CellType t) { return kFacts[ix(t)].nodes; }
 
-int cell_num_vertices(CellType t) {
-  static const int n[] = {1, 2, 2, 3, 3, 4, 4, 4, 4, 4, 8, 8, 8};
-  return n[ix(t)];
-}
+int cell_num_vertices(CellType t) { return kFacts[ix(t)].vertices; }
 
-int cell_order(CellType t) {
-  static const int n[] = {0, 1, 2, 1, 2, 1, 2, 1, 2, 2, 1, 2, 2};
-  return n[ix(t)];
-}
+int cell_order(CellType t) { return kFacts[ix(t)].order; }
 
-std::string cell_name(CellType t) {
-  static const char* n[] = {"point", "line2", "line3", "tri3",  "tri6",  "tet4", "tet10",
-                            "quad4", "quad8", "quad9", "hex8", "hex20", "hex27"};
-  return n[ix(t)];
-}
+std::string cell_name(CellType t) { return kFacts[ix(t)].name; }
 
 CellType facet_type(CellType t) {
   switch (t) {
