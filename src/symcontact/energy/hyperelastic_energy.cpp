@@ -1,6 +1,5 @@
 #include "symcontact/energy/hyperelastic_energy.hpp"
 
-#include <cassert>
 #include <stdexcept>
 
 #include "symcontact/core/error.hpp"
@@ -104,12 +103,9 @@ HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int
                                        std::string label, AnalysisModel model)
     : mesh_(mesh),
       offset_(dofs.offset(body)),
-      materials_(std::move(materials)),
-      cell_material_(std::move(cell_material)),
+      materials_(std::move(materials), std::move(cell_material), mesh.num_cells()),
       label_(std::move(label)),
       model_(model) {
-  assert(!materials_.empty());
-  assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
   if (mesh.dim != 2 && mesh.dim != 3)
     throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
   // Same rule as LinearElasticEnergy (see the header for why).
@@ -141,7 +137,7 @@ void HyperelasticEnergy::for_each_cell(const VectorXd& u, Fn&& f) const {
         const auto X = gather_coordinates<D, NN>(mesh_.x, n);
         int bad = -1;
         try {
-          const Hyperelastic& material = materials_[cell_material_.empty() ? 0 : cell_material_[c]];
+          const Hyperelastic& material = materials_.of(c);
           if constexpr (D == 2)
             bad = model_ == AnalysisModel::kAxisymmetric
                       ? hyperelastic_element_axisymmetric<NN, What>(X, U, tab_, material, e, g, K)

@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "symcontact/energy/cell_materials.hpp"
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/fem/shape_functions.hpp"
@@ -62,8 +63,7 @@ class HyperelasticEnergy : public EnergyTerm {
 
   const Mesh& mesh_;
   Index offset_;
-  std::vector<Hyperelastic> materials_;
-  std::vector<int> cell_material_;
+  CellMaterials<Hyperelastic> materials_;
   std::string label_;
   AnalysisModel model_;
   Tabulation tab_;

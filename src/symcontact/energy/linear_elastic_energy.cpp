@@ -1,7 +1,5 @@
 #include "symcontact/energy/linear_elastic_energy.hpp"
 
-#include <cassert>
-
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/elastic_kernel.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
@@ -17,11 +15,8 @@ LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, i
                                          std::string label)
     : mesh_(mesh),
       offset_(dofs.offset(body)),
-      materials_(std::move(materials)),
-      cell_material_(std::move(cell_material)),
+      materials_(std::move(materials), std::move(cell_material), mesh.num_cells()),
       label_(std::move(label)) {
-  assert(!materials_.empty());
-  assert(cell_material_.empty() || static_cast<Index>(cell_material_.size()) == mesh.num_cells());
   const AnalysisModel model = materials_.front().model;
   tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type, model)));
   for_each_cell([](Index, const Index*, const auto&) {});  // validates every cell once
@@ -36,7 +31,7 @@ void LinearElasticEnergy::for_each_cell(F&& f) const {
     for (Index c = 0; c < mesh_.num_cells(); ++c) {
       const Index* n = mesh_.cell(c);
       const auto X = gather_coordinates<D, NN>(mesh_.x, n);
-      const LinearElastic& m = materials_[cell_material_.empty() ? 0 : cell_material_[c]];
+      const LinearElastic& m = materials_.of(c);
       if (linear_elastic_stiffness<D, NN>(X, tab_, m.lambda, m.mu, m.model, K) >= 0)
         throw InputError("", label_ + ": " + mesh_.cell_label(c),
                          bad_cell_message(m.model));

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "symcontact/energy/cell_materials.hpp"
 #include "symcontact/energy/energy_term.hpp"
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/fem/shape_functions.hpp"
@@ -40,8 +41,7 @@ class LinearElasticEnergy : public EnergyTerm {
 
   const Mesh& mesh_;
   Index offset_;
-  std::vector<LinearElastic> materials_;
-  std::vector<int> cell_material_;
+  CellMaterials<LinearElastic> materials_;
   std::string label_;
   Tabulation tab_;
 };
