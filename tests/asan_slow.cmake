@@ -31,7 +31,7 @@ set_tests_properties("Hertz3D.TwoElasticSpheresP2" "SelfContact3D.HairpinEqualsH
 # - Stacked/StackedBlocks…/3D_n3_5_4_P2_symmetric: the 3D P1 stacks and the 3D P2 contact patch tests run.
 # - FrictionExamples/Units…/inclined_3d_inclined_toml_L3_F0: the 2D unit changes run, and InclinedInterface3D
 #   solves the same 3D problem.
-# - FrictionalIroning/Units…: 2 × 52 finite-strain frictional steps (about 6 min of CPU in Release); the other
+# - FrictionalIroning/Units…: 2 × 52 finite-strain frictional steps (about 4 min of CPU in Release); the other
 #   unit changes run sanitised.
 # Parameterised tests carry their parameter in their discovered name (see zoo_slow.cmake): matched by prefix.
 # - Hertz3D.SphereOnRigidPlaneHex8 and …Hex27: 3D Hertz on hexahedra split from tetrahedra (24 s and 14 s in

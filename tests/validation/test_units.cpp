@@ -115,7 +115,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 // The frictional ironing's first 52 of 110 finite-strain steps (the die pressed in, sticking, and coming
 // unstuck at steps 45–52, where its geometry fixed point wanders: examples/ironing_2d/ironing_mu0.3.toml,
-// docs/validation-friction.md), in mm–N–MPa. About 3 min of CPU per unit system (tests/long_tests.cmake).
+// docs/validation-friction.md), in mm–N–MPa. About 2 min of CPU per unit system (tests/long_tests.cmake).
 INSTANTIATE_TEST_SUITE_P(FrictionalIroning, Units, ::testing::Values(UnitsCase{"ironing_2d/ironing_mu0.3.toml", 1e3, 1.0, 52}),
                          case_name);
 
