@@ -94,19 +94,46 @@ std::string short_number(double x) {
   return buf;
 }
 
-/// Refuses to mesh when predicted_cell_count() over the model's bounding box exceeds the limit.
+/// The cells Gmsh makes of the predicted simplices under the .geo's own options, and how they are counted:
+/// subdivision (Mesh.SubdivisionAlgorithm) splits each triangle into 3 quadrilaterals (1) and each
+/// tetrahedron into 4 hexahedra (2); recombining every surface (Mesh.RecombineAll, 2D) pairs the triangles
+/// off into about half as many quadrilaterals. Recombination asked for surface by surface is not seen:
+/// those meshes are counted as triangles, about twice their cells.
+struct PredictedCells {
+  double count;
+  std::string how;  ///< "triangles (2·A/h²" …, closed by the caller
+};
+
+double gmsh_number(const std::string& name) {
+  double v = 0.0;
+  gmsh::option::getNumber(name, v);
+  return v;
+}
+
+PredictedCells predicted_cells(int dim, double simplices) {
+  const std::string simplex = dim == 2 ? "triangles, 2·A/h²" : "tetrahedra, 6·V/h³";
+  const int subdivision = static_cast<int>(gmsh_number("Mesh.SubdivisionAlgorithm"));
+  if (dim == 2 && subdivision == 1) return {3 * simplices, "quadrilaterals (three per one of the " + simplex};
+  if (dim == 3 && subdivision == 2) return {4 * simplices, "hexahedra (four per one of the " + simplex};
+  if (dim == 2 && gmsh_number("Mesh.RecombineAll") != 0)
+    return {simplices / 2, "quadrilaterals (one per two of the " + simplex};
+  return {simplices, dim == 2 ? "triangles (2·A/h²" : "tetrahedra (6·V/h³"};
+}
+
+/// Refuses to mesh when the cells predicted over the model's bounding box (predicted_cell_count(), as the
+/// .geo's options turn them into cells) exceed the limit.
 void check_predicted_size(const std::string& path, const MeshReadOptions& opt) {
   double x0, y0, z0, x1, y1, z1;
   gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
   const double extent[3] = {x1 - x0, y1 - y0, z1 - z0};
-  const double cells = predicted_cell_count(opt.dim, extent, opt.mesh_size);
-  if (!(cells > opt.max_predicted_cells)) return;  // also a NaN box (an empty model): Gmsh will say
+  const PredictedCells cells = predicted_cells(opt.dim, predicted_cell_count(opt.dim, extent, opt.mesh_size));
+  if (!(cells.count > opt.max_predicted_cells)) return;  // also a NaN box (an empty model): Gmsh will say
   const std::string box = short_number(extent[0]) + " × " + short_number(extent[1]) +
                           (opt.dim == 3 ? " × " + short_number(extent[2]) : std::string());
   throw InputError(path, "",
                    opt.mesh_size_key + " = " + short_number(opt.mesh_size) + " would make about " +
-                       short_number(cells) + (opt.dim == 2 ? " triangles (2·A/h² over the bounding box " : " tetrahedra (6·V/h³ over the bounding box ") +
-                       box + "), more than the limit of " + short_number(opt.max_predicted_cells) +
+                       short_number(cells.count) + " " + cells.how + " over the bounding box " + box +
+                       "), more than the limit of " + short_number(opt.max_predicted_cells) +
                        " cells; use a larger mesh size, or pass --allow-large-mesh to mesh it anyway");
 }
 

@@ -149,6 +149,38 @@ TEST(GmshIo, MeshSizeAboveTheCellLimitIsRefusedNamingItsKey) {
   EXPECT_NO_THROW(read_mesh_file(kGeo + "square.geo", opt));
 }
 
+// A .geo that subdivides or recombines its mesh is counted in the cells it asks for: three quadrilaterals per
+// triangle, one per two, four hexahedra per tetrahedron.
+TEST(GmshIo, MeshSizeLimitCountsTheCellsTheGeoAsksFor) {
+  const symcontact::testing::TempFolder dir("symcontact_cell_limit_");
+  struct Case {
+    const char* option;
+    int dim;
+    const char* geo;
+    double mesh_size;
+    const char* expected;
+  };
+  const Case cases[] = {
+      {"Mesh.SubdivisionAlgorithm = 1;", 2, "square.geo", 0.05, "about 2.4e+03 quadrilaterals (three per"},
+      {"Mesh.RecombineAll = 1;", 2, "square.geo", 0.05, "about 400 quadrilaterals (one per two"},
+      {"Mesh.SubdivisionAlgorithm = 2;", 3, "cube.geo", 0.25, "about 1.54e+03 hexahedra (four per"}};
+  int n = 0;
+  for (const Case& c : cases) {
+    const std::string text = std::string(c.option) + "\nInclude \"" + kGeo + c.geo + "\";\n";
+    const std::string path = dir.write(std::to_string(++n) + ".geo", text).string();
+    MeshReadOptions opt;
+    opt.dim = c.dim;
+    opt.mesh_size = c.mesh_size;
+    opt.max_predicted_cells = 100;
+    try {
+      read_mesh_file(path, opt);
+      ADD_FAILURE() << c.option << ": no error";
+    } catch (const InputError& e) {
+      EXPECT_NE(e.message().find(c.expected), std::string::npos) << e.what();
+    }
+  }
+}
+
 // A recombined .geo gives quadrilaterals: Quad4 at order 1; at order 2 Gmsh makes Quad9 (complete), or Quad8
 // when the file sets Mesh.SecondOrderIncomplete = 1. Edge nodes of the rim lie on the circle.
 TEST(GmshIo, RecombinedSurfaceGivesQuadrilaterals) {
