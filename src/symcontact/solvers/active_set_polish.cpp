@@ -118,7 +118,8 @@ void range_space_step(const SpdFactor& chol, const SparseMatrix& AS, const Vecto
   MatrixXd MinvAt(At.rows(), At.cols());
   for (Index j = 0; j < At.cols(); ++j) MinvAt.col(j) = chol.solve(VectorXd(At.col(j)));
   const MatrixXd S = AS * MinvAt;
-  const VectorXd rhs = AS * chol.solve(VectorXd(ghat)) - cS;
+  const VectorXd Minv_g = chol.solve(VectorXd(ghat));
+  const VectorXd rhs = AS * Minv_g - cS;
   // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z
   // are formed, and solve() must use that same rank (set afterwards, solve() read coefficients
   // compute() never wrote: uninitialised memory, found by the ASan build of the V5 tests).
@@ -126,7 +127,7 @@ void range_space_step(const SpdFactor& chol, const SparseMatrix& AS, const Vecto
   cod.setThreshold(1e-12);
   cod.compute(S);
   lambda = cod.solve(rhs);
-  dx = MinvAt * lambda - chol.solve(VectorXd(ghat));
+  dx = MinvAt * lambda - Minv_g;
 }
 
 /// The method of multipliers on the set S with M = H + ρ A_Sᵀ A_S factorised (`chol`): x += M⁻¹(−(g − A_Sᵀ ν) −

@@ -37,7 +37,11 @@ struct FrictionalOptions {
   /// The Tresca solves' options. Their lazy_interior is on here: the solves of a load step leave u's interior
   /// out of date (where they condense: a workspace and linear elasticity) and u is made whole once, at the end
   /// of the step — one backward solve per load step instead of one per solve. Off only to compare.
-  ContactSolveOptions contact = lazy_interior_options();
+  ContactSolveOptions contact = [] {
+    ContactSolveOptions o;
+    o.lazy_interior = true;
+    return o;
+  }();
   double coulomb_tolerance = 1e-6;
   int max_coulomb_iterations = 50;
   /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is
@@ -65,13 +69,6 @@ struct FrictionalOptions {
   /// solve converged and the friction law holds to this relative tolerance: max |μ p − τ| ≤ it × max τ.
   /// Otherwise the step fails (SolveError naming what was tried).
   double stagnation_acceptance = 1e-4;
-
- private:
-  static ContactSolveOptions lazy_interior_options() {
-    ContactSolveOptions o;
-    o.lazy_interior = true;
-    return o;
-  }
 };
 
 /// u: on entry the start of the step (also the reference of the slip increments), on exit the solution. The
