@@ -319,6 +319,8 @@ Json summary_header(const ProblemSpec& spec, const Model& model) {
     bodies.push_back(jb);
   }
   summary["bodies"] = bodies;
+  summary["warnings"] = Json::array();  // of the input (Model::warnings); each step has its own
+  for (const std::string& w : model.warnings()) summary["warnings"].push_back(w);
   summary["steps"] = Json::array();
   return summary;
 }

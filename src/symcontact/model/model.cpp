@@ -233,6 +233,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
     m->add_loads(b);
     for (const auto& ds : bs.dirichlet) m->add_dirichlet(b, ds);
   }
+  m->warn_free_axis_nodes(log);
   m->build_contacts(log, mesh_options);
   m->set_step(0);
   return m;
@@ -304,6 +305,36 @@ void Model::add_surface_load(int b, const std::string& group, const std::string&
   };
   auto* term = energy_.add(std::make_unique<LinearLoad>(body.name + "." + name + "." + group, assemble(1.0)));
   loads_.push_back({term, factors, any_expression ? std::function<VectorXd(double)>(assemble) : nullptr});
+}
+
+/// Symmetry asks u_r = 0 on the axis of revolution; the integrals never divide by r (their points are inside
+/// the cells), so a section whose axis nodes keep u_r free still solves, but those nodes may move off the axis:
+/// a hole opens, or material crosses to r < 0. Each body with such nodes gets one warning naming it, the number
+/// of nodes and the first one. A node counts as on the axis within 1e-10 × the section's width.
+void Model::warn_free_axis_nodes(const Logger& log) {
+  if (spec_.model != AnalysisModel::kAxisymmetric) return;
+  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
+    const Mesh& mesh = bodies_[b]->mesh;
+    if (mesh.num_nodes() == 0) continue;
+    std::vector<char> held(mesh.num_nodes(), 0);
+    for (const DirichletBoundary& d : boundaries_)
+      if (d.body == b && d.values[0])
+        for (Index v : d.nodes) held[v] = 1;
+    const double width = mesh.x.row(0).maxCoeff() - mesh.x.row(0).minCoeff();
+    Index first = -1, count = 0;
+    for (Index v = 0; v < mesh.num_nodes(); ++v)
+      if (std::abs(mesh.x(0, v)) <= 1e-10 * width && !held[v]) {
+        if (first < 0) first = v;
+        ++count;
+      }
+    if (count == 0) continue;
+    std::ostringstream s;
+    s << "body '" << bodies_[b]->name << "': " << count << " node" << (count > 1 ? "s" : "")
+      << " on the axis (x = r = 0) with u_r free, the first " << mesh.node_label(first) << " at y = "
+      << mesh.x(1, first) << "; symmetry asks u_r = 0 there: add a [[body.dirichlet]] with ux = 0 on the axis";
+    log.warning(s.str());
+    warnings_.push_back(s.str());
+  }
 }
 
 void Model::add_dirichlet(int b, const DirichletSpec& ds) {

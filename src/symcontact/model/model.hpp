@@ -104,6 +104,9 @@ class Model {
   std::vector<Eigen::VectorXd> reactions(const FixedDofs& fixed, const VectorXd& gradient) const;
   /// The applied external load vector at the current step (Σ s_k f_k).
   VectorXd external_load() const;
+  /// What the input asks that is legal but likely a mistake (each also logged as a warning when the model
+  /// was built): an axisymmetric body with nodes on the axis whose u_r is free.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
  private:
   Model(const ProblemSpec& spec) : spec_(spec) {}
@@ -131,6 +134,8 @@ class Model {
   void add_surface_load(int b, const std::string& group, const std::string& key, const std::vector<LoadValue>& values,
                         const std::vector<double>& factors, SurfaceLoad kind);
   void add_dirichlet(int b, const DirichletSpec& ds);
+  void warn_free_axis_nodes(const Logger& log);
+  std::vector<std::string> warnings_;
 };
 
 /// The factor of load step `step`: own[step] when `own` is given, else global[step]; step −1 is the

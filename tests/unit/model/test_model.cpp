@@ -449,6 +449,22 @@ TEST_F(ModelTest, PointLoadOnAPhysicalCurveIn3DIsAnInputError) {
   }
 }
 
+// An axisymmetric body whose section touches the axis (block.msh's left side, x = 0) with u_r free there: one
+// warning naming the body and the nodes; none once ux = 0 holds the axis, and none in plane strain.
+TEST_F(ModelTest, AxisNodesWithAFreeRadialDisplacementAreAWarning) {
+  const ProblemSnippet axisymmetric = kBlock.after("dimension = 2\n", "model = \"axisymmetric\"\n");
+  build(axisymmetric);  // the bottom holds (0, 0); left holds ux = 0.1 (not 0, yet held): no warning
+  EXPECT_TRUE(model_->warnings().empty());
+  build(testing::clamped_block().after("dimension = 2\n", "model = \"axisymmetric\"\n") +
+        testing::dirichlet_toml("left", "uy = 0.0\n"));
+  ASSERT_EQ(model_->warnings().size(), 1u);
+  const std::string& w = model_->warnings()[0];
+  EXPECT_NE(w.find("body 'block': 1 node on the axis (x = r = 0) with u_r free"), std::string::npos) << w;
+  EXPECT_NE(w.find("at y = 1"), std::string::npos) << w;
+  build(testing::clamped_block());
+  EXPECT_TRUE(model_->warnings().empty());
+}
+
 // The load factors (step_factor): a step's own factors or the global ones, and within a step (the sub-steps
 // of an automatic step cut) linear between step − 1 and step.
 TEST(ModelLoads, StepFactorsAreInterpolatedBetweenSteps) {
