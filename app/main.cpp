@@ -14,6 +14,7 @@
 #include <iostream>
 
 #include "symcontact/app/run.hpp"
+#include "symcontact/core/blas_kernels.hpp"
 #include "symcontact/core/blas_threads.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/timer.hpp"
@@ -66,6 +67,7 @@ struct MeshingFlags {
 }  // namespace
 
 int main(int argc, char** argv) {
+  restart_with_better_blas_kernels(argv);  // OpenBLAS's fallback kernels on a CPU it does not know
   CLI::App app{"symcontact — symmetric frictional contact by interior point (FEM, 2D/3D)", "symcontact"};
   app.set_version_flag("--version", std::string("symcontact ") + SYMCONTACT_VERSION);
   app.require_subcommand(1);
@@ -101,6 +103,7 @@ int main(int argc, char** argv) {
   const Verbosity level = quiet ? Verbosity::kQuiet
                                 : (verbose >= 2 ? Verbosity::kDebug : (verbose == 1 ? Verbosity::kVerbose : Verbosity::kNormal));
   const Logger log(std::cerr, level);
+  if (const std::string note = blas_kernel_note(); !note.empty()) log.detail(note);
   try {
     RunOptions opt;
     if (*run) {

@@ -25,6 +25,8 @@
 
 #include <cholmod.h>
 
+#include "symcontact/core/blas_kernels.hpp"
+
 namespace symcontact::bench {
 
 namespace {
@@ -140,6 +142,7 @@ void print_machine_info(std::ostream& os, const MachineInfo& m) {
   os << "\n";
   if (m.openblas_threads >= 0)
     os << "# BLAS: OpenBLAS threads " << m.openblas_threads << ", config \"" << m.openblas_config << "\"\n";
+  if (const std::string note = symcontact::blas_kernel_note(); !note.empty()) os << "# BLAS: " << note << "\n";
 }
 
 double peak_rss_mib() { return status_mib("VmHWM"); }

@@ -13,6 +13,7 @@
 
 #include "problem.hpp"
 #include "study_run.hpp"
+#include "symcontact/core/blas_kernels.hpp"
 #include "symcontact/core/blas_threads.hpp"
 #include "symcontact/core/error.hpp"
 
@@ -99,6 +100,18 @@ PYBIND11_MODULE(_symcontact, m) {
       .def_property_readonly("base_dir", &Problem::base_dir)
       .def_property_readonly("dimension", [](const Problem& p) { return p.spec().dim; })
       .def_property_readonly("num_steps", [](const Problem& p) { return p.spec().load_factors.size(); });
+
+  m.def(
+      "blas_kernels",
+      [] {
+        const std::string core = blas_core_name();
+        py::dict d;
+        d["core"] = core;
+        d["better"] = better_blas_core(core);
+        return d;
+      },
+      "The OpenBLAS kernel family this process runs ('' when the BLAS is not OpenBLAS) and, where OpenBLAS fell "
+      "back to one without AVX on a CPU with AVX2, the family `symcontact` would restart with ('' otherwise).");
 
   m.def(
       "run",

@@ -18,8 +18,16 @@ import numpy as np
 from . import _symcontact
 from ._symcontact import InputError, InternalError, SolveError, SymcontactError
 
-__all__ = ["Problem", "Result", "InputError", "SolveError", "InternalError", "SymcontactError", "__version__"]
+__all__ = ["Problem", "Result", "InputError", "SolveError", "InternalError", "SymcontactError", "__version__",
+           "blas_kernels"]
 __version__ = _symcontact.__version__
+
+
+def blas_kernels():
+    """{"core": the OpenBLAS kernel family this process runs, "better": the family the command line would
+    restart with on this CPU, or ""}. OpenBLAS chooses when it is loaded: on a CPU newer than it knows
+    (docs/performance.md, "Machine") set OPENBLAS_CORETYPE to "better" before Python starts."""
+    return dict(_symcontact.blas_kernels())
 
 
 class Problem:

@@ -13,13 +13,15 @@ EXAMPLES = ROOT / "examples"
 
 @pytest.fixture(scope="module")  # one pytest process per test file (CTest)
 def cli():
-    """Runs the command-line program: cli("run", file, "--out", dir) -> CompletedProcess."""
+    """Runs the command-line program: cli("run", file, "--out", dir, env={...}) -> CompletedProcess."""
     path = os.environ.get("SYMCONTACT_CLI")
     if not path:
         pytest.fail("SYMCONTACT_CLI is not set (CTest sets it: ctest --test-dir build -L python)")
 
-    def run(*args):
-        return subprocess.run([path, *map(str, args)], capture_output=True, text=True)
+    def run(*args, env=None):
+        """env: variables added to this process's environment for the run."""
+        return subprocess.run([path, *map(str, args)], capture_output=True, text=True,
+                              env=None if env is None else dict(os.environ, **env))
 
     return run
 

@@ -4,6 +4,7 @@ GIL, output folders and errors."""
 import csv
 import json
 import math
+import os
 import threading
 import time
 
@@ -29,10 +30,13 @@ def same(a, b):
 
 @pytest.fixture(scope="module")
 def runs(tmp_path_factory, cli):
-    """The example through the command line and through Python (which also writes a folder)."""
+    """The example through the command line and through Python (which also writes a folder), on the same
+    OpenBLAS kernels: the command line on this process's (it would otherwise move from OpenBLAS's fallback
+    kernels to better ones, src/symcontact/core/blas_kernels.hpp)."""
     cli_dir = tmp_path_factory.mktemp("cli")
     py_dir = tmp_path_factory.mktemp("py") / "out"
-    out = cli("run", INCLINED, "--out", cli_dir, "-q")
+    core = symcontact.blas_kernels()["core"]
+    out = cli("run", INCLINED, "--out", cli_dir, "-q", env={"OPENBLAS_CORETYPE": core} if core else None)
     assert out.returncode == 0, out.stderr
     result = symcontact.Problem(INCLINED).run(out_dir=py_dir)
     return cli_dir, py_dir, result
@@ -168,3 +172,16 @@ def test_ctrl_c_during_a_solve_ends_the_run_after_its_step():
     with pytest.raises(KeyboardInterrupt):
         problem.run(progress=interrupt_during_step_3)
     assert steps[:2] == [1, 2] and len(steps) <= 4  # not the 10 steps of the whole run
+
+
+def test_blas_kernels_name_the_family_and_the_command_lines_choice(cli):
+    kernels = symcontact.blas_kernels()
+    assert kernels["better"] in ("", "SkylakeX", "Haswell")
+    if not kernels["core"]:
+        pytest.skip("the BLAS is not OpenBLAS")
+    assert not (kernels["better"] and kernels["better"] == kernels["core"])
+    out = cli("-v", "check", INCLINED)
+    assert out.returncode == 0, out.stderr
+    chosen = "OPENBLAS_CORETYPE" in os.environ
+    expected = f"running with OPENBLAS_CORETYPE={kernels['better']}"
+    assert (expected in out.stderr) == bool(kernels["better"] and not chosen), out.stderr

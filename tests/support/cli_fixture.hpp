@@ -37,10 +37,12 @@ class CliTest : public ::testing::Test {
   explicit CliTest(const std::string& prefix) : folder_(prefix), dir_(folder_.path()) {}
 
   /// Runs `symcontact ARGS` in the test's folder.
-  CliResult run(const std::string& args) const {
+  CliResult run(const std::string& args) const { return run_with_env("", args); }
+  /// Runs `ENV symcontact ARGS` in the test's folder: `env` holds NAME=VALUE assignments for the shell.
+  CliResult run_with_env(const std::string& env, const std::string& args) const {
     const std::filesystem::path log = dir_ / "cli_output.txt";
-    const std::string command = "cd " + shell_quote(dir_) + " && " + shell_quote(SYMCONTACT_CLI) + " " + args +
-                                " > " + shell_quote(log) + " 2>&1";
+    const std::string command = "cd " + shell_quote(dir_) + " && " + env + (env.empty() ? "" : " ") +
+                                shell_quote(SYMCONTACT_CLI) + " " + args + " > " + shell_quote(log) + " 2>&1";
     const int status = std::system(command.c_str());
     CliResult r;
     r.exit_code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "support/cli_fixture.hpp"
+#include "symcontact/core/blas_kernels.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -85,6 +86,23 @@ TEST_F(Cli, CheckBuildsTheModelAndWritesNothing) {
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("OK"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir_ / "press_results"));
+}
+
+// OpenBLAS's fallback kernels (blas_kernels.hpp): where this process got a family without AVX on a CPU with
+// AVX2 (a CPU newer than OpenBLAS's table), `symcontact` restarts itself with better kernels and says so at -v;
+// elsewhere, and whenever OPENBLAS_CORETYPE is set, it keeps the kernels it was given and says nothing.
+TEST_F(Cli, FallbackBlasKernelsAreReplacedOnlyWhenTheUserChoseNone) {
+  const fs::path case_file = write("press.toml", problem_toml(example_geo(), "block", "0.3", kClampBottom + kPressTop));
+  const std::string better = std::getenv("OPENBLAS_CORETYPE") ? "" : symcontact::better_blas_core(symcontact::blas_core_name());
+  const CliResult r = run("-v check " + shell_quote(case_file));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("running with OPENBLAS_CORETYPE=") != std::string::npos, !better.empty()) << r.output;
+  if (!better.empty()) {
+    EXPECT_NE(r.output.find("running with OPENBLAS_CORETYPE=" + better), std::string::npos) << r.output;
+  }
+  const CliResult chosen = run_with_env("OPENBLAS_CORETYPE=Prescott", "-v check " + shell_quote(case_file));
+  EXPECT_EQ(chosen.exit_code, 0) << chosen.output;
+  EXPECT_EQ(chosen.output.find("OPENBLAS_CORETYPE"), std::string::npos) << chosen.output;
 }
 
 TEST_F(Cli, MissingDirichletGroupIsAnInputError) {
