@@ -1,0 +1,29 @@
+#pragma once
+/// \file block_system.hpp
+/// The model problem of the distributed path's tests and benchmark: a linear-elastic unit square (plane
+/// strain) or unit cube on a structured simplex mesh of n divisions per side, E = 1, ν = 0.3, clamped at its
+/// bottom (y = 0, resp. z = 0), its top moved by 0.01 along x, and a downward nodal load of 10⁻³ on every
+/// node: the full stiffness, the load, the fixed DOFs with their values, as solve_elasticity_gamg() takes them.
+
+#include <vector>
+
+#include "symcontact/core/types.hpp"
+#include "symcontact/mesh/mesh.hpp"
+
+namespace symcontact {
+
+struct BlockSystem {
+  Mesh mesh;
+  SparseMatrix K_lower;  ///< lower triangle of the stiffness over every DOF (dof = dim·node + comp)
+  VectorXd f;
+  std::vector<Index> fixed;
+  VectorXd fixed_values;
+};
+
+BlockSystem clamped_block_system(int dim, int divisions);
+
+/// The same system solved by a sparse Cholesky factorisation of K_ff (Eigen's simplicial LLᵀ): a reference
+/// for small sizes.
+VectorXd cholesky_solution(const BlockSystem& s);
+
+}  // namespace symcontact
