@@ -61,97 +61,152 @@ int PetscSession::size() const {
   return s;
 }
 
-GamgResult solve_elasticity_gamg(const SparseMatrix& K, bool lower, const VectorXd& f, const std::vector<Index>& fixed,
-                                 const VectorXd& fixed_values, const Eigen::MatrixXd& x, const GamgOptions& options) {
-  const int dim = static_cast<int>(x.rows());
-  const Index num_nodes = x.cols(), n = dim * num_nodes;
-  if (K.rows() != n || K.cols() != n || f.size() != n || fixed_values.size() != static_cast<Index>(fixed.size()))
-    throw std::invalid_argument("solve_elasticity_gamg: K, f, the fixed values and the coordinates do not match");
+namespace {
+
+/// This rank's rows: those of the nodes [first, last), i.e. dim·[first, last).
+struct RowRange {
+  int dim;
+  Index first, last;
+  Index row0() const { return dim * first; }
+  Index row1() const { return dim * last; }
+  Index local() const { return row1() - row0(); }
+  bool owns(Index row) const { return row >= row0() && row < row1(); }
+};
+
+RowRange my_rows(int dim, Index num_nodes) {
   PetscMPIInt rank = 0, size = 1;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
-  // Rows dim·[first, last) of the nodes [first, last) are this rank's.
-  const Index first = num_nodes * rank / size, last = num_nodes * (rank + 1) / size;
-  const Index row0 = dim * first, row1 = dim * last, local = row1 - row0;
-  const auto t_setup = std::chrono::steady_clock::now();
+  return {dim, num_nodes * rank / size, num_nodes * (rank + 1) / size};
+}
 
+/// The distributed matrix of block size dim, each rank inserting its rows of K (preallocated exactly).
+void assemble_matrix(const SparseMatrix& K, bool lower, const RowRange& mine, Mat A) {
   const auto R = full_rows(K, lower);
-  std::vector<PetscInt> d_nnz(local, 0), o_nnz(local, 0);
-  for (Index i = row0; i < row1; ++i)
-    for (auto it = decltype(R)::InnerIterator(R, i); it; ++it)
-      ++((it.col() >= row0 && it.col() < row1) ? d_nnz : o_nnz)[i - row0];
-  Owned<Mat, MatDestroy> A;
-  check(MatCreate(PETSC_COMM_WORLD, &A.object), "MatCreate");
-  check(MatSetSizes(A.object, local, local, n, n), "MatSetSizes");
-  check(MatSetType(A.object, MATAIJ), "MatSetType");
-  check(MatSetBlockSize(A.object, dim), "MatSetBlockSize");
-  check(MatSeqAIJSetPreallocation(A.object, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
-  check(MatMPIAIJSetPreallocation(A.object, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
+  std::vector<PetscInt> d_nnz(mine.local(), 0), o_nnz(mine.local(), 0);
+  for (Index i = mine.row0(); i < mine.row1(); ++i)
+    for (auto it = decltype(R)::InnerIterator(R, i); it; ++it) ++(mine.owns(it.col()) ? d_nnz : o_nnz)[i - mine.row0()];
+  const PetscInt n = static_cast<PetscInt>(K.rows());
+  check(MatSetSizes(A, mine.local(), mine.local(), n, n), "MatSetSizes");
+  check(MatSetType(A, MATAIJ), "MatSetType");
+  check(MatSetBlockSize(A, mine.dim), "MatSetBlockSize");
+  check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
+  check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
   std::vector<PetscInt> cols;
-  std::vector<PetscScalar> vals;
-  for (Index i = row0; i < row1; ++i) {
-    cols.clear();
-    vals.clear();
-    for (auto it = decltype(R)::InnerIterator(R, i); it; ++it) {
-      cols.push_back(static_cast<PetscInt>(it.col()));
-      vals.push_back(it.value());
-    }
+  for (Index i = mine.row0(); i < mine.row1(); ++i) {
+    const Index begin = R.outerIndexPtr()[i], count = R.outerIndexPtr()[i + 1] - begin;
+    cols.assign(R.innerIndexPtr() + begin, R.innerIndexPtr() + begin + count);
     const PetscInt row = static_cast<PetscInt>(i);
-    check(MatSetValues(A.object, 1, &row, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), INSERT_VALUES),
+    check(MatSetValues(A, 1, &row, static_cast<PetscInt>(count), cols.data(), R.valuePtr() + begin, INSERT_VALUES),
           "MatSetValues");
   }
-  check(MatAssemblyBegin(A.object, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  check(MatAssemblyEnd(A.object, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
 
-  // b = f; u holds the fixed values at the fixed rows; then the fixed rows and columns become identity rows.
-  Owned<Vec, VecDestroy> b, u, coords;
-  check(MatCreateVecs(A.object, &u.object, &b.object), "MatCreateVecs");
-  for (Index i = row0; i < row1; ++i) check(VecSetValue(b.object, i, f[i], INSERT_VALUES), "VecSetValue");
-  check(VecSet(u.object, 0.0), "VecSet");
-  std::vector<PetscInt> fixed_rows;
+/// b = f and u = ū on the fixed rows, then the fixed rows and columns of A made identity rows, ū moved into b.
+void impose_fixed(const VectorXd& f, const std::vector<Index>& fixed, const VectorXd& fixed_values,
+                  const RowRange& mine, Mat A, Vec u, Vec b) {
+  for (Index i = mine.row0(); i < mine.row1(); ++i) check(VecSetValue(b, i, f[i], INSERT_VALUES), "VecSetValue");
+  check(VecSet(u, 0.0), "VecSet");
+  std::vector<PetscInt> rows;
   for (std::size_t k = 0; k < fixed.size(); ++k)
-    if (fixed[k] >= row0 && fixed[k] < row1) {
-      fixed_rows.push_back(static_cast<PetscInt>(fixed[k]));
-      check(VecSetValue(u.object, fixed[k], fixed_values[static_cast<Index>(k)], INSERT_VALUES), "VecSetValue");
+    if (mine.owns(fixed[k])) {
+      rows.push_back(static_cast<PetscInt>(fixed[k]));
+      check(VecSetValue(u, fixed[k], fixed_values[static_cast<Index>(k)], INSERT_VALUES), "VecSetValue");
     }
-  for (Vec v : {b.object, u.object}) {
+  for (Vec v : {b, u}) {
     check(VecAssemblyBegin(v), "VecAssemblyBegin");
     check(VecAssemblyEnd(v), "VecAssemblyEnd");
   }
-  check(MatZeroRowsColumns(A.object, static_cast<PetscInt>(fixed_rows.size()), fixed_rows.data(), 1.0, u.object,
-                           b.object),
-        "MatZeroRowsColumns");
+  check(MatZeroRowsColumns(A, static_cast<PetscInt>(rows.size()), rows.data(), 1.0, u, b), "MatZeroRowsColumns");
+}
 
-  // The rigid motions of the nodes: GAMG's near null space.
+/// The rigid motions of the node coordinates x, set as A's near null space (GAMG reads it).
+void set_rigid_body_modes(const Eigen::MatrixXd& x, const RowRange& mine, Mat A) {
+  Owned<Vec, VecDestroy> coords;
   check(VecCreate(PETSC_COMM_WORLD, &coords.object), "VecCreate");
-  check(VecSetSizes(coords.object, local, n), "VecSetSizes");
-  check(VecSetBlockSize(coords.object, dim), "VecSetBlockSize");
+  check(VecSetSizes(coords.object, mine.local(), mine.dim * x.cols()), "VecSetSizes");
+  check(VecSetBlockSize(coords.object, mine.dim), "VecSetBlockSize");
   check(VecSetFromOptions(coords.object), "VecSetFromOptions");
-  for (Index v = first; v < last; ++v)
-    for (int c = 0; c < dim; ++c) check(VecSetValue(coords.object, dim * v + c, x(c, v), INSERT_VALUES), "VecSetValue");
+  for (Index v = mine.first; v < mine.last; ++v)
+    for (int c = 0; c < mine.dim; ++c)
+      check(VecSetValue(coords.object, mine.dim * v + c, x(c, v), INSERT_VALUES), "VecSetValue");
   check(VecAssemblyBegin(coords.object), "VecAssemblyBegin");
   check(VecAssemblyEnd(coords.object), "VecAssemblyEnd");
   Owned<MatNullSpace, MatNullSpaceDestroy> rigid;
   check(MatNullSpaceCreateRigidBody(coords.object, &rigid.object), "MatNullSpaceCreateRigidBody");
-  check(MatSetNearNullSpace(A.object, rigid.object), "MatSetNearNullSpace");
+  check(MatSetNearNullSpace(A, rigid.object), "MatSetNearNullSpace");
+}
 
+/// CG on the unpreconditioned residual, GAMG, the options' tolerance; PETSC_OPTIONS may still change them.
+void configure_solver(KSP ksp, Mat A, const GamgOptions& options) {
+  check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+  check(KSPSetType(ksp, KSPCG), "KSPSetType");
+  check(KSPSetNormType(ksp, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  check(KSPSetTolerances(ksp, options.relative_tolerance, 0.0, PETSC_DEFAULT, options.max_iterations),
+        "KSPSetTolerances");
+  check(KSPSetInitialGuessNonzero(ksp, PETSC_TRUE), "KSPSetInitialGuessNonzero");  // u holds ū
+  PC pc = nullptr;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, PCGAMG), "PCSetType");
+  check(KSPSetFromOptions(ksp), "KSPSetFromOptions");
+}
+
+/// ‖b − A u‖₂ / ‖b‖₂.
+double relative_residual(Mat A, Vec u, Vec b) {
+  Owned<Vec, VecDestroy> r;
+  check(VecDuplicate(b, &r.object), "VecDuplicate");
+  check(MatMult(A, u, r.object), "MatMult");
+  check(VecAYPX(r.object, -1.0, b), "VecAYPX");
+  PetscReal rn = 0.0, bn = 0.0;
+  check(VecNorm(r.object, NORM_2, &rn), "VecNorm");
+  check(VecNorm(b, NORM_2, &bn), "VecNorm");
+  return bn > 0.0 ? rn / bn : rn;
+}
+
+/// The whole of the distributed vector u, on every rank.
+VectorXd gather_to_all(Vec u) {
+  Owned<VecScatter, VecScatterDestroy> gather;
+  Owned<Vec, VecDestroy> all;
+  check(VecScatterCreateToAll(u, &gather.object, &all.object), "VecScatterCreateToAll");
+  check(VecScatterBegin(gather.object, u, all.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(gather.object, u, all.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  PetscInt n = 0;
+  check(VecGetSize(all.object, &n), "VecGetSize");
+  const PetscScalar* data = nullptr;
+  check(VecGetArrayRead(all.object, &data), "VecGetArrayRead");
+  VectorXd out = Eigen::Map<const VectorXd>(data, n);
+  check(VecRestoreArrayRead(all.object, &data), "VecRestoreArrayRead");
+  return out;
+}
+
+}  // namespace
+
+GamgResult solve_elasticity_gamg(const SparseMatrix& K, bool lower, const VectorXd& f, const std::vector<Index>& fixed,
+                                 const VectorXd& fixed_values, const Eigen::MatrixXd& x, const GamgOptions& options) {
+  const int dim = static_cast<int>(x.rows());
+  const Index n = dim * x.cols();
+  if (K.rows() != n || K.cols() != n || f.size() != n || fixed_values.size() != static_cast<Index>(fixed.size()))
+    throw std::invalid_argument("solve_elasticity_gamg: K, f, the fixed values and the coordinates do not match");
+  const RowRange mine = my_rows(dim, x.cols());
+  const auto t_setup = std::chrono::steady_clock::now();
+  Owned<Mat, MatDestroy> A;
+  check(MatCreate(PETSC_COMM_WORLD, &A.object), "MatCreate");
+  assemble_matrix(K, lower, mine, A.object);
+  Owned<Vec, VecDestroy> b, u;
+  check(MatCreateVecs(A.object, &u.object, &b.object), "MatCreateVecs");
+  impose_fixed(f, fixed, fixed_values, mine, A.object, u.object, b.object);
+  set_rigid_body_modes(x, mine, A.object);
   Owned<KSP, KSPDestroy> ksp;
   check(KSPCreate(PETSC_COMM_WORLD, &ksp.object), "KSPCreate");
-  check(KSPSetOperators(ksp.object, A.object, A.object), "KSPSetOperators");
-  check(KSPSetType(ksp.object, KSPCG), "KSPSetType");
-  check(KSPSetNormType(ksp.object, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-  check(KSPSetTolerances(ksp.object, options.relative_tolerance, 0.0, PETSC_DEFAULT, options.max_iterations),
-        "KSPSetTolerances");
-  check(KSPSetInitialGuessNonzero(ksp.object, PETSC_TRUE), "KSPSetInitialGuessNonzero");  // u: the fixed values
-  PC pc = nullptr;
-  check(KSPGetPC(ksp.object, &pc), "KSPGetPC");
-  check(PCSetType(pc, PCGAMG), "PCSetType");
-  check(KSPSetFromOptions(ksp.object), "KSPSetFromOptions");  // PETSC_OPTIONS may add monitors or change it
+  configure_solver(ksp.object, A.object, options);
   check(KSPSetUp(ksp.object), "KSPSetUp");
   GamgResult result;
   result.setup_seconds = seconds_since(t_setup);
+  PC pc = nullptr;
   PetscInt levels = 0;
-  if (PCMGGetLevels(pc, &levels) == 0) result.levels = static_cast<int>(levels);
+  if (KSPGetPC(ksp.object, &pc) == 0 && PCMGGetLevels(pc, &levels) == 0) result.levels = static_cast<int>(levels);
 
   const auto t_solve = std::chrono::steady_clock::now();
   check(KSPSolve(ksp.object, b.object, u.object), "KSPSolve");
@@ -163,27 +218,8 @@ GamgResult solve_elasticity_gamg(const SparseMatrix& K, bool lower, const Vector
   result.iterations = static_cast<int>(its);
   result.converged = reason > 0;
   result.reason = KSPConvergedReasons[reason];
-
-  // ‖b − A u‖ / ‖b‖ of the system solved (its fixed rows hold u = ū exactly).
-  Owned<Vec, VecDestroy> r;
-  check(VecDuplicate(b.object, &r.object), "VecDuplicate");
-  check(MatMult(A.object, u.object, r.object), "MatMult");
-  check(VecAYPX(r.object, -1.0, b.object), "VecAYPX");
-  PetscReal rn = 0.0, bn = 0.0;
-  check(VecNorm(r.object, NORM_2, &rn), "VecNorm");
-  check(VecNorm(b.object, NORM_2, &bn), "VecNorm");
-  result.relative_residual = bn > 0.0 ? rn / bn : rn;
-
-  // Every rank gets the whole answer.
-  Owned<VecScatter, VecScatterDestroy> gather;
-  Owned<Vec, VecDestroy> all;
-  check(VecScatterCreateToAll(u.object, &gather.object, &all.object), "VecScatterCreateToAll");
-  check(VecScatterBegin(gather.object, u.object, all.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-  check(VecScatterEnd(gather.object, u.object, all.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-  const PetscScalar* data = nullptr;
-  check(VecGetArrayRead(all.object, &data), "VecGetArrayRead");
-  result.u = Eigen::Map<const VectorXd>(data, n);
-  check(VecRestoreArrayRead(all.object, &data), "VecRestoreArrayRead");
+  result.relative_residual = relative_residual(A.object, u.object, b.object);
+  result.u = gather_to_all(u.object);
   // The identity rows keep ū up to the preconditioner's round-off (1e-14); the fixed DOFs take it exactly.
   for (std::size_t k = 0; k < fixed.size(); ++k) result.u[fixed[k]] = fixed_values[static_cast<Index>(k)];
   return result;
