@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
     symcontact::GamgOptions options;
     options.relative_tolerance = rtol;
     const symcontact::GamgResult r =
-        symcontact::solve_elasticity_gamg(s.K_lower, true, s.f, s.fixed, s.fixed_values, s.mesh.x, options);
+        symcontact::solve_elasticity_gamg(s.K_lower, s.f, s.fixed, s.fixed_values, s.mesh.x, options);
     if (root)
       std::printf("%9d %10lld %6d %6d %12.2f %10.2f %10.2f %12.0f%s\n", n, static_cast<long long>(s.f.size()),
                   r.iterations, r.levels, assembly, r.setup_seconds, r.solve_seconds, peak_rss_mib(),

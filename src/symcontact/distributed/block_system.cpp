@@ -1,7 +1,5 @@
 #include "symcontact/distributed/block_system.hpp"
 
-#include <Eigen/SparseCholesky>
-
 #include "symcontact/energy/linear_elastic_energy.hpp"
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
@@ -34,34 +32,6 @@ BlockSystem clamped_block_system(int dim, int n) {
   }
   s.fixed_values = Eigen::Map<VectorXd>(values.data(), static_cast<Index>(values.size()));
   return s;
-}
-
-VectorXd cholesky_solution(const BlockSystem& s) {
-  const Index n = s.f.size();
-  VectorXd u = VectorXd::Zero(n);
-  std::vector<Index> free_index(n, 0);
-  for (std::size_t k = 0; k < s.fixed.size(); ++k) {
-    u[s.fixed[k]] = s.fixed_values[static_cast<Index>(k)];
-    free_index[s.fixed[k]] = -1;
-  }
-  Index nf = 0;
-  for (Index& i : free_index)
-    if (i == 0) i = nf++;
-  const SparseMatrix K = SparseMatrix(s.K_lower.selfadjointView<Eigen::Lower>());
-  const VectorXd rhs_all = s.f - K * u;
-  std::vector<Triplet> t;
-  for (int j = 0; j < K.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
-      if (free_index[it.row()] >= 0 && free_index[j] >= 0) t.emplace_back(free_index[it.row()], free_index[j], it.value());
-  SparseMatrix Kff(nf, nf);
-  Kff.setFromTriplets(t.begin(), t.end());
-  VectorXd rhs(nf);
-  for (Index i = 0; i < n; ++i)
-    if (free_index[i] >= 0) rhs[free_index[i]] = rhs_all[i];
-  const VectorXd uf = Eigen::SimplicialLLT<SparseMatrix>(Kff).solve(rhs);
-  for (Index i = 0; i < n; ++i)
-    if (free_index[i] >= 0) u[i] = uf[free_index[i]];
-  return u;
 }
 
 }  // namespace symcontact

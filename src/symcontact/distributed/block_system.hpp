@@ -22,8 +22,4 @@ struct BlockSystem {
 
 BlockSystem clamped_block_system(int dim, int divisions);
 
-/// The same system solved by a sparse Cholesky factorisation of K_ff (Eigen's simplicial LLᵀ): a reference
-/// for small sizes.
-VectorXd cholesky_solution(const BlockSystem& s);
-
 }  // namespace symcontact

@@ -18,16 +18,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// The full symmetric matrix, row-major, from its lower triangle (or as given).
-Eigen::SparseMatrix<double, Eigen::RowMajor, Index> full_rows(const SparseMatrix& K, bool lower) {
-  Eigen::SparseMatrix<double, Eigen::RowMajor, Index> R;
-  if (!lower) {
-    R = K;
-  } else {
-    SparseMatrix strict = K.triangularView<Eigen::StrictlyLower>();
-    SparseMatrix full = SparseMatrix(K.transpose()) + strict;  // lower + its strictly-lower transpose
-    R = full;
-  }
+/// The full symmetric matrix, row-major, from its lower triangle.
+Eigen::SparseMatrix<double, Eigen::RowMajor, Index> full_rows(const SparseMatrix& K_lower) {
+  const SparseMatrix strict = K_lower.triangularView<Eigen::StrictlyLower>();
+  Eigen::SparseMatrix<double, Eigen::RowMajor, Index> R = SparseMatrix(K_lower) + SparseMatrix(strict.transpose());
   R.makeCompressed();
   return R;
 }
@@ -81,12 +75,12 @@ RowRange my_rows(int dim, Index num_nodes) {
 }
 
 /// The distributed matrix of block size dim, each rank inserting its rows of K (preallocated exactly).
-void assemble_matrix(const SparseMatrix& K, bool lower, const RowRange& mine, Mat A) {
-  const auto R = full_rows(K, lower);
+void assemble_matrix(const SparseMatrix& K_lower, const RowRange& mine, Mat A) {
+  const auto R = full_rows(K_lower);
   std::vector<PetscInt> d_nnz(mine.local(), 0), o_nnz(mine.local(), 0);
   for (Index i = mine.row0(); i < mine.row1(); ++i)
     for (auto it = decltype(R)::InnerIterator(R, i); it; ++it) ++(mine.owns(it.col()) ? d_nnz : o_nnz)[i - mine.row0()];
-  const PetscInt n = static_cast<PetscInt>(K.rows());
+  const PetscInt n = static_cast<PetscInt>(K_lower.rows());
   check(MatSetSizes(A, mine.local(), mine.local(), n, n), "MatSetSizes");
   check(MatSetType(A, MATAIJ), "MatSetType");
   check(MatSetBlockSize(A, mine.dim), "MatSetBlockSize");
@@ -183,17 +177,18 @@ VectorXd gather_to_all(Vec u) {
 
 }  // namespace
 
-GamgResult solve_elasticity_gamg(const SparseMatrix& K, bool lower, const VectorXd& f, const std::vector<Index>& fixed,
+GamgResult solve_elasticity_gamg(const SparseMatrix& K_lower, const VectorXd& f, const std::vector<Index>& fixed,
                                  const VectorXd& fixed_values, const Eigen::MatrixXd& x, const GamgOptions& options) {
   const int dim = static_cast<int>(x.rows());
   const Index n = dim * x.cols();
-  if (K.rows() != n || K.cols() != n || f.size() != n || fixed_values.size() != static_cast<Index>(fixed.size()))
+  if (K_lower.rows() != n || K_lower.cols() != n || f.size() != n ||
+      fixed_values.size() != static_cast<Index>(fixed.size()))
     throw std::invalid_argument("solve_elasticity_gamg: K, f, the fixed values and the coordinates do not match");
   const RowRange mine = my_rows(dim, x.cols());
   const auto t_setup = std::chrono::steady_clock::now();
   Owned<Mat, MatDestroy> A;
   check(MatCreate(PETSC_COMM_WORLD, &A.object), "MatCreate");
-  assemble_matrix(K, lower, mine, A.object);
+  assemble_matrix(K_lower, mine, A.object);
   Owned<Vec, VecDestroy> b, u;
   check(MatCreateVecs(A.object, &u.object, &b.object), "MatCreateVecs");
   impose_fixed(f, fixed, fixed_values, mine, A.object, u.object, b.object);

@@ -54,10 +54,10 @@ struct GamgResult {
   int levels = 0;                 ///< multigrid levels GAMG built
 };
 
-/// K: the full stiffness (both triangles or the lower one: `lower` true), n × n with n = dim · num_nodes;
+/// K_lower: the lower triangle of the stiffness, n × n with n = dim · num_nodes;
 /// f: the load on every DOF; fixed / fixed_values: the Dirichlet DOFs and their values; x: dim × num_nodes
 /// node coordinates. Collective over PETSC_COMM_WORLD; every rank passes the same data.
-GamgResult solve_elasticity_gamg(const SparseMatrix& K, bool lower, const VectorXd& f,
+GamgResult solve_elasticity_gamg(const SparseMatrix& K_lower, const VectorXd& f,
                                  const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                  const Eigen::MatrixXd& x, const GamgOptions& options = {});
 

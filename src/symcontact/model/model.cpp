@@ -100,6 +100,9 @@ std::unique_ptr<EnergyTerm> elastic_energy(const Body& body, const DofMap& dofs,
                                               body.materials.front().model);
 }
 
+/// The extent of a mesh along x (the radius of an axisymmetric section): the scale of "on the axis".
+double section_width(const Mesh& mesh) { return mesh.x.row(0).maxCoeff() - mesh.x.row(0).minCoeff(); }
+
 /// An axisymmetric section lies in r = x ≥ 0: throws InputError(problem file, the body's mesh key) naming
 /// the node farthest on the other side. A node at −1e-12 × the section's width counts as on the axis.
 void check_axisymmetric_section(const ProblemSpec& spec, const BodySpec& bs, const Mesh& mesh) {
@@ -107,8 +110,7 @@ void check_axisymmetric_section(const ProblemSpec& spec, const BodySpec& bs, con
   Index worst = 0;
   for (Index v = 1; v < mesh.num_nodes(); ++v)
     if (mesh.x(0, v) < mesh.x(0, worst)) worst = v;
-  const double width = mesh.x.row(0).maxCoeff() - mesh.x.row(0).minCoeff();
-  if (mesh.x(0, worst) >= -1e-12 * width) return;
+  if (mesh.x(0, worst) >= -1e-12 * section_width(mesh)) return;
   std::ostringstream s;
   s << "body '" << bs.name << "' (mesh " << bs.mesh_file << ") has a node at x = r = " << mesh.x(0, worst)
     << " (y = " << mesh.x(1, worst) << "); an axisymmetric section (problem.model = \"axisymmetric\") lies in "
@@ -320,10 +322,10 @@ void Model::warn_free_axis_nodes(const Logger& log) {
     for (const DirichletBoundary& d : boundaries_)
       if (d.body == b && d.values[0])
         for (Index v : d.nodes) held[v] = 1;
-    const double width = mesh.x.row(0).maxCoeff() - mesh.x.row(0).minCoeff();
+    const double on_axis = 1e-10 * section_width(mesh);
     Index first = -1, count = 0;
     for (Index v = 0; v < mesh.num_nodes(); ++v)
-      if (std::abs(mesh.x(0, v)) <= 1e-10 * width && !held[v]) {
+      if (std::abs(mesh.x(0, v)) <= on_axis && !held[v]) {
         if (first < 0) first = v;
         ++count;
       }
