@@ -133,7 +133,7 @@ void solve_hertz_model(HertzRun& run, bool condense, const BeforeSolve& before_s
   if (before_solve) before_solve(run);
 
   // The solver settings exactly as `symcontact run` derives them from the problem file.
-  ContactSolveOptions opt = contact_options(run.spec, log).contact;
+  ContactSolveOptions opt = contact_options(run.spec, log).friction.contact;
   opt.lazy_interior = false;  // one solve, outside a Coulomb loop: u whole on return
   opt.static_condensation = opt.static_condensation && condense;
   // The cheaper of the file's choice and `dual` (the enum runs from the primal to the dense interior point).

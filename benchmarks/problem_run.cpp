@@ -40,7 +40,7 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
   run->model = Model::build(run->spec, log, run->build_times);
   Model& model = *run->model;
   const DofMap& dofs = model.dofs();
-  const FrictionalOptions opt = contact_options(run->spec, log);
+  const FrictionalOptions opt = contact_options(run->spec, log).friction;
   const bool contact = !model.contacts().empty();
   run->u = VectorXd::Zero(dofs.num_dofs());
   run->steps = model.num_steps();

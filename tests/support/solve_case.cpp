@@ -25,7 +25,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
   check_setup(*c->model);  // as `symcontact run` does
   const DofMap& dofs = c->model->dofs();
   c->u = VectorXd::Zero(dofs.num_dofs());
-  const FrictionalOptions opt = contact_options(c->spec, log);
+  const LoadStepOptions opt = contact_options(c->spec, log);
   for (int step = 0; step < c->model->num_steps(); ++step) {
     c->model->set_step(step);
     const FixedDofs fixed = c->model->fixed_dofs(step);
@@ -34,7 +34,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
       c->checks.push_back(check_step(*c->model, c->u, fixed, nullptr));
     } else {
       FrictionState friction = step > 0 ? c->report.friction_state : FrictionState();
-      c->report = solve_load_step(*c->model, step, c->u, friction, opt, c->spec.contact_solver.max_step_cuts, log);
+      c->report = solve_load_step(*c->model, step, c->u, friction, opt, log);
       c->step_cuts.push_back(c->report.cuts);
       c->checks.push_back(check_step(*c->model, c->u, fixed, &c->report));
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);

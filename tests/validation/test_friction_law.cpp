@@ -378,7 +378,7 @@ TEST(V4FrictionLaw, TrescaWithTheCoulombThresholdReproducesCoulomb) {
   PhaseTimes times;
   auto model = Model::build(spec, log, times);
   const DofMap& dofs = model->dofs();
-  const FrictionalOptions opt = contact_options(spec, log);
+  const FrictionalOptions opt = contact_options(spec, log).friction;
   VectorXd u = VectorXd::Zero(dofs.num_dofs()), u_prev = u;
   SolveReport rep;
   for (int step = 0; step < model->num_steps(); ++step) {

@@ -85,7 +85,7 @@ std::vector<StepResult> solve_inclined(const std::string& file, double h, const 
   const DofMap& dofs = model->dofs();
   const int upper = model->body_index("upper");
   EXPECT_GE(upper, 0);
-  FrictionalOptions opt = contact_options(spec, log);
+  FrictionalOptions opt = contact_options(spec, log).friction;
   if (configure) configure(opt);
   VectorXd u = VectorXd::Zero(dofs.num_dofs());
   std::vector<StepResult> steps;

@@ -99,24 +99,15 @@ bool finite_strain_coulomb(const ProblemSpec& spec) {
 
 }  // namespace
 
-FrictionalOptions contact_options(const ProblemSpec& spec, const Logger& log) {
-  FrictionalOptions f;
-  ContactSolveOptions& o = f.contact;
-  o.geometry_tolerance = spec.contact_solver.geometry_tolerance;
-  o.max_geometry_iterations = spec.contact_solver.max_geometry_iterations;
-  o.static_condensation = spec.contact_solver.static_condensation;
-  o.subproblem_solver = spec.contact_solver.subproblem_solver;
+LoadStepOptions contact_options(const ProblemSpec& spec, const Logger& log) {
+  LoadStepOptions options = spec.contact_solver;
+  ContactSolveOptions& o = options.friction.contact;
   o.workspace = std::make_shared<ContactWorkspace>();  // one factorisation for the whole run
   if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
-  o.ipopt.string_options = spec.contact_solver.ipopt_string;
-  o.ipopt.numeric_options = spec.contact_solver.ipopt_numeric;
-  o.ipopt.integer_options = spec.contact_solver.ipopt_integer;
   // As an [ipopt] tol of the problem file (which it does not override): IPOPT's acceptable_tol keeps
   // following IpoptOptions::tolerance.
   if (finite_strain_coulomb(spec)) o.ipopt.numeric_options.emplace("tol", kFiniteStrainCoulombIpoptTolerance);
-  f.coulomb_tolerance = spec.contact_solver.coulomb_tolerance;
-  f.max_coulomb_iterations = spec.contact_solver.max_coulomb_iterations;
-  return f;
+  return options;
 }
 
 namespace {
@@ -411,7 +402,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
   const int nsteps = model->num_steps();
   FrictionState previous_friction;  ///< the thresholds the last step converged to (Coulomb warm start)
-  const FrictionalOptions solver_options = contact_options(spec, log);  // its workspace serves every step
+  const LoadStepOptions solver_options = contact_options(spec, log);  // its workspace serves every step
   // Ends the run at `step` (0-based) without its results: summary.json gets `status` and `message`; the
   // last iterate is written for inspection (not part of the collection) when it is finite.
   auto stop_run = [&](int step, RunStatus status, const std::string& message) {
@@ -441,8 +432,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     StepCheckFigures checks;
     try {
       if (has_contact)
-        lrep = solve_load_step(*model, step, u, previous_friction, solver_options,
-                               spec.contact_solver.max_step_cuts, log);
+        lrep = solve_load_step(*model, step, u, previous_friction, solver_options, log);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
       checks = check_step(*model, u, fixed, has_contact ? &lrep : nullptr);

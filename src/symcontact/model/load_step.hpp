@@ -13,8 +13,8 @@ namespace symcontact {
 /// Solves load step `step` (0-based) of `model` from u (on exit the solution; on a SolveError, the last
 /// iterate of the final failed attempt). `friction` holds the friction state the previous step ended with
 /// (empty nodal_tau for the first step) and is updated. Leaves the model's loads at the step. Contact
-/// models only. Throws SolveError when the step fails after max_cuts halvings.
+/// models only. Throws SolveError when the step fails after options.max_step_cuts halvings.
 SolveReport solve_load_step(Model& model, int step, VectorXd& u, FrictionState& friction,
-                            const FrictionalOptions& options, int max_cuts, const Logger& log);
+                            const LoadStepOptions& options, const Logger& log);
 
 }  // namespace symcontact

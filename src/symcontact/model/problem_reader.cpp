@@ -1051,7 +1051,8 @@ class Reader {
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations",
                 "static_condensation", "subproblem_solver", "max_step_cuts"});
-    ContactSolverSpec& s = spec.contact_solver;
+    FrictionalOptions& f = spec.contact_solver.friction;
+    ContactSolveOptions& s = f.contact;
     if (const toml::node* n = t.get("geometry_tolerance")) {
       const std::string key = "contact_solver.geometry_tolerance";
       s.geometry_tolerance = as_number(*n, key);
@@ -1062,11 +1063,11 @@ class Reader {
     }
     if (const toml::node* n = t.get("coulomb_tolerance")) {
       const std::string key = "contact_solver.coulomb_tolerance";
-      s.coulomb_tolerance = as_number(*n, key);
-      if (!(s.coulomb_tolerance > 0.0)) fail(key, "expected a number > 0, got " + format_number(s.coulomb_tolerance));
+      f.coulomb_tolerance = as_number(*n, key);
+      if (!(f.coulomb_tolerance > 0.0)) fail(key, "expected a number > 0, got " + format_number(f.coulomb_tolerance));
     }
     if (const toml::node* n = t.get("max_coulomb_iterations")) {
-      s.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
+      f.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
     }
     if (const toml::node* n = t.get("static_condensation"))
       s.static_condensation = as_bool(*n, "contact_solver.static_condensation");
@@ -1083,7 +1084,7 @@ class Reader {
       const std::int64_t c = as_integer(*n, key);
       // 2^-20 of a step is already far below any useful increment.
       if (c < 0 || c > 20) fail(key, "expected an integer in [0, 20], got " + std::to_string(c));
-      s.max_step_cuts = static_cast<int>(c);
+      spec.contact_solver.max_step_cuts = static_cast<int>(c);
     }
   }
 
@@ -1093,20 +1094,20 @@ class Reader {
     const toml::node* node = root.get("ipopt");
     if (!node) return;
     const toml::table& t = as_table(*node, "ipopt");
-    ContactSolverSpec& s = spec.contact_solver;
+    IpoptOptions& s = spec.contact_solver.friction.contact.ipopt;
     for (auto&& [k, value] : t) {
       const std::string name(k.str());
       const std::string key = child("ipopt", name);
       if (value.is_string()) {
-        s.ipopt_string[name] = *value.value<std::string>();
+        s.string_options[name] = *value.value<std::string>();
       } else if (value.is_integer()) {
         const std::int64_t i = *value.value<std::int64_t>();
         if (i < std::numeric_limits<int>::min() || i > std::numeric_limits<int>::max()) {
           fail(key, "expected an integer that fits in an int (IPOPT integer option), got " + std::to_string(i));
         }
-        s.ipopt_integer[name] = static_cast<int>(i);
+        s.integer_options[name] = static_cast<int>(i);
       } else if (value.is_floating_point()) {
-        s.ipopt_numeric[name] = as_number(value, key);
+        s.numeric_options[name] = as_number(value, key);
       } else {
         fail(key, "expected a string, an integer or a floating-point number (an IPOPT option value), got " +
                       describe(value));
@@ -1122,12 +1123,8 @@ class Reader {
 }  // namespace
 
 void check_ipopt_section(const ProblemSpec& spec) {
-  IpoptOptions options;
-  options.string_options = spec.contact_solver.ipopt_string;
-  options.numeric_options = spec.contact_solver.ipopt_numeric;
-  options.integer_options = spec.contact_solver.ipopt_integer;
   try {
-    check_ipopt_options(options);
+    check_ipopt_options(spec.contact_solver.friction.contact.ipopt);
   } catch (const IpoptOptionError& e) {
     throw InputError(spec.file, child("ipopt", e.name()), e.what());
   }

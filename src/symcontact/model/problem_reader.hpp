@@ -44,7 +44,7 @@ namespace symcontact {
 /// `path` (made absolute). Throws InputError (file = `path`) if the file cannot be read or is invalid.
 ProblemSpec read_problem_file(const std::string& path);
 
-/// Sets the options of [ipopt] (spec.contact_solver.ipopt_*) on an IPOPT application, as the contact
+/// Sets the options of [ipopt] (spec.contact_solver.friction.contact.ipopt) on an IPOPT application, as the contact
 /// solve will: throws InputError(spec.file, "ipopt.<name>", IPOPT's objection) for the first option IPOPT
 /// does not know or whose value it rejects. read_problem_file() calls it; parse_problem() does not.
 void check_ipopt_section(const ProblemSpec& spec);

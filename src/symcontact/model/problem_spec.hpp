@@ -16,7 +16,7 @@
 
 #include "symcontact/contact/contact_geometry.hpp"
 #include "symcontact/fem/analysis_model.hpp"
-#include "symcontact/solvers/subproblem_solver.hpp"
+#include "symcontact/solvers/load_step.hpp"
 
 namespace symcontact {
 
@@ -145,30 +145,6 @@ struct ContactSpec {
   ContactGeometry geometry = ContactGeometry::kCurrent;
 };
 
-/// Settings of the contact solve (Algorithm 2) and of IPOPT: the [contact_solver] and [ipopt] tables, under the
-/// names of the file (docs/input.md) and of the solver's options (solvers/contact_solver.hpp,
-/// solvers/frictional_contact.hpp).
-struct ContactSolverSpec {
-  double geometry_tolerance = 1e-6;   ///< ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ below which the fixed point stops
-  int max_geometry_iterations = 50;
-  double coulomb_tolerance = 1e-6;    ///< ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ below which the Coulomb fixed point stops
-  int max_coulomb_iterations = 50;
-  /// Condense linear-elastic bodies onto their contact DOFs (one Cholesky factorisation per run); the
-  /// solution is the same, only the cost changes. Finite-strain bodies are never condensed.
-  bool static_condensation = true;
-  /// How each geometry iteration's subproblem is solved: "dual_interior_point", "dual_ipopt" or
-  /// "primal_ipopt" (solvers/subproblem_solver.hpp); the solution is the same to the optimiser's tolerance,
-  /// only the cost changes.
-  SubproblemSolver subproblem_solver = SubproblemSolver::kDualInteriorPoint;
-  /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many
-  /// halvings (solvers/load_step.hpp); 0: no cutting, a failed step ends the run.
-  int max_step_cuts = 0;
-  /// Options passed to IPOPT as they are (table [ipopt] of the problem file), by value type.
-  std::map<std::string, std::string> ipopt_string;
-  std::map<std::string, double> ipopt_numeric;
-  std::map<std::string, int> ipopt_integer;
-};
-
 struct OutputSpec {
   bool vtu = true;        ///< VTU per body per step + PVD collection
   bool summary = true;    ///< summary.json
@@ -184,7 +160,9 @@ struct ProblemSpec {
   std::vector<BodySpec> bodies;
   std::vector<double> load_factors{1.0};  ///< one entry per load step
   std::vector<ContactSpec> contacts;
-  ContactSolverSpec contact_solver;
+  /// The [contact_solver] and [ipopt] tables, read straight into the solver's settings under the file's names
+  /// (solvers/load_step.hpp LoadStepOptions; its `friction.contact.ipopt` holds [ipopt] by value type).
+  LoadStepOptions contact_solver;
   OutputSpec output;
 };
 

@@ -38,6 +38,7 @@
 namespace symcontact {
 
 struct ContactSolveOptions {
+  /// ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ below which the geometry fixed point stops.
   double geometry_tolerance = 1e-6;
   /// An inexact solve when above geometry_tolerance: the fixed point stops once the change is below this,
   /// and its answer is taken as an intermediate one: the force-balancing polish of a non-quadratic energy

@@ -42,6 +42,7 @@ struct FrictionalOptions {
     o.lazy_interior = true;
     return o;
   }();
+  /// ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ below which the Coulomb fixed point stops.
   double coulomb_tolerance = 1e-6;
   int max_coulomb_iterations = 50;
   /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is

@@ -38,8 +38,9 @@ std::vector<double> solve_in_substeps(
 }
 
 SolveReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, FrictionState& friction,
-                               const FrictionalOptions& options, int max_cuts, const Logger& log) {
+                            const LoadStepOptions& options, const Logger& log) {
   const int step = problem.step;
+  const int max_cuts = options.max_step_cuts;
   SolveReport rep;
   auto attempt = [&](double, double to) {
     const VectorXd u0 = u;
@@ -47,7 +48,7 @@ SolveReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, Frictio
     const FixedDofs fixed = problem.move_to(to);
     SolveReport fr;
     try {
-      fr = solve_frictional_contact(problem.energy, fixed, problem.contacts, problem.dofs, u, options, log,
+      fr = solve_frictional_contact(problem.energy, fixed, problem.contacts, problem.dofs, u, options.friction, log,
                                     friction.nodal_tau.empty() ? nullptr : &friction);
     } catch (const SolveError&) {
       if (rep.cuts < max_cuts) {  // to be retried: back to the start of the increment

@@ -5,14 +5,14 @@
 /// The step goes from the state u (the previous step's solution) to the loads and imposed displacements
 /// of the step. When its solve fails (SolveError: IPOPT failing, the geometry or the Coulomb fixed
 /// point not converging, an inverted element), u and the friction state are put back to the start of the
-/// failed increment and the increment is halved, up to `max_cuts` times: after c cuts the increment is
+/// failed increment and the increment is halved, up to `max_step_cuts` times: after c cuts the increment is
 /// 1/2^c of the step. The sub-steps then go on at that size to the end of the step (no growing back
 /// within a step; the next step starts whole again). Within a step every load and imposed displacement
 /// is interpolated linearly between its factors at step − 1 and step (LoadStepProblem::move_to; for a
 /// model, Model::set_step), which is the load curve itself between its whole-numbered points. Each
 /// sub-step is a load step of its own for friction: its slip increments are measured from its start, and
 /// its Coulomb iteration starts from the thresholds the previous sub-step converged to.
-/// With max_cuts = 0 (the default) this is one solve, as without cutting.
+/// With max_step_cuts = 0 (the default) this is one solve, as without cutting.
 
 #include <functional>
 #include <string>
@@ -49,12 +49,23 @@ struct LoadStepProblem {
   int step = 0;  ///< 0-based, for messages
 };
 
+/// The settings of a run's contact solve, as the problem file's [contact_solver] and [ipopt] tables give
+/// them (docs/input.md), under the same names: the problem reader fills this tree directly. The Coulomb and
+/// geometry fixed points and the subproblem solver are in `friction` (FrictionalOptions, its `contact`
+/// ContactSolveOptions, and their `ipopt`); the step cutting around them is here.
+struct LoadStepOptions {
+  FrictionalOptions friction;
+  /// Automatic step cutting: a load step whose solve fails is retried in halves, up to this many halvings
+  /// (solve_in_substeps); 0: no cutting, a failed step ends the run.
+  int max_step_cuts = 0;
+};
+
 /// Solves the load step from u (on exit the solution; on a SolveError, the last iterate of the final failed
 /// attempt). `friction` holds the friction state the previous step ended with (empty nodal_tau for the first
 /// step) and is updated. On success the loads are left at the step's end. The report's counters sum over the
 /// converged sub-steps; the rest is the last sub-step's (solve_report.hpp). Throws SolveError when the step
-/// fails after max_cuts halvings.
+/// fails after options.max_step_cuts halvings.
 SolveReport solve_load_step(const LoadStepProblem& problem, VectorXd& u, FrictionState& friction,
-                               const FrictionalOptions& options, int max_cuts, const Logger& log);
+                            const LoadStepOptions& options, const Logger& log);
 
 }  // namespace symcontact

@@ -25,7 +25,7 @@ ProblemSpec spec_of(const std::string& law, const std::string& friction, const s
 double start_tolerance(const ProblemSpec& spec) {
   std::ostringstream quiet;
   const Logger log(quiet, Verbosity::kQuiet);
-  const IpoptOptions& o = contact_options(spec, log).contact.ipopt;
+  const IpoptOptions& o = contact_options(spec, log).friction.contact.ipopt;
   const auto it = o.numeric_options.find("tol");
   return it != o.numeric_options.end() ? it->second : o.tolerance;
 }
@@ -40,7 +40,7 @@ TEST(ContactOptions, HyperelasticBodyInCoulombContactTakesTheTighterIpoptToleran
   EXPECT_EQ(start_tolerance(spec_of(neo, coulomb, "[ipopt]\ntol = 1e-9\n")), 1e-9);
   // acceptable_tol follows IpoptOptions::tolerance, which stays at its default.
   std::ostringstream quiet;
-  EXPECT_EQ(contact_options(spec_of(neo, coulomb), Logger(quiet, Verbosity::kQuiet)).contact.ipopt.tolerance,
+  EXPECT_EQ(contact_options(spec_of(neo, coulomb), Logger(quiet, Verbosity::kQuiet)).friction.contact.ipopt.tolerance,
             IpoptOptions{}.tolerance);
   EXPECT_LT(kFiniteStrainCoulombIpoptTolerance, IpoptOptions{}.tolerance);
 }

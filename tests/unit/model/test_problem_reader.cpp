@@ -85,10 +85,10 @@ TEST(ProblemReader, NonAsciiInStringsAndCommentsIsValid) {
   ProblemSpec spec;
   ASSERT_NO_THROW(spec = parse(text));
   EXPECT_EQ(spec.title, "Bloc d'\u00e9t\u00e9 \" \u03bd");
-  EXPECT_EQ(spec.contact_solver.ipopt_string.at("\u03bd"), "\u0436\n\u013e");
-  EXPECT_EQ(spec.contact_solver.ipopt_string.at("other"), "\u013e");
-  EXPECT_EQ(spec.contact_solver.ipopt_string.at("lit"), "\u00e9");
-  EXPECT_EQ(spec.contact_solver.ipopt_string.at("joined"), "a \u013e \U0001F600 \u00e9\u00e9");
+  EXPECT_EQ(spec.contact_solver.friction.contact.ipopt.string_options.at("\u03bd"), "\u0436\n\u013e");
+  EXPECT_EQ(spec.contact_solver.friction.contact.ipopt.string_options.at("other"), "\u013e");
+  EXPECT_EQ(spec.contact_solver.friction.contact.ipopt.string_options.at("lit"), "\u00e9");
+  EXPECT_EQ(spec.contact_solver.friction.contact.ipopt.string_options.at("joined"), "a \u013e \U0001F600 \u00e9\u00e9");
 }
 
 TEST(ProblemReader, CompleteFileRoundTrips) {
@@ -378,15 +378,15 @@ boundary = "surface"
 TEST(ProblemReader, NoContactIsPureElasticity) {
   const ProblemSpec spec = parse(kBase);
   EXPECT_TRUE(spec.contacts.empty());
-  EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);
-  EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
-  EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
-  EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.friction.contact.geometry_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.friction.contact.max_geometry_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.friction.coulomb_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.friction.max_coulomb_iterations, 50);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
-  EXPECT_EQ(spec.contact_solver.subproblem_solver, SubproblemSolver::kDualInteriorPoint);
-  EXPECT_TRUE(spec.contact_solver.ipopt_string.empty());
-  EXPECT_TRUE(spec.contact_solver.ipopt_numeric.empty());
-  EXPECT_TRUE(spec.contact_solver.ipopt_integer.empty());
+  EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualInteriorPoint);
+  EXPECT_TRUE(spec.contact_solver.friction.contact.ipopt.string_options.empty());
+  EXPECT_TRUE(spec.contact_solver.friction.contact.ipopt.numeric_options.empty());
+  EXPECT_TRUE(spec.contact_solver.friction.contact.ipopt.integer_options.empty());
 }
 
 TEST(ProblemReader, TwoBodyContactRoundTrips) {
@@ -429,13 +429,13 @@ acceptable_tol = 1
   EXPECT_EQ(c.search_distance, 0.05);
   EXPECT_EQ(c.geometry, ContactGeometry::kReference);
 
-  const ContactSolverSpec& s = spec.contact_solver;
+  const ContactSolveOptions& s = spec.contact_solver.friction.contact;
   EXPECT_EQ(s.geometry_tolerance, 1e-8);
   EXPECT_EQ(s.max_geometry_iterations, 7);
   // Sorted by the TOML type of the value: an integer stays an integer option even for a numeric one.
-  EXPECT_EQ(s.ipopt_numeric, (std::map<std::string, double>{{"tol", 1e-10}}));
-  EXPECT_EQ(s.ipopt_integer, (std::map<std::string, int>{{"print_level", 5}, {"acceptable_tol", 1}}));
-  EXPECT_EQ(s.ipopt_string, (std::map<std::string, std::string>{{"mu_strategy", "adaptive"}}));
+  EXPECT_EQ(s.ipopt.numeric_options, (std::map<std::string, double>{{"tol", 1e-10}}));
+  EXPECT_EQ(s.ipopt.integer_options, (std::map<std::string, int>{{"print_level", 5}, {"acceptable_tol", 1}}));
+  EXPECT_EQ(s.ipopt.string_options, (std::map<std::string, std::string>{{"mu_strategy", "adaptive"}}));
 }
 
 TEST(ProblemReader, ContactDefaults) {
@@ -457,10 +457,10 @@ TEST(ProblemReader, ContactDefaults) {
   }
   EXPECT_EQ(spec.contacts[1].body_a, "lower");
   EXPECT_EQ(spec.contacts[1].boundary_b, "bottom");
-  EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);
-  EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
-  EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-6);
-  EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.friction.contact.geometry_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.friction.contact.max_geometry_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.friction.coulomb_tolerance, 1e-6);
+  EXPECT_EQ(spec.contact_solver.friction.max_coulomb_iterations, 50);
 }
 
 /// `base` with `keys` (lines "key = value\n") added to its first [[contact]] table, after `b` or `a`.
@@ -493,12 +493,12 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(c.mu, 0.3);
   EXPECT_EQ(c.alpha, 2e-6);
   EXPECT_EQ(c.tau, 0.0);
-  EXPECT_EQ(spec.contact_solver.coulomb_tolerance, 1e-8);
-  EXPECT_EQ(spec.contact_solver.max_coulomb_iterations, 12);
+  EXPECT_EQ(spec.contact_solver.friction.coulomb_tolerance, 1e-8);
+  EXPECT_EQ(spec.contact_solver.friction.max_coulomb_iterations, 12);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
-  EXPECT_EQ(spec.contact_solver.subproblem_solver, SubproblemSolver::kDualIpopt);
-  EXPECT_EQ(spec.contact_solver.geometry_tolerance, 1e-6);  // the others keep their defaults
-  EXPECT_EQ(spec.contact_solver.max_geometry_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualIpopt);
+  EXPECT_EQ(spec.contact_solver.friction.contact.geometry_tolerance, 1e-6);  // the others keep their defaults
+  EXPECT_EQ(spec.contact_solver.friction.contact.max_geometry_iterations, 50);
 }
 
 TEST(ProblemReader, FrictionAgainstAnObstacle) {
@@ -627,7 +627,7 @@ TEST(ProblemReader, DocumentationContactExamplesAreValid) {
   ASSERT_EQ(two_bodies.contacts.size(), 1u);
   EXPECT_EQ(two_bodies.contacts[0].name, "interface");
   EXPECT_EQ(two_bodies.contacts[0].body_b, "lower");
-  EXPECT_EQ(two_bodies.contact_solver.ipopt_string.at("mu_strategy"), "adaptive");
+  EXPECT_EQ(two_bodies.contact_solver.friction.contact.ipopt.string_options.at("mu_strategy"), "adaptive");
 
   const ProblemSpec obstacles = parse(blocks[2]);
   ASSERT_EQ(obstacles.contacts.size(), 2u);
@@ -640,7 +640,7 @@ TEST(ProblemReader, DocumentationContactExamplesAreValid) {
   EXPECT_EQ(friction.contacts[0].mu, 0.3);
   EXPECT_GT(friction.contacts[0].alpha, 0.0);
   EXPECT_EQ(friction.contacts[0].obstacle.value().type, "plane");
-  EXPECT_EQ(friction.contact_solver.max_coulomb_iterations, 50);
+  EXPECT_EQ(friction.contact_solver.friction.max_coulomb_iterations, 50);
 }
 #endif
 
