@@ -109,9 +109,10 @@ class SummaryOnError {
 /// the ironing in m and in mm parted again, by 2e-4 from step 25 on.
 constexpr double kFiniteStrainCoulombIpoptTolerance = 1e-12;
 
-/// The contact-solver settings of a run: the problem's [contact_solver] and [ipopt] tables (ProblemSpec::
-/// contact_solver) with a workspace for the run, IPOPT's console log at the debug verbosity, and the problem-dependent default
-/// kFiniteStrainCoulombIpoptTolerance (an `[ipopt] tol` of the file is kept over it).
+/// The contact-solver settings of a run: the problem's [contact_solver] and [ipopt] tables
+/// (ProblemSpec::contact_solver) with a workspace for the run, IPOPT's console log at the debug verbosity,
+/// and the problem-dependent default kFiniteStrainCoulombIpoptTolerance (an `[ipopt] tol` of the file is
+/// kept over it).
 LoadStepOptions contact_options(const ProblemSpec& spec, const Logger& log);
 
 /// Runs the problem. Input errors propagate as InputError before any file is written; a failed solve

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <map>
@@ -369,37 +370,53 @@ class MshValidator {
     return {dim, in_.integer(1, "the entity tag", 1, kMaxTag)};
   }
 
-  void nodes4() {
-    const SectionCounts c = section_counts("Nodes", "node");
-    const std::int64_t n = c.n, lo = c.lo, hi = c.hi;
+  /// The entity blocks of a MSH 4 section after its header (section_counts()): for each, its header line
+  /// (`block_names`: entityDim entityTag, a third field, the number of items), `third(dim)` reading and
+  /// checking the third field, then `items(c, dim, third, m)` reading the block's m items. The blocks' item
+  /// counts must add up to the header's.
+  void entity_blocks(const std::string& section, const std::string& item, const std::string& block_names,
+                     const std::function<std::int64_t(int dim)>& third,
+                     const std::function<void(const SectionCounts& c, int dim, std::int64_t third, std::int64_t m)>&
+                         items) {
+    const SectionCounts c = section_counts(section, item);
     std::int64_t total = 0;
     for (std::int64_t b = 0; b < c.blocks; ++b) {
-      const auto [dim, entity] = block_entity("$Nodes", "entityDim entityTag parametric numNodesInBlock");
-      const std::int64_t parametric = in_.integer(2, "the parametric flag", 0, dim == 3 ? 0 : 1);
-      const std::int64_t m = in_.integer(3, "the number of nodes in the block", 0, n - total);
+      const auto [dim, entity] = block_entity("$" + section, block_names);
+      const std::int64_t t = third(dim);
+      const std::int64_t m = in_.integer(3, "the number of " + item + "s in the block", 0, c.n - total);
       known_entity(dim, entity);
       total += m;
-      std::vector<std::int64_t> tags;
-      tags.reserve(static_cast<std::size_t>(std::min<std::int64_t>(m, 1 << 20)));
-      for (std::int64_t k = 0; k < m; ++k) {
-        in_.expect_line("$Nodes", "a node tag (" + std::to_string(m) + " in this block)");
-        in_.expect_tokens(1, "a node tag");
-        tags.push_back(in_.integer(0, "a node tag", lo, hi));
-        add_node(tags.back());
-      }
-      const std::size_t nc = 3 + (parametric ? static_cast<std::size_t>(dim) : 0);
-      for (std::int64_t k = 0; k < m; ++k) {
-        in_.expect_line("$Nodes", "the coordinates of node " + std::to_string(tags[k]));
-        in_.expect_tokens(nc, "the coordinates of node " + std::to_string(tags[k]) +
-                                  (parametric ? " and its parametric coordinates" : ""));
-        coordinates(0, tags[k]);
-        for (std::size_t i = 3; i < nc; ++i) in_.real(i, "a parametric coordinate");
-      }
+      items(c, dim, t, m);
     }
-    if (total != n) {
-      in_.fail(c.line, "the node blocks hold " + std::to_string(total) + " nodes, the $Nodes header announced " +
-               std::to_string(n));
+    if (total != c.n) {
+      in_.fail(c.line, "the " + item + " blocks hold " + std::to_string(total) + " " + item + "s, the $" + section +
+                           " header announced " + std::to_string(c.n));
     }
+  }
+
+  void nodes4() {
+    const auto parametric_flag = [this](int dim) {
+      return in_.integer(2, "the parametric flag", 0, dim == 3 ? 0 : 1);
+    };
+    entity_blocks("Nodes", "node", "entityDim entityTag parametric numNodesInBlock", parametric_flag,
+                  [this](const SectionCounts& c, int dim, std::int64_t parametric, std::int64_t m) {
+                    std::vector<std::int64_t> tags;
+                    tags.reserve(static_cast<std::size_t>(std::min<std::int64_t>(m, 1 << 20)));
+                    for (std::int64_t k = 0; k < m; ++k) {
+                      in_.expect_line("$Nodes", "a node tag (" + std::to_string(m) + " in this block)");
+                      in_.expect_tokens(1, "a node tag");
+                      tags.push_back(in_.integer(0, "a node tag", c.lo, c.hi));
+                      add_node(tags.back());
+                    }
+                    const std::size_t nc = 3 + (parametric ? static_cast<std::size_t>(dim) : 0);
+                    for (std::int64_t k = 0; k < m; ++k) {
+                      in_.expect_line("$Nodes", "the coordinates of node " + std::to_string(tags[k]));
+                      in_.expect_tokens(nc, "the coordinates of node " + std::to_string(tags[k]) +
+                                                (parametric ? " and its parametric coordinates" : ""));
+                      coordinates(0, tags[k]);
+                      for (std::size_t i = 3; i < nc; ++i) in_.real(i, "a parametric coordinate");
+                    }
+                  });
   }
 
   /// An entity named by a node or element block must be declared when the file has $Entities.
@@ -443,32 +460,30 @@ class MshValidator {
   }
 
   void elements4() {
-    const SectionCounts c = section_counts("Elements", "element");
-    const std::int64_t n = c.n, lo = c.lo, hi = c.hi;
-    std::int64_t total = 0;
-    for (std::int64_t b = 0; b < c.blocks; ++b) {
-      const auto [dim, entity] = block_entity("$Elements", "entityDim entityTag elementType numElementsInBlock");
+    // The element type, of the block's dimension.
+    const auto element_type = [this](int dim) {
       const std::int64_t type = in_.integer(2, "the element type", 1, kMaxTag);
-      const std::int64_t m = in_.integer(3, "the number of elements in the block", 0, n - total);
       int nn = 0, type_dim = 0;
       if (!element_type_info(type, nn, type_dim)) in_.fail("unknown element type " + std::to_string(type));
       if (type_dim != dim) {
         in_.fail("element type " + std::to_string(type) + " has dimension " + std::to_string(type_dim) +
                  ", but the block's entity has dimension " + std::to_string(dim));
       }
-      known_entity(dim, entity);
-      total += m;
-      for (std::int64_t k = 0; k < m; ++k) {
-        in_.expect_line("$Elements", "elementTag nodeTags... (" + std::to_string(m) + " in this block)");
-        in_.expect_tokens(1 + static_cast<std::size_t>(nn), "an element tag and " + std::to_string(nn) + " node tags");
-        const std::int64_t tag = in_.integer(0, "an element tag", lo, hi);
-        element_nodes(1, static_cast<std::size_t>(nn), tag);
-      }
-    }
-    if (total != n) {
-      in_.fail(c.line, "the element blocks hold " + std::to_string(total) + " elements, the $Elements header announced " +
-               std::to_string(n));
-    }
+      return type;
+    };
+    entity_blocks("Elements", "element", "entityDim entityTag elementType numElementsInBlock", element_type,
+                  [this](const SectionCounts& c, int, std::int64_t type, std::int64_t m) {
+                    int nn = 0, type_dim = 0;
+                    element_type_info(type, nn, type_dim);
+                    for (std::int64_t k = 0; k < m; ++k) {
+                      in_.expect_line("$Elements",
+                                      "elementTag nodeTags... (" + std::to_string(m) + " in this block)");
+                      in_.expect_tokens(1 + static_cast<std::size_t>(nn),
+                                        "an element tag and " + std::to_string(nn) + " node tags");
+                      const std::int64_t tag = in_.integer(0, "an element tag", c.lo, c.hi);
+                      element_nodes(1, static_cast<std::size_t>(nn), tag);
+                    }
+                  });
   }
 
   LineReader in_;
