@@ -157,6 +157,7 @@ struct Options {
   bool large = false;            ///< hertz3d and the large-contact cases: the large sweep
   bool check_only = false;       ///< Hertz cases: mesh and check the memory of each size, solve none
   bool frictionless = false;     ///< large-contact cases: no friction, to compare
+  std::string subproblem_solver; ///< large-contact cases: [contact_solver] subproblem_solver; empty: the default
   double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
@@ -254,6 +255,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     common(c, default_large_contact_sizes(*which, opt.large));
     c.which = *which;
     c.friction = opt.frictionless ? LargeContactFriction::kNone : LargeContactFriction::kCoulomb;
+    c.subproblem_solver = opt.subproblem_solver;
     run_large_contact_sweep(c, machine);
     return;
   }
@@ -356,6 +358,10 @@ int main(int argc, char** argv) {
                "the default ladder: hours; a size that does not fit in memory stops the sweep (on 24 GiB, 1.1e6 "
                "does not: the floor's own factor is 22 GiB); pad-flat, pad-ball, clamped-plates and their -2d "
                "analogues: the sizes beyond the default ladder (docs/performance.md)");
+  app.add_option("--subproblem-solver", opt.subproblem_solver,
+                 "pad-flat, pad-ball, clamped-plates and their -2d analogues: [contact_solver] subproblem_solver of "
+                 "the problems, to compare (default: the problem file's default)")
+      ->check(CLI::IsMember({"dual_interior_point", "dual_ipopt", "primal_ipopt", "primal_interior_point"}));
   app.add_flag("--frictionless", opt.frictionless,
                "pad-flat, pad-ball, clamped-plates and their -2d analogues: the same problems without friction");
   app.add_flag("--check-only", opt.check_only,

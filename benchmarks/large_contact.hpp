@@ -55,6 +55,8 @@ struct LargeContactBenchOptions {
   std::string csv;
   bool markdown = false;
   bool keep_work = false; ///< keep the temporary directory with the .geo and .toml files
+  /// [contact_solver] subproblem_solver of the problems (subproblem_solver.hpp names); empty: the default.
+  std::string subproblem_solver;
 };
 
 /// The ladder of h of each case: by default sizes that each take at most a couple of minutes on two cores

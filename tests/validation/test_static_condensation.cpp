@@ -5,7 +5,8 @@
 // two Hertz 2D cases (one and two bodies, rigid obstacle and symmetric pair), Coulomb friction on the
 // inclined interface (friction terms condensed with the bulk) and the 3D sphere on a plane. The same cases
 // solved through the dual of the condensed problem (contact_solver.subproblem_solver = "dual_interior_point",
-// the default) and through IPOPT on the condensed displacements ("primal_ipopt") agree as well.
+// the default) and through IPOPT on the condensed displacements ("primal_ipopt") agree as well, and so do
+// the dense primal interior point ("primal_interior_point") and IPOPT on the condensed displacements.
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -76,6 +77,15 @@ std::pair<double, double> differences(const SolvedCase& a, const SolvedCase& b) 
   return {du, df / f_scale};
 }
 
+/// The two paths' displacements and contact forces agree to the case's bound (printed).
+void expect_agreement(const Case& p, const SolvedCase& a, const SolvedCase& b) {
+  const auto [du, df] = differences(a, b);
+  std::printf("  %s: %ld condensed, %ld constraints; |du|/|u| = %.2e, |dF|/|F| = %.2e\n", p.example,
+              static_cast<long>(a.report.num_condensed), static_cast<long>(a.report.num_constraints), du, df);
+  EXPECT_LT(du, p.agreement);
+  EXPECT_LT(df, p.agreement);
+}
+
 }  // namespace
 
 TEST_P(CondensationChangesNothing, SameDisplacementsAndContactForces) {
@@ -109,11 +119,7 @@ TEST_P(DualSolveChangesNothing, SameDisplacementsAndContactForces) {
   }
   EXPECT_EQ(primal->report.dual_solves, 0);
   ASSERT_EQ(dual->history.size(), primal->history.size());
-  const auto [du, df] = differences(*dual, *primal);
-  std::printf("  %s: %ld condensed, %ld constraints; |du|/|u| = %.2e, |dF|/|F| = %.2e\n", p.example,
-              static_cast<long>(dual->report.num_condensed), static_cast<long>(dual->report.num_constraints), du, df);
-  EXPECT_LT(du, p.agreement);
-  EXPECT_LT(df, p.agreement);
+  expect_agreement(p, *dual, *primal);
 }
 
 // The dual's two optimisers, the dense interior point (default) and IPOPT, against each other: same results to
@@ -132,11 +138,24 @@ TEST_P(DualOptimizerChangesNothing, SameDisplacementsAndContactForces) {
     EXPECT_EQ(ipopt->report.ipopt_status.find("interior point"), std::string::npos) << ipopt->report.ipopt_status;
   }
   ASSERT_EQ(ipm->history.size(), ipopt->history.size());
-  const auto [du, df] = differences(*ipm, *ipopt);
-  std::printf("  %s: %ld condensed, %ld constraints; |du|/|u| = %.2e, |dF|/|F| = %.2e\n", p.example,
-              static_cast<long>(ipm->report.num_condensed), static_cast<long>(ipm->report.num_constraints), du, df);
-  EXPECT_LT(du, p.agreement);
-  EXPECT_LT(df, p.agreement);
+  expect_agreement(p, *ipm, *ipopt);
+}
+
+// The primal's two optimisers, the dense interior point (solvers/dense_primal_interior_point.hpp) and IPOPT,
+// against each other, the interior point's path actually taken by the last solve (with friction terms on the
+// inclined interface).
+class PrimalOptimizerChangesNothing : public ::testing::TestWithParam<Case> {};
+
+TEST_P(PrimalOptimizerChangesNothing, SameDisplacementsAndContactForces) {
+  const Case& p = GetParam();
+  const std::string dir = test_temp_dir(std::string("primal_optimizer_") + p.example);
+  auto ipm = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "primal_interior_point"), dir);
+  auto ipopt = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "primal_ipopt"), dir);
+  EXPECT_EQ(ipm->report.dual_solves, 0);
+  EXPECT_NE(ipm->report.ipopt_status.find("primal interior point"), std::string::npos) << ipm->report.ipopt_status;
+  EXPECT_EQ(ipopt->report.ipopt_status.find("interior point"), std::string::npos) << ipopt->report.ipopt_status;
+  ASSERT_EQ(ipm->history.size(), ipopt->history.size());
+  expect_agreement(p, *ipm, *ipopt);
 }
 
 const auto kCases = ::testing::Values(Case{"hertz_2d", "cylinder_on_plane.geo", "h = 0.01;", 1e-10, 1e-6},
@@ -157,3 +176,4 @@ std::string case_name(const ::testing::TestParamInfo<Case>& i) {
 INSTANTIATE_TEST_SUITE_P(Examples, CondensationChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, DualSolveChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, DualOptimizerChangesNothing, kCases, case_name);
+INSTANTIATE_TEST_SUITE_P(Examples, PrimalOptimizerChangesNothing, kCases, case_name);

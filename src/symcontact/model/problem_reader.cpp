@@ -1076,7 +1076,8 @@ class Reader {
       const std::string v = as_string(*n, key);
       const std::optional<SubproblemSolver> choice = parse_subproblem_solver(v);
       if (!choice)
-        fail(key, "expected \"dual_interior_point\", \"dual_ipopt\" or \"primal_ipopt\", got \"" + v + "\"");
+        fail(key, "expected \"dual_interior_point\", \"dual_ipopt\", \"primal_ipopt\" or \"primal_interior_point\", "
+                  "got \"" + v + "\"");
       s.subproblem_solver = *choice;
     }
     if (const toml::node* n = t.get("max_step_cuts")) {

@@ -447,20 +447,6 @@ double smallest_row_scale(const SparseMatrix& A) {
   return std::isfinite(smallest) ? smallest : 1.0;
 }
 
-/// g_ref = max(‖∇f(x0)‖∞, h·‖x0‖∞) and ℓ = g_ref / h, h = max|∇²f(x0)|; see the header.
-ProblemScales problem_scales(const VectorXd& x0, const VectorXd& g0, const SparseMatrix& H0) {
-  double h_max = 0.0;
-  for (Eigen::Index k = 0; k < H0.nonZeros(); ++k) h_max = std::max(h_max, std::abs(H0.valuePtr()[k]));
-  const double g_inf = g0.size() ? g0.lpNorm<Eigen::Infinity>() : 0.0;
-  const double x_inf = x0.size() ? x0.lpNorm<Eigen::Infinity>() : 0.0;
-  ProblemScales s;
-  const double g_ref = std::max(g_inf, h_max * x_inf);
-  if (!(g_ref > 0.0) || !std::isfinite(g_ref)) return s;
-  s.force = g_ref;
-  const double ell = g_ref / h_max;
-  if (ell > 0.0 && std::isfinite(ell)) s.length = ell;
-  return s;
-}
 
 /// symcontact's IPOPT options (before the user's): output, linear solver, tolerances on the scaled problem and the
 /// absolute checks rescaled to mean the same (see the header), exact constraints, and a warm start's small pushes.
@@ -558,6 +544,21 @@ void check_arguments(const ConstrainedProblem& problem, const VectorXd& x0, bool
 }
 
 }  // namespace
+
+/// g_ref = max(‖∇f(x0)‖∞, h·‖x0‖∞) and ℓ = g_ref / h, h = max|∇²f(x0)|; see the header.
+ProblemScales problem_scales(const VectorXd& x0, const VectorXd& g0, const SparseMatrix& H0) {
+  double h_max = 0.0;
+  for (Eigen::Index k = 0; k < H0.nonZeros(); ++k) h_max = std::max(h_max, std::abs(H0.valuePtr()[k]));
+  const double g_inf = g0.size() ? g0.lpNorm<Eigen::Infinity>() : 0.0;
+  const double x_inf = x0.size() ? x0.lpNorm<Eigen::Infinity>() : 0.0;
+  ProblemScales s;
+  const double g_ref = std::max(g_inf, h_max * x_inf);
+  if (!(g_ref > 0.0) || !std::isfinite(g_ref)) return s;
+  s.force = g_ref;
+  const double ell = g_ref / h_max;
+  if (ell > 0.0 && std::isfinite(ell)) s.length = ell;
+  return s;
+}
 
 IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, const IpoptOptions& options,
                              const VectorXd* multipliers0, const VectorXd* bound_multipliers0) {

@@ -61,6 +61,10 @@ struct ProblemScales {
   double objective_scaling() const { return 1.0 / (force * length); }
 };
 
+/// g_ref = max(‖∇f(x0)‖∞, h·‖x0‖∞) and ℓ = g_ref / h, h = max|∇²f(x0)| (the largest entry of the Hessian's
+/// lower triangle H0): the scales of the file comment, which every interior point of the contact solver uses.
+ProblemScales problem_scales(const VectorXd& x0, const VectorXd& g0, const SparseMatrix& H0);
+
 struct IpoptOptions {
   double tolerance = 1e-10;  ///< IPOPT "tol" on the scaled problem (relative to g_ref, see above)
   int max_iterations = 1000;  ///< IPOPT "max_iter"

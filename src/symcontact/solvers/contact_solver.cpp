@@ -138,8 +138,8 @@ class GeometryFixedPoint {
   const std::shared_ptr<ContactWorkspace> workspace_;
   const int factorisations_at_start_;
   std::shared_ptr<const CondensedLoad> condensed_load_;  ///< of this solve's Dirichlet values and loads
-  PrimalIpopt primal_;
   std::unique_ptr<DualIpopt> dual_;  ///< null: the dual is not used
+  std::unique_ptr<PrimalIpopt> primal_;
   PolishStrategy polish_;
   std::unique_ptr<AndersonAcceleration> anderson_;
   /// An inexact solve (ContactSolveOptions::loose_geometry_tolerance) is never balanced at the end nor
@@ -164,11 +164,18 @@ class GeometryFixedPoint {
 /// (obstacles and one-pass pairs), where λ is unique; IPOPT on the dual for symmetric pairs and
 /// self-contact (dual_subproblem.hpp).
 std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice) {
-  if (choice == SubproblemSolver::kPrimalIpopt) return nullptr;
+  if (choice == SubproblemSolver::kPrimalIpopt || choice == SubproblemSolver::kPrimalInteriorPoint) return nullptr;
   const bool independent_rows = std::none_of(contacts.pairs.begin(), contacts.pairs.end(),
                                              [](const ContactPair& p) { return p.two_sided(); });
   if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows) return std::make_unique<DualInteriorPoint>();
   return std::make_unique<DualIpopt>();
+}
+
+/// The primal method of a solve: the dense interior point first where asked, IPOPT where it fails
+/// (primal_subproblem.hpp); IPOPT otherwise.
+std::unique_ptr<PrimalIpopt> primal_method(SubproblemSolver choice) {
+  if (choice == SubproblemSolver::kPrimalInteriorPoint) return std::make_unique<PrimalInteriorPoint>();
+  return std::make_unique<PrimalIpopt>();
 }
 
 GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
@@ -179,6 +186,7 @@ GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       workspace_(options.workspace ? options.workspace : std::make_shared<ContactWorkspace>()),
       factorisations_at_start_(workspace_->factorisations), dual_(dual_method(contacts, options.subproblem_solver)),
+      primal_(primal_method(options.subproblem_solver)),
       polish_(options.polish, *workspace_,
               options.geometry_acceleration > 0 && energy.hessian_is_constant() ? options.geometry_acceleration : 0,
               energy.hessian_is_constant() ? BodiesEnergy::kQuadratic : BodiesEnergy::kNonQuadratic),
@@ -285,7 +293,7 @@ SubproblemSolution GeometryFixedPoint::solve_subproblem(int it, ConstrainedProbl
       const VectorXd xr = problem_.restrict(u_retry);
       return condensed ? condensed->restrict(xr) : xr;
     };
-  return primal_.solve(p, warm, log_, rep_.times);
+  return primal_->solve(p, warm, log_, rep_.times);
 }
 
 /// One geometry iteration; true when the fixed point has converged (the solution is then in x_).

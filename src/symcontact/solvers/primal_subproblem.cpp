@@ -1,5 +1,7 @@
 #include "symcontact/solvers/primal_subproblem.hpp"
 
+#include "symcontact/solvers/dense_primal_interior_point.hpp"
+
 namespace symcontact {
 
 SubproblemSolution PrimalIpopt::solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
@@ -21,6 +23,27 @@ SubproblemSolution PrimalIpopt::solve(const Subproblem& p, const SubproblemWarmS
     s.failed_iterations += res.iterations;
     res = retry;
   }
+  return s;
+}
+
+SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const SubproblemWarmStart& warm,
+                                              const Logger& log, PhaseTimes& times) {
+  int failed = 0;
+  if (p.condensed && p.target.num_equalities() == 0 && !p.target.lower_bounds()) {
+    ScopedPhase t(times, "optimizer");
+    DensePrimalOptions o;
+    // IPOPT's tolerance, also when the problem file sets it ([ipopt] tol).
+    const auto tol = p.ipopt.numeric_options.find("tol");
+    o.tolerance = tol != p.ipopt.numeric_options.end() ? tol->second : p.ipopt.tolerance;
+    SubproblemSolution s;
+    s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers);
+    s.result.status_text = "primal interior point: " + s.result.status_text;
+    if (s.result.success) return s;
+    log.detail("  the dense " + s.result.status_text + "; IPOPT instead");
+    failed = s.result.iterations;
+  }
+  SubproblemSolution s = PrimalIpopt::solve(p, warm, log, times);
+  s.failed_iterations += failed;
   return s;
 }
 

@@ -5,12 +5,21 @@
 /// the first geometry iteration (its multipliers come from another solve) is retried cold, and a failure
 /// with friction once more from Subproblem::restart (stiff regularised friction, small α, can defeat the
 /// line search from a start that is already close).
+/// PrimalInteriorPoint solves a condensed subproblem by the dense interior point first
+/// (dense_primal_interior_point.hpp), from the same start and multipliers, and falls back to PrimalIpopt's
+/// attempts where it fails or where the subproblem is not condensed.
 
 #include "symcontact/solvers/subproblem.hpp"
 
 namespace symcontact {
 
 class PrimalIpopt : public SubproblemMethod {
+ public:
+  SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
+                           PhaseTimes& times) override;
+};
+
+class PrimalInteriorPoint : public PrimalIpopt {
  public:
   SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
                            PhaseTimes& times) override;

@@ -4,7 +4,7 @@ namespace symcontact {
 
 namespace {
 constexpr SubproblemSolver kAll[] = {SubproblemSolver::kPrimalIpopt, SubproblemSolver::kDualIpopt,
-                                     SubproblemSolver::kDualInteriorPoint};
+                                     SubproblemSolver::kDualInteriorPoint, SubproblemSolver::kPrimalInteriorPoint};
 }  // namespace
 
 const char* subproblem_solver_name(SubproblemSolver s) {
@@ -15,6 +15,8 @@ const char* subproblem_solver_name(SubproblemSolver s) {
       return "dual_ipopt";
     case SubproblemSolver::kDualInteriorPoint:
       return "dual_interior_point";
+    case SubproblemSolver::kPrimalInteriorPoint:
+      return "primal_interior_point";
   }
   return "";
 }

@@ -10,7 +10,10 @@ namespace symcontact {
 
 /// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
 /// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
-/// without friction terms; any other subproblem is solved by the primal whatever the choice.
+/// without friction terms; any other subproblem is solved by the primal whatever the choice: by IPOPT, or with
+/// kPrimalInteriorPoint a condensed one by the dense primal interior point of dense_primal_interior_point.hpp
+/// (one LAPACK Cholesky of the |B| × |B| normal matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol,
+/// is its tolerance), IPOPT where that fails and where the problem is not condensed.
 enum class SubproblemSolver {
   /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
   /// factorisation at each of its iterations (primal_subproblem.hpp).
@@ -25,9 +28,14 @@ enum class SubproblemSolver {
   /// independent (no symmetric pair, no self-contact: the dual's λ is unique); by IPOPT otherwise, and
   /// where it fails.
   kDualInteriorPoint,
+  /// Every subproblem on the primal, a condensed one by the dense primal interior point (above). Not the
+  /// default: on the Coulomb examples its answers agree with IPOPT's to the tolerances, but its path through
+  /// the Coulomb fixed point differs between unit systems by more than IPOPT's (docs/performance.md).
+  kPrimalInteriorPoint,
 };
 
-/// The problem file's name of a choice: "primal_ipopt", "dual_ipopt", "dual_interior_point".
+/// The problem file's name of a choice: "primal_ipopt", "dual_ipopt", "dual_interior_point",
+/// "primal_interior_point".
 const char* subproblem_solver_name(SubproblemSolver s);
 
 /// The choice named `name` in the problem file; nullopt for any other string.

@@ -1177,7 +1177,8 @@ INSTANTIATE_TEST_SUITE_P(
                 "coulomb_tolerance, max_coulomb_iterations, static_condensation, subproblem_solver, max_step_cuts"},
         InputErrorCase{"SubproblemSolverUnknown", kTwoBodies + "[contact_solver]\nsubproblem_solver = \"mumps\"\n",
                 "contact_solver.subproblem_solver",
-                "expected \"dual_interior_point\", \"dual_ipopt\" or \"primal_ipopt\", got \"mumps\""},
+                "expected \"dual_interior_point\", \"dual_ipopt\", \"primal_ipopt\" or \"primal_interior_point\", got "
+                "\"mumps\""},
         InputErrorCase{"SubproblemSolverNotAString", kTwoBodies + "[contact_solver]\nsubproblem_solver = 1\n",
                 "contact_solver.subproblem_solver", "expected a string"},
         InputErrorCase{"DualSolveReplaced", kTwoBodies + "[contact_solver]\ndual_solve = false\n",

@@ -1,0 +1,50 @@
+#pragma once
+/// \file dense_primal_interior_point.hpp
+/// A primal-dual interior point method for a convex problem with a dense Hessian and linear inequalities,
+///
+///     min_x f(x)   subject to   c(x) = A x + b ≥ 0,
+///
+/// f twice differentiable and convex, ∇²f dense m × m (the condensed frictional contact problem: the Schur
+/// complement S plus the friction term's node blocks, condensed_problem.hpp), A sparse p × m. IPOPT solves the
+/// same problem with MUMPS factorising the dense KKT matrix as a sparse one at every iteration; here an
+/// iteration is one LAPACK Cholesky factorisation of the m × m normal matrix and a few triangular solves.
+///
+/// With slacks s = c(x) and multipliers λ (∇f(x) = Aᵀλ at a solution), the perturbed KKT conditions
+///     r_d = ∇f(x) − Aᵀλ = 0,   r_p = A x + b − s = 0,   s ∘ λ = σμ 1,   s, λ > 0,
+/// linearised, give with D = diag(λ / s) and r_c = s ∘ λ − σμ 1 (Nocedal & Wright, Numerical Optimization, 2nd
+/// ed. 2006, §19.1 and §16.6, normal equations):
+///     (∇²f + Aᵀ D A) Δx = −r_d − Aᵀ S⁻¹ (r_c + Λ r_p),   Δs = A Δx + r_p,   Δλ = −S⁻¹ (r_c + Λ Δs).
+/// Steps: Mehrotra's predictor-corrector (σ = (μ_aff/μ)³, the corrector with Δs_aff ∘ Δλ_aff), one step length
+/// for s and λ to the fraction τ = max(0.99, 1 − μ) of the boundary, then — f not being quadratic — a
+/// backtracking line search on the norm of the residuals (r_d, r_p, s ∘ λ − σμ) at the step's target: halved
+/// until that norm falls by 1e-4 α of itself (Armijo on ½‖F‖², whose derivative along a Newton direction is
+/// −‖F‖²). A convex f makes the normal matrix positive semidefinite; a Cholesky that breaks down is retried once
+/// with a diagonal shift of 1e-12 × its largest diagonal entry.
+///
+/// Scaling: the problem is solved in the dimensionless variables of IPOPT's user scaling (ipopt_solver.hpp:
+/// x̃ = x/ℓ, f̃ = f/(g_ref ℓ), row i of c divided by ℓ max_j |A_ij|), so that `tolerance` is the same number as
+/// IPOPT's `tol` and the method is unchanged by a consistent change of units. It stops when the scaled
+/// stationarity, feasibility and complementarity (max_i s̃_i λ̃_i) are all at most `tolerance`; it fails
+/// (success false, with the reason) after max_iterations, on a line search that cannot reduce the residual, on
+/// a factorisation that breaks down twice, or on an f that cannot be evaluated. It never reports a point that
+/// does not pass that test as a success.
+
+#include <string>
+
+#include "symcontact/optim/constrained_problem.hpp"
+#include "symcontact/optim/ipopt_solver.hpp"
+
+namespace symcontact {
+
+struct DensePrimalOptions {
+  double tolerance = 1e-10;  ///< of the scaled residuals (as IPOPT's `tol`)
+  int max_iterations = 200;
+};
+
+/// Solves `problem` (no equality rows, no bounds: throws std::invalid_argument otherwise) from x0; a warm start
+/// when `multipliers0` (size p, λ ≥ 0) is given. The result is in IpoptResult's form (multipliers λ with
+/// ∇f = Aᵀλ, constraint values c(x), status_text "converged" or why not) so that it takes IPOPT's place.
+IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, const DensePrimalOptions& options,
+                               const VectorXd* multipliers0 = nullptr);
+
+}  // namespace symcontact

@@ -1,0 +1,179 @@
+// The dense primal interior point for min f(x) s.t. A x + b ≥ 0 (solvers/dense_primal_interior_point.hpp), on
+// random convex problems shaped like the condensed frictional subproblem: a dense positive definite quadratic
+// plus regularised |x_k| terms (the friction term's sqrt(|v|² + α²)), and sparse rows. Checked against the KKT
+// conditions and against IPOPT on the same problem, under a change of units, from a warm start, and on the
+// failures it must report as failures.
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+#include <Eigen/Dense>
+
+#include "symcontact/optim/ipopt_solver.hpp"
+#include "symcontact/solvers/dense_primal_interior_point.hpp"
+
+using namespace symcontact;
+
+namespace {
+
+/// f(x) = ½ xᵀQx − qᵀx + w Σ_k sqrt(x_k² + α²) for k in the first half of x; A x + b ≥ 0.
+/// Lengths are in units of `length` and forces in units of `force` (a change of units multiplies x by
+/// `length`, Q by force/length, q by force, w by force·length / length = force, α by length).
+class FrictionLikeProblem : public ConstrainedProblem {
+ public:
+  FrictionLikeProblem(Index n, Index m, unsigned seed, double length = 1.0, double force = 1.0) : alpha_(1e-3 * length) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    MatrixXd B(n, n);
+    for (Index i = 0; i < n; ++i)
+      for (Index j = 0; j < n; ++j) B(i, j) = u(rng);
+    Q_ = (B.transpose() * B + 0.1 * MatrixXd::Identity(n, n)) * (force / length);
+    q_.resize(n);
+    for (Index i = 0; i < n; ++i) q_[i] = 3.0 * u(rng) * force;
+    w_ = 0.3 * force;
+    std::vector<Eigen::Triplet<double>> t;
+    for (Index i = 0; i < m; ++i) {
+      // a gap row: one DOF against a combination of two others, as a node against a facet
+      const Index a = i % n, b = (i + 1 + i / n) % n, c = (i + 3) % n;
+      t.emplace_back(i, a, 1.0);
+      t.emplace_back(i, b, -0.5 + 0.2 * u(rng));
+      if (c != a && c != b) t.emplace_back(i, c, -0.3);
+    }
+    A_.resize(m, n);
+    A_.setFromTriplets(t.begin(), t.end());
+    b_.resize(m);
+    for (Index i = 0; i < m; ++i) b_[i] = 0.2 * (u(rng) + 0.5) * length;
+  }
+  Index num_variables() const override { return Q_.rows(); }
+  double objective(const VectorXd& x) override {
+    double f = 0.5 * x.dot(Q_ * x) - q_.dot(x);
+    for (Index k = 0; k < x.size() / 2; ++k) f += w_ * std::sqrt(x[k] * x[k] + alpha_ * alpha_);
+    return f;
+  }
+  void gradient(const VectorXd& x, VectorXd& g) override {
+    g = Q_ * x - q_;
+    for (Index k = 0; k < x.size() / 2; ++k) g[k] += w_ * x[k] / std::sqrt(x[k] * x[k] + alpha_ * alpha_);
+  }
+  void hessian_lower(const VectorXd& x, SparseMatrix& H) override {
+    MatrixXd D = Q_;
+    for (Index k = 0; k < x.size() / 2; ++k) D(k, k) += w_ * alpha_ * alpha_ / std::pow(x[k] * x[k] + alpha_ * alpha_, 1.5);
+    H = D.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
+    // the same pattern at every call: the full lower triangle
+    for (Index j = 0; j < D.cols(); ++j)
+      for (Index i = j; i < D.rows(); ++i)
+        if (H.coeff(i, j) == 0.0) H.coeffRef(i, j) = 0.0;
+    H.makeCompressed();
+  }
+  bool hessian_is_dense() const override { return true; }
+  const SparseMatrix& constraint_matrix() const override { return A_; }
+  const VectorXd& constraint_offset() const override { return b_; }
+
+ private:
+  MatrixXd Q_;
+  VectorXd q_;
+  double w_, alpha_;
+  SparseMatrix A_;
+  VectorXd b_;
+};
+
+/// The largest KKT violation, relative to the problem's force scale ‖q‖∞ and length scale.
+double kkt_violation(FrictionLikeProblem& p, const IpoptResult& r, double force, double length) {
+  VectorXd g;
+  p.gradient(r.x, g);
+  const VectorXd rd = g - p.constraint_matrix().transpose() * r.multipliers;
+  const VectorXd c = p.constraint_matrix() * r.x + p.constraint_offset();
+  double v = rd.lpNorm<Eigen::Infinity>() / force;
+  v = std::max(v, -c.minCoeff() / length);
+  v = std::max(v, -r.multipliers.minCoeff() / force);
+  v = std::max(v, c.cwiseProduct(r.multipliers).cwiseAbs().maxCoeff() / (force * length));
+  return v;
+}
+
+}  // namespace
+
+TEST(DensePrimalInteriorPoint, MeetsTheKktConditionsAndAgreesWithIpopt) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    FrictionLikeProblem p(40, 60, seed);
+    const VectorXd x0 = VectorXd::Zero(40);
+    const IpoptResult r = solve_dense_primal(p, x0, DensePrimalOptions{});
+    ASSERT_TRUE(r.success) << r.status_text;
+    EXPECT_LT(kkt_violation(p, r, 3.0, 1.0), 1e-8) << "seed " << seed;
+    IpoptOptions o;
+    const IpoptResult ip = solve_with_ipopt(p, x0, o);
+    ASSERT_TRUE(ip.success) << ip.status_text;
+    EXPECT_LT((r.x - ip.x).lpNorm<Eigen::Infinity>(), 1e-7 * ip.x.lpNorm<Eigen::Infinity>()) << "seed " << seed;
+    EXPECT_LT((r.multipliers - ip.multipliers).lpNorm<Eigen::Infinity>(), 1e-7 * ip.multipliers.lpNorm<Eigen::Infinity>());
+    EXPECT_NEAR(r.objective, p.objective(r.x), 0.0);
+    // some rows active, some open: the test exercises both
+    const VectorXd c = r.constraint_values;
+    EXPECT_GT((c.array() < 1e-8).count(), 0);
+    EXPECT_GT((c.array() > 1e-3).count(), 0);
+  }
+}
+
+TEST(DensePrimalInteriorPoint, AChangeOfUnitsChangesNeitherTheIteratesNorTheAnswer) {
+  FrictionLikeProblem si(30, 45, 7);
+  FrictionLikeProblem mm(30, 45, 7, 1e3, 1e-6);  // lengths × 1e3, forces × 1e-6 (say N/m → ...)
+  const IpoptResult a = solve_dense_primal(si, VectorXd::Zero(30), DensePrimalOptions{});
+  const IpoptResult b = solve_dense_primal(mm, VectorXd::Zero(30), DensePrimalOptions{});
+  ASSERT_TRUE(a.success && b.success) << a.status_text << " / " << b.status_text;
+  EXPECT_NEAR(a.iterations, b.iterations, 2);
+  EXPECT_LT((b.x / 1e3 - a.x).lpNorm<Eigen::Infinity>(), 1e-8 * a.x.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((b.multipliers / 1e-6 - a.multipliers).lpNorm<Eigen::Infinity>(), 1e-8 * a.multipliers.lpNorm<Eigen::Infinity>());
+}
+
+TEST(DensePrimalInteriorPoint, AWarmStartFromTheSolutionTakesFewIterations) {
+  FrictionLikeProblem p(40, 60, 11);
+  DensePrimalOptions tight;  // both solutions within 1e-8 of the exact one (the regularised |x| makes the
+  tight.tolerance = 1e-12;   // minimum's conditioning about 1e4 here)
+  const IpoptResult cold = solve_dense_primal(p, VectorXd::Zero(40), tight);
+  ASSERT_TRUE(cold.success) << cold.status_text;
+  const IpoptResult warm = solve_dense_primal(p, cold.x, tight, &cold.multipliers);
+  ASSERT_TRUE(warm.success) << warm.status_text;
+  EXPECT_LT(warm.iterations, cold.iterations);
+  EXPECT_LT((warm.x - cold.x).lpNorm<Eigen::Infinity>(), 1e-8 * cold.x.lpNorm<Eigen::Infinity>());
+}
+
+TEST(DensePrimalInteriorPoint, ReportsAFailureAsAFailure) {
+  FrictionLikeProblem p(20, 30, 5);
+  DensePrimalOptions few;
+  few.max_iterations = 2;
+  const IpoptResult r = solve_dense_primal(p, VectorXd::Zero(20), few);
+  EXPECT_FALSE(r.success);
+  EXPECT_NE(r.status_text.find("no convergence in 2 iterations"), std::string::npos) << r.status_text;
+}
+
+namespace {
+/// x₀ ≥ 1 and x₀ ≤ −1 at once: no feasible point.
+class InfeasibleProblem : public ConstrainedProblem {
+ public:
+  InfeasibleProblem() {
+    A_.resize(2, 2);
+    A_.insert(0, 0) = 1.0;
+    A_.insert(1, 0) = -1.0;
+    A_.makeCompressed();
+    b_ = VectorXd::Constant(2, -1.0);
+  }
+  Index num_variables() const override { return 2; }
+  double objective(const VectorXd& x) override { return 0.5 * x.squaredNorm(); }
+  void gradient(const VectorXd& x, VectorXd& g) override { g = x; }
+  void hessian_lower(const VectorXd&, SparseMatrix& H) override {
+    H.resize(2, 2);
+    H.setIdentity();
+  }
+  const SparseMatrix& constraint_matrix() const override { return A_; }
+  const VectorXd& constraint_offset() const override { return b_; }
+
+ private:
+  SparseMatrix A_;
+  VectorXd b_;
+};
+}  // namespace
+
+TEST(DensePrimalInteriorPoint, AnInfeasibleProblemIsNotASuccess) {
+  InfeasibleProblem p;
+  const IpoptResult r = solve_dense_primal(p, VectorXd::Zero(2), DensePrimalOptions{});
+  EXPECT_FALSE(r.success);
+  EXPECT_FALSE(r.status_text.empty());
+}
