@@ -160,21 +160,27 @@ class GeometryFixedPoint {
   ProgressClock clock_;  ///< since the solve started
 };
 
-/// The dual method of a solve: the dense interior point only where the constraint rows are independent
-/// (obstacles and one-pass pairs), where λ is unique; IPOPT on the dual for symmetric pairs and
-/// self-contact (dual_subproblem.hpp).
+/// Whether the constraint rows are independent (obstacles and one-pass pairs: no symmetric pair, no
+/// self-contact), so that the multipliers are unique.
+bool independent_rows(const ContactSet& contacts) {
+  return std::none_of(contacts.pairs.begin(), contacts.pairs.end(), [](const ContactPair& p) { return p.two_sided(); });
+}
+
+/// The dual method of a solve: the dense interior point only where the constraint rows are independent;
+/// IPOPT on the dual for symmetric pairs and self-contact (dual_subproblem.hpp).
 std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice) {
   if (choice == SubproblemSolver::kPrimalIpopt || choice == SubproblemSolver::kPrimalInteriorPoint) return nullptr;
-  const bool independent_rows = std::none_of(contacts.pairs.begin(), contacts.pairs.end(),
-                                             [](const ContactPair& p) { return p.two_sided(); });
-  if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows) return std::make_unique<DualInteriorPoint>();
+  if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows(contacts))
+    return std::make_unique<DualInteriorPoint>();
   return std::make_unique<DualIpopt>();
 }
 
-/// The primal method of a solve: the dense interior point first where asked, IPOPT where it fails
-/// (primal_subproblem.hpp); IPOPT otherwise.
-std::unique_ptr<PrimalIpopt> primal_method(SubproblemSolver choice) {
-  if (choice == SubproblemSolver::kPrimalInteriorPoint) return std::make_unique<PrimalInteriorPoint>();
+/// The primal method of a solve: the dense interior point first where asked and the rows are independent
+/// (on the nearly dependent rows of a symmetric pair it took twice IPOPT's iterations and 3.6 times its time:
+/// docs/performance.md, clamped-plates), IPOPT where it fails (primal_subproblem.hpp); IPOPT otherwise.
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
+  if (choice == SubproblemSolver::kPrimalInteriorPoint && independent_rows(contacts))
+    return std::make_unique<PrimalInteriorPoint>();
   return std::make_unique<PrimalIpopt>();
 }
 
@@ -186,7 +192,7 @@ GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       workspace_(options.workspace ? options.workspace : std::make_shared<ContactWorkspace>()),
       factorisations_at_start_(workspace_->factorisations), dual_(dual_method(contacts, options.subproblem_solver)),
-      primal_(primal_method(options.subproblem_solver)),
+      primal_(primal_method(contacts, options.subproblem_solver)),
       polish_(options.polish, *workspace_,
               options.geometry_acceleration > 0 && energy.hessian_is_constant() ? options.geometry_acceleration : 0,
               energy.hessian_is_constant() ? BodiesEnergy::kQuadratic : BodiesEnergy::kNonQuadratic),

@@ -11,9 +11,10 @@ namespace symcontact {
 /// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
 /// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
 /// without friction terms; any other subproblem is solved by the primal whatever the choice: by IPOPT, or with
-/// kPrimalInteriorPoint a condensed one by the dense primal interior point of dense_primal_interior_point.hpp
-/// (one LAPACK Cholesky of the |B| × |B| normal matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol,
-/// is its tolerance), IPOPT where that fails and where the problem is not condensed.
+/// kPrimalInteriorPoint a condensed one with independent rows (no symmetric pair, no self-contact) by the
+/// dense primal interior point of dense_primal_interior_point.hpp (one LAPACK Cholesky of the |B| × |B| normal
+/// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance), IPOPT where that fails,
+/// where the problem is not condensed and where the rows are not independent.
 enum class SubproblemSolver {
   /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
   /// factorisation at each of its iterations (primal_subproblem.hpp).
