@@ -179,8 +179,9 @@ std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSol
 /// (on the nearly dependent rows of a symmetric pair it took twice IPOPT's iterations and 3.6 times its time:
 /// docs/performance.md, clamped-plates), IPOPT where it fails (primal_subproblem.hpp); IPOPT otherwise.
 std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
-  if (choice == SubproblemSolver::kPrimalInteriorPoint && independent_rows(contacts))
-    return std::make_unique<PrimalInteriorPoint>();
+  const bool interior_point =
+      choice == SubproblemSolver::kPrimalInteriorPoint || choice == SubproblemSolver::kDualInteriorPoint;
+  if (interior_point && independent_rows(contacts)) return std::make_unique<PrimalInteriorPoint>();
   return std::make_unique<PrimalIpopt>();
 }
 
