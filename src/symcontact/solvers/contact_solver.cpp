@@ -175,9 +175,10 @@ std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSol
   return std::make_unique<DualIpopt>();
 }
 
-/// The primal method of a solve: the dense interior point first where asked and the rows are independent
-/// (on the nearly dependent rows of a symmetric pair it took twice IPOPT's iterations and 3.6 times its time:
-/// docs/performance.md, clamped-plates), IPOPT where it fails (primal_subproblem.hpp); IPOPT otherwise.
+/// The primal method of a solve: with the "interior_point" choices the dense interior point first where the
+/// rows are independent (on the nearly dependent rows of a symmetric pair it took five times IPOPT's iterations
+/// and 3.6 times its time: docs/performance.md, clamped-plates), IPOPT where it fails (primal_subproblem.hpp);
+/// IPOPT otherwise.
 std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
   const bool interior_point =
       choice == SubproblemSolver::kPrimalInteriorPoint || choice == SubproblemSolver::kDualInteriorPoint;

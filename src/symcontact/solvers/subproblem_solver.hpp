@@ -10,11 +10,12 @@ namespace symcontact {
 
 /// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
 /// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
-/// without friction terms; any other subproblem is solved by the primal whatever the choice: by IPOPT, or with
-/// kPrimalInteriorPoint a condensed one with independent rows (no symmetric pair, no self-contact) by the
+/// without friction terms; any other subproblem is solved by the primal whatever the choice: with the
+/// "interior_point" choices a condensed one with independent rows (no symmetric pair, no self-contact) by the
 /// dense primal interior point of dense_primal_interior_point.hpp (one LAPACK Cholesky of the |B| × |B| normal
-/// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance), IPOPT where that fails,
-/// where the problem is not condensed and where the rows are not independent.
+/// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance), by IPOPT where that
+/// fails, where the problem is not condensed and where the rows are not independent; with the "ipopt"
+/// choices by IPOPT.
 enum class SubproblemSolver {
   /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
   /// factorisation at each of its iterations (primal_subproblem.hpp).
@@ -27,11 +28,9 @@ enum class SubproblemSolver {
   /// The dual by the dense interior point of dense_qp_interior_point.hpp (one LAPACK Cholesky of the m × m
   /// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance too) where the rows are
   /// independent (no symmetric pair, no self-contact: the dual's λ is unique); by IPOPT otherwise, and
-  /// where it fails.
+  /// where it fails. Subproblems with friction terms: the dense primal interior point (above).
   kDualInteriorPoint,
-  /// Every subproblem on the primal, a condensed one by the dense primal interior point (above). Not the
-  /// default: on the Coulomb examples its answers agree with IPOPT's to the tolerances, but its path through
-  /// the Coulomb fixed point differs between unit systems by more than IPOPT's (docs/performance.md).
+  /// Every subproblem on the primal, by the dense primal interior point where it applies (above).
   kPrimalInteriorPoint,
 };
 
