@@ -6,6 +6,8 @@
 /// and its multipliers μ ≥ 0 (one per row). A SubproblemMethod is one way of solving it; the geometry fixed
 /// point (contact_solver.hpp) chooses one per iteration and stays unaware of how it works:
 ///  - PrimalIpopt (primal_subproblem.hpp): IPOPT on the displacements, condensed or not; any energy.
+///  - PrimalInteriorPoint (primal_subproblem.hpp): the dense primal interior point on condensed displacements
+///    (friction terms too), PrimalIpopt where it fails.
 ///  - DualIpopt, DualInteriorPoint (dual_subproblem.hpp): the dual in the multipliers of a condensed
 ///    quadratic problem, by IPOPT or by the dense interior point; the displacements follow exactly.
 
