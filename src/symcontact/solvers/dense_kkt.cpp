@@ -200,4 +200,11 @@ ProjectedCgResult projected_cg(const DenseRangeSpace& factor,
   return res;
 }
 
+double step_to_boundary(const VectorXd& v, const VectorXd& dv, double tau) {
+  double alpha = 1.0;
+  for (Index i = 0; i < v.size(); ++i)
+    if (dv[i] < 0) alpha = std::min(alpha, -tau * v[i] / dv[i]);
+  return alpha;
+}
+
 }  // namespace symcontact

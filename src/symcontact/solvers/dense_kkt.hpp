@@ -75,6 +75,10 @@ VectorXd min_norm_solve(const MatrixXd& K, const VectorXd& r, double rcond);
 bool definite_saddle_solve(const AlignedMatrix& H, const MatrixXd& C, const VectorXd& f, const VectorXd& g, VectorXd& x,
                            VectorXd& z);
 
+/// The largest α ≤ 1 with v + α dv ≥ (1 − τ) v (v > 0): the step to the fraction τ of the way to the bound
+/// v = 0, as the interior points (dense_qp_interior_point, dense_primal_interior_point) take it.
+double step_to_boundary(const VectorXd& v, const VectorXd& dv, double tau);
+
 /// y ← y + H x for H symmetric n × n, given by its lower triangle (dsymv).
 void symmetric_multiply_add(const AlignedMatrix& H, const VectorXd& x, VectorXd& y);
 

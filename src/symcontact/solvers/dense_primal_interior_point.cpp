@@ -75,14 +75,6 @@ class ScaledProblem {
   SparseMatrix H_;  ///< ∇²f (lower triangle) at the last hessian() call
 };
 
-/// The largest α ≤ 1 with v + α dv ≥ (1 − τ) v.
-double step_to_boundary(const VectorXd& v, const VectorXd& dv, double tau) {
-  double alpha = 1.0;
-  for (Index i = 0; i < v.size(); ++i)
-    if (dv[i] < 0) alpha = std::min(alpha, -tau * v[i] / dv[i]);
-  return alpha;
-}
-
 /// The state of one iteration and its residuals (scaled).
 struct Iterate {
   VectorXd x, s, l;  ///< x in the problem's units; s̃, λ̃ scaled

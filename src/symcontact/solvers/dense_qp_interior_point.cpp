@@ -65,14 +65,6 @@ class NewtonSystem {
   Eigen::CompleteOrthogonalDecomposition<MatrixXd> M_;
 };
 
-/// The largest α ≤ 1 with v + α dv ≥ (1 − τ) v, i.e. the fraction τ of the way to the bound.
-double step_to_boundary(const VectorXd& v, const VectorXd& dv, double tau) {
-  double alpha = 1.0;
-  for (Index i = 0; i < v.size(); ++i)
-    if (dv[i] < 0) alpha = std::min(alpha, -tau * v[i] / dv[i]);
-  return alpha;
-}
-
 }  // namespace
 
 DenseQpResult solve_dense_qp(const AlignedMatrix& W, const VectorXd& d, const MatrixXd& G, const VectorXd& e,
