@@ -3,29 +3,14 @@
 /// One load step of frictional contact: Algorithm 1 of the talk (METHOD.md) around Algorithm 2.
 ///
 ///  - Tresca pairs: the threshold τ is given; one regularised-Tresca solve (solve_contact).
-///  - Coulomb pairs (Raous 1999, eq. 17): σ_{n,0} from the frictionless problem, τ_0 = μ p_0 — or, from
-///    the second load step on (`previous` given), τ_0 = the thresholds the previous step converged to,
-///    without a frictionless solve: under large sliding the frictionless solve lets everything friction
-///    held spring back (a dragged flexible die: 40 % of the solution's size), and dragging it back is a
-///    large step for the geometry fixed point (2D ironing); it also saves one contact solve per step. Then
-///      solve regularised Tresca with τ_k → pressure p_k → residual r_k = μ p_k − τ_k,
-///    until ‖r_k‖∞ / ‖τ_k‖∞ < tolerance. A fixed point that stagnates (a cycle, or the noise floor of its
-///    inner solves) has its inner solves tightened; one that still stagnates is accepted only where the
-///    friction law holds to FrictionalOptions::stagnation_acceptance, and says so. Any other that does not
-///    converge within the allowed iterations throws SolveError — never reported as success.
-///    With linear-elastic bodies, while τ still moves, each solve's geometry fixed point is stopped early,
-///    at a tolerance proportional to the last threshold change (inexact inner solves;
-///    FrictionalOptions::inner_tolerance_factor), and under proportional loading a step starts from the
-///    previous increments of u and τ extrapolated (FrictionalOptions::extrapolate); the loop still ends
-///    only on a solve converged to the geometry tolerance whose τ satisfies the tolerance above.
-///    The update is relaxed by Aitken's Δ² rule (Irons & Tuck 1969; in the vector form of Küttler &
-///    Wall, Comput. Mech. 43 (2008), eq. 44): τ_{k+1} = max(0, τ_k + ω_k r_k) with
-///      ω_k = −ω_{k−1} r_{k−1}·(r_k − r_{k−1}) / ‖r_k − r_{k−1}‖²,  ω_1 = 1, clipped to [0.1, 1].
-///    ω = 1 is the plain fixed point τ_{k+1} = μ p_k. Where the map τ ↦ μ p(τ) has a slope near −1
-///    (nodes where the slip changes direction, at μ ≈ 0.3 and large deformation), the plain iteration
-///    falls into a 2-cycle; the relaxation removes it. The converged τ is the same fixed point.
-/// τ and p live at the nodes of the slave surface of each pair's friction family; the pressure is the
-/// nodal one recovered from the contact forces (surface_tractions.hpp).
+///  - Coulomb pairs: the thresholds are the lagged term of the step's outer loop (lagged_fixed_point.hpp: the
+///    loop, its relaxation, inexact inner solves and stagnation remedies; coulomb_thresholds.hpp: τ = μ p, the
+///    start from the previous step). A loop that does not converge throws SolveError — never reported as
+///    success.
+///  - Under proportional loading a step of linear-elastic bodies starts from u and τ extrapolated along the
+///    previous step's increment (FrictionalOptions::extrapolate).
+/// With a condensed workspace the solves of the step leave u's interior out of date, and u is made whole once,
+/// when the step ends, also when it throws (ContactSolveOptions::lazy_interior).
 
 #include <vector>
 
