@@ -1,5 +1,7 @@
 #include "symcontact/mesh/cell_type.hpp"
 
+#include <array>
+
 #include "symcontact/core/error.hpp"
 
 namespace symcontact {
@@ -19,6 +21,14 @@ constexpr CellFacts kFacts[] = {
     {"quad8", 2, 8, 4, 2}, {"quad9", 2, 9, 4, 2}, {"hex8", 3, 8, 8, 1},    {"hex20", 3, 20, 8, 2},
     {"hex27", 3, 27, 8, 2}};
 static_assert(sizeof(kFacts) / sizeof(kFacts[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
+
+/// 0, 1, …, n − 1.
+template <int n>
+constexpr std::array<int, n> identity_permutation() {
+  std::array<int, n> p{};
+  for (int i = 0; i < n; ++i) p[i] = i;
+  return p;
+}
 }  // namespace
 
 CellShape cell_shape(CellType t) { return ix(t) >= ix(CellType::kQuad4) ? CellShape::kTensor : CellShape::kSimplex; }
@@ -92,19 +102,16 @@ int vtk_cell_type(CellType t) {
 }
 
 const int* vtk_node_order(CellType t) {
-  static const int ident[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13,
-                              14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26};
+  static constexpr std::array<int, 27> ident = identity_permutation<27>();
   static const int tet10[] = {0, 1, 2, 3, 4, 5, 6, 7, 9, 8};
   // VTK edges m01 m12 m23 m30 m45 m56 m67 m74 m04 m15 m26 m37 at their Gmsh positions; VTK faces
   // ξ = 0 (0 4 7 3), ξ = 1 (1 2 6 5), η = 0 (0 1 5 4), η = 1 (2 3 7 6), ζ = 0 (0 3 2 1), ζ = 1 likewise.
   static const int hex[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  11, 13, 9,  16, 18,
                             19, 17, 10, 12, 14, 15, 22, 23, 21, 24, 20, 25, 26};
-  switch (t) {
-    case CellType::kTet10: return tet10;
-    case CellType::kHex20:
-    case CellType::kHex27: return hex;
-    default: return ident;
-  }
+  const int* const id = ident.data();
+  static const int* const order[] = {id, id, id, id, id, id, tet10, id, id, id, id, hex, hex};  // CellType order
+  static_assert(sizeof(order) / sizeof(order[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
+  return order[ix(t)];
 }
 
 int cell_num_facets(CellType t) {
@@ -183,19 +190,10 @@ const int* cell_reflection(CellType t) {
   // Hexahedra: ξ and η swapped, so v1 <-> v3, v5 <-> v7, with their edges and faces.
   static const int hex[] = {0,  3,  2,  1,  4,  7,  6,  5,  9,  8,  10, 13, 15, 11,
                             14, 12, 17, 16, 19, 18, 20, 22, 21, 24, 23, 25, 26};
-  switch (t) {
-    case CellType::kPoint1: return ident;
-    case CellType::kLine2:
-    case CellType::kLine3: return line3;
-    case CellType::kTri3:
-    case CellType::kTri6: return tri;
-    case CellType::kTet4:
-    case CellType::kTet10: return tet;
-    case CellType::kQuad4:
-    case CellType::kQuad8:
-    case CellType::kQuad9: return quad;
-    default: return hex;
-  }
+  static const int* const reflection[] = {ident, line3, line3, tri, tri, tet, tet,
+                                          quad,  quad,  quad,  hex, hex, hex};  // in CellType order
+  static_assert(sizeof(reflection) / sizeof(reflection[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
+  return reflection[ix(t)];
 }
 
 }  // namespace symcontact
