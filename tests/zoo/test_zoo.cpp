@@ -20,6 +20,7 @@
 #include <limits>
 #include <ostream>
 #include <regex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -288,6 +289,16 @@ Eigen::Vector2d last_step_reaction(const std::string& summary_path, const std::s
   return r;
 }
 
+/// The first number under `key` in the last step of a summary.json (for a contact quantity: the first pair's).
+double last_step_number(const std::string& summary_path, const std::string& key) {
+  const std::string text = read_text(summary_path);
+  const std::regex entry("\"" + key + R"re(":\s*([-+0-9.eE]+))re");
+  std::smatch m;
+  const auto from = text.begin() + static_cast<std::ptrdiff_t>(text.rfind("\"step\":"));
+  if (!std::regex_search(from, text.end(), m, entry)) throw std::runtime_error(summary_path + ": no " + key);
+  return std::stod(m[1]);
+}
+
 /// Whether this CPU can execute OpenBLAS's kernel family `kernel` (SkylakeX needs AVX-512, Haswell and Zen
 /// AVX2 with FMA, Sandybridge AVX): forcing one it cannot is an illegal instruction, not a result.
 bool cpu_runs(const std::string& kernel) {
@@ -338,6 +349,18 @@ TEST(OpenBlasKernels, InclinedInterfaceAgreesUnderEveryKernel) {
       const Eigen::Vector2d r = last_step_reaction(summary, "upper_top");
       return std::abs(r.x() / r.y());
     });
+}
+
+// The dense interior points under each kernel family: the primal one on the dragged block's friction
+// subproblems (Coulomb on a rigid plane: its tangential reaction in gross slip, μ p L less the regularisation),
+// the one on the dual on the 3D Hertz sphere (its normal reaction); each agrees to 1e-6.
+TEST(OpenBlasKernels, DenseInteriorPointsAgreeUnderEveryKernel) {
+  const std::string dir = test_temp_dir("kernels_dense");
+  expect_same_under_every_kernel("friction_block/block.toml", dir, "R_x",
+                                 [](const std::string& summary) { return last_step_reaction(summary, "top").x(); });
+  expect_same_under_every_kernel("hertz_3d/sphere_on_plane.toml", dir, "normal load", [](const std::string& summary) {
+    return last_step_number(summary, "normal_load");
+  });
 }
 
 // The demo's axisymmetric O-ring (Mooney-Rivlin, Coulomb, a meshed rigid groove) likewise: its lid force at
