@@ -1049,8 +1049,8 @@ class Reader {
              "replaced by subproblem_solver = \"dual_interior_point\" (the default), \"dual_ipopt\" (dual_optimizer = "
              "\"ipopt\") or \"primal_ipopt\" (dual_solve = false)");
     check_keys(t, "contact_solver",
-               {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "max_coulomb_iterations",
-                "static_condensation", "subproblem_solver", "max_step_cuts"});
+               {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "converge_past_tolerance",
+                "max_coulomb_iterations", "static_condensation", "subproblem_solver", "max_step_cuts"});
     FrictionalOptions& f = spec.contact_solver.friction;
     ContactSolveOptions& s = f.contact;
     if (const toml::node* n = t.get("geometry_tolerance")) {
@@ -1066,6 +1066,8 @@ class Reader {
       f.coulomb_tolerance = as_number(*n, key);
       if (!(f.coulomb_tolerance > 0.0)) fail(key, "expected a number > 0, got " + format_number(f.coulomb_tolerance));
     }
+    if (const toml::node* n = t.get("converge_past_tolerance"))
+      f.converge_past_tolerance = as_bool(*n, "contact_solver.converge_past_tolerance");
     if (const toml::node* n = t.get("max_coulomb_iterations")) {
       f.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
     }

@@ -74,7 +74,10 @@ SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& 
   const LaggedSolve solve = [&](const ContactSolveOptions& o) {
     return solve_contact(energy, fixed, contacts, dofs, u, o, log, coulomb.any_friction() ? &coulomb.state() : nullptr);
   };
-  SolveReport rep = solve_lagged(coulomb, solve, u, u_start, options, inexact, log);
+  // Past the tolerance with finite-strain bodies only (FrictionalOptions::converge_past_tolerance).
+  FrictionalOptions loop = options;
+  loop.converge_past_tolerance = options.converge_past_tolerance && !energy.hessian_is_constant();
+  SolveReport rep = solve_lagged(coulomb, solve, u, u_start, loop, inexact, log);
   complete_on_exit.now();
   rep.friction_state = coulomb.state();
   return rep;

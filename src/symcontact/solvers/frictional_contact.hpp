@@ -29,6 +29,16 @@ struct FrictionalOptions {
   }();
   /// ‖τ_{k+1} − τ_k‖∞ / ‖τ_k‖∞ below which the Coulomb fixed point stops.
   double coulomb_tolerance = 1e-6;
+  /// Past the tolerance while it is cheap, with finite-strain bodies: a loop whose change, already below
+  /// coulomb_tolerance, fell tenfold from the previous iteration takes one more, down to 1e-2 ×
+  /// coulomb_tolerance at most (lagged_fixed_point.hpp). The error of a fixed point converging at a rate ρ is
+  /// about ρ/(1 − ρ) × its last change, so two paths that both stop just below the tolerance still differ by
+  /// about that. With finite-strain bodies the Tresca solves' IPOPT paths part within IPOPT's tolerance from
+  /// one unit system to another, and converging on makes the answer independent of the path. With linear
+  /// elasticity (quadratic energies) the same problem in other units takes the same path to round-off, and a
+  /// second stopping decision would only add one that round-off can tip: the option does not apply there
+  /// (solve_frictional_contact). Off: stop at the first change below the tolerance.
+  bool converge_past_tolerance = true;
   int max_coulomb_iterations = 50;
   /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is
   /// wasted, so each solve's geometry fixed point stops at max(geometry_tolerance, factor × c), c the

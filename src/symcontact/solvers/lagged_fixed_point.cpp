@@ -12,6 +12,9 @@ namespace symcontact {
 
 namespace {
 
+/// How far past the tolerance a fast-falling loop goes at most (the file comment).
+constexpr double kPastTolerance = 1e-2;
+
 /// Each stagnation remedy tightens the inner solves: IPOPT's tolerance × 1e-2 and the geometry tolerance × 0.1
 /// (the noise of what the term reads from the answer falls with them).
 void tighten(ContactSolveOptions& o) {
@@ -57,6 +60,7 @@ class LaggedFixedPoint {
   void first_solve(VectorXd& u, const VectorXd& u_cold);
   bool stops(int k, const std::vector<Eigen::VectorXd>& r);
   bool stagnation_ends(int iteration, double change);
+  bool falls_fast(double change) const;
   std::string failure(const std::string& what, int iteration, double change) const;
 
   LaggedTerm& term_;
@@ -147,6 +151,14 @@ bool LaggedFixedPoint::stagnation_ends(int iteration, double change) {
   throw SolveError(failure("stagnated", iteration, change));
 }
 
+/// Whether a change below the tolerance is worth one more iteration (the file comment: past the tolerance):
+/// it fell at least tenfold from the previous one and is still above kPastTolerance × the tolerance.
+bool LaggedFixedPoint::falls_fast(double change) const {
+  const std::vector<double>& c = rep_.coulomb_change;
+  return options_.converge_past_tolerance && c.size() >= 2 && change <= 0.1 * c[c.size() - 2] &&
+         change > kPastTolerance * options_.coulomb_tolerance;
+}
+
 /// Whether the loop ends after the solve of iteration k, whose residuals are r: converged on a solve to the
 /// geometry tolerance, or stagnated and accepted at the noise floor. Throws SolveError when it cannot converge.
 bool LaggedFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
@@ -162,7 +174,12 @@ bool LaggedFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
     << ", relaxation " << omega_;
   log_iteration(log_, clock_, s.str());
   if (change < options_.coulomb_tolerance) {
-    if (rep_.converged) return true;
+    if (rep_.converged) {
+      if (!falls_fast(change) || iteration >= options_.max_coulomb_iterations) return true;
+      log_.detail("  below the tolerance and falling tenfold per iteration: one more iteration");
+      confirming_ = false;
+      return false;
+    }
     log_.detail("  the " + term_.data_name() + "s settled on an inexact solve; one more solve to the geometry tolerance");
     scale_ = 0.0;
   } else if (confirming_ && inexact_) {

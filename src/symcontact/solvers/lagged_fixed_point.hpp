@@ -20,6 +20,12 @@
 ///    geometry fixed point stops at factor × c_{k−1} (1 before any change is known); the loop ends only on a
 ///    solve to the full geometry tolerance, so c below tolerance on an inexact solve asks for one more
 ///    solve, and a full solve that moves d back above the tolerance makes every later solve of the step exact.
+///  - Past the tolerance (FrictionalOptions::converge_past_tolerance): a converged change c_k that fell
+///    at least tenfold from c_{k−1} is followed by one more iteration while c_k > 1e-2 × tolerance. Near a
+///    fixed point contracting at a rate ρ the error of d_k is about ρ/(1 − ρ) c_k; where ρ ≤ 0.1 this costs
+///    an iteration or two and takes the error well below the tolerance, so that paths that parted by
+///    round-off (another unit system) meet. The loop stops at the first change below the tolerance that did
+///    not fall tenfold, and never goes past max_coulomb_iterations for it.
 ///  - Stagnation (FixedPointMonitor: a cycle, or the noise floor of the inner solves): the inner solves are
 ///    tightened (IPOPT tol × 1e-2, geometry tolerance × 0.1), at most kMaxTightenings times; stagnated after
 ///    that, the iterate is accepted only when its last solve converged and c ≤ stagnation_acceptance, with a

@@ -150,3 +150,19 @@ TEST(LaggedFixedPoint, TheIterationLimitIsAFailure) {
         << e.what();
   }
 }
+
+TEST(LaggedFixedPoint, AFastContractionGoesPastTheToleranceAndASlowOneDoesNot) {
+  // T(d) = 0.05 d + 1.9 contracts twentyfold per iteration: the first change below 1e-6 (1.5e-7) fell
+  // tenfold, so one more iteration takes it to 7e-9, below 1e-2 × the tolerance, where the loop stops.
+  const auto fast = [](double d) { return 0.05 * d + 1.9; };
+  FrictionalOptions off;
+  off.converge_past_tolerance = false;
+  const LoopRun on_run = run(fast, 1.0, true, false), off_run = run(fast, 1.0, true, false, off);
+  EXPECT_GT(off_run.report.coulomb_change.back(), 1e-2 * off.coulomb_tolerance);
+  EXPECT_LE(on_run.report.coulomb_change.back(), 1e-2 * off.coulomb_tolerance);
+  EXPECT_EQ(on_run.solves.size(), off_run.solves.size() + 1);
+  EXPECT_LT(std::abs(on_run.datum - 2.0), std::abs(off_run.datum - 2.0));
+  // T(d) = 0.5 d + 1 halves the change per iteration: it stops at the first change below the tolerance.
+  const auto slow = [](double d) { return 0.5 * d + 1.0; };
+  EXPECT_EQ(run(slow, 1.0, true, false).solves.size(), run(slow, 1.0, true, false, off).solves.size());
+}
