@@ -160,32 +160,6 @@ class GeometryFixedPoint {
   ProgressClock clock_;  ///< since the solve started
 };
 
-/// Whether the constraint rows are independent (obstacles and one-pass pairs: no symmetric pair, no
-/// self-contact), so that the multipliers are unique.
-bool independent_rows(const ContactSet& contacts) {
-  return std::none_of(contacts.pairs.begin(), contacts.pairs.end(), [](const ContactPair& p) { return p.two_sided(); });
-}
-
-/// The dual method of a solve: the dense interior point only where the constraint rows are independent;
-/// IPOPT on the dual for symmetric pairs and self-contact (dual_subproblem.hpp).
-std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice) {
-  if (choice == SubproblemSolver::kPrimalIpopt || choice == SubproblemSolver::kPrimalInteriorPoint) return nullptr;
-  if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows(contacts))
-    return std::make_unique<DualInteriorPoint>();
-  return std::make_unique<DualIpopt>();
-}
-
-/// The primal method of a solve: with the "interior_point" choices the dense interior point first where the
-/// rows are independent (on the nearly dependent rows of a symmetric pair it took five times IPOPT's iterations
-/// and 3.6 times its time: docs/performance.md, clamped-plates), IPOPT where it fails (primal_subproblem.hpp);
-/// IPOPT otherwise.
-std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
-  const bool interior_point =
-      choice == SubproblemSolver::kPrimalInteriorPoint || choice == SubproblemSolver::kDualInteriorPoint;
-  if (interior_point && independent_rows(contacts)) return std::make_unique<PrimalInteriorPoint>();
-  return std::make_unique<PrimalIpopt>();
-}
-
 GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                        const DofMap& dofs, const ContactSolveOptions& options, const Logger& log,
                                        const FrictionState* friction)

@@ -1,5 +1,11 @@
 #include "symcontact/solvers/subproblem_solver.hpp"
 
+#include <algorithm>
+
+#include "symcontact/contact/contact_set.hpp"
+#include "symcontact/solvers/dual_subproblem.hpp"
+#include "symcontact/solvers/primal_subproblem.hpp"
+
 namespace symcontact {
 
 namespace {
@@ -25,6 +31,24 @@ std::optional<SubproblemSolver> parse_subproblem_solver(const std::string& name)
   for (const SubproblemSolver s : kAll)
     if (name == subproblem_solver_name(s)) return s;
   return std::nullopt;
+}
+
+bool independent_rows(const ContactSet& contacts) {
+  return std::none_of(contacts.pairs.begin(), contacts.pairs.end(), [](const ContactPair& p) { return p.two_sided(); });
+}
+
+std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice) {
+  if (choice == SubproblemSolver::kPrimalIpopt || choice == SubproblemSolver::kPrimalInteriorPoint) return nullptr;
+  if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows(contacts))
+    return std::make_unique<DualInteriorPoint>();
+  return std::make_unique<DualIpopt>();
+}
+
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
+  const bool interior_point =
+      choice == SubproblemSolver::kPrimalInteriorPoint || choice == SubproblemSolver::kDualInteriorPoint;
+  if (interior_point && independent_rows(contacts)) return std::make_unique<PrimalInteriorPoint>();
+  return std::make_unique<PrimalIpopt>();
 }
 
 }  // namespace symcontact

@@ -3,10 +3,15 @@
 /// The choice of the method that solves each geometry iteration's subproblem (subproblem.hpp), and its names
 /// in the problem file ([contact_solver] subproblem_solver, docs/input.md).
 
+#include <memory>
 #include <optional>
 #include <string>
 
 namespace symcontact {
+
+class ContactSet;
+class DualIpopt;
+class PrimalIpopt;
 
 /// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
 /// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
@@ -40,5 +45,19 @@ const char* subproblem_solver_name(SubproblemSolver s);
 
 /// The choice named `name` in the problem file; nullopt for any other string.
 std::optional<SubproblemSolver> parse_subproblem_solver(const std::string& name);
+
+/// Whether the constraint rows of `contacts` are independent (obstacles and one-pass pairs: no symmetric pair,
+/// no self-contact), so that the multipliers are unique.
+bool independent_rows(const ContactSet& contacts);
+
+/// The dual method of a solve under `choice` (dual_subproblem.hpp): the dense interior point only where the
+/// rows are independent, IPOPT on the dual for symmetric pairs and self-contact; null for the primal choices.
+std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice);
+
+/// The primal method of a solve under `choice` (primal_subproblem.hpp): with the "interior_point" choices the
+/// dense interior point first where the rows are independent (on the nearly dependent rows of a symmetric pair
+/// it took five times IPOPT's iterations and 3.6 times its time: docs/performance.md, clamped-plates), IPOPT
+/// where it fails; IPOPT otherwise.
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice);
 
 }  // namespace symcontact
