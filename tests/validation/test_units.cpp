@@ -104,7 +104,7 @@ TEST_P(Units, RescaledProblemGivesTheSameDimensionlessAnswer) {
 
 // m–N–Pa → mm–N–MPa (stresses × 1e-6), lengths × 1e3 with forces × 1e6 (stresses unchanged), and a
 // shrink (lengths × 1e-2, forces × 1e3); the O-ring, written in mm–N–MPa, in m–N–Pa, μm–N, m–kN, μm–MN and
-// cm–10 μN (a finite-strain, frictional problem whose inner solves take different paths in each).
+// dm–100 kN (a finite-strain, frictional problem whose inner solves take different paths in each).
 INSTANTIATE_TEST_SUITE_P(
     FrictionExamples, Units,
     ::testing::Values(UnitsCase{"inclined_2d/inclined_mu0.1.toml", 1e3, 1.0},
