@@ -8,12 +8,10 @@
 /// tolerance suggests. Given IPOPT's solution and multipliers, the polish takes the active set
 /// S = {i : μ_i > 1e-6 max μ} and solves the equality-constrained problem
 ///     min f(x)  subject to  A_S x + b_S = 0
-/// by Newton steps on f (one for a quadratic f), each solved by the method of multipliers (Hestenes 1969;
-/// Nocedal & Wright, Numerical Optimization, 2006, §17.3): with M = H + ρ A_Sᵀ A_S factorised by CHOLMOD,
-///     M Δx = −(∇f(x) − A_Sᵀ μ_S) − ρ A_Sᵀ c_S(x),   x ← x + Δx,   μ_S ← μ_S − ρ c_S(x),
-/// which converges whatever the rank of A_S (dependent rows get some split of the multiplier; A_Sᵀμ_S,
-/// the contact force, is unique). With no active constraint it is plain Newton on f (removing the
-/// optimiser's stationarity error). The polished point is accepted only if it is a KKT point of the
+/// (equality_constrained_solve.hpp: Newton steps on f, one for a quadratic f, each solved directly in the
+/// range space of the KKT system or by the method of multipliers, which converges whatever the rank of A_S:
+/// dependent rows get some split of the multiplier; A_Sᵀμ_S, the contact force, is unique). With no active
+/// constraint it is plain Newton on f (removing the optimiser's stationarity error). The polished point is accepted only if it is a KKT point of the
 /// inequality problem: μ_S ≥ 0 (up to round-off) and no other constraint violated; otherwise the IPOPT
 /// point is kept.
 

@@ -32,4 +32,38 @@ inline CholmodSparseMatrix to_cholmod_long(const SparseMatrix& lower) {
   return a;
 }
 
+/// A CHOLMOD view (no copy) of the lower triangle of a compressed matrix with long indices.
+inline cholmod_sparse view_lower(const CholmodSparseMatrix& A) {
+  cholmod_sparse s{};
+  s.nrow = static_cast<size_t>(A.rows());
+  s.ncol = static_cast<size_t>(A.cols());
+  s.nzmax = static_cast<size_t>(A.nonZeros());
+  s.p = const_cast<CholmodIndex*>(A.outerIndexPtr());
+  s.i = const_cast<CholmodIndex*>(A.innerIndexPtr());
+  s.nz = nullptr;
+  s.x = const_cast<double*>(A.valuePtr());
+  s.z = nullptr;
+  s.stype = -1;  // symmetric, lower triangle stored
+  s.itype = CHOLMOD_LONG;  // cholmod_l_* throughout (cholmod_long.hpp)
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
+/// A CHOLMOD view (no copy) of a vector.
+inline cholmod_dense view_vector(VectorXd& v) {
+  cholmod_dense d{};
+  d.nrow = static_cast<size_t>(v.size());
+  d.ncol = 1;
+  d.nzmax = static_cast<size_t>(v.size());
+  d.d = static_cast<size_t>(v.size());
+  d.x = v.data();
+  d.z = nullptr;
+  d.xtype = CHOLMOD_REAL;
+  d.dtype = CHOLMOD_DOUBLE;
+  return d;
+}
+
 }  // namespace symcontact

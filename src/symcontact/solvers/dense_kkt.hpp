@@ -1,7 +1,7 @@
 #pragma once
 /// \file dense_kkt.hpp
 /// Equality-constrained quadratic steps with a dense Hessian, for the active-set polish of the condensed
-/// problem (active_set_polish.cpp):
+/// problem (equality_constrained_solve.hpp):
 ///
 ///     minimise ½ yᵀK y + hᵀy   subject to   A y = −c,      KKT:  K y − Aᵀλ = −h,   A y = −c,
 ///

@@ -4,7 +4,7 @@
 /// linearised at U_n,
 ///     U_{n+1} = argmin E(U)  subject to  A_n U + b_n ≥ 0,
 /// and its multipliers μ ≥ 0 (one per row). A SubproblemMethod is one way of solving it; the geometry fixed
-/// point (contact_solver.hpp) chooses one per iteration and stays unaware of how it works:
+/// point (geometry_subproblem.hpp) chooses one per iteration and stays unaware of how it works:
 ///  - PrimalIpopt (primal_subproblem.hpp): IPOPT on the displacements, condensed or not; any energy.
 ///  - PrimalInteriorPoint (primal_subproblem.hpp): the dense primal interior point on condensed displacements
 ///    (friction terms too), PrimalIpopt where it fails.

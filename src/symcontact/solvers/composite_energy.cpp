@@ -1,0 +1,30 @@
+#include "symcontact/solvers/composite_energy.hpp"
+
+namespace symcontact {
+
+double CompositeEnergy::value(const VectorXd& u) const {
+  double v = base_.value(u);
+  for (const auto& t : extra)
+    if (t) v += t->value(u);
+  return v;
+}
+
+void CompositeEnergy::add_gradient(const VectorXd& u, VectorXd& g) const {
+  base_.add_gradient(u, g);
+  for (const auto& t : extra)
+    if (t) t->add_gradient(u, g);
+}
+
+void CompositeEnergy::add_hessian(const VectorXd& u, MatrixSink& sink) const {
+  base_.add_hessian(u, sink);
+  for (const auto& t : extra)
+    if (t) t->add_hessian(u, sink);
+}
+
+bool CompositeEnergy::hessian_is_constant() const {
+  for (const auto& t : extra)
+    if (t) return false;
+  return base_.hessian_is_constant();
+}
+
+}  // namespace symcontact

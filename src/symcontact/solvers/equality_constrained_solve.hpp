@@ -1,0 +1,28 @@
+#pragma once
+/// \file equality_constrained_solve.hpp
+/// The solve of the active-set polish (active_set_polish.hpp) on a fixed set S of rows:
+///     min f(x)  subject to  A_S x + b_S = 0,
+/// by Newton steps on f (one for a quadratic f), each solved with M = H + ρ A_Sᵀ A_S factorised
+/// (spd_factor.hpp; H alone when S is empty) either
+///  - directly, by the range space of the KKT system (Nocedal & Wright, Numerical Optimization, 2006, §16.2):
+///        M Δ − A_Sᵀ λ = −ĝ,  A_S Δ = −c_S,  ĝ = g + ρ A_Sᵀ c_S
+///        ⇒ (A_S M⁻¹ A_Sᵀ) λ = A_S M⁻¹ ĝ − c_S,
+///    in the least-squares, minimum-norm sense because dependent rows make it singular; later Newton steps of
+///    a dense problem by projected CG preconditioned with the last factorised system (dense_kkt.hpp); or
+///  - by the method of multipliers (Hestenes 1969; Nocedal & Wright §17.3):
+///        M Δx = −(∇f(x) − A_Sᵀ ν) − ρ A_Sᵀ c_S(x),   x ← x + Δx,   ν ← ν − ρ c_S(x),
+///    which converges whatever the rank of A_S (dependent rows get some split of the multiplier; A_Sᵀ ν, the
+///    contact force, is unique).
+
+#include "symcontact/optim/constrained_problem.hpp"
+
+namespace symcontact {
+
+/// xs: the start on entry, the solution on exit; nu: the multipliers of the rows of AS (ν ≥ 0 for a pull of
+/// the constraint), their start on entry; `iterations` counts the steps taken. `direct`: the range-space solve
+/// where S has at most a few thousand rows (else, or when M needs a large ρ to be definite, the method of
+/// multipliers). Returns false when M cannot be factorised.
+bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
+                  int& iterations, bool direct);
+
+}  // namespace symcontact

@@ -1,0 +1,71 @@
+#include "symcontact/solvers/geometry_subproblem.hpp"
+
+#include "symcontact/solvers/equilibrium_solver.hpp"
+#include "symcontact/solvers/condensation_cache.hpp"
+
+namespace symcontact {
+
+GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
+                                       const DofMap& dofs, const ContactSolveOptions& options,
+                                       ContactWorkspace& workspace, const Logger& log, const FrictionState* friction)
+    : energy_(energy), fixed_(fixed), contacts_(contacts), dofs_(dofs), options_(options), workspace_(workspace),
+      log_(log), friction_(friction), total_(energy), problem_(total_, fixed, dofs.num_dofs()),
+      bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
+      dual_(dual_method(contacts, options.subproblem_solver)),
+      primal_(primal_method(contacts, options.subproblem_solver)) {}
+
+/// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out
+/// of it, so that the problem stays quadratic, and kept for the slips it reports.
+ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, const VectorXd& u_it,
+                                              const VectorXd& x, PhaseTimes& times) {
+  {
+    ScopedPhase t(times, "assembly");
+    problem_.set_constraints(lin.A, lin.b);
+    total_.extra.assign(contacts_.pairs.size(), nullptr);
+    friction_terms_.assign(contacts_.pairs.size(), nullptr);
+    if (friction_) {
+      friction_terms_ = symcontact::friction_terms(*friction_, contacts_, dofs_, u_it);
+      for (std::size_t p = 0; p < friction_terms_.size(); ++p)
+        if (friction_terms_[p] && friction_->nodal_tau[p].maxCoeff() > 0.0) total_.extra[p] = friction_terms_[p];
+    }
+  }
+  condensed_.reset();
+  if (!condense_) return problem_;
+  ScopedPhase t(times, "condensation");
+  condensed_ = condense_problem(bulk_, problem_, contacts_, dofs_, total_.extra, u_it, x, energy_, workspace_,
+                                {options_.max_condensed_dofs, options_.same_loads}, log_, condensed_load_);
+  if (condensed_) return *condensed_;
+  return problem_;
+}
+
+GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geometry_iteration,
+                                                      const VectorXd* warm_multipliers, const IpoptOptions& ipopt,
+                                                      bool close_active_set, SolveReport& rep) {
+  const CondensedProblem* condensed = condensed_.get();
+  ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed_) : problem_;
+  const SemidefiniteFactor* schur = nullptr;
+  if (condensed && dual_ && condensed->hessian_is_constant() && target.constraint_matrix().rows() > 0) {
+    ScopedPhase t(rep.times, "condensation");  // the Schur complement's factor: once per condensation
+    schur = dual_schur_factor(workspace_, log_);
+  }
+  const VectorXd start = condensed ? condensed->restrict(x) : x;
+  const SubproblemWarmStart warm{warm_multipliers};
+  Subproblem p{target, condensed, schur, start, geometry_iteration, ipopt, close_active_set, {}};
+  if (schur) {
+    SubproblemSolution s = dual_->solve(p, warm, log_, rep.times);
+    ++rep.dual_solves;
+    if (s.result.success) return {std::move(s), true};
+    log_.detail("  IPOPT failed on the dual (" + s.result.status_text + "); the primal is solved instead");
+    rep.ipopt_iterations += s.failed_iterations + s.result.iterations;
+  }
+  if (friction_)
+    p.restart = [this, condensed] {
+      VectorXd u_retry = friction_->u_start;  // the start of the step, moved as at the first solve
+      predict_dirichlet_increment(energy_, fixed_, u_retry);
+      const VectorXd xr = problem_.restrict(u_retry);
+      return condensed ? condensed->restrict(xr) : xr;
+    };
+  return {primal_->solve(p, warm, log_, rep.times), false};
+}
+
+}  // namespace symcontact

@@ -1,0 +1,73 @@
+#pragma once
+/// \file geometry_subproblem.hpp
+/// The subproblem of one geometry iteration (Algorithm 2 of METHOD.md), built and solved:
+///     U_{n+1} = argmin E(U) + Σ_pairs j_τ(U)  subject to  A_n U + b_n ≥ 0,
+/// with A_n, b_n the contact constraints linearised at U_n (contact_set.hpp) and j_τ the friction terms of the
+/// thresholds τ at U_n (friction_state.hpp; none without friction). When the bodies' energy is quadratic the
+/// problem is condensed onto the contact DOFs B (condensed_problem.hpp, one factor of K for the whole run in
+/// the ContactWorkspace). It is then solved by the dual where it applies (condensed, no friction term,
+/// constraints present: dual_subproblem.hpp) and otherwise, or when the dual fails, by the primal, the
+/// reference formulation (primal_subproblem.hpp); which method of each is SubproblemSolver's choice.
+
+#include <memory>
+#include <vector>
+
+#include "symcontact/solvers/composite_energy.hpp"
+#include "symcontact/solvers/condensed_problem.hpp"
+#include "symcontact/solvers/contact_solver.hpp"
+#include "symcontact/solvers/dual_subproblem.hpp"
+#include "symcontact/solvers/primal_subproblem.hpp"
+#include "symcontact/solvers/reduced_problem.hpp"
+
+namespace symcontact {
+
+class GeometrySubproblem {
+ public:
+  GeometrySubproblem(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts, const DofMap& dofs,
+                     const ContactSolveOptions& options, ContactWorkspace& workspace, const Logger& log,
+                     const FrictionState* friction);
+
+  /// The bodies' energy with the friction terms on the free DOFs: restrict() and expand() between u and x.
+  const ReducedProblem& reduced() const { return problem_; }
+
+  /// Sets the rows of `lin` and the friction terms of the iterate u_it, and condenses when the energy is
+  /// quadratic (x: u_it's free DOFs). Returns the problem the optimiser sees, condensed() or the whole one.
+  ConstrainedProblem& build(const ContactLinearization& lin, const VectorXd& u_it, const VectorXd& x,
+                            PhaseTimes& times);
+  /// The condensed problem of the last build(); null when it was not condensed.
+  const CondensedProblem* condensed() const { return condensed_.get(); }
+  /// The friction term of each pair at the last build() (null for a frictionless pair), for the reported slips.
+  const std::vector<std::shared_ptr<const FrictionTerm>>& friction_terms() const { return friction_terms_; }
+
+  /// What solve() returns: the method's solution and whether the dual gave it.
+  struct Outcome {
+    SubproblemSolution solution;
+    bool dual = false;
+  };
+  /// The subproblem of the last build() from the iterate x (free DOFs), its multipliers warm-started from
+  /// warm_multipliers when not null (the same rows as theirs). The dual's attempts and the iterations of a
+  /// failed one are added to rep.
+  Outcome solve(const VectorXd& x, int geometry_iteration, const VectorXd* warm_multipliers, const IpoptOptions& ipopt,
+                bool close_active_set, SolveReport& rep);
+
+ private:
+  const EnergyTerm& energy_;
+  const FixedDofs& fixed_;
+  const ContactSet& contacts_;
+  const DofMap& dofs_;
+  const ContactSolveOptions& options_;
+  ContactWorkspace& workspace_;
+  const Logger& log_;
+  const FrictionState* friction_;
+  CompositeEnergy total_;
+  ReducedProblem problem_;  ///< the bodies' energy with the friction terms
+  ReducedProblem bulk_;     ///< the bodies' energy alone (static condensation)
+  const bool condense_;
+  std::shared_ptr<const CondensedLoad> condensed_load_;  ///< of this solve's Dirichlet values and loads
+  std::unique_ptr<DualIpopt> dual_;                       ///< null: the dual is not used
+  std::unique_ptr<PrimalIpopt> primal_;
+  std::unique_ptr<CondensedProblem> condensed_;
+  std::vector<std::shared_ptr<const FrictionTerm>> friction_terms_;
+};
+
+}  // namespace symcontact
