@@ -256,6 +256,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     c.which = *which;
     c.friction = opt.frictionless ? LargeContactFriction::kNone : LargeContactFriction::kCoulomb;
     c.subproblem_solver = opt.subproblem_solver;
+    c.condense = !opt.no_condense;
     run_large_contact_sweep(c, machine);
     return;
   }
@@ -368,7 +369,8 @@ int main(int argc, char** argv) {
                "Hertz cases: mesh each size and print its DOFs, predicted factor and whether it fits in memory; "
                "solve none");
   app.add_flag("--no-condense", opt.no_condense,
-               "Hertz cases: no static condensation (IPOPT on the whole problem), to compare");
+               "Hertz cases: no static condensation (IPOPT on the whole problem), to compare; pad-flat, pad-ball, "
+               "clamped-plates and their -2d analogues: [contact_solver] static_condensation = false");
   app.add_flag("--no-dual", opt.no_dual,
                "Hertz cases: no dual solve (IPOPT on the condensed displacements, with the primal polish), to compare");
   app.add_flag("--dual-ipopt", opt.dual_ipopt,

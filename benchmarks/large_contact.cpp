@@ -176,7 +176,7 @@ CaseFiles case_files(LargeContactCase c) {
 /// The problem file at element size h: [problem] with mesh_size = h, then the case's text with the friction
 /// law in its [[contact]] table.
 std::string problem_text(LargeContactCase c, const CaseFiles& f, LargeContactFriction friction, double h,
-                         const std::string& subproblem_solver) {
+                         const std::string& subproblem_solver, bool condense) {
   std::ostringstream law;
   law << "[[contact]]\n";
   if (friction == LargeContactFriction::kCoulomb) law << "friction = \"coulomb\"\nmu = " << kMu << "\n";
@@ -188,7 +188,9 @@ std::string problem_text(LargeContactCase c, const CaseFiles& f, LargeContactFri
   s << std::setprecision(9) << "title = \"" << large_contact_name(c) << "\"\n\n[problem]\ndimension = "
     << case_dimension(c) << "\nmesh_size = " << h << "\n\n"
     << toml;
-  if (!subproblem_solver.empty()) s << "\n[contact_solver]\nsubproblem_solver = \"" << subproblem_solver << "\"\n";
+  if (!subproblem_solver.empty() || !condense) s << "\n[contact_solver]\n";
+  if (!subproblem_solver.empty()) s << "subproblem_solver = \"" << subproblem_solver << "\"\n";
+  if (!condense) s << "static_condensation = false\n";
   return s.str();
 }
 
@@ -272,7 +274,8 @@ void run_large_contact_sweep(const LargeContactBenchOptions& opt, const MachineI
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
     std::unique_ptr<ProblemRun> run;
     try {
-      run = solve_problem(problem_text(opt.which, files, opt.friction, h, opt.subproblem_solver), name + ".toml", work);
+      run = solve_problem(problem_text(opt.which, files, opt.friction, h, opt.subproblem_solver, opt.condense),
+                          name + ".toml", work);
       const double peak_contact = peak_rss_mib();
       const double ratio = reaction_ratio(*run, files.moved_body);
       const bool closed_form = files.gross_slip && opt.friction == LargeContactFriction::kCoulomb;

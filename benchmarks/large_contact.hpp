@@ -57,6 +57,9 @@ struct LargeContactBenchOptions {
   bool keep_work = false; ///< keep the temporary directory with the .geo and .toml files
   /// [contact_solver] subproblem_solver of the problems (subproblem_solver.hpp names); empty: the default.
   std::string subproblem_solver;
+  /// [contact_solver] static_condensation of the problems (--no-condense: false, the whole problem to the
+  /// optimiser, its Newton systems sparse).
+  bool condense = true;
 };
 
 /// The ladder of h of each case: by default sizes that each take at most a couple of minutes on two cores
