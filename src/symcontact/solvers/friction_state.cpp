@@ -5,10 +5,6 @@
 
 namespace symcontact {
 
-namespace {
-
-/// The nodal friction points of pair p's friction family at the displacement u (at X for a pair in
-/// ContactGeometry::kReference: contact_geometry.hpp).
 std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int p, const DofMap& dofs,
                                                 const VectorXd& u_iterate) {
   const VectorXd u = contacts.geometry_displacement(p, u_iterate);
@@ -22,8 +18,6 @@ std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int 
     for (ContactPoint& q : nodal) q.weight *= 0.5;
   return nodal;
 }
-
-}  // namespace
 
 std::vector<std::shared_ptr<const FrictionTerm>> friction_terms(const FrictionState& state, const ContactSet& contacts,
                                                                 const DofMap& dofs, const VectorXd& u) {

@@ -22,6 +22,11 @@ struct FrictionState {
   std::vector<Eigen::VectorXd> previous_tau;
 };
 
+/// The nodal friction points of pair p's friction family at the displacement u (at X for a pair in
+/// ContactGeometry::kReference: contact_geometry.hpp).
+std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int p, const DofMap& dofs,
+                                                const VectorXd& u_iterate);
+
 /// The friction term of every pair at the displacement u (null for a pair without thresholds), integrated
 /// node by node: node k of the slave surface carries its own weight A_k, slip and threshold τ_k, so that
 /// σ_T = −τ_k s_k / sqrt(|s_k|² + α²) holds at every node with the same lumped A_k the pressure is recovered

@@ -83,6 +83,7 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   }
   const ContactLinearization& lin = rep_.linearization;
   if (it == 1) warn_pairs_without_points(contacts_, lin, log_);
+  if (it > 1 && accept_unchanged(it, u_it)) return true;
   ConstrainedProblem& target = subproblem_.build(lin, u_it, x_, rep_.times);
   const CondensedProblem* condensed = subproblem_.condensed();
   rep_.num_constraints = lin.A.rows();
@@ -115,12 +116,8 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   }
   const double change =
       (res.x - x_).lpNorm<Eigen::Infinity>() / std::max(res.x.lpNorm<Eigen::Infinity>(), 1e-300);
-  if (polish_.balance_deferred() && !inexact_ && change < options_.geometry_tolerance) {
-    VectorXd xt = condensed ? condensed->restrict(res.x) : res.x;
-    polish_.balance(target, xt, res.multipliers, log_, rep_.times);
-    ScopedPhase t(rep_.times, "condensation");
-    res.x = lazy_ ? condensed->with_boundary(res.x, xt) : from_target(xt);
-  }
+  if (polish_.balance_deferred() && !inexact_ && change < options_.geometry_tolerance)
+    balance_at_end(target, condensed, res);
   polish_.record_change(change, closed, rep_.change_history, log_);
   rep_.change_history.push_back(change);
   if (log_.level() >= Verbosity::kDebug)
@@ -143,7 +140,46 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   }
   after_stagnation(it, change, u);
   accelerate(x_in, res, closed, same_rows);
+  x_solves_last_ = x_ == res.x;
   return false;
+}
+
+/// The subproblem at the iterate is the last one again (the header): the iterate, its solution, ends the loop
+/// with a change of 0 when its gaps b moved by at most 1e-3 of the tolerance's share of the displacements
+/// (what a new solve would move it by, besides the optimiser's own noise), with the force balance a
+/// converged iterate gets. Not where the last iterate was accelerated: then it is not that solution.
+bool GeometryFixedPoint::accept_unchanged(int it, const VectorXd& u_it) {
+  if (!x_solves_last_) return false;
+  const double b_tolerance = 1e-3 * stop_tolerance_ * u_it.lpNorm<Eigen::Infinity>();
+  if (!subproblem_.unchanged(rep_.linearization, u_it, b_tolerance)) return false;
+  IpoptResult res;
+  res.x = x_;
+  res.multipliers = mu_prev_;
+  if (polish_.balance_deferred() && !inexact_) {
+    balance_at_end(subproblem_.target(), subproblem_.condensed(), res);
+    x_ = res.x;
+  }
+  rep_.ipopt_per_iteration.push_back(0);
+  rep_.change_history.push_back(0.0);
+  rep_.geometry_iterations = it;
+  std::ostringstream m;
+  m << "  geometry iteration " << it << ": " << rep_.linearization.A.rows()
+    << " constraints, the subproblem of the last iteration again: its solution stands (change 0)";
+  log_iteration(log_, clock_, m.str());
+  accept(subproblem_.condensed(), res, 0.0);
+  return true;
+}
+
+/// The force balance deferred to the iterate that ends the fixed point (polish_strategy.hpp), of res.x.
+void GeometryFixedPoint::balance_at_end(ConstrainedProblem& target, const CondensedProblem* condensed,
+                                        IpoptResult& res) {
+  VectorXd xt = condensed ? condensed->restrict(res.x) : res.x;
+  polish_.balance(target, xt, res.multipliers, log_, rep_.times);
+  ScopedPhase t(rep_.times, "condensation");
+  if (!condensed)
+    res.x = xt;
+  else
+    res.x = lazy_ ? condensed->with_boundary(res.x, xt) : condensed->expand(xt);
 }
 
 /// The converged iterate: the bodies' residual on B for the contact forces (∇E = ĝ + S y there,

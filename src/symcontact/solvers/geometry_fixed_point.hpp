@@ -9,7 +9,9 @@
 ///   until   ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ < tolerance,
 ///
 /// with IPOPT tightened when the change stagnates above the tolerance (fixed_point_monitor.hpp), and the
-/// contact forces recovered from the final multipliers and the bodies' residual (contact_forces.hpp).
+/// contact forces recovered from the final multipliers and the bodies' residual (contact_forces.hpp). Where
+/// the linearisation at U_{n+1} gives the subproblem of U_n again (GeometrySubproblem::unchanged(): a pair in
+/// the reference geometry, a rigid plane), U_{n+1} solves it: the loop ends there without solving it again.
 
 #include <memory>
 #include <vector>
@@ -34,6 +36,8 @@ class GeometryFixedPoint {
  private:
   bool iterate(int it, VectorXd& u);
   bool rows_match_previous(int it);
+  bool accept_unchanged(int it, const VectorXd& u_it);
+  void balance_at_end(ConstrainedProblem& target, const CondensedProblem* condensed, IpoptResult& res);
   void accept(const CondensedProblem* condensed, const IpoptResult& res, double change);
   void after_stagnation(int it, double change, VectorXd& u);
   void accelerate(const VectorXd& x_in, const IpoptResult& res, bool closed, bool same_rows);
@@ -64,6 +68,7 @@ class GeometryFixedPoint {
   std::vector<char> active_prev_;     ///< rows with μ > 0 after the previous closed polish
   VectorXd residual_b_;  ///< ∇E on the condensed set B at the solution, when the last iteration was condensed
   bool lazy_ = false;    ///< the iterate's interior is out of date (ContactSolveOptions::lazy_interior)
+  bool x_solves_last_ = false;  ///< x_ is the last subproblem's solution as it came (no Anderson step)
   ProgressClock clock_;  ///< since the solve started
 };
 

@@ -20,6 +20,10 @@ ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, c
                                               const VectorXd& x, PhaseTimes& times) {
   {
     ScopedPhase t(times, "assembly");
+    last_.A = lin.A;
+    last_.b = lin.b;
+    last_.row_family = lin.row_family;
+    last_.row_node = lin.row_node;
     problem_.set_constraints(lin.A, lin.b);
     total_.extra.assign(contacts_.pairs.size(), nullptr);
     friction_terms_.assign(contacts_.pairs.size(), nullptr);
@@ -38,11 +42,54 @@ ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, c
   return problem_;
 }
 
+namespace {
+
+/// Two sparse matrices with the same pattern and the same values, bit for bit.
+bool identical(const SparseMatrix& a, const SparseMatrix& b) {
+  if (a.rows() != b.rows() || a.cols() != b.cols() || a.nonZeros() != b.nonZeros()) return false;
+  for (Index j = 0; j < a.outerSize(); ++j) {
+    SparseMatrix::InnerIterator ia(a, j), ib(b, j);
+    for (; ia && ib; ++ia, ++ib)
+      if (ia.row() != ib.row() || ia.value() != ib.value()) return false;
+    if (ia || ib) return false;
+  }
+  return true;
+}
+
+/// The same point in every field a FrictionTerm reads (friction_term.hpp): where it is and what it weighs.
+bool same_friction_point(const ContactPoint& a, const ContactPoint& b) {
+  return a.slave_facet == b.slave_facet && a.xi[0] == b.xi[0] && a.xi[1] == b.xi[1] &&
+         a.master_facet == b.master_facet && a.eta[0] == b.eta[0] && a.eta[1] == b.eta[1] &&
+         a.normal == b.normal && a.weight == b.weight && a.slave_node == b.slave_node;
+}
+
+}  // namespace
+
+bool GeometrySubproblem::unchanged(const ContactLinearization& lin, const VectorXd& u_it, double b_tolerance) const {
+  if (lin.row_family != last_.row_family || lin.row_node != last_.row_node || !identical(lin.A, last_.A) ||
+      lin.b.size() != last_.b.size() || (lin.b.size() > 0 && (lin.b - last_.b).lpNorm<Eigen::Infinity>() > b_tolerance))
+    return false;
+  for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
+    if (!friction_terms_[p]) continue;
+    const std::vector<ContactPoint> now = nodal_friction_points(contacts_, static_cast<int>(p), dofs_, u_it);
+    const std::vector<ContactPoint>& then = friction_terms_[p]->points();
+    if (now.size() != then.size()) return false;
+    for (std::size_t q = 0; q < now.size(); ++q)
+      if (!same_friction_point(now[q], then[q])) return false;
+  }
+  return true;
+}
+
+ConstrainedProblem& GeometrySubproblem::target() {
+  if (condensed_) return *condensed_;
+  return problem_;
+}
+
 GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geometry_iteration,
                                                       const VectorXd* warm_multipliers, const IpoptOptions& ipopt,
                                                       bool close_active_set, SolveReport& rep) {
   const CondensedProblem* condensed = condensed_.get();
-  ConstrainedProblem& target = condensed ? static_cast<ConstrainedProblem&>(*condensed_) : problem_;
+  ConstrainedProblem& target = this->target();
   const SemidefiniteFactor* schur = nullptr;
   if (condensed && dual_ && condensed->hessian_is_constant() && target.constraint_matrix().rows() > 0) {
     ScopedPhase t(rep.times, "condensation");  // the Schur complement's factor: once per condensation

@@ -34,6 +34,14 @@ class GeometrySubproblem {
   /// quadratic (x: u_it's free DOFs). Returns the problem the optimiser sees, condensed() or the whole one.
   ConstrainedProblem& build(const ContactLinearization& lin, const VectorXd& u_it, const VectorXd& x,
                             PhaseTimes& times);
+  /// Whether the subproblem linearised at u_it (rows `lin`) is that of the last build(): the same rows with the
+  /// same A bit for bit, b within `b_tolerance` (in b's units, a length), and the same friction points in every
+  /// field a FrictionTerm reads. Then the last build's solution solves it too, to b_tolerance. So it is for a
+  /// pair in ContactGeometry::kReference, and for a rigid plane while no point enters or leaves the search
+  /// distance (its rows are the plane's normal; b only moves by round-off).
+  bool unchanged(const ContactLinearization& lin, const VectorXd& u_it, double b_tolerance) const;
+  /// The problem of the last build(), as the optimiser sees it: condensed() or the whole one.
+  ConstrainedProblem& target();
   /// The condensed problem of the last build(); null when it was not condensed.
   const CondensedProblem* condensed() const { return condensed_.get(); }
   /// The friction term of each pair at the last build() (null for a frictionless pair), for the reported slips.
@@ -68,6 +76,7 @@ class GeometrySubproblem {
   std::unique_ptr<PrimalIpopt> primal_;
   std::unique_ptr<CondensedProblem> condensed_;
   std::vector<std::shared_ptr<const FrictionTerm>> friction_terms_;
+  ContactLinearization last_;  ///< the rows of the last build()
 };
 
 }  // namespace symcontact
