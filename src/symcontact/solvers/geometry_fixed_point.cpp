@@ -9,6 +9,11 @@
 
 namespace symcontact {
 
+namespace {
+/// How close to the tolerance a change that stops falling is taken for the subproblems' noise.
+constexpr double kNearTolerance = 10.0;
+}  // namespace
+
 GeometryFixedPoint::GeometryFixedPoint(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                        const DofMap& dofs, const ContactSolveOptions& options, const Logger& log,
                                        const FrictionState* friction)
@@ -204,12 +209,26 @@ void GeometryFixedPoint::accept(const CondensedProblem* condensed, const IpoptRe
 /// fails, u holding the last iterate.
 void GeometryFixedPoint::after_stagnation(int it, double change, VectorXd& u) {
   monitor_.record(change);
-  if (monitor_.stagnated() && tightenings_ < kMaxTightenings) {
+  // Linear elasticity: near the tolerance, a change that stops falling fast is the subproblems' noise: within
+  // kNearTolerance × the tolerance, one above half of the previous change (both under the same optimiser
+  // settings) tightens at once, instead of after the monitor's window of iterations at that floor. (With
+  // finite-strain bodies a tighter IPOPT can fail where the looser one converges: the frictional ironing's
+  // sub-steps; there the monitor alone decides.)
+  const std::vector<double>& c = monitor_.changes();
+  const bool at_noise = energy_.hessian_is_constant() && since_tightening_ >= 1 && c.size() >= 2 &&
+                        change < kNearTolerance * stop_tolerance_ && change > 0.5 * c[c.size() - 2];
+  ++since_tightening_;
+  if ((monitor_.stagnated() || at_noise) && tightenings_ < kMaxTightenings) {
     ++tightenings_;
+    since_tightening_ = 0;
     tighten_optimiser(ipopt_);
     std::ostringstream s;
-    s << "  the geometry fixed point stagnated (no new low below " << monitor_.best() << "); IPOPT tol tightened to "
-      << ipopt_.tolerance;
+    if (at_noise)
+      s << "  the geometry fixed point stopped falling near its tolerance (" << c[c.size() - 2] << ", then " << change
+        << "); IPOPT tol tightened to " << ipopt_.tolerance;
+    else
+      s << "  the geometry fixed point stagnated (no new low below " << monitor_.best()
+        << "); IPOPT tol tightened to " << ipopt_.tolerance;
     log_.detail(s.str());
     monitor_.restart();
   }

@@ -61,6 +61,7 @@ class GeometryFixedPoint {
   IpoptOptions ipopt_;  ///< the settings of this solve: tightened when the fixed point stagnates
   FixedPointMonitor monitor_;
   int tightenings_ = 0;
+  int since_tightening_ = 0;  ///< changes recorded since the last tightening (or the start)
   VectorXd x_;                        ///< the iterate (free DOFs)
   VectorXd mu_prev_;                  ///< the previous rows' multipliers
   std::vector<int> rows_prev_family_;
