@@ -18,30 +18,48 @@ using namespace symcontact;
 
 namespace {
 
+/// The one-pass patch (independent rows), and a GeometrySubproblem of it built at the undeformed state.
+class GeometrySubproblemTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    symcontact::testing::ContactPatchCase c;
+    c.mode = "one-pass";
+    patch_ = symcontact::testing::contact_patch_model(c, folder_.path(), fixed_);
+    u0_ = VectorXd::Zero(model().dofs().num_dofs());
+    fixed_.impose(u0_);
+  }
+  const Model& model() const { return *patch_->model; }
+  /// A subproblem under `o`, built at u0_.
+  std::unique_ptr<GeometrySubproblem> built(const ContactSolveOptions& o) {
+    const Model& m = model();
+    auto sub = std::make_unique<GeometrySubproblem>(m.energy(), fixed_, m.contacts(), m.dofs(), o, workspace_, log_,
+                                                    nullptr);
+    sub->build(m.contacts().linearize(m.dofs(), u0_), u0_, sub->reduced().restrict(u0_), rep_.times);
+    return sub;
+  }
+
+  symcontact::testing::TempFolder folder_{"geometry_subproblem"};
+  std::unique_ptr<symcontact::testing::ModelCase> patch_;
+  FixedDofs fixed_;
+  VectorXd u0_;
+  ContactWorkspace workspace_;
+  SolveReport rep_;
+  std::ostringstream sink_;
+  Logger log_{sink_, Verbosity::kQuiet};
+};
+
 struct Step {
   bool condensed = false;
   bool dual = false;
-  VectorXd u;           ///< the subproblem's solution, every DOF
+  VectorXd u;  ///< the subproblem's solution, every DOF
   VectorXd multipliers;
 };
 
-Step solve_once(const Model& m, const FixedDofs& fixed, bool condense) {
-  ContactSolveOptions o;
-  o.static_condensation = condense;
-  o.ipopt.tolerance = 1e-11;
-  ContactWorkspace workspace;
-  std::ostringstream sink;
-  const Logger log(sink, Verbosity::kQuiet);
-  GeometrySubproblem sub(m.energy(), fixed, m.contacts(), m.dofs(), o, workspace, log, nullptr);
-  VectorXd u = VectorXd::Zero(m.dofs().num_dofs());
-  fixed.impose(u);
-  const VectorXd x = sub.reduced().restrict(u);
-  const ContactLinearization lin = m.contacts().linearize(m.dofs(), u);
-  SolveReport rep;
-  sub.build(lin, u, x, rep.times);
+Step solve_once(GeometrySubproblem& sub, const VectorXd& u0, const IpoptOptions& ipopt, SolveReport& rep) {
+  const VectorXd x = sub.reduced().restrict(u0);
   Step s;
   s.condensed = sub.condensed() != nullptr;
-  GeometrySubproblem::Outcome out = sub.solve(x, 1, nullptr, o.ipopt, true, rep);
+  GeometrySubproblem::Outcome out = sub.solve(x, 1, nullptr, ipopt, true, rep);
   EXPECT_TRUE(out.solution.result.success) << out.solution.result.status_text;
   s.dual = out.dual;
   const VectorXd xs = s.condensed ? sub.condensed()->expand(out.solution.result.x) : out.solution.result.x;
@@ -50,16 +68,18 @@ Step solve_once(const Model& m, const FixedDofs& fixed, bool condense) {
   return s;
 }
 
+ContactSolveOptions options(bool condense) {
+  ContactSolveOptions o;
+  o.static_condensation = condense;
+  o.ipopt.tolerance = 1e-11;
+  return o;
+}
+
 }  // namespace
 
-TEST(GeometrySubproblem, CondensedByTheDualAndWholeByThePrimalGiveTheSameSolution) {
-  symcontact::testing::TempFolder folder{"geometry_subproblem"};
-  symcontact::testing::ContactPatchCase c;
-  c.mode = "one-pass";
-  FixedDofs fixed;
-  const auto patch = symcontact::testing::contact_patch_model(c, folder.path(), fixed);
-  const Model& m = *patch->model;
-  const Step condensed = solve_once(m, fixed, true), whole = solve_once(m, fixed, false);
+TEST_F(GeometrySubproblemTest, CondensedByTheDualAndWholeByThePrimalGiveTheSameSolution) {
+  const Step condensed = solve_once(*built(options(true)), u0_, options(true).ipopt, rep_);
+  const Step whole = solve_once(*built(options(false)), u0_, options(false).ipopt, rep_);
   EXPECT_TRUE(condensed.condensed);
   EXPECT_TRUE(condensed.dual);
   EXPECT_FALSE(whole.condensed);
@@ -72,36 +92,23 @@ TEST(GeometrySubproblem, CondensedByTheDualAndWholeByThePrimalGiveTheSameSolutio
             1e-6 * whole.multipliers.lpNorm<Eigen::Infinity>());
 }
 
-TEST(GeometrySubproblem, TheSameLinearisationIsUnchangedAndAMovedOneIsNot) {
-  // The one-pass patch in the current geometry: its rows are the slave nodes' projections on the master
-  // facets, which move with the displacement.
-  symcontact::testing::TempFolder folder{"geometry_subproblem_unchanged"};
-  symcontact::testing::ContactPatchCase c;
-  c.mode = "one-pass";
-  FixedDofs fixed;
-  const auto patch = symcontact::testing::contact_patch_model(c, folder.path(), fixed);
-  const Model& m = *patch->model;
-  ContactSolveOptions o;
-  ContactWorkspace workspace;
-  std::ostringstream sink;
-  const Logger log(sink, Verbosity::kQuiet);
-  GeometrySubproblem sub(m.energy(), fixed, m.contacts(), m.dofs(), o, workspace, log, nullptr);
-  VectorXd u = VectorXd::Zero(m.dofs().num_dofs());
-  fixed.impose(u);
-  const ContactLinearization lin = m.contacts().linearize(m.dofs(), u);
-  SolveReport rep;
-  sub.build(lin, u, sub.reduced().restrict(u), rep.times);
-  EXPECT_TRUE(sub.unchanged(m.contacts().linearize(m.dofs(), u), u, 0.0));
+TEST_F(GeometrySubproblemTest, TheSameLinearisationIsUnchangedAndAMovedOneIsNot) {
+  // In the current geometry the rows are the slave nodes' projections on the master facets, which move with
+  // the displacement.
+  const Model& m = model();
+  const auto sub = built(ContactSolveOptions());
+  const ContactLinearization lin = m.contacts().linearize(m.dofs(), u0_);
+  EXPECT_TRUE(sub->unchanged(lin, u0_, 0.0));
   // A tangential shift of one block moves every projection on the other: other coefficients in A.
   ASSERT_GE(m.dofs().num_bodies(), 2);
-  VectorXd shifted = u;
+  VectorXd shifted = u0_;
   for (Index d = m.dofs().offset(0); d < m.dofs().offset(1); d += m.dofs().dim()) shifted[d] += 1e-3;
-  EXPECT_FALSE(sub.unchanged(m.contacts().linearize(m.dofs(), shifted), shifted, 1.0));
+  EXPECT_FALSE(sub->unchanged(m.contacts().linearize(m.dofs(), shifted), shifted, 1.0));
   // The same rows with gaps moved by 1e-9: unchanged to 1e-8, not to 1e-10.
   ContactLinearization moved = lin;
   moved.b.array() += 1e-9;
-  EXPECT_TRUE(sub.unchanged(moved, u, 1e-8));
-  EXPECT_FALSE(sub.unchanged(moved, u, 1e-10));
+  EXPECT_TRUE(sub->unchanged(moved, u0_, 1e-8));
+  EXPECT_FALSE(sub->unchanged(moved, u0_, 1e-10));
 }
 
 TEST(GeometrySubproblem, OnARigidPlaneTheSecondIterationNeedsNoSolve) {
