@@ -12,6 +12,8 @@
 /// contact forces recovered from the final multipliers and the bodies' residual (contact_forces.hpp). Where
 /// the linearisation at U_{n+1} gives the subproblem of U_n again (GeometrySubproblem::unchanged(): a pair in
 /// the reference geometry, a rigid plane), U_{n+1} solves it: the loop ends there without solving it again.
+/// The loop is in geometry_fixed_point.cpp, how it ends (converged, unchanged, stagnated, failed) in
+/// geometry_fixed_point_end.cpp.
 
 #include <memory>
 #include <vector>
