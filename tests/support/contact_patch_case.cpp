@@ -129,7 +129,7 @@ std::vector<char> upper_block_nodes(const ContactPatchCase& c, const Body& body)
   auto it = mesh.cell_groups.find("upper");
   if (c.one_body && it != mesh.cell_groups.end())
     for (Index cell : it->second)
-      for (int a = 0; a < mesh.nodes_per_cell(); ++a) upper[mesh.cell(cell)[a]] = 1;
+      for (int a = 0; a < mesh.nodes_per_cell(cell); ++a) upper[mesh.cell(cell)[a]] = 1;
   return upper;
 }
 

@@ -25,7 +25,8 @@ FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h =
 /// [0, 1] × [0, 1] × [0, 2] (2 × 2 × 3 cubes) of structured.hpp, of `order` 1 or 2, its interior nodes moved
 /// by up to 20 % of the spacing (so that no element is a right-angled copy of another). With `tensor`, the
 /// same domain in cells of that quadrilateral or hexahedron type (structured.hpp's tensor_mesh(); `order`
-/// is then the type's): 4 × 3 quadrilaterals, or 2 × 2 × 2 hexahedra (one interior vertex, moved).
-Mesh distorted_mesh(int dim, int order, std::optional<CellType> tensor = {});
+/// is then the type's): 4 × 3 quadrilaterals, or 2 × 2 × 2 hexahedra (one interior vertex, moved). With
+/// `mixed` (Quad4 or Quad9), every other quadrilateral cut into two triangles (mixed_rectangle_mesh()).
+Mesh distorted_mesh(int dim, int order, std::optional<CellType> tensor = {}, bool mixed = false);
 
 }  // namespace symcontact::testing

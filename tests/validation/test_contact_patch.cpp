@@ -47,7 +47,7 @@ TEST_P(ContactPatch2D, UniformPressureAndExactDisplacements) {
         quads ? (pc.order == 1 ? symcontact::CellType::kQuad4
                                : (pc.serendipity ? symcontact::CellType::kQuad8 : symcontact::CellType::kQuad9))
               : (pc.order == 1 ? symcontact::CellType::kTri3 : symcontact::CellType::kTri6);
-    EXPECT_EQ(body->mesh.cell_type, expected) << body->name;
+    EXPECT_EQ(body->mesh.first_cell_type(), expected) << body->name;
   }
   const ContactPatchErrors e = contact_patch_errors(pc, *solved);
   std::printf("  (%d, %d) P%d %s: displacement error %.2e, pressure error %.2e, %d geometry / %d IPOPT iterations\n",
@@ -107,6 +107,8 @@ TEST_P(ContactPatchOneBody, UniformPressureAndExactDisplacements) {
   const ContactPatchCase pc = GetParam();
   const auto solved = contact_patch_solve(pc);
   ASSERT_EQ(solved->model->bodies().size(), 1u);
+  // One block recombined: one body of quadrilaterals and triangles.
+  EXPECT_EQ(solved->model->bodies()[0]->mesh.mixed(), !pc.quad_blocks.empty());
   // The blocks keep their own nodes at y = 1: twins where the two node spacings 1/(order n1) and 1/(order n2)
   // meet, at x = k / (order gcd(n1, n2)) (every interface node with matching divisions).
   const std::size_t twins = coincident_nodes(solved->model->bodies()[0]->mesh).size();
@@ -135,6 +137,22 @@ INSTANTIATE_TEST_SUITE_P(V3OneBody, ContactPatchOneBody,
                                            // exact answer of small sliding.
                                            sliding_soft_upper(patch(4, 5, 1, "symmetric", true)),
                                            sliding_soft_upper(patch(5, 4, 2, "symmetric", true))),
+                         [](const auto& p) { return contact_patch_name(p.param); });
+
+// One body of two cell types: the upper block recombined (Quad4, Quad9, or Quad8 with the incomplete second
+// order), the lower one triangles (Tri3, Tri6), held together by the self-contact of the interface.
+namespace {
+ContactPatchCase mixed_one_body(int n1, int n2, int order, bool serendipity = false) {
+  ContactPatchCase c = patch(n1, n2, order, "symmetric", true);
+  c.quad_blocks = {"upper"};
+  c.serendipity = serendipity;
+  return c;
+}
+}  // namespace
+
+INSTANTIATE_TEST_SUITE_P(V3OneBodyMixed, ContactPatchOneBody,
+                         ::testing::Values(mixed_one_body(4, 5, 1), mixed_one_body(5, 4, 2),
+                                           mixed_one_body(4, 5, 2, true)),
                          [](const auto& p) { return contact_patch_name(p.param); });
 
 // Small sliding ([[contact]] geometry = "reference", contact/contact_geometry.hpp): the linearised gap

@@ -44,7 +44,7 @@ TEST_P(ContactPatch3D, UniformPressureAndExactDisplacements) {
         hexes ? (pc.order == 1 ? symcontact::CellType::kHex8
                                : (pc.serendipity ? symcontact::CellType::kHex20 : symcontact::CellType::kHex27))
               : (pc.order == 1 ? symcontact::CellType::kTet4 : symcontact::CellType::kTet10);
-    EXPECT_EQ(body->mesh.cell_type, expected) << body->name;
+    EXPECT_EQ(body->mesh.first_cell_type(), expected) << body->name;
   }
   const ContactPatchErrors e = contact_patch_errors(pc, *solved);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -315,9 +315,9 @@ TEST(Hertz2D, CylinderOnRigidPlaneQuadrilaterals) {
     const std::string toml = example_toml("cylinder_on_plane", h, order, dir);
     write_text(dir, "cyl.geo", wrapper_geo("cylinder_on_plane.geo", h) + "Recombine Surface{1};\n");
     auto c = solve_case(toml, dir);
-    ASSERT_EQ(c->model->bodies()[0]->mesh.cell_type, order == 1 ? CellType::kQuad4 : CellType::kQuad9);
+    ASSERT_EQ(c->model->bodies()[0]->mesh.first_cell_type(), order == 1 ? CellType::kQuad4 : CellType::kQuad9);
     const HertzMeasure m = measure(*c, h);
-    std::printf("  %s:", cell_name(c->model->bodies()[0]->mesh.cell_type).c_str());
+    std::printf("  %s:", cell_name(c->model->bodies()[0]->mesh.first_cell_type()).c_str());
     print(m);
     expect_v1(m);
   }
@@ -345,7 +345,7 @@ TEST(Hertz2D, CylinderExtrudedIntoHexahedraMatchesTheLineContact) {
       "a = \"cylinder.contact\"\n[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0, 0.0]\n"
       "normal = [0.0, 1.0, 0.0]\n";
   auto c = solve_case(toml, dir);
-  ASSERT_EQ(c->model->bodies()[0]->mesh.cell_type, CellType::kHex27);
+  ASSERT_EQ(c->model->bodies()[0]->mesh.first_cell_type(), CellType::kHex27);
   const HertzMeasure m = measure(*c, h);
   std::printf("  hex27:");
   print(m);

@@ -62,7 +62,7 @@ Hertz3DMeasure solve_sphere(double h, int order, const std::string& dir, const s
   // The applied load: 4 × the resultant of the pressure on the (meshed) cut, pointing down.
   const VectorXd f = c->model->external_load();
   const Mesh& mesh = c->model->bodies()[0]->mesh;
-  m.cell = mesh.cell_type;
+  m.cell = mesh.first_cell_type();
   for (Index v = 0; v < mesh.num_nodes(); ++v) m.load -= 4 * f[c->model->dofs().dof(0, v, 2)];
   return m;
 }

@@ -1,5 +1,6 @@
 // Manufactured-solution convergence of linear elasticity, 2D (plane strain) and 3D, P1 and P2 simplices,
-// and quadrilaterals and hexahedra: Q1 (Quad4, Hex8), serendipity (Quad8, Hex20) and Q2 (Quad9, Hex27).
+// and quadrilaterals and hexahedra: Q1 (Quad4, Hex8), serendipity (Quad8, Hex20) and Q2 (Quad9, Hex27);
+// and meshes of two cell types, quadrilaterals and triangles in a checkerboard (Quad4 + Tri3, Quad9 + Tri6).
 // Exact field: u_i(x) = A_i Π_d sin(k_id x_d + φ_id); body force b = −div σ(u) with
 // div σ = μ Δu + (λ + μ) ∇(div u); Dirichlet data = u on the whole boundary.
 // Expected rates (Ciarlet, The Finite Element Method for Elliptic Problems, Thm 3.2.5 and §3.2):
@@ -70,14 +71,17 @@ struct TrigField {
   }
 };
 
-/// The unit square or cube: structured simplices of `order`, or n^dim cells of the tensor type `tensor`.
-Mesh unit_mesh(int dim, int order, std::optional<CellType> tensor, int n) {
+/// The unit square or cube: structured simplices of `order`, or n^dim cells of the tensor type `tensor`, every
+/// other one cut into two triangles when `mixed`.
+Mesh unit_mesh(int dim, int order, std::optional<CellType> tensor, int n, bool mixed) {
+  if (tensor && mixed) return mixed_rectangle_mesh(*tensor, 0, 0, 1, 1, n, n);
   if (tensor) return tensor_mesh(*tensor, Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n);
   return dim == 2 ? rectangle_mesh(0, 0, 1, 1, n, n, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, order);
 }
 
-ErrorNorms solve_manufactured(int dim, int order, std::optional<CellType> tensor, int n) {
-  const Mesh m = unit_mesh(dim, order, tensor, n);
+ErrorNorms solve_manufactured(int dim, int order, std::optional<CellType> tensor, int n, bool mixed) {
+  const Mesh m = unit_mesh(dim, order, tensor, n, mixed);
+  if (mixed && !m.mixed()) ADD_FAILURE() << "expected a mesh of two cell types";
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const auto mat = LinearElastic::from_young_poisson(1.0, 0.3, dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD);
@@ -105,6 +109,7 @@ struct Study {
   int dim, order;
   std::vector<int> n;
   std::optional<CellType> tensor;  ///< a quadrilateral or hexahedron type; none: simplices
+  bool mixed = false;              ///< every other quadrilateral cut into two triangles
 };
 
 class ManufacturedConvergence : public ::testing::TestWithParam<Study> {};
@@ -114,9 +119,10 @@ class ManufacturedConvergence : public ::testing::TestWithParam<Study> {};
 TEST_P(ManufacturedConvergence, RatesMatchTheory) {
   const Study st = GetParam();
   std::vector<ErrorNorms> e;
-  for (int n : st.n) e.push_back(solve_manufactured(st.dim, st.order, st.tensor, n));
-  std::printf("  %dD %s   h        L2 error     rate   H1 error     rate\n", st.dim,
-              st.tensor ? cell_name(*st.tensor).c_str() : ("P" + std::to_string(st.order)).c_str());
+  for (int n : st.n) e.push_back(solve_manufactured(st.dim, st.order, st.tensor, n, st.mixed));
+  std::printf("  %dD %s%s   h        L2 error     rate   H1 error     rate\n", st.dim,
+              st.tensor ? cell_name(*st.tensor).c_str() : ("P" + std::to_string(st.order)).c_str(),
+              st.mixed ? " + triangles" : "");
   double rate_l2 = 0, rate_h1 = 0;
   for (std::size_t k = 0; k < e.size(); ++k) {
     if (k > 0) {
@@ -145,3 +151,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Study{2, 2, {4, 8, 16}, CellType::kQuad9}, Study{3, 1, {2, 4, 8}, CellType::kHex8},
                       Study{3, 2, {2, 4, 8}, CellType::kHex20}, Study{3, 2, {2, 4, 8}, CellType::kHex27}),
     [](const auto& p) { return cell_name(*p.param.tensor); });
+
+INSTANTIATE_TEST_SUITE_P(
+    ElasticityMixedCells, ManufacturedConvergence,
+    ::testing::Values(Study{2, 1, {8, 16, 32}, CellType::kQuad4, true}, Study{2, 2, {4, 8, 16}, CellType::kQuad9, true}),
+    [](const auto& p) { return cell_name(*p.param.tensor) + "WithTriangles"; });

@@ -303,7 +303,7 @@ Json summary_header(const ProblemSpec& spec, const Model& model) {
     const Body& body = *model.bodies()[b];
     Json jb = Json::object();
     jb["name"] = body.name;
-    jb["cell_type"] = cell_name(body.mesh.cell_type);
+    jb["cell_type"] = body.mesh.cell_types_label();
     jb["num_nodes"] = static_cast<double>(body.mesh.num_nodes());
     jb["num_cells"] = static_cast<double>(body.mesh.num_cells());
     jb["num_dofs"] = static_cast<double>(dofs.num_body_dofs(b));

@@ -86,8 +86,8 @@ using FacetSet = std::unordered_set<FacetKey, FacetKeyHash>;
 
 /// The vertex facet of cell c number f (cell_facet_nodes()).
 FacetKey cell_facet_key(const Mesh& m, Index c, int f) {
-  const int* loc = cell_facet_nodes(m.cell_type, f);
-  const int nfv = cell_num_vertices(facet_type(m.cell_type));
+  const int* loc = cell_facet_nodes(m.cell_type(c), f);
+  const int nfv = cell_num_vertices(m.facet_cell_type());
   Index v[4];
   for (int i = 0; i < nfv; ++i) v[i] = m.cell(c)[loc[i]];
   return facet_key(v, nfv);
@@ -115,12 +115,12 @@ struct CellSearch {
     std::vector<Box> boxes(m.num_cells());
     for (Index c = 0; c < m.num_cells(); ++c) {
       boxes[c].setEmpty();
-      for (int a = 0; a < m.nodes_per_cell(); ++a) boxes[c].extend(pad3(x.col(m.cell(c)[a])));
+      for (int a = 0; a < m.nodes_per_cell(c); ++a) boxes[c].extend(pad3(x.col(m.cell(c)[a])));
     }
     bvh.build(boxes);
     FacetSet seen;
     for (Index c = 0; c < m.num_cells(); ++c)
-      for (int f = 0; f < cell_num_facets(m.cell_type); ++f) {
+      for (int f = 0; f < cell_num_facets(m.cell_type(c)); ++f) {
         const FacetKey k = cell_facet_key(m, c, f);
         if (!seen.insert(k).second) boundary.erase(k);
         else boundary.insert(k);
@@ -135,7 +135,7 @@ struct CellSearch {
   bool contains(const Eigen::Vector3d& p) const {
     bool found = false;
     bvh.for_each_overlap(Box(p, p), [&](int c) {
-      if (!found) found = cell_shape(mesh->cell_type) == CellShape::kTensor ? in_tensor_cell(c, p) : in_simplex(c, p);
+      if (!found) found = cell_shape(mesh->cell_type(c)) == CellShape::kTensor ? in_tensor_cell(c, p) : in_simplex(c, p);
     });
     return found;
   }
@@ -181,9 +181,10 @@ struct CellSearch {
     }
     if (xi.minCoeff() < -eps || xi.maxCoeff() > 1.0 + eps) return false;
     const std::vector<double> ref = reference_nodes(linear);
-    for (int f = 0; f < cell_num_facets(mesh->cell_type); ++f) {
+    const CellType type = mesh->cell_type(c);
+    for (int f = 0; f < cell_num_facets(type); ++f) {
       // The axis and side of facet f: those all its vertices share.
-      const int* loc = cell_facet_nodes(mesh->cell_type, f);
+      const int* loc = cell_facet_nodes(type, f);
       for (int i = 0; i < D; ++i) {
         bool on = true;
         for (int k = 1; k < nv / 2; ++k) on = on && ref[loc[k] * D + i] == ref[loc[0] * D + i];

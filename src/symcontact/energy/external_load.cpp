@@ -16,24 +16,27 @@ int load_degree(AnalysisModel model, int degree, CellType t) {
 
 VectorXd body_force_vector(const Mesh& mesh, const DofMap& dofs, int body, const BodyForceFn& b,
                            AnalysisModel model, int degree) {
-  const int D = mesh.dim, NN = mesh.nodes_per_cell();
-  const Tabulation tab = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, load_degree(model, degree, mesh.cell_type)));
+  const int D = mesh.dim;
   VectorXd f = VectorXd::Zero(dofs.num_dofs());
-  Eigen::MatrixXd X(D, NN);
   double bx[3], xq[3];
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
-    const Index* n = mesh.cell(c);
-    for (int a = 0; a < NN; ++a) X.col(a) = mesh.x.col(n[a]);
-    for (int q = 0; q < tab.rule.size(); ++q) {
-      const Eigen::Map<const Eigen::VectorXd> N(tab.N_at(q), NN);
-      const Eigen::Map<const Eigen::MatrixXd> dNt(tab.dN_at(q), D, NN);  // column a = ∇_ξ N_a
-      const Eigen::MatrixXd J = X * dNt.transpose();
-      const Eigen::VectorXd x = X * N;
-      for (int i = 0; i < D; ++i) xq[i] = x[i];
-      b(xq, bx);
-      const double w = tab.rule.weights[q] * J.determinant() * section_measure(model, x[0]);
-      for (int a = 0; a < NN; ++a)
-        for (int i = 0; i < D; ++i) f[dofs.dof(body, n[a], i)] += w * N[a] * bx[i];
+  for (const CellBlock& block : mesh.cell_blocks) {
+    const int NN = cell_num_nodes(block.type);
+    const Tabulation tab = tabulate(block.type, cell_quadrature(block.type, load_degree(model, degree, block.type)));
+    Eigen::MatrixXd X(D, NN);
+    for (Index c = block.begin; c < block.end; ++c) {
+      const Index* n = mesh.cell(c);
+      for (int a = 0; a < NN; ++a) X.col(a) = mesh.x.col(n[a]);
+      for (int q = 0; q < tab.rule.size(); ++q) {
+        const Eigen::Map<const Eigen::VectorXd> N(tab.N_at(q), NN);
+        const Eigen::Map<const Eigen::MatrixXd> dNt(tab.dN_at(q), D, NN);  // column a = ∇_ξ N_a
+        const Eigen::MatrixXd J = X * dNt.transpose();
+        const Eigen::VectorXd x = X * N;
+        for (int i = 0; i < D; ++i) xq[i] = x[i];
+        b(xq, bx);
+        const double w = tab.rule.weights[q] * J.determinant() * section_measure(model, x[0]);
+        for (int a = 0; a < NN; ++a)
+          for (int i = 0; i < D; ++i) f[dofs.dof(body, n[a], i)] += w * N[a] * bx[i];
+      }
     }
   }
   return f;

@@ -109,7 +109,8 @@ HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int
   if (mesh.dim != 2 && mesh.dim != 3)
     throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
   // Same rule as LinearElasticEnergy (see the header for why).
-  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type, model)));
+  for (const CellBlock& b : mesh.cell_blocks)
+    tabs_.push_back(tabulate(b.type, cell_quadrature(b.type, stiffness_quadrature_degree(b.type, model))));
   // Validates every reference cell once (at u = 0, F = I everywhere).
   for_each_cell<0>(VectorXd::Zero(offset_ + dofs.num_body_dofs(body)), [](const Index*, double, const auto&,
                                                                           const auto&) {});
@@ -117,41 +118,45 @@ HyperelasticEnergy::HyperelasticEnergy(const Mesh& mesh, const DofMap& dofs, int
 
 template <int What, class Fn>
 void HyperelasticEnergy::for_each_cell(const VectorXd& u, Fn&& f) const {
-  dispatch_cell(mesh_.cell_type, [&](auto Dc, auto NNc) {
-    constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
-    if constexpr (D < 2) {
-      throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
-    } else {
-      Eigen::Matrix<double, D * NN, 1> g;
-      Eigen::Matrix<double, D * NN, D * NN> K;
-      Eigen::Matrix<double, D, NN> U;
-      Index dofs[D * NN];
-      double e = 0.0;
-      for (Index c = 0; c < mesh_.num_cells(); ++c) {
-        const Index* n = mesh_.cell(c);
-        for (int a = 0; a < NN; ++a)
-          for (int i = 0; i < D; ++i) {
-            dofs[D * a + i] = offset_ + D * n[a] + i;
-            U(i, a) = u[dofs[D * a + i]];
+  for (std::size_t b = 0; b < tabs_.size(); ++b) {
+    const CellBlock& block = mesh_.cell_blocks[b];
+    const Tabulation& tab = tabs_[b];
+    dispatch_cell(block.type, [&](auto Dc, auto NNc) {
+      constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
+      if constexpr (D < 2) {
+        throw std::logic_error("HyperelasticEnergy: a 2D (plane strain) or 3D mesh is required");
+      } else {
+        Eigen::Matrix<double, D * NN, 1> g;
+        Eigen::Matrix<double, D * NN, D * NN> K;
+        Eigen::Matrix<double, D, NN> U;
+        Index dofs[D * NN];
+        double e = 0.0;
+        for (Index c = block.begin; c < block.end; ++c) {
+          const Index* n = mesh_.cell(c);
+          for (int a = 0; a < NN; ++a)
+            for (int i = 0; i < D; ++i) {
+              dofs[D * a + i] = offset_ + D * n[a] + i;
+              U(i, a) = u[dofs[D * a + i]];
+            }
+          const auto X = gather_coordinates<D, NN>(mesh_.x, n);
+          int bad = -1;
+          try {
+            const Hyperelastic& material = materials_.of(c);
+            if constexpr (D == 2)
+              bad = model_ == AnalysisModel::kAxisymmetric
+                        ? hyperelastic_element_axisymmetric<NN, What>(X, U, tab, material, e, g, K)
+                        : hyperelastic_element<D, NN, What>(X, U, tab, material, e, g, K);
+            else
+              bad = hyperelastic_element<D, NN, What>(X, U, tab, material, e, g, K);
+          } catch (const EvaluationError& err) {
+            throw EvaluationError(name() + ": " + mesh_.cell_label(c) + ": " + err.what());
           }
-        const auto X = gather_coordinates<D, NN>(mesh_.x, n);
-        int bad = -1;
-        try {
-          const Hyperelastic& material = materials_.of(c);
-          if constexpr (D == 2)
-            bad = model_ == AnalysisModel::kAxisymmetric
-                      ? hyperelastic_element_axisymmetric<NN, What>(X, U, tab_, material, e, g, K)
-                      : hyperelastic_element<D, NN, What>(X, U, tab_, material, e, g, K);
-          else
-            bad = hyperelastic_element<D, NN, What>(X, U, tab_, material, e, g, K);
-        } catch (const EvaluationError& err) {
-          throw EvaluationError(name() + ": " + mesh_.cell_label(c) + ": " + err.what());
+          if (bad >= 0) throw InputError("", label_ + ": " + mesh_.cell_label(c), bad_cell_message(model_));
+          f(static_cast<const Index*>(dofs), e, g, K);
         }
-        if (bad >= 0) throw InputError("", label_ + ": " + mesh_.cell_label(c), bad_cell_message(model_));
-        f(static_cast<const Index*>(dofs), e, g, K);
       }
-    }
-  });
+    });
+  }
 }
 
 double HyperelasticEnergy::value(const VectorXd& u) const {

@@ -66,7 +66,7 @@ class HyperelasticEnergy : public EnergyTerm {
   CellMaterials<Hyperelastic> materials_;
   std::string label_;
   AnalysisModel model_;
-  Tabulation tab_;
+  std::vector<Tabulation> tabs_;  ///< one per cell block of the mesh
 };
 
 }  // namespace symcontact

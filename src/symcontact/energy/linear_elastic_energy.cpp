@@ -18,28 +18,31 @@ LinearElasticEnergy::LinearElasticEnergy(const Mesh& mesh, const DofMap& dofs, i
       materials_(std::move(materials), std::move(cell_material), mesh.num_cells()),
       label_(std::move(label)) {
   const AnalysisModel model = materials_.front().model;
-  tab_ = tabulate(mesh.cell_type, cell_quadrature(mesh.cell_type, stiffness_quadrature_degree(mesh.cell_type, model)));
+  for (const CellBlock& b : mesh.cell_blocks)
+    tabs_.push_back(tabulate(b.type, cell_quadrature(b.type, stiffness_quadrature_degree(b.type, model))));
   for_each_cell([](Index, const Index*, const auto&) {});  // validates every cell once
 }
 
 template <class F>
 void LinearElasticEnergy::for_each_cell(F&& f) const {
-  dispatch_cell(mesh_.cell_type, [&](auto Dc, auto NNc) {
-    constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
-    Eigen::Matrix<double, D * NN, D * NN> K;
-    Index dofs[D * NN];
-    for (Index c = 0; c < mesh_.num_cells(); ++c) {
-      const Index* n = mesh_.cell(c);
-      const auto X = gather_coordinates<D, NN>(mesh_.x, n);
-      const LinearElastic& m = materials_.of(c);
-      if (linear_elastic_stiffness<D, NN>(X, tab_, m.lambda, m.mu, m.model, K) >= 0)
-        throw InputError("", label_ + ": " + mesh_.cell_label(c),
-                         bad_cell_message(m.model));
-      for (int a = 0; a < NN; ++a)
-        for (int i = 0; i < D; ++i) dofs[D * a + i] = offset_ + D * n[a] + i;
-      f(c, static_cast<const Index*>(dofs), K);
-    }
-  });
+  for (std::size_t b = 0; b < tabs_.size(); ++b) {
+    const CellBlock& block = mesh_.cell_blocks[b];
+    dispatch_cell(block.type, [&](auto Dc, auto NNc) {
+      constexpr int D = decltype(Dc)::value, NN = decltype(NNc)::value;
+      Eigen::Matrix<double, D * NN, D * NN> K;
+      Index dofs[D * NN];
+      for (Index c = block.begin; c < block.end; ++c) {
+        const Index* n = mesh_.cell(c);
+        const auto X = gather_coordinates<D, NN>(mesh_.x, n);
+        const LinearElastic& m = materials_.of(c);
+        if (linear_elastic_stiffness<D, NN>(X, tabs_[b], m.lambda, m.mu, m.model, K) >= 0)
+          throw InputError("", label_ + ": " + mesh_.cell_label(c), bad_cell_message(m.model));
+        for (int a = 0; a < NN; ++a)
+          for (int i = 0; i < D; ++i) dofs[D * a + i] = offset_ + D * n[a] + i;
+        f(c, static_cast<const Index*>(dofs), K);
+      }
+    });
+  }
 }
 
 double LinearElasticEnergy::value(const VectorXd& u) const {

@@ -43,7 +43,7 @@ class LinearElasticEnergy : public EnergyTerm {
   Index offset_;
   CellMaterials<LinearElastic> materials_;
   std::string label_;
-  Tabulation tab_;
+  std::vector<Tabulation> tabs_;  ///< one per cell block of the mesh
 };
 
 }  // namespace symcontact

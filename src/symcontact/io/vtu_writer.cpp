@@ -1,5 +1,6 @@
 #include "symcontact/io/vtu_writer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -52,29 +53,39 @@ Eigen::MatrixXd pad_to_3d(const Eigen::MatrixXd& points) {
 
 }  // namespace
 
-VtuWriter::VtuWriter(const Mesh& mesh) : VtuWriter(mesh.x, mesh.cell_type, mesh.cells) {}
+VtuWriter::VtuWriter(const Mesh& mesh) : points_(pad_to_3d(mesh.x)) {
+  for (const CellBlock& b : mesh.cell_blocks)
+    append_cells(b.type, mesh.cell(b.begin),
+                 static_cast<std::size_t>(mesh.cell_offsets[b.end] - mesh.cell_offsets[b.begin]));
+}
 
 VtuWriter::VtuWriter(const Eigen::MatrixXd& points, CellType type, std::vector<Index> connectivity)
-    : points_(pad_to_3d(points)), type_(type) {
+    : points_(pad_to_3d(points)) {
+  append_cells(type, connectivity.data(), connectivity.size());
+}
+
+void VtuWriter::append_cells(CellType type, const Index* connectivity, std::size_t entries) {
   const auto npc = static_cast<std::size_t>(cell_num_nodes(type));
-  if (connectivity.size() % npc != 0) {
-    throw std::invalid_argument("VtuWriter: connectivity has " + std::to_string(connectivity.size()) +
+  if (entries % npc != 0) {
+    throw std::invalid_argument("VtuWriter: connectivity has " + std::to_string(entries) +
                                 " entries, not a multiple of the " + std::to_string(npc) + " nodes of a " +
                                 cell_name(type) + " cell");
   }
-  num_cells_ = static_cast<Index>(connectivity.size() / npc);
   const Index n = points_.cols();
-  for (std::size_t k = 0; k < connectivity.size(); ++k) {
+  for (std::size_t k = 0; k < entries; ++k) {
     if (connectivity[k] < 0 || connectivity[k] >= n) {
-      throw std::invalid_argument("VtuWriter: connectivity of cell " + std::to_string(k / npc) + " holds node " +
-                                  std::to_string(connectivity[k]) + ", outside [0, " + std::to_string(n) + ")");
+      throw std::invalid_argument("VtuWriter: connectivity of cell " + std::to_string(num_cells() + Index(k / npc)) +
+                                  " holds node " + std::to_string(connectivity[k]) + ", outside [0, " +
+                                  std::to_string(n) + ")");
     }
   }
   const int* order = vtk_node_order(type);
-  connectivity_.resize(connectivity.size());
-  for (std::size_t c = 0; c < connectivity.size(); c += npc) {
-    for (std::size_t k = 0; k < npc; ++k) connectivity_[c + k] = connectivity[c + static_cast<std::size_t>(order[k])];
+  for (std::size_t c = 0; c < entries; c += npc) {
+    for (std::size_t k = 0; k < npc; ++k) connectivity_.push_back(connectivity[c + static_cast<std::size_t>(order[k])]);
+    offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
+    types_.push_back(static_cast<std::uint8_t>(vtk_cell_type(type)));
   }
+  per_line_ = std::max(per_line_, npc);
 }
 
 void VtuWriter::add(std::vector<Array>& arrays, const char* where, Index count, const std::string& name,
@@ -104,11 +115,6 @@ void VtuWriter::write(const std::string& path) const {
     for (const Array& a : cell_data_) check_finite(a.values, "cell data array '" + a.name + "'");
   }
 
-  const auto npc = static_cast<Index>(cell_num_nodes(type_));
-  std::vector<std::int64_t> offsets(static_cast<std::size_t>(num_cells_));
-  for (Index c = 0; c < num_cells_; ++c) offsets[static_cast<std::size_t>(c)] = (c + 1) * npc;
-  const std::vector<std::uint8_t> types(static_cast<std::size_t>(num_cells_),
-                                        static_cast<std::uint8_t>(vtk_cell_type(type_)));
   static_assert(sizeof(Index) == sizeof(std::int64_t), "connectivity is written as Int64");
 
   // Appended blocks in the order their DataArray headers are written.
@@ -169,16 +175,16 @@ void VtuWriter::write(const std::string& path) const {
        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
        << (host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
        << "  <UnstructuredGrid>\n"
-       << "    <Piece NumberOfPoints=\"" << num_points() << "\" NumberOfCells=\"" << num_cells_ << "\">\n";
+       << "    <Piece NumberOfPoints=\"" << num_points() << "\" NumberOfCells=\"" << num_cells() << "\">\n";
     data_section("PointData", point_data_);
     data_section("CellData", cell_data_);
     os << "      <Points>\n";
     matrix_array(points_, " Name=\"Points\"", {});
     os << "      </Points>\n"
        << "      <Cells>\n";
-    int_array("Int64", "connectivity", connectivity_, static_cast<std::size_t>(npc));
-    int_array("Int64", "offsets", offsets, 10);
-    int_array("UInt8", "types", types, 20);
+    int_array("Int64", "connectivity", connectivity_, per_line_);
+    int_array("Int64", "offsets", offsets_, 10);
+    int_array("UInt8", "types", types_, 20);
     os << "      </Cells>\n"
        << "    </Piece>\n"
        << "  </UnstructuredGrid>\n";

@@ -19,6 +19,7 @@
 /// writes raw little- or big-endian bytes (the host's, declared in byte_order) in one AppendedData
 /// block with UInt64 block-size headers; it is smaller, faster and keeps NaN and inf.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -33,7 +34,7 @@ enum class VtuEncoding { kAscii, kBinaryAppended };
 
 class VtuWriter {
  public:
-  /// The geometry of `mesh`: mesh.x (dim × n) as points, mesh.cells of type mesh.cell_type.
+  /// The geometry of `mesh`: mesh.x (dim × n) as points, its cells block by block (of one or more types).
   /// The mesh is copied; it need not outlive the writer.
   explicit VtuWriter(const Mesh& mesh);
 
@@ -44,7 +45,7 @@ class VtuWriter {
   VtuWriter(const Eigen::MatrixXd& points, CellType type, std::vector<Index> connectivity);
 
   Index num_points() const { return points_.cols(); }
-  Index num_cells() const { return num_cells_; }
+  Index num_cells() const { return static_cast<Index>(offsets_.size()); }
 
   void set_encoding(VtuEncoding e) { encoding_ = e; }  ///< default kAscii
   VtuEncoding encoding() const { return encoding_; }
@@ -90,10 +91,14 @@ class VtuWriter {
   void add(std::vector<Array>& arrays, const char* where, Index count, const std::string& name,
            const Eigen::MatrixXd& values, const std::vector<std::string>& component_names);
 
+  /// Appends cells of one type (`entries` node indices in our ordering, cell after cell), checking them.
+  void append_cells(CellType type, const Index* connectivity, std::size_t entries);
+
   Eigen::MatrixXd points_;            ///< 3 × n
-  CellType type_;
   std::vector<Index> connectivity_;   ///< in VTK node order
-  Index num_cells_ = 0;
+  std::vector<std::int64_t> offsets_; ///< end of each cell's nodes in connectivity_
+  std::vector<std::uint8_t> types_;   ///< VTK cell type of each cell
+  std::size_t per_line_ = 1;          ///< connectivity entries per line in ASCII: the largest cell's nodes
   std::vector<Array> point_data_, cell_data_;
   VtuEncoding encoding_ = VtuEncoding::kAscii;
 };

@@ -297,18 +297,18 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   }
   Mesh m;
   m.dim = dim;
-  bool have_type = false;
+  const MeshFile::Block* first = nullptr;
   for (const auto& b : *cells) {
     if (cell_dim(b.type) != dim) continue;
-    if (have_type && b.type != m.cell_type)
+    if (first && !compatible_cell_types(b.type, first->type))
       throw InputError(file.path, group_key,
-                       "the body mixes element types (" + cell_name(m.cell_type) + " and " + cell_name(b.type) +
-                           "): a body is meshed with one element type; recombine all of its surfaces (or "
-                           "none), or make each part with its own type a body of its own");
-    m.cell_type = b.type;
-    have_type = true;
+                       "the body mixes element types that cannot share an edge or a face (" + cell_name(first->type) +
+                           " and " + cell_name(b.type) + "): a body may mix triangles and quadrilaterals of one "
+                           "order; make each part with its own type a body of its own, or mesh all parts "
+                           "with one order");
+    if (!first) first = &b;
   }
-  if (!have_type)
+  if (!first)
     throw InputError(file.path, group_key,
                      "no " + std::to_string(dim) + "D elements in " + (group.empty() ? "the mesh" : "group '" + group + "'"));
   // Renumber the nodes used by the body's cells, in file order.
@@ -327,12 +327,15 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   }
   if (file.node_tags.size() != static_cast<std::size_t>(file.x.cols())) m.node_tags.clear();
   for (const auto& b : *cells) {
-    for (Index v : b.nodes) m.cells.push_back(local[v]);
+    if (cell_dim(b.type) != dim) continue;
+    std::vector<Index> conn(b.nodes.size());
+    for (std::size_t k = 0; k < conn.size(); ++k) conn[k] = local[b.nodes[k]];
+    m.add_cells(b.type, conn.data(), static_cast<Index>(conn.size()) / cell_num_nodes(b.type));
     m.cell_tags.insert(m.cell_tags.end(), b.tags.begin(), b.tags.end());
   }
   add_cell_groups(file, m);
   // Lower-dimensional groups, restricted to this body.
-  const CellType ft = facet_type(m.cell_type);
+  const CellType ft = m.facet_cell_type();
   for (const auto& g : file.groups) {
     if (g.dim >= dim) continue;
     if (g.dim == dim - 1) {
@@ -391,9 +394,9 @@ Mesh extract_surface(const MeshFile& file, int dim, const std::string& group, co
   for (const auto& b : g->blocks) {
     if (cell_dim(b.type) != dim - 1) continue;
     const CellType ct = cell_type_with_facet(b.type);
-    if (have_type && ct != m.cell_type)
+    if (have_type && ct != m.first_cell_type())
       throw InputError(file.path, group_key, "the surface mixes element types");
-    m.cell_type = ct;
+    m.set_cells(ct, {});
     have_type = true;
     for (Index v : b.nodes) {
       if (local[v] < 0) local[v] = n++;

@@ -89,7 +89,7 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key,
                   const TopologyAllowances& allow = {});
 
-/// A rigid surface: the facets of group `group` (dimension dim − 1), with no cells. The mesh's cell_type is
+/// A rigid surface: the facets of group `group` (dimension dim − 1), with no cells. Its one (empty) cell block has
 /// the cell type whose facets these are; facets keep the orientation of the file. Throws InputError(file,
 /// key = `group_key`) when the group is absent or holds no facets.
 Mesh extract_surface(const MeshFile& file, int dim, const std::string& group, const std::string& group_key);

@@ -36,6 +36,66 @@ std::string Mesh::node_label(Index v) const {
   return "node " + std::to_string(v + 1);
 }
 
+CellType Mesh::cell_type(Index c) const {
+  auto it = std::upper_bound(cell_blocks.begin(), cell_blocks.end(), c,
+                             [](Index i, const CellBlock& b) { return i < b.end; });
+  if (it == cell_blocks.end()) throw std::out_of_range("Mesh::cell_type: no cell " + std::to_string(c));
+  return it->type;
+}
+
+int Mesh::max_nodes_per_cell() const {
+  int n = 0;
+  for (const CellBlock& b : cell_blocks) n = std::max(n, cell_num_nodes(b.type));
+  return n;
+}
+
+std::vector<std::pair<CellType, Index>> Mesh::cell_type_counts() const {
+  std::vector<std::pair<CellType, Index>> counts;
+  for (const CellBlock& b : cell_blocks) {
+    auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& e) { return e.first == b.type; });
+    if (it == counts.end()) counts.emplace_back(b.type, b.end - b.begin);
+    else it->second += b.end - b.begin;
+  }
+  return counts;
+}
+
+std::string Mesh::cell_types_label() const {
+  const auto counts = cell_type_counts();
+  if (counts.size() == 1) return cell_name(counts.front().first);
+  std::string s;
+  for (const auto& [t, n] : counts) s += (s.empty() ? "" : " + ") + cell_name(t) + " (" + std::to_string(n) + ")";
+  return s;
+}
+
+bool compatible_cell_types(CellType a, CellType b) {
+  return cell_dim(a) == cell_dim(b) && cell_order(a) == cell_order(b) && facet_type(a) == facet_type(b);
+}
+
+void Mesh::set_cells(CellType t, std::vector<Index> connectivity) {
+  const int npc = cell_num_nodes(t);
+  const Index n = static_cast<Index>(connectivity.size()) / npc;
+  cells = std::move(connectivity);
+  cell_offsets.resize(static_cast<std::size_t>(n) + 1);
+  for (Index c = 0; c <= n; ++c) cell_offsets[c] = c * npc;
+  cell_blocks.assign(1, CellBlock{t, 0, n});
+}
+
+void Mesh::add_cells(CellType t, const Index* connectivity, Index count) {
+  const Index first = num_cells();
+  if (first == 0) {
+    cell_blocks.assign(1, CellBlock{t, 0, 0});
+  } else if (!compatible_cell_types(t, first_cell_type())) {
+    throw std::invalid_argument("cells of type " + cell_name(t) + " cannot join cells of type " +
+                                cell_name(first_cell_type()) + " in one mesh (another order or facet type)");
+  } else if (cell_blocks.back().type != t) {
+    cell_blocks.push_back(CellBlock{t, first, first});
+  }
+  const int npc = cell_num_nodes(t);
+  cells.insert(cells.end(), connectivity, connectivity + count * npc);
+  for (Index c = 1; c <= count; ++c) cell_offsets.push_back(cell_offsets.back() + npc);
+  cell_blocks.back().end = first + count;
+}
+
 bool Mesh::has_group(const std::string& name) const {
   return facet_groups.count(name) > 0 || node_groups.count(name) > 0;
 }
@@ -48,7 +108,7 @@ std::vector<std::string> Mesh::group_names() const {
 }
 
 double simplex_determinant(const Mesh& m, Index c) {
-  if (cell_shape(m.cell_type) == CellShape::kTensor) return corner_determinant(m, c, 0);
+  if (cell_shape(m.cell_type(c)) == CellShape::kTensor) return corner_determinant(m, c, 0);
   const Index* n = m.cell(c);
   if (m.dim == 2) {
     const Eigen::Vector2d a = m.x.col(n[1]) - m.x.col(n[0]);
@@ -62,7 +122,7 @@ double simplex_determinant(const Mesh& m, Index c) {
 }
 
 double corner_determinant(const Mesh& m, Index c, int corner) {
-  if (cell_shape(m.cell_type) == CellShape::kSimplex) return simplex_determinant(m, c);
+  if (cell_shape(m.cell_type(c)) == CellShape::kSimplex) return simplex_determinant(m, c);
   const Index* n = m.cell(c);
   const auto edge = [&](int to) -> Vec3 {
     Vec3 e = Vec3::Zero();
@@ -82,17 +142,19 @@ double corner_determinant(const Mesh& m, Index c, int corner) {
 }
 
 Index Mesh::orient_cells() {
-  if (cell_dim(cell_type) != dim || dim < 2) return 0;
-  const int* perm = cell_reflection(cell_type);
-  const int npc = nodes_per_cell();
   Index flipped = 0;
   std::array<Index, 27> tmp{};
-  for (Index c = 0; c < num_cells(); ++c) {
-    if (simplex_determinant(*this, c) >= 0) continue;
-    Index* n = cells.data() + c * npc;
-    for (int k = 0; k < npc; ++k) tmp[k] = n[perm[k]];
-    std::copy(tmp.begin(), tmp.begin() + npc, n);
-    ++flipped;
+  for (const CellBlock& b : cell_blocks) {
+    if (cell_dim(b.type) != dim || dim < 2) continue;
+    const int* perm = cell_reflection(b.type);
+    const int npc = cell_num_nodes(b.type);
+    for (Index c = b.begin; c < b.end; ++c) {
+      if (simplex_determinant(*this, c) >= 0) continue;
+      Index* n = cell(c);
+      for (int k = 0; k < npc; ++k) tmp[k] = n[perm[k]];
+      std::copy(tmp.begin(), tmp.begin() + npc, n);
+      ++flipped;
+    }
   }
   return flipped;
 }
@@ -109,14 +171,16 @@ void Mesh::check() const {
   // Relative size against the bounding box, so that a tolerance for "degenerate" is scale-free.
   const double diam = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
   const double ref = std::pow(diam, dim);
-  const int corners = cell_shape(cell_type) == CellShape::kTensor ? cell_num_vertices(cell_type) : 1;
-  for (Index c = 0; c < num_cells(); ++c) {
-    double d = simplex_determinant(*this, c);
-    for (int a = 1; a < corners; ++a) d = std::min(d, corner_determinant(*this, c, a));
-    if (!(d > 1e-14 * ref))
-      throw InputError("", cell_label(c),
-                       d < 0 ? "inverted element (negative Jacobian determinant " + std::to_string(d) + ")"
-                             : "degenerate element (zero area/volume)");
+  for (const CellBlock& b : cell_blocks) {
+    const int corners = cell_shape(b.type) == CellShape::kTensor ? cell_num_vertices(b.type) : 1;
+    for (Index c = b.begin; c < b.end; ++c) {
+      double d = simplex_determinant(*this, c);
+      for (int a = 1; a < corners; ++a) d = std::min(d, corner_determinant(*this, c, a));
+      if (!(d > 1e-14 * ref))
+        throw InputError("", cell_label(c),
+                         d < 0 ? "inverted element (negative Jacobian determinant " + std::to_string(d) + ")"
+                               : "degenerate element (zero area/volume)");
+    }
   }
 }
 
@@ -138,7 +202,6 @@ void Mesh::locate_facets() {
   const CellType ft = facet_cell_type();
   const int nfv = cell_num_vertices(ft);
   const int npf = cell_num_nodes(ft);
-  const int nf = cell_num_facets(cell_type);
   // Facet lookup keyed by the sorted vertices (facet_key()): the first cell that has the
   // facet, its local number, and the second cell (-1 while there is none: a boundary facet).
   struct Where {
@@ -149,19 +212,20 @@ void Mesh::locate_facets() {
   std::unordered_map<FacetKey, Where, FacetKeyHash> where;
   auto key_of = [&](const Index* v) { return facet_key(v, nfv); };
   std::vector<Index> fv(npf);
-  for (Index c = 0; c < num_cells(); ++c) {
-    const Index* n = cell(c);
-    for (int f = 0; f < nf; ++f) {
-      const int* loc = cell_facet_nodes(cell_type, f);
-      for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
-      auto k = key_of(fv.data());
-      auto it = where.find(k);
-      if (it == where.end())
-        where.emplace(k, Where{c, f, -1});
-      else
-        it->second.second = c;  // interior facet: seen twice
+  for (const CellBlock& b : cell_blocks)
+    for (Index c = b.begin; c < b.end; ++c) {
+      const Index* n = cell(c);
+      for (int f = 0; f < cell_num_facets(b.type); ++f) {
+        const int* loc = cell_facet_nodes(b.type, f);
+        for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
+        auto k = key_of(fv.data());
+        auto it = where.find(k);
+        if (it == where.end())
+          where.emplace(k, Where{c, f, -1});
+        else
+          it->second.second = c;  // interior facet: seen twice
+      }
     }
-  }
   std::vector<std::string> interior;
   for (auto& [name, g] : facet_groups) {
     const Index m = num_facets(g);
@@ -187,7 +251,7 @@ void Mesh::locate_facets() {
       }
       const Index c = it->second.first;
       const int f = it->second.facet;
-      const int* loc = cell_facet_nodes(cell_type, f);
+      const int* loc = cell_facet_nodes(cell_type(c), f);
       for (int i = 0; i < npf; ++i) fn[i] = cell(c)[loc[i]];  // outward orientation from the cell
       g.cell[k] = c;
       g.local_facet[k] = f;

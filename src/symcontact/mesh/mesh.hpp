@@ -1,12 +1,15 @@
 #pragma once
 /// \file mesh.hpp
-/// The mesh of one body: nodes, volume cells of a single Lagrange type, and named groups of cells, of
+/// The mesh of one body: nodes, volume cells of one or more Lagrange types, and named groups of cells, of
 /// boundary facets and of nodes (from Gmsh physical groups).
 ///
-/// Layout: `x` is dim × num_nodes (column j = node j). `cells` holds num_cells × cell_num_nodes(type)
-/// node indices, cell after cell, in Gmsh node ordering (cell_type.hpp). Facet groups hold
-/// facets of type facet_type(cell_type) the same way. Every cell is positively oriented (det J > 0
-/// at its vertices); mesh builders reorient cells read with the other orientation.
+/// Layout: `x` is dim × num_nodes (column j = node j). `cells` holds the node indices of the cells, cell
+/// after cell, in Gmsh node ordering (cell_type.hpp); cell c's are cells[cell_offsets[c]] up to
+/// cells[cell_offsets[c + 1]]. `cell_blocks` cuts the cells into runs of one type, so that kernels
+/// dispatch on the type once a block (a uniform mesh has one block). The types of a mesh share one order
+/// and one facet type (triangles with quadrilaterals of the same order in 2D), so that facet groups hold
+/// facets of type facet_cell_type() the same way, nodes_per_facet() each. Every cell is positively
+/// oriented (det J > 0 at its vertices); mesh builders reorient cells read with the other orientation.
 /// A facet is keyed by its sorted vertex indices (std::array<Index, 4>, −1 for the entries a segment or
 /// triangle lacks).
 
@@ -39,11 +42,20 @@ struct FacetGroup {
   std::vector<int> local_facet;
 };
 
+/// Cells [begin, end) of a mesh, all of one type.
+struct CellBlock {
+  CellType type = CellType::kTri3;
+  Index begin = 0, end = 0;
+};
+
 struct Mesh {
   int dim = 2;
-  CellType cell_type = CellType::kTri3;
-  Eigen::MatrixXd x;          ///< dim × num_nodes reference coordinates
-  std::vector<Index> cells;   ///< num_cells × nodes-per-cell
+  Eigen::MatrixXd x;                ///< dim × num_nodes reference coordinates
+  std::vector<Index> cells;         ///< node indices, cell after cell
+  std::vector<Index> cell_offsets{0};  ///< cell c's nodes start at cells[cell_offsets[c]]; num_cells + 1 entries
+  /// Runs of cells of one type, in cell order, covering every cell. A mesh with no cells keeps one empty block
+  /// for its type (a rigid surface: facets alone, of type facet_cell_type()).
+  std::vector<CellBlock> cell_blocks{CellBlock{}};
   std::vector<Index> cell_tags;  ///< element tag of each cell in its mesh file (empty: built in code)
   std::vector<Index> node_tags;  ///< node tag of each node in its mesh file (empty: built in code)
   std::map<std::string, FacetGroup> facet_groups;
@@ -59,12 +71,34 @@ struct Mesh {
   std::map<std::string, std::string> interior_facet_groups;
 
   Index num_nodes() const { return x.cols(); }
-  int nodes_per_cell() const { return cell_num_nodes(cell_type); }
-  Index num_cells() const { return static_cast<Index>(cells.size()) / nodes_per_cell(); }
-  CellType facet_cell_type() const { return facet_type(cell_type); }
-  int nodes_per_facet() const { return cell_num_nodes(facet_type(cell_type)); }
+  Index num_cells() const { return static_cast<Index>(cell_offsets.size()) - 1; }
+  /// The type of cell c (a search among the blocks: loops over cells go block by block instead).
+  CellType cell_type(Index c) const;
+  int nodes_per_cell(Index c) const { return static_cast<int>(cell_offsets[c + 1] - cell_offsets[c]); }
+  const Index* cell(Index c) const { return cells.data() + cell_offsets[c]; }
+  Index* cell(Index c) { return cells.data() + cell_offsets[c]; }
+  /// Whether the cells are of more than one type.
+  bool mixed() const { return cell_blocks.size() > 1; }
+  /// The type of the first block: the type of every cell of a mesh that is not mixed().
+  CellType first_cell_type() const { return cell_blocks.front().type; }
+  /// The number of cells of each type, in the order the types first appear.
+  std::vector<std::pair<CellType, Index>> cell_type_counts() const;
+  /// The cells' types for messages and summaries: "Tri3", or "Tri3 (12) + Quad4 (30)" for a mixed mesh.
+  std::string cell_types_label() const;
+  /// The largest number of nodes of a cell.
+  int max_nodes_per_cell() const;
+  /// The polynomial order shared by the cells.
+  int order() const { return cell_order(first_cell_type()); }
+  CellType facet_cell_type() const { return facet_type(first_cell_type()); }
+  int nodes_per_facet() const { return cell_num_nodes(facet_cell_type()); }
   Index num_facets(const FacetGroup& g) const { return static_cast<Index>(g.facets.size()) / nodes_per_facet(); }
-  const Index* cell(Index c) const { return cells.data() + c * nodes_per_cell(); }
+
+  /// Replaces the cells by `connectivity`, cells of type t one after the other.
+  void set_cells(CellType t, std::vector<Index> connectivity);
+  /// Appends `count` cells of type t (connectivity: their node indices, cell after cell), in a block of their own
+  /// unless the last block is of type t. Throws std::invalid_argument when t's order or facet type differs from
+  /// the cells' already there (compatible_cell_types()).
+  void add_cells(CellType t, const Index* connectivity, Index count);
   /// How messages name cell c: "element <tag>" (the mesh file's tag) or "cell <c + 1>".
   std::string cell_label(Index c) const;
   /// How messages name node v: "node <tag>" (the mesh file's tag) or "node <v + 1>".
@@ -92,6 +126,10 @@ struct Mesh {
   /// matching edge nodes). Returns the number of cells flipped.
   Index orient_cells();
 };
+
+/// Whether cells of types a and b can be in one mesh: the same dimension, order and facet type (a
+/// triangle and a quadrilateral of the same order, in 2D).
+bool compatible_cell_types(CellType a, CellType b);
 
 /// Signed measure-like determinant of the vertex simplex of cell c (2× area, 6× volume); for a
 /// quadrilateral or hexahedron, that of the simplex at its vertex 0 (corner_determinant(m, c, 0)).

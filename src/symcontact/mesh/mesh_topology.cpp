@@ -37,14 +37,13 @@ std::string position(const Mesh& m, Index v) {
 
 Index cell_components(const Mesh& m, std::vector<Index>* component) {
   const Index nc = m.num_cells();
-  const int npc = m.nodes_per_cell();
   // Union-find over the nodes: the nodes of a cell are merged; a cell's component is its first node's.
   std::vector<Index> parent(m.num_nodes());
   std::iota(parent.begin(), parent.end(), Index(0));
   for (Index c = 0; c < nc; ++c) {
     const Index* n = m.cell(c);
     const Index r0 = find_root(parent, n[0]);
-    for (int k = 1; k < npc; ++k) {
+    for (int k = 1; k < m.nodes_per_cell(c); ++k) {
       const Index r = find_root(parent, n[k]);
       if (r != r0) parent[r] = r0;
     }
@@ -103,7 +102,7 @@ std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double rela
   // Mesh::check() reports as such).
   std::vector<std::vector<Index>> cells_of(n);
   for (Index c = 0; c < m.num_cells(); ++c)
-    for (int k = 0; k < m.nodes_per_cell(); ++k) cells_of[m.cell(c)[k]].push_back(c);
+    for (int k = 0; k < m.nodes_per_cell(c); ++k) cells_of[m.cell(c)[k]].push_back(c);
   std::vector<std::pair<Index, Index>> unshared;
   for (const auto& [a, b] : pairs) {
     const auto& ca = cells_of[a];
@@ -194,7 +193,7 @@ void check_pieces(const Mesh& m, const TopologyAllowances& allow) {
     const Index k = component[c];
     ++size[k];
     if (first[k] < 0) first[k] = c;
-    for (int a = 0; a < m.nodes_per_cell(); ++a) held[k] = held[k] || holding[m.cell(c)[a]];
+    for (int a = 0; a < m.nodes_per_cell(c); ++a) held[k] = held[k] || holding[m.cell(c)[a]];
   }
   const auto piece = [&](Index k) {
     return std::to_string(size[k]) + " element" + (size[k] == 1 ? "" : "s") + " from " + m.cell_label(first[k]);
@@ -252,9 +251,7 @@ int side_of(const Mesh& m, const FacetKey& k, const Eigen::VectorXd& r) {
 }  // namespace
 
 void check_folds(const Mesh& m) {
-  const int nv = cell_num_vertices(m.cell_type);
-  const int nfv = cell_num_vertices(facet_type(m.cell_type));
-  const int nf = cell_num_facets(m.cell_type);
+  const int nfv = cell_num_vertices(m.facet_cell_type());
   Index positive = 0, negative = 0;
   for (Index c = 0; c < m.num_cells(); ++c) (simplex_determinant(m, c) > 0 ? positive : negative) += 1;
   const int majority = positive >= negative ? 1 : -1;
@@ -263,11 +260,13 @@ void check_folds(const Mesh& m) {
     int side;
   };
   std::unordered_map<FacetKey, Seen, FacetKeyHash> seen;
-  seen.reserve(static_cast<std::size_t>(m.num_cells()) * nf);
+  seen.reserve(static_cast<std::size_t>(m.num_cells()) * cell_num_facets(m.first_cell_type()));
   for (Index c = 0; c < m.num_cells(); ++c) {
     const Index* n = m.cell(c);
-    for (int f = 0; f < nf; ++f) {
-      const int* loc = cell_facet_nodes(m.cell_type, f);
+    const CellType t = m.cell_type(c);
+    const int nv = cell_num_vertices(t);
+    for (int f = 0; f < cell_num_facets(t); ++f) {
+      const int* loc = cell_facet_nodes(t, f);
       Index fv[4];
       for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
       const FacetKey k = facet_key(fv, nfv);

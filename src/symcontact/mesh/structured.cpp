@@ -11,7 +11,7 @@ Mesh rectangle_mesh(double x0, double y0, double x1, double y1, int nx, int ny, 
   if (nx < 1 || ny < 1) throw std::invalid_argument("rectangle_mesh: nx, ny must be >= 1");
   Mesh m;
   m.dim = 2;
-  m.cell_type = CellType::kTri3;
+  std::vector<Index> cells;
   auto id = [&](int i, int j) -> Index { return static_cast<Index>(j) * (nx + 1) + i; };
   m.x.resize(2, static_cast<Index>(nx + 1) * (ny + 1));
   for (int j = 0; j <= ny; ++j)
@@ -23,11 +23,12 @@ Mesh rectangle_mesh(double x0, double y0, double x1, double y1, int nx, int ny, 
     for (int i = 0; i < nx; ++i) {
       const Index a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
       if ((i + j) % 2 == 0) {
-        m.cells.insert(m.cells.end(), {a, b, c, a, c, d});
+        cells.insert(cells.end(), {a, b, c, a, c, d});
       } else {
-        m.cells.insert(m.cells.end(), {a, b, d, b, c, d});
+        cells.insert(cells.end(), {a, b, d, b, c, d});
       }
     }
+  m.set_cells(CellType::kTri3, std::move(cells));
   auto& bottom = m.facet_groups["bottom"].facets;
   auto& top = m.facet_groups["top"].facets;
   for (int i = 0; i < nx; ++i) {
@@ -50,7 +51,7 @@ Mesh box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order)
   if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("box_mesh: divisions must be >= 1");
   Mesh m;
   m.dim = 3;
-  m.cell_type = CellType::kTet4;
+  std::vector<Index> cells;
   const int n[3] = {nx, ny, nz};
   auto id = [&](int i, int j, int k) -> Index {
     return (static_cast<Index>(k) * (ny + 1) + j) * (nx + 1) + i;
@@ -78,8 +79,9 @@ Mesh box_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order)
             ++c[p[s]];
             tet[s + 1] = id(c[0], c[1], c[2]);
           }
-          m.cells.insert(m.cells.end(), tet, tet + 4);
+          cells.insert(cells.end(), tet, tet + 4);
         }
+  m.set_cells(CellType::kTet4, std::move(cells));
   m.orient_cells();
   // Boundary faces: two triangles per boundary square, with diagonals matching the Kuhn split
   // (every face diagonal goes from the lower to the upper corner of the square).
@@ -119,8 +121,7 @@ Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, 
   std::vector<Index> index(static_cast<std::size_t>(m0 * m1 * m2), -1);
   Mesh m;
   m.dim = D;
-  m.cell_type = type;
-  std::vector<Index> lattice;
+  std::vector<Index> lattice, cells;
   const auto point = [&](const int* cell, const int* c) {
     Index l[3] = {0, 0, 0};
     for (int i = 0; i < D; ++i) l[i] = q * cell[i] + q * (c[i] + 1) / 2;
@@ -135,7 +136,8 @@ Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, 
   for (cell[2] = 0; cell[2] < n[2]; ++cell[2])
     for (cell[1] = 0; cell[1] < n[1]; ++cell[1])
       for (cell[0] = 0; cell[0] < n[0]; ++cell[0])
-        for (int a = 0; a < npc; ++a) m.cells.push_back(point(cell, tensor_node_coordinates(type, a)));
+        for (int a = 0; a < npc; ++a) cells.push_back(point(cell, tensor_node_coordinates(type, a)));
+  m.set_cells(type, std::move(cells));
   m.x.resize(D, static_cast<Index>(lattice.size()));
   for (std::size_t k = 0; k < lattice.size(); ++k) {
     const Index l[3] = {lattice[k] % m0, (lattice[k] / m0) % m1, lattice[k] / (m0 * m1)};
@@ -168,12 +170,41 @@ Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, 
   return m;
 }
 
+Mesh mixed_rectangle_mesh(CellType type, double x0, double y0, double x1, double y1, int nx, int ny) {
+  if (type != CellType::kQuad4 && type != CellType::kQuad9)
+    throw std::invalid_argument("mixed_rectangle_mesh: expects Quad4 or Quad9");
+  Mesh m = tensor_mesh(type, Vec3(x0, y0, 0), Vec3(x1, y1, 0), nx, ny);
+  const Mesh quads = m;
+  const CellType tri = type == CellType::kQuad4 ? CellType::kTri3 : CellType::kTri6;
+  // Gmsh orders: Quad9 v0 v1 v2 v3 m01 m12 m23 m30 c, Tri6 v0 v1 v2 m01 m12 m20.
+  static const int halves[2][6] = {{0, 1, 2, 4, 5, 8}, {0, 2, 3, 8, 6, 7}};
+  const int ntri = cell_num_nodes(tri);
+  m.cells.clear();
+  m.cell_offsets.assign(1, 0);
+  m.cell_blocks.assign(1, CellBlock{type, 0, 0});
+  for (Index c = 0; c < quads.num_cells(); ++c) {
+    const Index* n = quads.cell(c);
+    if (((c % nx) + (c / nx)) % 2 != 0) {
+      m.add_cells(type, n, 1);
+      continue;
+    }
+    for (const auto& half : halves) {
+      Index t[6];
+      for (int a = 0; a < ntri; ++a) t[a] = n[half[a]];
+      m.add_cells(tri, t, 1);
+    }
+  }
+  m.locate_facets();
+  return m;
+}
+
 Mesh elevate_to_p2(const Mesh& p1) {
-  if (p1.cell_type != CellType::kTri3 && p1.cell_type != CellType::kTet4)
+  const CellType t1 = p1.first_cell_type();
+  if (p1.mixed() || (t1 != CellType::kTri3 && t1 != CellType::kTet4))
     throw std::invalid_argument("elevate_to_p2: expects a Tri3 or Tet4 mesh");
   Mesh m;
   m.dim = p1.dim;
-  m.cell_type = p1.cell_type == CellType::kTri3 ? CellType::kTri6 : CellType::kTet10;
+  std::vector<Index> cells;
   m.node_groups = p1.node_groups;
   std::map<std::pair<Index, Index>, Index> edge_node;
   std::vector<Eigen::VectorXd> extra;
@@ -188,16 +219,17 @@ Mesh elevate_to_p2(const Mesh& p1) {
   };
   static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
   static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
-  const bool tri = p1.cell_type == CellType::kTri3;
+  const bool tri = t1 == CellType::kTri3;
   for (Index c = 0; c < p1.num_cells(); ++c) {
     const Index* v = p1.cell(c);
     const int nv = tri ? 3 : 4;
-    m.cells.insert(m.cells.end(), v, v + nv);
+    cells.insert(cells.end(), v, v + nv);
     for (int e = 0; e < (tri ? 3 : 6); ++e) {
       const auto& ed = tri ? tri_edges[e] : tet_edges[e];
-      m.cells.push_back(mid(v[ed[0]], v[ed[1]]));
+      cells.push_back(mid(v[ed[0]], v[ed[1]]));
     }
   }
+  m.set_cells(tri ? CellType::kTri6 : CellType::kTet10, std::move(cells));
   for (const auto& [name, g] : p1.facet_groups) {
     FacetGroup fg;
     const int nv = tri ? 2 : 3;
@@ -222,20 +254,35 @@ Mesh elevate_to_p2(const Mesh& p1) {
 namespace {
 /// Puts the non-vertex nodes of quadrilaterals and hexahedra at the multilinear map of their cell's
 /// vertices: x = Σ_v X_v Π_i (ξ_i or 1 − ξ_i), ξ = (c + 1)/2 the node's reference point.
-void reset_tensor_nodes(Mesh& mesh) {
-  const int D = mesh.dim, nv = cell_num_vertices(mesh.cell_type);
-  for (Index c = 0; c < mesh.num_cells(); ++c) {
+void reset_tensor_nodes(Mesh& mesh, const CellBlock& b) {
+  const int D = mesh.dim, nv = cell_num_vertices(b.type), npc = cell_num_nodes(b.type);
+  for (Index c = b.begin; c < b.end; ++c) {
     const Index* n = mesh.cell(c);
-    for (int a = nv; a < mesh.nodes_per_cell(); ++a) {
-      const int* ca = tensor_node_coordinates(mesh.cell_type, a);
+    for (int a = nv; a < npc; ++a) {
+      const int* ca = tensor_node_coordinates(b.type, a);
       Eigen::VectorXd x = Eigen::VectorXd::Zero(D);
       for (int v = 0; v < nv; ++v) {
-        const int* cv = tensor_node_coordinates(mesh.cell_type, v);
+        const int* cv = tensor_node_coordinates(b.type, v);
         double w = 1.0;
         for (int i = 0; i < D; ++i) w *= cv[i] > 0 ? 0.5 * (ca[i] + 1) : 0.5 * (1 - ca[i]);
         x += w * mesh.x.col(n[v]);
       }
       mesh.x.col(n[a]) = x;
+    }
+  }
+}
+
+/// Puts the edge nodes of quadratic simplices at the midpoints of their edges.
+void reset_simplex_edge_nodes(Mesh& mesh, const CellBlock& b) {
+  static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+  const bool tri = cell_dim(b.type) == 2;
+  const int nv = cell_num_vertices(b.type), npc = cell_num_nodes(b.type);
+  for (Index c = b.begin; c < b.end; ++c) {
+    const Index* n = mesh.cell(c);
+    for (int e = 0; e < npc - nv; ++e) {
+      const auto& ed = tri ? tri_edges[e] : tet_edges[e];
+      mesh.x.col(n[nv + e]) = 0.5 * (mesh.x.col(n[ed[0]]) + mesh.x.col(n[ed[1]]));
     }
   }
 }
@@ -247,26 +294,18 @@ void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned see
     for (Index v : g.facets) on_boundary[v] = 1;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> U(-amplitude * h, amplitude * h);
-  const int nv = cell_num_vertices(mesh.cell_type), npc = mesh.nodes_per_cell();
   std::vector<char> is_vertex(mesh.num_nodes(), 0);
-  for (Index c = 0; c < mesh.num_cells(); ++c)
-    for (int a = 0; a < nv; ++a) is_vertex[mesh.cell(c)[a]] = 1;
+  for (const CellBlock& b : mesh.cell_blocks)
+    for (Index c = b.begin; c < b.end; ++c)
+      for (int a = 0; a < cell_num_vertices(b.type); ++a) is_vertex[mesh.cell(c)[a]] = 1;
   for (Index v = 0; v < mesh.num_nodes(); ++v)
     if (!on_boundary[v] && is_vertex[v])
       for (int i = 0; i < mesh.dim; ++i) mesh.x(i, v) += U(rng);
-  if (cell_shape(mesh.cell_type) == CellShape::kTensor) {
-    reset_tensor_nodes(mesh);
-  } else if (cell_order(mesh.cell_type) == 2) {
-    static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-    static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
-    const bool tri = mesh.dim == 2;
-    for (Index c = 0; c < mesh.num_cells(); ++c) {
-      const Index* n = mesh.cell(c);
-      for (int e = 0; e < npc - nv; ++e) {
-        const auto& ed = tri ? tri_edges[e] : tet_edges[e];
-        mesh.x.col(n[nv + e]) = 0.5 * (mesh.x.col(n[ed[0]]) + mesh.x.col(n[ed[1]]));
-      }
-    }
+  for (const CellBlock& b : mesh.cell_blocks) {
+    if (cell_shape(b.type) == CellShape::kTensor)
+      reset_tensor_nodes(mesh, b);
+    else if (cell_order(b.type) == 2)
+      reset_simplex_edge_nodes(mesh, b);
   }
 }
 

@@ -222,7 +222,7 @@ std::unique_ptr<Model> Model::build(const ProblemSpec& spec, const Logger& log, 
       m->dofs_.add_body(body->mesh.num_nodes());
       std::ostringstream s;
       s << "body '" << bs.name << "': " << body->mesh.num_nodes() << " nodes, " << body->mesh.num_cells() << " "
-        << cell_name(body->mesh.cell_type) << " cells";
+        << body->mesh.cell_types_label() << " cells";
       log.info(s.str());
       m->bodies_.push_back(std::move(body));
     }

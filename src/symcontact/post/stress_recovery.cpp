@@ -80,63 +80,65 @@ BodyFields recover_fields(const Mesh& mesh, const DofMap& dofs, int body, const 
   f.cell_volume_ratio = Eigen::VectorXd::Zero(nc);
   Eigen::VectorXd weight = Eigen::VectorXd::Zero(nn);
 
-  // Evaluation points: the cell's own nodes (nodal values) and its quadrature points (cell values).
-  QuadratureRule at_nodes;
-  at_nodes.dim = D;
-  at_nodes.points = reference_nodes(mesh.cell_type);
-  at_nodes.weights.assign(mesh.nodes_per_cell(), 1.0);
-  const Tabulation tn = tabulate(mesh.cell_type, at_nodes);
-  // Cell averages: degree 2(p − 1) on simplices (exact for straight ones), the stiffness rule on
-  // quadrilaterals and hexahedra.
-  const CellType t = mesh.cell_type;
-  const int degree = cell_shape(t) == CellShape::kTensor ? stiffness_quadrature_degree(t) : 2 * (cell_order(t) - 1);
-  const Tabulation tq = tabulate(t, cell_quadrature(t, degree));
+  for (const CellBlock& block : mesh.cell_blocks) {
+    // Evaluation points: the cell's own nodes (nodal values) and its quadrature points (cell values).
+    const CellType t = block.type;
+    QuadratureRule at_nodes;
+    at_nodes.dim = D;
+    at_nodes.points = reference_nodes(t);
+    at_nodes.weights.assign(cell_num_nodes(t), 1.0);
+    const Tabulation tn = tabulate(t, at_nodes);
+    // Cell averages: degree 2(p − 1) on simplices (exact for straight ones), the stiffness rule on
+    // quadrilaterals and hexahedra.
+    const int degree = cell_shape(t) == CellShape::kTensor ? stiffness_quadrature_degree(t) : 2 * (cell_order(t) - 1);
+    const Tabulation tq = tabulate(t, cell_quadrature(t, degree));
 
-  dispatch_cell(mesh.cell_type, [&](auto Dc, auto NNc) {
-    constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;
-    Eigen::Matrix<double, NN, DD> G;
-    Eigen::Matrix<double, DD, NN> U;
-    const PointLaw* law = &laws[0];
-    auto state_at = [&](const Eigen::Matrix<double, DD, NN>& X, const Tabulation& tab, int point, double& det) {
-      det = physical_gradients<DD, NN>(X, tab.dN_at(point), G);
-      Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
-      if (det > 0) H.topLeftCorner<DD, DD>() = U * G;  // ∇_X u
-      if (model == AnalysisModel::kAxisymmetric && det > 0) {
-        const Eigen::Map<const Eigen::Matrix<double, NN, 1>> N(tab.N_at(point));
-        const double R = X.row(0).dot(N);
-        H(2, 2) = R > 0 ? U.row(0).dot(N) / R : H(0, 0);
+    dispatch_cell(t, [&](auto Dc, auto NNc) {
+      constexpr int DD = decltype(Dc)::value, NN = decltype(NNc)::value;
+      Eigen::Matrix<double, NN, DD> G;
+      Eigen::Matrix<double, DD, NN> U;
+      const PointLaw* law = &laws[0];
+      auto state_at = [&](const Eigen::Matrix<double, DD, NN>& X, const Tabulation& tab, int point, double& det) {
+        det = physical_gradients<DD, NN>(X, tab.dN_at(point), G);
+        Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+        if (det > 0) H.topLeftCorner<DD, DD>() = U * G;  // ∇_X u
+        if (model == AnalysisModel::kAxisymmetric && det > 0) {
+          const Eigen::Map<const Eigen::Matrix<double, NN, 1>> N(tab.N_at(point));
+          const double R = X.row(0).dot(N);
+          H(2, 2) = R > 0 ? U.row(0).dot(N) / R : H(0, 0);
+        }
+        return (*law)(H);
+      };
+      for (Index c = block.begin; c < block.end; ++c) {
+        law = &laws[cell_law.empty() ? 0 : cell_law[c]];
+        const Index* n = mesh.cell(c);
+        const auto X = gather_coordinates<DD, NN>(mesh.x, n);
+        for (int a = 0; a < NN; ++a) U.col(a) = f.displacement.col(n[a]).template head<DD>();
+        double det = 0.0, vol = 0.0, J_avg = 0.0;
+        Eigen::Matrix3d sig_avg = Eigen::Matrix3d::Zero();
+        for (int q = 0; q < tq.rule.size(); ++q) {
+          const PointState s = state_at(X, tq, q, det);
+          sig_avg += tq.rule.weights[q] * det * s.stress;
+          J_avg += tq.rule.weights[q] * det * s.volume_ratio;
+          vol += tq.rule.weights[q] * det;
+        }
+        if (vol > 0) {
+          sig_avg /= vol;
+          J_avg /= vol;
+        }
+        f.cell_stress.col(c) = to_voigt6(sig_avg);
+        f.cell_von_mises[c] = von_mises(sig_avg);
+        f.cell_volume_ratio[c] = J_avg;
+        for (int a = 0; a < NN; ++a) {
+          const PointState s = state_at(X, tn, a, det);
+          f.strain.col(n[a]) += vol * to_voigt6(s.strain);
+          f.stress.col(n[a]) += vol * to_voigt6(s.stress);
+          f.volume_ratio[n[a]] += vol * s.volume_ratio;
+          weight[n[a]] += vol;
+        }
       }
-      return (*law)(H);
-    };
-    for (Index c = 0; c < nc; ++c) {
-      law = &laws[cell_law.empty() ? 0 : cell_law[c]];
-      const Index* n = mesh.cell(c);
-      const auto X = gather_coordinates<DD, NN>(mesh.x, n);
-      for (int a = 0; a < NN; ++a) U.col(a) = f.displacement.col(n[a]).template head<DD>();
-      double det = 0.0, vol = 0.0, J_avg = 0.0;
-      Eigen::Matrix3d sig_avg = Eigen::Matrix3d::Zero();
-      for (int q = 0; q < tq.rule.size(); ++q) {
-        const PointState s = state_at(X, tq, q, det);
-        sig_avg += tq.rule.weights[q] * det * s.stress;
-        J_avg += tq.rule.weights[q] * det * s.volume_ratio;
-        vol += tq.rule.weights[q] * det;
-      }
-      if (vol > 0) {
-        sig_avg /= vol;
-        J_avg /= vol;
-      }
-      f.cell_stress.col(c) = to_voigt6(sig_avg);
-      f.cell_von_mises[c] = von_mises(sig_avg);
-      f.cell_volume_ratio[c] = J_avg;
-      for (int a = 0; a < NN; ++a) {
-        const PointState s = state_at(X, tn, a, det);
-        f.strain.col(n[a]) += vol * to_voigt6(s.strain);
-        f.stress.col(n[a]) += vol * to_voigt6(s.stress);
-        f.volume_ratio[n[a]] += vol * s.volume_ratio;
-        weight[n[a]] += vol;
-      }
-    }
-  });
+    });
+  }
   for (Index v = 0; v < nn; ++v) {
     if (weight[v] > 0) {
       f.strain.col(v) /= weight[v];

@@ -499,12 +499,12 @@ Mesh two_part_body(int order, double gap) {
   const Mesh upper = rectangle_mesh(0.13, gap, 0.83, gap + 0.4, 7, 2, order);
   Mesh m;
   m.dim = 2;
-  m.cell_type = lower.cell_type;
   const Index off = lower.num_nodes();
   m.x.resize(2, off + upper.num_nodes());
   m.x << lower.x, upper.x;
-  m.cells = lower.cells;
-  for (Index v : upper.cells) m.cells.push_back(v + off);
+  std::vector<Index> cells = lower.cells;
+  for (Index v : upper.cells) cells.push_back(v + off);
+  m.set_cells(lower.first_cell_type(), std::move(cells));
   std::vector<Index>& faces = m.facet_groups["faces"].facets;
   faces = lower.facet_groups.at("top").facets;
   for (Index v : upper.facet_groups.at("bottom").facets) faces.push_back(v + off);

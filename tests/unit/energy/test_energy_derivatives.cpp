@@ -27,13 +27,14 @@ VectorXd random_vector(Index n, unsigned seed, double scale = 1.0) {
 struct Case {
   int dim, order;
   std::optional<CellType> tensor;  ///< a quadrilateral or hexahedron type; none: simplices
+  bool mixed = false;              ///< every other quadrilateral cut into two triangles (Quad4, Quad9)
 };
 class EnergyDerivatives : public ::testing::TestWithParam<Case> {};
 }  // namespace
 
 TEST_P(EnergyDerivatives, LinearElasticGradientAndHessian) {
-  const auto [dim, order, tensor] = GetParam();
-  const Mesh m = distorted_mesh(dim, order, tensor);
+  const auto [dim, order, tensor, mixed] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor, mixed);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const auto mat = LinearElastic::from_young_poisson(3.0, 0.3, dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD);
@@ -45,7 +46,7 @@ TEST_P(EnergyDerivatives, LinearElasticGradientAndHessian) {
 
 TEST_P(EnergyDerivatives, LoadsAndSumGradientAndHessian) {
   const int dim = GetParam().dim;  // not a structured binding: the lambdas below capture it (C++17)
-  const Mesh m = distorted_mesh(dim, GetParam().order, GetParam().tensor);
+  const Mesh m = distorted_mesh(dim, GetParam().order, GetParam().tensor, GetParam().mixed);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   EnergySum sum;
@@ -70,8 +71,8 @@ TEST_P(EnergyDerivatives, LoadsAndSumGradientAndHessian) {
 }
 
 TEST_P(EnergyDerivatives, RigidMotionsCostNoEnergy) {
-  const auto [dim, order, tensor] = GetParam();
-  const Mesh m = distorted_mesh(dim, order, tensor);
+  const auto [dim, order, tensor, mixed] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor, mixed);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const auto mat = LinearElastic::from_young_poisson(1.0, 0.3, dim == 2 ? AnalysisModel::kPlaneStrain : AnalysisModel::kThreeD);
@@ -97,9 +98,10 @@ INSTANTIATE_TEST_SUITE_P(AllElements, EnergyDerivatives,
                          ::testing::Values(Case{2, 1, {}}, Case{2, 2, {}}, Case{3, 1, {}}, Case{3, 2, {}},
                                            Case{2, 1, CellType::kQuad4}, Case{2, 2, CellType::kQuad8},
                                            Case{2, 2, CellType::kQuad9}, Case{3, 1, CellType::kHex8},
-                                           Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27}),
+                                           Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27},
+                                           Case{2, 1, CellType::kQuad4, true}, Case{2, 2, CellType::kQuad9, true}),
                          [](const auto& p) {
-                           if (p.param.tensor) return cell_name(*p.param.tensor);
+                           if (p.param.tensor) return cell_name(*p.param.tensor) + (p.param.mixed ? "WithTriangles" : "");
                            return "D" + std::to_string(p.param.dim) + "P" + std::to_string(p.param.order);
                          });
 

@@ -40,6 +40,7 @@ VectorXd moderate_displacement(const Mesh& m, const DofMap& dofs, double scale, 
 struct Case {
   int dim, order;
   std::optional<CellType> tensor;  ///< a quadrilateral or hexahedron type; none: simplices
+  bool mixed = false;              ///< every other quadrilateral cut into two triangles (Quad4, Quad9)
 };
 class HyperelasticEnergyDerivatives : public ::testing::TestWithParam<Case> {};
 
@@ -48,8 +49,8 @@ AnalysisModel analysis(int dim) { return dim == 2 ? AnalysisModel::kPlaneStrain 
 }  // namespace
 
 TEST_P(HyperelasticEnergyDerivatives, GradientAndHessianMatchFiniteDifferences) {
-  const auto [dim, order, tensor] = GetParam();
-  const Mesh m = distorted_mesh(dim, order, tensor);
+  const auto [dim, order, tensor, mixed] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor, mixed);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   for (HyperelasticLaw law : {HyperelasticLaw::kNeoHookean, HyperelasticLaw::kMooneyRivlin}) {
@@ -65,8 +66,8 @@ TEST_P(HyperelasticEnergyDerivatives, GradientAndHessianMatchFiniteDifferences) 
 }
 
 TEST_P(HyperelasticEnergyDerivatives, SmallStrainLimitIsTheLinearStiffness) {
-  const auto [dim, order, tensor] = GetParam();
-  const Mesh m = distorted_mesh(dim, order, tensor);
+  const auto [dim, order, tensor, mixed] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor, mixed);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const LinearElasticEnergy lin(m, dofs, 0, LinearElastic::from_young_poisson(3.0, 0.3, analysis(dim)), "lin");
@@ -93,8 +94,8 @@ TEST_P(HyperelasticEnergyDerivatives, SmallStrainLimitIsTheLinearStiffness) {
 }
 
 TEST_P(HyperelasticEnergyDerivatives, InvertedElementThrowsEvaluationErrorNamingTheCell) {
-  const auto [dim, order, tensor] = GetParam();
-  const Mesh m = distorted_mesh(dim, order, tensor);
+  const auto [dim, order, tensor, mixed] = GetParam();
+  const Mesh m = distorted_mesh(dim, order, tensor, mixed);
   DofMap dofs(dim);
   dofs.add_body(m.num_nodes());
   const HyperelasticEnergy e(m, dofs, 0, Hyperelastic::from_young_poisson(HyperelasticLaw::kNeoHookean, 3.0, 0.3),
@@ -120,8 +121,9 @@ INSTANTIATE_TEST_SUITE_P(AllCells, HyperelasticEnergyDerivatives,
                          ::testing::Values(Case{2, 1, {}}, Case{2, 2, {}}, Case{3, 1, {}}, Case{3, 2, {}},
                                            Case{2, 1, CellType::kQuad4}, Case{2, 2, CellType::kQuad8},
                                            Case{2, 2, CellType::kQuad9}, Case{3, 1, CellType::kHex8},
-                                           Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27}),
+                                           Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27},
+                                           Case{2, 1, CellType::kQuad4, true}, Case{2, 2, CellType::kQuad9, true}),
                          [](const ::testing::TestParamInfo<Case>& c) {
-                           if (c.param.tensor) return cell_name(*c.param.tensor);
+                           if (c.param.tensor) return cell_name(*c.param.tensor) + (c.param.mixed ? "WithTriangles" : "");
                            return "D" + std::to_string(c.param.dim) + "P" + std::to_string(c.param.order);
                          });

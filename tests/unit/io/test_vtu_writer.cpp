@@ -24,11 +24,10 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 Mesh two_triangles() {
   Mesh m;
   m.dim = 2;
-  m.cell_type = CellType::kTri3;
   m.x.resize(2, 4);
   m.x << 0.0, 1.0, 1.0, 0.0,  //
       0.0, 0.0, 1.0, 0.5;
-  m.cells = {0, 1, 2, 0, 2, 3};
+  m.set_cells(CellType::kTri3, {0, 1, 2, 0, 2, 3});
   return m;
 }
 
@@ -74,19 +73,41 @@ TEST(VtuWriter, TwoTrianglesAscii) {
   EXPECT_FALSE(contains(s, "AppendedData"));
 }
 
+// A mesh of two cell types: one type and one offset per cell, the cells in mesh order.
+TEST(VtuWriter, MixedTrianglesAndQuadrilateralAscii) {
+  const testing::TempFolder folder;
+  Mesh m;
+  m.dim = 2;
+  m.x.resize(2, 5);
+  m.x << 0.0, 1.0, 1.0, 0.0, 2.0,  //
+      0.0, 0.0, 1.0, 1.0, 0.5;
+  const Index quad[4] = {0, 1, 2, 3}, tri[3] = {1, 4, 2};
+  m.add_cells(CellType::kQuad4, quad, 1);
+  m.add_cells(CellType::kTri3, tri, 1);
+  VtuWriter w(m);
+  EXPECT_EQ(w.num_cells(), 2);
+  w.add_cell_data("body", Eigen::VectorXd::Ones(2));
+  const std::string path = (folder.path() / "mixed.vtu").string();
+  w.write(path);
+  const std::string s = testing::read_text(path);
+  EXPECT_TRUE(contains(s, "<Piece NumberOfPoints=\"5\" NumberOfCells=\"2\">"));
+  EXPECT_TRUE(contains(s, "Name=\"connectivity\" format=\"ascii\">\n          0 1 2 3\n          1 4 2\n")) << s;
+  EXPECT_TRUE(contains(s, "Name=\"offsets\" format=\"ascii\">\n          4 7\n"));
+  EXPECT_TRUE(contains(s, "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n          9 5\n"));
+}
+
 TEST(VtuWriter, Tet10SwapsLastEdgeNodes) {
   const testing::TempFolder folder;
   const fs::path& dir = folder.path();
   Mesh m;
   m.dim = 3;
-  m.cell_type = CellType::kTet10;
   m.x.resize(3, 10);
   const Eigen::Vector3d v[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (int k = 0; k < 4; ++k) m.x.col(k) = v[k];
   // Gmsh edge order m01 m12 m20 m30 m32 m31.
   const int edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
   for (int e = 0; e < 6; ++e) m.x.col(4 + e) = 0.5 * (v[edges[e][0]] + v[edges[e][1]]);
-  m.cells = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
+  m.set_cells(CellType::kTet10, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9});
   VtuWriter w(m);
   const std::string path = (dir / "tet10.vtu").string();
   w.write(path);

@@ -18,7 +18,7 @@ TEST(GmshIo, TwoBodiesFromOneGeoGetTheirOwnNodes) {
   const MeshFile f = read_mesh_file(kGeo + "two_blocks.geo", opt);
   const Mesh lower = extract_body(f, 2, "lower", "body[0].group");
   const Mesh upper = extract_body(f, 2, "upper", "body[1].group");
-  EXPECT_EQ(lower.cell_type, CellType::kTri3);
+  EXPECT_EQ(lower.first_cell_type(), CellType::kTri3);
   ASSERT_TRUE(lower.facet_groups.count("interface"));
   ASSERT_TRUE(upper.facet_groups.count("interface"));
   EXPECT_FALSE(upper.facet_groups.count("bottom"));
@@ -46,7 +46,7 @@ TEST(GmshIo, SecondOrderNodesLieOnTheCircle) {
   opt.dim = 2;
   opt.order = 2;
   const Mesh m = extract_body(read_mesh_file(kGeo + "disk.geo", opt), 2, "disk", "g");
-  EXPECT_EQ(m.cell_type, CellType::kTri6);
+  EXPECT_EQ(m.first_cell_type(), CellType::kTri6);
   const auto& rim = m.facet_groups.at("rim");
   ASSERT_GT(m.num_facets(rim), 8);
   for (Index k = 0; k < m.num_facets(rim); ++k)
@@ -62,7 +62,7 @@ TEST(GmshIo, TetrahedraFromOpenCascadeBox) {
     opt.order = order;
     opt.mesh_size = 0.4;
     const Mesh m = extract_body(read_mesh_file(kGeo + "cube.geo", opt), 3, "cube", "g");
-    EXPECT_EQ(m.cell_type, order == 1 ? CellType::kTet4 : CellType::kTet10);
+    EXPECT_EQ(m.first_cell_type(), order == 1 ? CellType::kTet4 : CellType::kTet10);
     for (const char* face : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
       ASSERT_TRUE(m.facet_groups.count(face)) << face;
       EXPECT_NEAR(facet_group_measure(m, m.facet_groups.at(face)), 1.0, 1e-12) << face;
@@ -187,11 +187,11 @@ TEST(GmshIo, RecombinedSurfaceGivesQuadrilaterals) {
   MeshReadOptions opt;
   opt.dim = 2;
   const Mesh q4 = extract_body(read_mesh_file(kGeo + "disk_quads.geo", opt), 2, "disk", "g");
-  EXPECT_EQ(q4.cell_type, CellType::kQuad4);
+  EXPECT_EQ(q4.first_cell_type(), CellType::kQuad4);
   EXPECT_NEAR(facet_group_measure(q4, q4.facet_groups.at("rim")), 2 * M_PI, 0.1);
   opt.order = 2;
   const Mesh q9 = extract_body(read_mesh_file(kGeo + "disk_quads.geo", opt), 2, "disk", "g");
-  EXPECT_EQ(q9.cell_type, CellType::kQuad9);
+  EXPECT_EQ(q9.first_cell_type(), CellType::kQuad9);
   EXPECT_NEAR(facet_group_measure(q9, q9.facet_groups.at("rim")), 2 * M_PI, 1e-3);
   const auto& rim = q9.facet_groups.at("rim");
   for (Index k = 0; k < q9.num_facets(rim); ++k) EXPECT_NEAR(q9.x.col(rim.facets[3 * k + 2]).norm(), 1.0, 1e-10);
@@ -200,7 +200,7 @@ TEST(GmshIo, RecombinedSurfaceGivesQuadrilaterals) {
       tmp.write("disk_quad8.geo", symcontact::testing::read_text(kGeo + "disk_quads.geo") +
                                       "\nMesh.SecondOrderIncomplete = 1;\n").string();
   const Mesh q8 = extract_body(read_mesh_file(incomplete, opt), 2, "disk", "g");
-  EXPECT_EQ(q8.cell_type, CellType::kQuad8);
+  EXPECT_EQ(q8.first_cell_type(), CellType::kQuad8);
   EXPECT_EQ(q8.num_cells(), q9.num_cells());
 }
 
@@ -216,7 +216,7 @@ TEST(GmshIo, RecombinedVolumeGivesHexahedra) {
       path = tmp.write("cube_hex20.geo", symcontact::testing::read_text(path) + "\nMesh.SecondOrderIncomplete = 1;\n")
                  .string();
     const Mesh m = extract_body(read_mesh_file(path, opt), 3, "cube", "g");
-    EXPECT_EQ(m.cell_type, expected[k]);
+    EXPECT_EQ(m.first_cell_type(), expected[k]);
     EXPECT_EQ(m.num_cells(), 27);
     EXPECT_EQ(m.facet_cell_type(), facet_type(expected[k]));
     for (const char* face : {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}) {
@@ -229,17 +229,40 @@ TEST(GmshIo, RecombinedVolumeGivesHexahedra) {
   }
 }
 
-TEST(GmshIo, BodyMixingTrianglesAndQuadrilateralsIsRefusedNamingBoth) {
-  MeshReadOptions opt;
-  opt.dim = 2;
-  const MeshFile f = read_mesh_file(kGeo + "square_mixed.geo", opt);
-  try {
-    extract_body(f, 2, "block", "body[0].group");
-    FAIL() << "expected an InputError";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.key(), "body[0].group");
-    EXPECT_NE(e.message().find("mixes element types"), std::string::npos) << e.message();
-    EXPECT_NE(e.message().find("quad4"), std::string::npos) << e.message();
-    EXPECT_NE(e.message().find("tri3"), std::string::npos) << e.message();
+// A body half recombined: quadrilaterals on the left square, triangles on the right, in one mesh of two cell
+// blocks sharing the nodes of x = 1; at order 2 the quadrilaterals are Quad9 and the triangles Tri6.
+TEST(GmshIo, BodyMixingTrianglesAndQuadrilateralsKeepsBothTypes) {
+  for (int order : {1, 2}) {
+    MeshReadOptions opt;
+    opt.dim = 2;
+    opt.order = order;
+    const MeshFile f = read_mesh_file(kGeo + "square_mixed.geo", opt);
+    const Mesh m = extract_body(f, 2, "block", "body[0].group");
+    ASSERT_TRUE(m.mixed()) << order;
+    const CellType quad = order == 1 ? CellType::kQuad4 : CellType::kQuad9;
+    const CellType tri = order == 1 ? CellType::kTri3 : CellType::kTri6;
+    Index quads = 0, tris = 0;
+    for (const auto& [t, n] : m.cell_type_counts()) {
+      EXPECT_TRUE(t == quad || t == tri) << cell_name(t);
+      (t == quad ? quads : tris) += n;
+    }
+    EXPECT_GT(quads, 0);
+    EXPECT_GT(tris, 0);
+    EXPECT_EQ(quads + tris, m.num_cells());
+    // Every cell is of the type of its block, with that type's node count and a positive Jacobian.
+    for (const CellBlock& b : m.cell_blocks)
+      for (Index c = b.begin; c < b.end; ++c) {
+        EXPECT_EQ(m.cell_type(c), b.type);
+        EXPECT_EQ(m.nodes_per_cell(c), cell_num_nodes(b.type));
+        EXPECT_GT(simplex_determinant(m, c), 0.0);
+        // The quadrilaterals are in the left square, the triangles in the right one.
+        double xc = 0.0;
+        for (int a = 0; a < cell_num_vertices(b.type); ++a) xc += m.x(0, m.cell(c)[a]) / cell_num_vertices(b.type);
+        EXPECT_EQ(xc < 1.0, b.type == quad) << m.cell_label(c);
+      }
+    // The bottom spans both squares: facets of quadrilaterals and of triangles alike.
+    EXPECT_NEAR(facet_group_measure(m, m.facet_groups.at("bottom")), 2.0, 1e-12);
+    EXPECT_EQ(m.cell_types_label().find(cell_name(quad)) != std::string::npos, true) << m.cell_types_label();
+    EXPECT_EQ(m.cell_types_label().find(cell_name(tri)) != std::string::npos, true) << m.cell_types_label();
   }
 }

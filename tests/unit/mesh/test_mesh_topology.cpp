@@ -18,11 +18,11 @@ namespace {
 Mesh side_by_side(const Mesh& a, const Mesh& b) {
   Mesh m;
   m.dim = a.dim;
-  m.cell_type = a.cell_type;
   m.x.resize(a.dim, a.num_nodes() + b.num_nodes());
   m.x << a.x, b.x;
-  m.cells = a.cells;
-  for (Index v : b.cells) m.cells.push_back(v + a.num_nodes());
+  std::vector<Index> cells = a.cells;
+  for (Index v : b.cells) cells.push_back(v + a.num_nodes());
+  m.set_cells(a.first_cell_type(), std::move(cells));
   return m;
 }
 
@@ -40,14 +40,12 @@ std::string message_of(const Mesh& m, const TopologyAllowances& allow = {}) {
 Mesh two_triangles(const Eigen::Vector2d& apex, bool clockwise) {
   Mesh m;
   m.dim = 2;
-  m.cell_type = CellType::kTri3;
   m.x.resize(2, 4);
   m.x << 0, 1, 0, apex.x(), 0, 0, 1, apex.y();
-  m.cells = {0, 1, 2};
   if (clockwise)
-    m.cells.insert(m.cells.end(), {1, 2, 3});
+    m.set_cells(CellType::kTri3, {0, 1, 2, 1, 2, 3});
   else
-    m.cells.insert(m.cells.end(), {1, 3, 2});
+    m.set_cells(CellType::kTri3, {0, 1, 2, 1, 3, 2});
   return m;
 }
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/external_load.hpp"
 
@@ -27,7 +29,7 @@ TEST(Mesh, OrientCellsFlipsClockwiseTrianglesConsistently) {
   Mesh m = rectangle_mesh(0, 0, 1, 1, 2, 2, 2);
   // Flip every other cell by hand (swap v1, v2 and the edge nodes), then reorient.
   for (Index c = 0; c < m.num_cells(); c += 2) {
-    Index* n = m.cells.data() + c * 6;
+    Index* n = m.cell(c);
     std::swap(n[1], n[2]);
     std::swap(n[3], n[5]);
   }
@@ -90,12 +92,60 @@ TEST(StructuredMesh, TensorMeshesOfEveryType) {
     EXPECT_NEAR(n[0], D == 2 ? 1.0 : 3.0, 1e-12) << cell_name(t);
     // Reflect cell 0: it is now negative and is turned back.
     const int* p = cell_reflection(t);
-    std::vector<Index> c0(m.cell(0), m.cell(0) + m.nodes_per_cell());
-    for (int a = 0; a < m.nodes_per_cell(); ++a) m.cells[a] = c0[p[a]];
+    std::vector<Index> c0(m.cell(0), m.cell(0) + m.nodes_per_cell(0));
+    for (int a = 0; a < m.nodes_per_cell(0); ++a) m.cells[a] = c0[p[a]];
     EXPECT_LT(simplex_determinant(m, 0), 0.0) << cell_name(t);
     EXPECT_EQ(m.orient_cells(), 1);
     EXPECT_NO_THROW(m.check()) << cell_name(t);
     perturb_interior_nodes(m, 0.5, 0.2, 7);
     EXPECT_NO_THROW(m.check()) << cell_name(t);
   }
+}
+
+// Quad4 + Tri3 and Quad9 + Tri6 in a checkerboard: blocks of one type each, every cell positive, the
+// boundary groups located on cells of both types (the cut cells' triangles share the quadrilaterals' edges).
+TEST(Mesh, MixedRectangleMeshHasBlocksOfBothTypes) {
+  for (CellType q : {CellType::kQuad4, CellType::kQuad9}) {
+    const Mesh m = mixed_rectangle_mesh(q, 0, 0, 2, 1, 4, 3);
+    const CellType t = q == CellType::kQuad4 ? CellType::kTri3 : CellType::kTri6;
+    ASSERT_TRUE(m.mixed());
+    const auto counts = m.cell_type_counts();
+    ASSERT_EQ(counts.size(), 2u);
+    EXPECT_EQ(counts[0].first, t);  // cell (0, 0) is cut
+    EXPECT_EQ(counts[0].second, 2 * 6);
+    EXPECT_EQ(counts[1].first, q);
+    EXPECT_EQ(counts[1].second, 6);
+    EXPECT_EQ(m.num_cells(), 18);
+    EXPECT_EQ(m.order(), cell_order(q));
+    EXPECT_NO_THROW(m.check());
+    EXPECT_EQ(m.cell_offsets.back(), static_cast<Index>(m.cells.size()));
+    std::set<CellType> bottom_types;
+    const FacetGroup& bottom = m.facet_groups.at("bottom");
+    for (Index c : bottom.cell) bottom_types.insert(m.cell_type(c));
+    EXPECT_EQ(bottom_types.size(), 2u) << cell_name(q);
+    Eigen::VectorXd n;
+    EXPECT_NEAR(facet_group_measure(m, bottom, &n), 2.0, 1e-12);
+  }
+}
+
+// Cells of another order or facet type cannot join a mesh; types of one order and facet type can.
+TEST(Mesh, AddCellsRefusesTypesOfAnotherOrder) {
+  Mesh m;
+  const Index tri[3] = {0, 1, 2};
+  m.add_cells(CellType::kTri3, tri, 1);
+  const Index quad9[9] = {0, 1, 2, 3, 4, 5, 6, 7, 8};
+  EXPECT_THROW(m.add_cells(CellType::kQuad9, quad9, 1), std::invalid_argument);
+  EXPECT_THROW(m.add_cells(CellType::kTet4, tri, 0), std::invalid_argument);
+  m.add_cells(CellType::kQuad4, quad9, 1);
+  m.add_cells(CellType::kQuad4, quad9, 1);
+  m.add_cells(CellType::kTri3, tri, 1);
+  ASSERT_EQ(m.cell_blocks.size(), 3u);  // Tri3, Quad4 (two cells), Tri3
+  EXPECT_EQ(m.cell_type(0), CellType::kTri3);
+  EXPECT_EQ(m.cell_type(1), CellType::kQuad4);
+  EXPECT_EQ(m.cell_type(2), CellType::kQuad4);
+  EXPECT_EQ(m.cell_type(3), CellType::kTri3);
+  EXPECT_EQ(m.nodes_per_cell(2), 4);
+  EXPECT_EQ(m.cell(3) - m.cells.data(), 11);
+  EXPECT_EQ(m.max_nodes_per_cell(), 4);
+  EXPECT_EQ(m.cell_types_label(), "tri3 (2) + quad4 (2)");
 }
