@@ -4,7 +4,12 @@
 ///  - stiffness/<cell>: linear_elastic_stiffness() for one element (energy/elastic_kernel.hpp), with the
 ///    quadrature LinearElasticEnergy uses (degree 0 for P1, 3 for P2);
 ///  - scatter/<cell>: ReducedTripletSink::add() of one element block with all DOFs free (the other half
-///    of an assembly).
+///    of an assembly);
+///  - mortar3d/<n>: contact_points() of a 3D face against another (the search of every geometry iteration:
+///    segmentation, quadrature points, their projections): the top face of a box of n × n × 1 cubes (six
+///    tetrahedra each) as master, the bottom face of a box of (n + 1) × (n + 1) × 1 lying on it as slave,
+///    non-matching. items_per_second there is slave facets per second, and the counter `points` the
+///    contact points of one search.
 /// items_per_second is elements per second.
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact_bench_kernels --benchmark_min_time=0.5
@@ -15,12 +20,15 @@
 #include <string>
 #include <vector>
 
+#include "symcontact/contact/contact_points.hpp"
+#include "symcontact/contact/contact_surface.hpp"
 #include "symcontact/energy/elastic_kernel.hpp"
 #include "symcontact/fem/cell_dispatch.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/fem/quadrature.hpp"
 #include "symcontact/fem/shape_functions.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
+#include "symcontact/mesh/structured.hpp"
 
 namespace {
 
@@ -100,6 +108,27 @@ void element_scatter(benchmark::State& state, CellType t) {
   });
 }
 
+void mortar_search_3d(benchmark::State& state) {
+  using symcontact::Vec3;
+  const int n = static_cast<int>(state.range(0));
+  const symcontact::Mesh lower = symcontact::box_mesh(Vec3(0, 0, -0.2), Vec3(1, 1, 0), n, n, 1);
+  const symcontact::Mesh upper = symcontact::box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 0.2), n + 1, n + 1, 1);
+  const auto model = symcontact::AnalysisModel::kThreeD;
+  const symcontact::ContactSurface master = symcontact::make_contact_surface(lower, "zmax", 0, "lower", model);
+  const symcontact::ContactSurface slave = symcontact::make_contact_surface(upper, "zmin", 1, "upper", model);
+  const symcontact::MasterGeometry geometry = symcontact::prepare_master(master, master.X);
+  symcontact::ContactSearchOptions options;
+  options.search_distance = 0.5 / n;
+  std::size_t points = 0;
+  for (auto _ : state) {
+    const std::vector<symcontact::ContactPoint> cp = symcontact::contact_points(slave, slave.X, geometry, options);
+    points = cp.size();
+    benchmark::DoNotOptimize(cp.data());
+  }
+  state.SetItemsProcessed(state.iterations() * slave.num_facets());
+  state.counters["points"] = static_cast<double>(points);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -108,6 +137,7 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("stiffness/" + name).c_str(), element_stiffness, t);
     benchmark::RegisterBenchmark(("scatter/" + name).c_str(), element_scatter, t);
   }
+  benchmark::RegisterBenchmark("mortar3d", mortar_search_3d)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
