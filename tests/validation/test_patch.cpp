@@ -106,6 +106,32 @@ TEST(PatchTest, DistortedQuadrilateralsAndHexahedra) {
   }
 }
 
+// 6-node prisms: a structured box of them, interior vertices moved; and one body of prisms under
+// tetrahedra read from Gmsh (tests/data/geo/prism_layer.geo), conforming on their common triangles.
+TEST(PatchTest, DistortedPrismsAndPrismsUnderTetrahedra) {
+  Mesh m = prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
+  perturb_interior_nodes(m, 1.0 / 3, 0.25, 45);
+  auto [eu, es] = patch_errors(m, "xmin");
+  std::printf("  prism6: displacement error %.2e, cell stress error %.2e\n", eu, es);
+  EXPECT_LT(eu, 1e-10);
+  EXPECT_LT(es, 1e-10);
+  MeshReadOptions o3;
+  o3.dim = 3;
+  Mesh layer = extract_body(read_mesh_file(std::string(SYMCONTACT_TEST_DATA) + "/geo/prism_layer.geo", o3), 3,
+                            "block", "g");
+  ASSERT_TRUE(layer.mixed());
+  // "sides" holds facets of two types: a node group (a Dirichlet condition may hold it), not a load.
+  EXPECT_EQ(layer.facet_groups.count("sides"), 0u);
+  EXPECT_EQ(layer.node_groups.count("sides"), 1u);
+  EXPECT_NE(layer.interior_facet_groups.at("sides").find("two types"), std::string::npos);
+  EXPECT_EQ(layer.facet_type_of(layer.facet_groups.at("sides_prisms")), CellType::kQuad4);
+  EXPECT_EQ(layer.facet_type_of(layer.facet_groups.at("sides_tets")), CellType::kTri3);
+  std::tie(eu, es) = patch_errors(layer, "zmin");
+  std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", layer.cell_types_label().c_str(), eu, es);
+  EXPECT_LT(eu, 1e-10);
+  EXPECT_LT(es, 1e-10);
+}
+
 TEST(PatchTest, UnstructuredGmshMeshesIncludingCurvedP2) {
   const std::string geo = std::string(SYMCONTACT_TEST_DATA) + "/geo/";
   for (int order = 1; order <= 2; ++order) {

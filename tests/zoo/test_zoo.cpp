@@ -176,6 +176,18 @@ void expect_header_figures(const std::string& example, const SolvedCase& c) {
     EXPECT_LT(e.displacement, 1e-8) << example;
     EXPECT_LT(e.pressure, 1e-8) << example;
   }
+  if (example == "prism_blocks_3d/prism_blocks.toml" || example == "prism_blocks_3d/prism_sides.toml") {
+    // Header: the V3 contact patch test in 3D on 6-node prisms, through their triangular faces
+    // (prism_blocks) or their quadrilateral sides (prism_sides), within 1e-8.
+    ContactPatchCase v3;
+    v3.dim = 3;
+    const ContactPatchErrors e = contact_patch_errors(v3, c);
+    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    EXPECT_EQ(c.model->bodies()[0]->mesh.first_cell_type(), CellType::kPrism6) << example;
+    EXPECT_EQ(c.model->bodies()[1]->mesh.first_cell_type(), CellType::kPrism6) << example;
+    EXPECT_LT(e.displacement, 1e-8) << example;
+    EXPECT_LT(e.pressure, 1e-8) << example;
+  }
   if (example == "cracked_block_2d/cracked_block.toml") {
     // Header: the V3 contact patch test as one body (the same loads and supports), exact to round-off.
     const ContactPatchErrors e = contact_patch_errors(ContactPatchCase{}, c);

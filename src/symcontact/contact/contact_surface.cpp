@@ -121,7 +121,7 @@ ContactSurface make_contact_surface(const Mesh& mesh, const std::string& group, 
   s.body = body;
   s.model = model;
   s.dim = mesh.dim;
-  s.facet_type = mesh.facet_cell_type();
+  s.facet_type = mesh.facet_type_of(g);
   const int nv = cell_num_vertices(s.facet_type);
   std::unordered_map<Index, Index> local;
   for (Index v : g.facets) {

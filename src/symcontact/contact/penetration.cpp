@@ -6,6 +6,7 @@
 #include <limits>
 #include <unordered_set>
 #include <memory>
+#include <stdexcept>
 
 #include "symcontact/contact/bvh.hpp"
 #include "symcontact/contact/closest_point.hpp"
@@ -87,7 +88,7 @@ using FacetSet = std::unordered_set<FacetKey, FacetKeyHash>;
 /// The vertex facet of cell c number f (cell_facet_nodes()).
 FacetKey cell_facet_key(const Mesh& m, Index c, int f) {
   const int* loc = cell_facet_nodes(m.cell_type(c), f);
-  const int nfv = cell_num_vertices(m.facet_cell_type());
+  const int nfv = cell_num_vertices(cell_facet_type(m.cell_type(c), f));
   Index v[4];
   for (int i = 0; i < nfv; ++i) v[i] = m.cell(c)[loc[i]];
   return facet_key(v, nfv);
@@ -100,6 +101,25 @@ FacetKey opposite_facet(const Mesh& m, Index c, int a) {
   for (int b = 0; b <= m.dim; ++b)
     if (b != a) v[n++] = m.cell(c)[b];
   return facet_key(v, m.dim);
+}
+
+/// The reference distance of the point ξ of a Quad4, Hex8 or Prism6 from the plane of its facet f
+/// (cell_facet_nodes()), positive inside: ξ_i or 1 − ξ_i on the axis and side all the facet's vertices
+/// share; for the prism ζ, 1 − ζ, η, ξ, 1 − ξ − η.
+double facet_distance(CellType linear, int f, const double* xi) {
+  if (linear == CellType::kPrism6) {
+    const double d[5] = {xi[2], 1.0 - xi[2], xi[1], xi[0], 1.0 - xi[0] - xi[1]};
+    return d[f];
+  }
+  const int D = cell_dim(linear), nfv = cell_num_vertices(facet_type(linear));
+  const int* loc = cell_facet_nodes(linear, f);
+  for (int i = 0; i < D; ++i) {
+    const int side = tensor_node_coordinates(linear, loc[0])[i];
+    bool on = true;
+    for (int k = 1; k < nfv; ++k) on = on && tensor_node_coordinates(linear, loc[k])[i] == side;
+    if (on) return side < 0 ? xi[i] : 1.0 - xi[i];
+  }
+  throw std::logic_error("facet_distance: no axis shared by the facet's vertices");
 }
 
 /// The cells of a body at node positions X + u, with a hierarchy for point location.
@@ -135,7 +155,7 @@ struct CellSearch {
   bool contains(const Eigen::Vector3d& p) const {
     bool found = false;
     bvh.for_each_overlap(Box(p, p), [&](int c) {
-      if (!found) found = cell_shape(mesh->cell_type(c)) == CellShape::kTensor ? in_tensor_cell(c, p) : in_simplex(c, p);
+      if (!found) found = cell_shape(mesh->cell_type(c)) == CellShape::kSimplex ? in_simplex(c, p) : in_mapped_cell(c, p);
     });
     return found;
   }
@@ -157,12 +177,14 @@ struct CellSearch {
     return true;
   }
 
-  /// Reference coordinates ξ of p in the multilinear cell of c's vertices by Newton's method
-  /// (x(ξ) = Σ X_a N_a(ξ) over Quad4 or Hex8 shape functions); then the test of contains(). The facets
-  /// of a Quad4 or Hex8 on which ξ_i = 0 or 1 are found from the vertices' reference coordinates.
-  bool in_tensor_cell(Index c, const Eigen::Vector3d& p) const {
-    const int D = mesh->dim, nv = 1 << D;
-    const CellType linear = D == 2 ? CellType::kQuad4 : CellType::kHex8;
+  /// Reference coordinates ξ of p in the cell of c's vertices by Newton's method (x(ξ) = Σ X_a N_a(ξ)
+  /// over the Quad4, Hex8 or Prism6 shape functions); then the test of contains() on facet_distance().
+  bool in_mapped_cell(Index c, const Eigen::Vector3d& p) const {
+    const int D = mesh->dim;
+    const CellType type = mesh->cell_type(c);
+    const CellType linear =
+        cell_shape(type) == CellShape::kPrism ? CellType::kPrism6 : (D == 2 ? CellType::kQuad4 : CellType::kHex8);
+    const int nv = cell_num_vertices(linear);
     const Index* n = mesh->cell(c);
     Eigen::VectorXd xi = Eigen::VectorXd::Constant(D, 0.5);
     double N[8], dN[24];
@@ -179,20 +201,10 @@ struct CellSearch {
       xi -= step;
       if (step.norm() < 1e-13 || xi.cwiseAbs().maxCoeff() > 1e3) break;
     }
-    if (xi.minCoeff() < -eps || xi.maxCoeff() > 1.0 + eps) return false;
-    const std::vector<double> ref = reference_nodes(linear);
-    const CellType type = mesh->cell_type(c);
-    for (int f = 0; f < cell_num_facets(type); ++f) {
-      // The axis and side of facet f: those all its vertices share.
-      const int* loc = cell_facet_nodes(type, f);
-      for (int i = 0; i < D; ++i) {
-        bool on = true;
-        for (int k = 1; k < nv / 2; ++k) on = on && ref[loc[k] * D + i] == ref[loc[0] * D + i];
-        if (!on) continue;
-        const double dist = ref[loc[0] * D + i] == 0.0 ? xi[i] : 1.0 - xi[i];
-        if (dist <= eps && boundary.count(cell_facet_key(*mesh, c, f))) return false;
-      }
-    }
+    for (int f = 0; f < cell_num_facets(linear); ++f)
+      if (facet_distance(linear, f, xi.data()) < -eps) return false;
+    for (int f = 0; f < cell_num_facets(linear); ++f)
+      if (facet_distance(linear, f, xi.data()) <= eps && boundary.count(cell_facet_key(*mesh, c, f))) return false;
     return true;
   }
 };

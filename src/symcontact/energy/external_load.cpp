@@ -71,7 +71,7 @@ void facet_point(const Eigen::MatrixXd& X, const double* Nq, const double* dNq, 
 VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, const FacetGroup& group,
                               const TractionFn& t, AnalysisModel model, int degree) {
   const int D = mesh.dim;
-  const CellType ft = mesh.facet_cell_type();
+  const CellType ft = mesh.facet_type_of(group);
   const int NN = cell_num_nodes(ft);
   const Tabulation tab = tabulate(ft, cell_quadrature(ft, load_degree(model, degree, ft)));
   VectorXd f = VectorXd::Zero(dofs.num_dofs());
@@ -95,7 +95,7 @@ VectorXd boundary_load_vector(const Mesh& mesh, const DofMap& dofs, int body, co
 double facet_group_measure(const Mesh& mesh, const FacetGroup& group, Eigen::VectorXd* normal_integral,
                            AnalysisModel model, int degree) {
   const int D = mesh.dim;
-  const CellType ft = mesh.facet_cell_type();
+  const CellType ft = mesh.facet_type_of(group);
   const int NN = cell_num_nodes(ft);
   const Tabulation tab = tabulate(ft, cell_quadrature(ft, load_degree(model, degree, ft)));
   Eigen::MatrixXd X(D, NN);

@@ -131,14 +131,31 @@ QuadratureRule tensor_quadrature(int dim, int degree) {
   return r;
 }
 
+QuadratureRule prism_quadrature(int degree) {
+  const QuadratureRule tri = simplex_quadrature(2, degree);
+  std::vector<double> z, wz;
+  gauss_legendre_01(std::max(degree, 0) / 2 + 1, z, wz);
+  QuadratureRule r;
+  r.dim = 3;
+  for (std::size_t k = 0; k < z.size(); ++k)
+    for (int q = 0; q < tri.size(); ++q) {
+      r.points.insert(r.points.end(), {tri.point(q)[0], tri.point(q)[1], z[k]});
+      r.weights.push_back(tri.weights[q] * wz[k]);
+    }
+  return r;
+}
+
 QuadratureRule cell_quadrature(CellType t, int degree) {
-  return cell_shape(t) == CellShape::kTensor ? tensor_quadrature(cell_dim(t), degree)
-                                             : simplex_quadrature(cell_dim(t), degree);
+  switch (cell_shape(t)) {
+    case CellShape::kTensor: return tensor_quadrature(cell_dim(t), degree);
+    case CellShape::kPrism: return prism_quadrature(degree);
+    default: return simplex_quadrature(cell_dim(t), degree);
+  }
 }
 
 int stiffness_quadrature_degree(CellType t, AnalysisModel model) {
   const int extra = model == AnalysisModel::kAxisymmetric ? 2 : 0;
-  if (cell_shape(t) == CellShape::kTensor) return 2 * cell_order(t) + extra;
+  if (cell_shape(t) != CellShape::kSimplex) return 2 * cell_order(t) + extra;
   return (cell_order(t) == 1 ? 0 : 3) + extra;
 }
 

@@ -32,13 +32,18 @@ QuadratureRule simplex_quadrature(int dim, int degree);
 /// each variable separately (degree / 2 + 1 points per direction).
 QuadratureRule tensor_quadrature(int dim, int degree);
 
+/// The rule on the unit triangle times [0, 1]: simplex_quadrature(2, degree) times degree / 2 + 1 Gauss
+/// points in ζ (exact for degree ≤ `degree` in (ξ, η) and in ζ separately).
+QuadratureRule prism_quadrature(int degree);
+
 /// The rule on the reference cell of `t`: simplex_quadrature() for a simplex, tensor_quadrature() for a
-/// quadrilateral or hexahedron (whose Q_p shape functions have degree p in each variable).
+/// quadrilateral or hexahedron (whose Q_p shape functions have degree p in each variable),
+/// prism_quadrature() for a prism.
 QuadratureRule cell_quadrature(CellType t, int degree);
 
 /// The degree of the rule that integrates stiffness and elastic energy over a cell of type t: 2(p − 1) for
 /// straight simplices, exact for their polynomial integrand; 3 for P2, whose cells may be curved; 2p per
-/// variable for quadrilaterals and hexahedra (p + 1 Gauss points per direction, full integration,
+/// variable for quadrilaterals, hexahedra and prisms (p + 1 Gauss points per direction, full integration,
 /// exact for parallelogram and parallelepiped cells; Hughes, "The finite element method", 2000, §3.8).
 /// Axisymmetric models (analysis_model.hpp) use 2 more: the integrand gains the factor r and the hoop
 /// terms N_a N_b / r, and a one-point rule on a linear triangle would leave a zero-energy rotation of each

@@ -87,10 +87,28 @@ void tensor_shape_functions(CellType t, const double* xi, double* N, double* dN)
       for (int k = 0; k < d; ++k) dN[a * d + k] = g[k];
   }
 }
+/// The 6-node prism: the linear triangle's functions of (ξ, η) times 1 − ζ (v0..v2) or ζ (v3..v5).
+void prism_shape_functions(const double* xi, double* N, double* dN) {
+  const double L[3] = {1.0 - xi[0] - xi[1], xi[0], xi[1]};
+  const double dL[3][2] = {{-1.0, -1.0}, {1.0, 0.0}, {0.0, 1.0}};
+  for (int level = 0; level < 2; ++level) {
+    const double Z = level == 0 ? 1.0 - xi[2] : xi[2], dZ = level == 0 ? -1.0 : 1.0;
+    for (int v = 0; v < 3; ++v) {
+      const int a = 3 * level + v;
+      if (N) N[a] = L[v] * Z;
+      if (dN) {
+        dN[3 * a] = dL[v][0] * Z;
+        dN[3 * a + 1] = dL[v][1] * Z;
+        dN[3 * a + 2] = L[v] * dZ;
+      }
+    }
+  }
+}
 }  // namespace
 
 void shape_functions(CellType t, const double* xi, double* N, double* dN) {
   if (cell_shape(t) == CellShape::kTensor) return tensor_shape_functions(t, xi, N, dN);
+  if (cell_shape(t) == CellShape::kPrism) return prism_shape_functions(xi, N, dN);
   const int d = cell_dim(t);
   if (d == 0) {
     if (N) N[0] = 1.0;
@@ -139,6 +157,7 @@ std::vector<double> reference_nodes(CellType t) {
       for (int i = 0; i < d; ++i) v.push_back(0.5 * (tensor_node_coordinates(t, a)[i] + 1));
     return v;
   }
+  if (cell_shape(t) == CellShape::kPrism) return {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1};
   const int nv = d + 1;
   std::vector<std::vector<double>> verts(nv, std::vector<double>(d, 0.0));
   for (int i = 0; i < d; ++i) verts[i + 1][i] = 1.0;

@@ -19,8 +19,10 @@ constexpr CellFacts kFacts[] = {
     {"point", 0, 1, 1, 0}, {"line2", 1, 2, 2, 1}, {"line3", 1, 3, 2, 2},   {"tri3", 2, 3, 3, 1},
     {"tri6", 2, 6, 3, 2},  {"tet4", 3, 4, 4, 1},  {"tet10", 3, 10, 4, 2},  {"quad4", 2, 4, 4, 1},
     {"quad8", 2, 8, 4, 2}, {"quad9", 2, 9, 4, 2}, {"hex8", 3, 8, 8, 1},    {"hex20", 3, 20, 8, 2},
-    {"hex27", 3, 27, 8, 2}};
-static_assert(sizeof(kFacts) / sizeof(kFacts[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
+    {"hex27", 3, 27, 8, 2}, {"prism6", 3, 6, 6, 1}};
+/// The last CellType.
+constexpr CellType kLastType = CellType::kPrism6;
+static_assert(sizeof(kFacts) / sizeof(kFacts[0]) == ix(kLastType) + 1, "one entry per CellType");
 
 /// 0, 1, …, n − 1.
 template <int n>
@@ -31,7 +33,10 @@ constexpr std::array<int, n> identity_permutation() {
 }
 }  // namespace
 
-CellShape cell_shape(CellType t) { return ix(t) >= ix(CellType::kQuad4) ? CellShape::kTensor : CellShape::kSimplex; }
+CellShape cell_shape(CellType t) {
+  if (t == CellType::kPrism6) return CellShape::kPrism;
+  return ix(t) >= ix(CellType::kQuad4) ? CellShape::kTensor : CellShape::kSimplex;
+}
 
 int cell_dim(CellType t) { return kFacts[ix(t)].dim; }
 
@@ -52,7 +57,8 @@ CellType facet_type(CellType t) {
     case CellType::kTri6:
     case CellType::kQuad8:
     case CellType::kQuad9: return CellType::kLine3;
-    case CellType::kTet4: return CellType::kTri3;
+    case CellType::kTet4:
+    case CellType::kPrism6: return CellType::kTri3;
     case CellType::kTet10: return CellType::kTri6;
     case CellType::kHex8: return CellType::kQuad4;
     case CellType::kHex20: return CellType::kQuad8;
@@ -60,6 +66,11 @@ CellType facet_type(CellType t) {
     default: break;
   }
   throw std::logic_error("facet_type: cell has no facet type");
+}
+
+CellType cell_facet_type(CellType t, int f) {
+  if (t == CellType::kPrism6 && f >= 2) return CellType::kQuad4;
+  return facet_type(t);
 }
 
 CellType cell_type_of(int dim, int order) {
@@ -83,12 +94,12 @@ CellType cell_type_with_facet(CellType facet) {
 }
 
 int gmsh_element_type(CellType t) {
-  static const int n[] = {15, 1, 8, 2, 9, 4, 11, 3, 16, 10, 5, 17, 12};
+  static const int n[] = {15, 1, 8, 2, 9, 4, 11, 3, 16, 10, 5, 17, 12, 6};
   return n[ix(t)];
 }
 
 bool from_gmsh_element_type(int g, CellType& out) {
-  for (int k = 0; k <= ix(CellType::kHex27); ++k)
+  for (int k = 0; k <= ix(kLastType); ++k)
     if (gmsh_element_type(static_cast<CellType>(k)) == g) {
       out = static_cast<CellType>(k);
       return true;
@@ -97,7 +108,7 @@ bool from_gmsh_element_type(int g, CellType& out) {
 }
 
 int vtk_cell_type(CellType t) {
-  static const int n[] = {1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29};
+  static const int n[] = {1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29, 13};
   return n[ix(t)];
 }
 
@@ -108,9 +119,10 @@ const int* vtk_node_order(CellType t) {
   // ξ = 0 (0 4 7 3), ξ = 1 (1 2 6 5), η = 0 (0 1 5 4), η = 1 (2 3 7 6), ζ = 0 (0 3 2 1), ζ = 1 likewise.
   static const int hex[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  11, 13, 9,  16, 18,
                             19, 17, 10, 12, 14, 15, 22, 23, 21, 24, 20, 25, 26};
+  static const int wedge[] = {0, 2, 1, 3, 5, 4};
   const int* const id = ident.data();
-  static const int* const order[] = {id, id, id, id, id, id, tet10, id, id, id, id, hex, hex};  // CellType order
-  static_assert(sizeof(order) / sizeof(order[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
+  static const int* const order[] = {id, id, id, id, id, id, tet10, id, id, id, id, hex, hex, wedge};  // CellType order
+  static_assert(sizeof(order) / sizeof(order[0]) == ix(kLastType) + 1, "one entry per CellType");
   return order[ix(t)];
 }
 
@@ -122,6 +134,7 @@ int cell_num_facets(CellType t) {
     case CellType::kHex8:
     case CellType::kHex20:
     case CellType::kHex27: return 6;
+    case CellType::kPrism6: return 5;
     default: break;
   }
   switch (cell_dim(t)) {
@@ -157,8 +170,12 @@ const int* cell_facet_nodes(CellType t, int f) {
       {2, 3, 7, 6, 13, 15, 19, 14, 24},  // η = 1
       {4, 5, 6, 7, 16, 18, 19, 17, 25},  // ζ = 1
   };
+  // Prisms: the triangles ζ = 0 and ζ = 1, then the sides η = 0, ξ = 0 and ξ + η = 1, each
+  // counter-clockwise seen from outside.
+  static const int prism[5][4] = {{0, 2, 1, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {0, 3, 5, 2}, {1, 2, 5, 4}};
   static const int line[2][1] = {{0}, {1}};
   if (cell_shape(t) == CellShape::kTensor) return cell_dim(t) == 2 ? quad[f] : hex[f];
+  if (cell_shape(t) == CellShape::kPrism) return prism[f];
   switch (cell_dim(t)) {
     case 1: return line[f];
     case 2: return tri[f];
@@ -190,9 +207,10 @@ const int* cell_reflection(CellType t) {
   // Hexahedra: ξ and η swapped, so v1 <-> v3, v5 <-> v7, with their edges and faces.
   static const int hex[] = {0,  3,  2,  1,  4,  7,  6,  5,  9,  8,  10, 13, 15, 11,
                             14, 12, 17, 16, 19, 18, 20, 22, 21, 24, 23, 25, 26};
+  static const int prism[] = {0, 2, 1, 3, 5, 4};  // v1 <-> v2 and v4 <-> v5: ξ and η swapped
   static const int* const reflection[] = {ident, line3, line3, tri, tri, tet, tet,
-                                          quad,  quad,  quad,  hex, hex, hex};  // in CellType order
-  static_assert(sizeof(reflection) / sizeof(reflection[0]) == ix(CellType::kHex27) + 1, "one entry per CellType");
+                                          quad,  quad,  quad,  hex, hex, hex, prism};  // in CellType order
+  static_assert(sizeof(reflection) / sizeof(reflection[0]) == ix(kLastType) + 1, "one entry per CellType");
   return reflection[ix(t)];
 }
 

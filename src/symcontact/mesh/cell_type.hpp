@@ -15,8 +15,13 @@
 /// m04 m15 m26 m37 and Hex27 faces as ξ = 0, ξ = 1, η = 0, η = 1, ζ = 0, ζ = 1: vtk_node_order()
 /// permutes them on output. Quadrilaterals have the same order in both.
 ///
+///  - Prism6: v0 v1 v2 the triangle ζ = 0 (counter-clockwise seen from ζ > 0), v3 v4 v5 above them.
+/// VTK lists a wedge's first triangle clockwise seen from the second (its normal pointing away from it):
+/// vtk_node_order() swaps v1, v2 and v4, v5.
+///
 /// Quadrilaterals and hexahedra map from the unit square or cube [0, 1]^d (v0 at the origin, v1 on
-/// the ξ axis, v3 on the η axis, v4 on the ζ axis); simplices from the unit simplex.
+/// the ξ axis, v3 on the η axis, v4 on the ζ axis); simplices from the unit simplex; prisms from the unit
+/// triangle (ξ, η) times [0, 1] (ζ).
 
 #include <array>
 #include <string>
@@ -25,12 +30,13 @@ namespace symcontact {
 
 enum class CellType : int {
   kPoint1, kLine2, kLine3, kTri3, kTri6, kTet4, kTet10,
-  kQuad4, kQuad8, kQuad9, kHex8, kHex20, kHex27
+  kQuad4, kQuad8, kQuad9, kHex8, kHex20, kHex27, kPrism6
 };
 
-/// The reference shape of a cell type: a simplex (point, segment, triangle, tetrahedron) or a
-/// tensor-product cell (quadrilateral, hexahedron) whose quadrature and shape functions are products.
-enum class CellShape { kSimplex, kTensor };
+/// The reference shape of a cell type: a simplex (point, segment, triangle, tetrahedron), a
+/// tensor-product cell (quadrilateral, hexahedron) whose quadrature and shape functions are products, or a
+/// prism (a triangle times a segment).
+enum class CellShape { kSimplex, kTensor, kPrism };
 CellShape cell_shape(CellType t);
 
 int cell_dim(CellType t);          ///< topological dimension (0..3)
@@ -38,24 +44,28 @@ int cell_num_nodes(CellType t);    ///< number of nodes
 int cell_num_vertices(CellType t); ///< number of corner nodes
 int cell_order(CellType t);        ///< polynomial order (1 or 2; 0 for a point); 2 for Quad8/Hex20
 std::string cell_name(CellType t);
-/// The facet type of a cell (Tri3 -> Line2, Tet10 -> Tri6, Quad9 -> Line3, Hex20 -> Quad8, ...).
+/// The facet type of a cell (Tri3 -> Line2, Tet10 -> Tri6, Quad9 -> Line3, Hex20 -> Quad8, ...); for a prism,
+/// whose facets are of two types, that of its triangles (cell_facet_type() gives each facet's).
 CellType facet_type(CellType t);
+/// The type of facet f of a cell of type t (cell_facet_nodes()): facet_type(t), except for a prism's
+/// quadrilateral sides.
+CellType cell_facet_type(CellType t, int f);
 /// The simplex Lagrange cell of topological dimension `dim` and polynomial `order`.
 CellType cell_type_of(int dim, int order);
 /// The cell type whose facets are of type `facet` (Line2 -> Tri3, Quad8 -> Hex20, ...), for a rigid
 /// surface made of facets alone.
 CellType cell_type_with_facet(CellType facet);
-/// Gmsh element type number (1 line2, 2 tri3, 3 quad4, 4 tet4, 5 hex8, 8 line3, 9 tri6, 10 quad9,
+/// Gmsh element type number (1 line2, 2 tri3, 3 quad4, 4 tet4, 5 hex8, 6 prism6, 8 line3, 9 tri6, 10 quad9,
 /// 11 tet10, 12 hex27, 15 point, 16 quad8, 17 hex20).
 int gmsh_element_type(CellType t);
 /// Inverse of gmsh_element_type(); returns false for types symcontact does not support.
 bool from_gmsh_element_type(int gmsh_type, CellType& out);
-/// VTK cell type id (1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29).
+/// VTK cell type id (1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29, 13).
 int vtk_cell_type(CellType t);
 /// vtk_node_order(t)[k] is the index, in our ordering, of VTK's k-th node.
 const int* vtk_node_order(CellType t);
 
-/// Local node indices of facet f of a cell of type t (cell_num_nodes(facet_type(t)) entries),
+/// Local node indices of facet f of a cell of type t (cell_num_nodes(cell_facet_type(t, f)) entries),
 /// ordered so that the facet normal computed from its first vertices points out of the cell
 /// for a positively oriented cell (a quadrilateral facet: its first, second and last vertices).
 const int* cell_facet_nodes(CellType t, int f);

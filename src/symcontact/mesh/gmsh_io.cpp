@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <iterator>
+#include <map>
 #include <unordered_map>
 
 #include "symcontact/core/error.hpp"
@@ -280,6 +282,56 @@ double predicted_cell_count(int dim, const double extent[3], double h) {
   return dim == 2 ? 2.0 * e[0] * e[1] / (h * h) : 6.0 * e[0] * e[1] * e[2] / (h * h * h);
 }
 
+namespace {
+
+/// The facets of physical group g (of dimension dim − 1) whose nodes are all in the body (local: the body's
+/// index of each node of the file, −1 outside), as a facet group of m of their type. A group holding facets
+/// of two types (the triangles and quadrilaterals of prisms) becomes a node group, listed in
+/// interior_facet_groups with the reason it cannot be a contact surface or a load.
+void add_facet_group(const MeshFile::Group& g, const std::vector<Index>& local, Mesh& m) {
+  std::map<CellType, FacetGroup> by_type;
+  for (const auto& b : g.blocks) {
+    bool facet_of_body = false;
+    for (const CellBlock& cb : m.cell_blocks)
+      for (int f = 0; f < cell_num_facets(cb.type); ++f) facet_of_body = facet_of_body || cell_facet_type(cb.type, f) == b.type;
+    if (!facet_of_body) continue;
+    const std::size_t npf = cell_num_nodes(b.type);
+    FacetGroup& fg = by_type[b.type];
+    fg.type = b.type;
+    for (std::size_t k = 0; k + npf <= b.nodes.size(); k += npf) {
+      bool inside = true;
+      for (std::size_t a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
+      if (!inside) continue;
+      for (std::size_t a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);
+      if (k / npf < b.tags.size()) fg.tags.push_back(b.tags[k / npf]);
+    }
+  }
+  for (auto it = by_type.begin(); it != by_type.end();)
+    it = it->second.facets.empty() ? by_type.erase(it) : std::next(it);
+  if (by_type.empty()) return;
+  if (by_type.size() == 1) {
+    FacetGroup& fg = by_type.begin()->second;
+    if (fg.tags.size() * cell_num_nodes(*fg.type) != fg.facets.size()) fg.tags.clear();
+    m.facet_groups[g.name] = std::move(fg);
+    return;
+  }
+  std::vector<Index> nodes;
+  std::string types;
+  for (const auto& [t, fg] : by_type) {
+    nodes.insert(nodes.end(), fg.facets.begin(), fg.facets.end());
+    types += (types.empty() ? "" : " and ") + cell_name(t);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  m.node_groups[g.name] = std::move(nodes);
+  m.node_group_dims[g.name] = m.dim - 1;
+  m.interior_facet_groups[g.name] =
+      "the group holds facets of two types (" + types + "): a contact surface or a load is made of facets of one "
+      "type; make one physical group of each (a Dirichlet condition may hold its nodes)";
+}
+
+}  // namespace
+
 Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const std::string& group_key,
                   const TopologyAllowances& allow) {
   const std::vector<MeshFile::Block>* cells = &file.all_cells;
@@ -335,24 +387,10 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   }
   add_cell_groups(file, m);
   // Lower-dimensional groups, restricted to this body.
-  const CellType ft = m.facet_cell_type();
   for (const auto& g : file.groups) {
     if (g.dim >= dim) continue;
     if (g.dim == dim - 1) {
-      FacetGroup fg;
-      const std::size_t npf = cell_num_nodes(ft);
-      for (const auto& b : g.blocks) {
-        if (b.type != ft) continue;
-        for (std::size_t k = 0; k + npf <= b.nodes.size(); k += npf) {
-          bool inside = true;
-          for (std::size_t a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
-          if (!inside) continue;
-          for (std::size_t a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);
-          if (k / npf < b.tags.size()) fg.tags.push_back(b.tags[k / npf]);
-        }
-      }
-      if (fg.tags.size() * npf != fg.facets.size()) fg.tags.clear();
-      if (!fg.facets.empty()) m.facet_groups[g.name] = std::move(fg);
+      add_facet_group(g, local, m);
     } else {
       std::vector<Index> nodes;
       for (const auto& b : g.blocks)

@@ -68,7 +68,11 @@ std::string Mesh::cell_types_label() const {
 }
 
 bool compatible_cell_types(CellType a, CellType b) {
-  return cell_dim(a) == cell_dim(b) && cell_order(a) == cell_order(b) && facet_type(a) == facet_type(b);
+  if (cell_dim(a) != cell_dim(b) || cell_order(a) != cell_order(b)) return false;
+  for (int f = 0; f < cell_num_facets(a); ++f)
+    for (int g = 0; g < cell_num_facets(b); ++g)
+      if (cell_facet_type(a, f) == cell_facet_type(b, g)) return true;
+  return false;
 }
 
 void Mesh::set_cells(CellType t, std::vector<Index> connectivity) {
@@ -84,10 +88,13 @@ void Mesh::add_cells(CellType t, const Index* connectivity, Index count) {
   const Index first = num_cells();
   if (first == 0) {
     cell_blocks.assign(1, CellBlock{t, 0, 0});
-  } else if (!compatible_cell_types(t, first_cell_type())) {
-    throw std::invalid_argument("cells of type " + cell_name(t) + " cannot join cells of type " +
-                                cell_name(first_cell_type()) + " in one mesh (another order or facet type)");
-  } else if (cell_blocks.back().type != t) {
+  } else {
+    for (const CellBlock& b : cell_blocks)
+      if (!compatible_cell_types(t, b.type))
+        throw std::invalid_argument("cells of type " + cell_name(t) + " cannot join cells of type " +
+                                    cell_name(b.type) + " in one mesh (another order, or no facet type in common)");
+  }
+  if (first > 0 && cell_blocks.back().type != t) {
     cell_blocks.push_back(CellBlock{t, first, first});
   }
   const int npc = cell_num_nodes(t);
@@ -108,7 +115,7 @@ std::vector<std::string> Mesh::group_names() const {
 }
 
 double simplex_determinant(const Mesh& m, Index c) {
-  if (cell_shape(m.cell_type(c)) == CellShape::kTensor) return corner_determinant(m, c, 0);
+  if (cell_shape(m.cell_type(c)) != CellShape::kSimplex) return corner_determinant(m, c, 0);
   const Index* n = m.cell(c);
   if (m.dim == 2) {
     const Eigen::Vector2d a = m.x.col(n[1]) - m.x.col(n[0]);
@@ -122,13 +129,22 @@ double simplex_determinant(const Mesh& m, Index c) {
 }
 
 double corner_determinant(const Mesh& m, Index c, int corner) {
-  if (cell_shape(m.cell_type(c)) == CellShape::kSimplex) return simplex_determinant(m, c);
+  const CellShape shape = cell_shape(m.cell_type(c));
+  if (shape == CellShape::kSimplex) return simplex_determinant(m, c);
   const Index* n = m.cell(c);
   const auto edge = [&](int to) -> Vec3 {
     Vec3 e = Vec3::Zero();
     e.head(m.dim) = m.x.col(n[to]) - m.x.col(n[corner]);
     return e;
   };
+  if (shape == CellShape::kPrism) {
+    // J at vertex a of the 6-node prism: ∂x/∂ξ, ∂x/∂η are the edges of a's triangle from its first vertex
+    // b, ∂x/∂ζ the vertical edge through a.
+    const int b = corner < 3 ? 0 : 3, v = corner % 3;
+    const Vec3 d_xi = m.x.col(n[b + 1]) - m.x.col(n[b]), d_eta = m.x.col(n[b + 2]) - m.x.col(n[b]);
+    const Vec3 d_zeta = m.x.col(n[v + 3]) - m.x.col(n[v]);
+    return d_xi.cross(d_eta).dot(d_zeta);
+  }
   if (m.dim == 2) {  // neighbours v_{a+1} and v_{a−1}: counter-clockwise at every corner
     const Vec3 a = edge((corner + 1) % 4), b = edge((corner + 3) % 4);
     return a.x() * b.y() - a.y() * b.x();
@@ -172,7 +188,7 @@ void Mesh::check() const {
   const double diam = (x.rowwise().maxCoeff() - x.rowwise().minCoeff()).norm();
   const double ref = std::pow(diam, dim);
   for (const CellBlock& b : cell_blocks) {
-    const int corners = cell_shape(b.type) == CellShape::kTensor ? cell_num_vertices(b.type) : 1;
+    const int corners = cell_shape(b.type) != CellShape::kSimplex ? cell_num_vertices(b.type) : 1;
     for (Index c = b.begin; c < b.end; ++c) {
       double d = simplex_determinant(*this, c);
       for (int a = 1; a < corners; ++a) d = std::min(d, corner_determinant(*this, c, a));
@@ -199,9 +215,6 @@ FacetKey facet_key(const Index* v, int num_vertices) {
 }
 
 void Mesh::locate_facets() {
-  const CellType ft = facet_cell_type();
-  const int nfv = cell_num_vertices(ft);
-  const int npf = cell_num_nodes(ft);
   // Facet lookup keyed by the sorted vertices (facet_key()): the first cell that has the
   // facet, its local number, and the second cell (-1 while there is none: a boundary facet).
   struct Where {
@@ -210,15 +223,15 @@ void Mesh::locate_facets() {
     Index second;
   };
   std::unordered_map<FacetKey, Where, FacetKeyHash> where;
-  auto key_of = [&](const Index* v) { return facet_key(v, nfv); };
-  std::vector<Index> fv(npf);
+  Index fv[4];
   for (const CellBlock& b : cell_blocks)
     for (Index c = b.begin; c < b.end; ++c) {
       const Index* n = cell(c);
       for (int f = 0; f < cell_num_facets(b.type); ++f) {
         const int* loc = cell_facet_nodes(b.type, f);
+        const int nfv = cell_num_vertices(cell_facet_type(b.type, f));
         for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
-        auto k = key_of(fv.data());
+        auto k = facet_key(fv, nfv);
         auto it = where.find(k);
         if (it == where.end())
           where.emplace(k, Where{c, f, -1});
@@ -229,11 +242,12 @@ void Mesh::locate_facets() {
   std::vector<std::string> interior;
   for (auto& [name, g] : facet_groups) {
     const Index m = num_facets(g);
+    const int npf = cell_num_nodes(facet_type_of(g)), nfv = cell_num_vertices(facet_type_of(g));
     g.cell.assign(m, -1);
     g.local_facet.assign(m, -1);
     for (Index k = 0; k < m; ++k) {
       Index* fn = g.facets.data() + k * npf;
-      auto it = where.find(key_of(fn));
+      auto it = where.find(facet_key(fn, nfv));
       const std::string facet = k < static_cast<Index>(g.tags.size()) ? "element " + std::to_string(g.tags[k])
                                                                       : "facet " + std::to_string(k + 1);
       if (it == where.end())

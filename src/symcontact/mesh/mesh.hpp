@@ -7,14 +7,16 @@
 /// after cell, in Gmsh node ordering (cell_type.hpp); cell c's are cells[cell_offsets[c]] up to
 /// cells[cell_offsets[c + 1]]. `cell_blocks` cuts the cells into runs of one type, so that kernels
 /// dispatch on the type once a block (a uniform mesh has one block). The types of a mesh share one order
-/// and one facet type (triangles with quadrilaterals of the same order in 2D), so that facet groups hold
-/// facets of type facet_cell_type() the same way, nodes_per_facet() each. Every cell is positively
-/// oriented (det J > 0 at its vertices); mesh builders reorient cells read with the other orientation.
+/// and, pairwise, a facet type (triangles with quadrilaterals in 2D; prisms with tetrahedra or with
+/// hexahedra in 3D: compatible_cell_types()). Facet groups hold facets of one type each the same way
+/// (FacetGroup::type). Every cell is positively oriented (det J > 0 at its vertices); mesh builders
+/// reorient cells read with the other orientation.
 /// A facet is keyed by its sorted vertex indices (std::array<Index, 4>, −1 for the entries a segment or
 /// triangle lacks).
 
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,9 @@ FacetKey facet_key(const Index* v, int num_vertices);
 
 struct FacetGroup {
   std::vector<Index> facets;  ///< num_facets × nodes-per-facet node indices
+  /// The facets' type; unset: the mesh's facet_cell_type() (any group of a mesh whose cells have one facet
+  /// type). Set where the cells have facets of two types (prisms: triangles and quadrilaterals).
+  std::optional<CellType> type;
   std::vector<Index> tags;    ///< element tag of each facet in its mesh file (empty: built in code)
   /// The cell each facet bounds and its local facet number (filled by Mesh::locate_facets()).
   std::vector<Index> cell;
@@ -65,9 +70,10 @@ struct Mesh {
   std::map<std::string, int> node_group_dims;
   /// Physical groups of cells (of dimension `dim`) restricted to this mesh: cell indices, increasing.
   std::map<std::string, std::vector<Index>> cell_groups;
-  /// Groups of facets (dimension dim − 1) with a facet inside the body (shared by two cells), moved out of
-  /// facet_groups by locate_facets() into node_groups: why each cannot be a boundary group, for the message of
-  /// a contact surface or a load that names it. A Dirichlet condition may still hold its nodes.
+  /// Groups of facets (dimension dim − 1) that cannot be boundary groups, kept as node groups: those with a
+  /// facet inside the body (shared by two cells; locate_facets()) and those holding facets of two types
+  /// (extract_body()). Why, for the message of a contact surface or a load that names one. A Dirichlet
+  /// condition may still hold its nodes.
   std::map<std::string, std::string> interior_facet_groups;
 
   Index num_nodes() const { return x.cols(); }
@@ -89,9 +95,13 @@ struct Mesh {
   int max_nodes_per_cell() const;
   /// The polynomial order shared by the cells.
   int order() const { return cell_order(first_cell_type()); }
+  /// The facet type of the first block's cells (of a prism: its triangles).
   CellType facet_cell_type() const { return facet_type(first_cell_type()); }
-  int nodes_per_facet() const { return cell_num_nodes(facet_cell_type()); }
-  Index num_facets(const FacetGroup& g) const { return static_cast<Index>(g.facets.size()) / nodes_per_facet(); }
+  /// The type of the facets of group g.
+  CellType facet_type_of(const FacetGroup& g) const { return g.type ? *g.type : facet_cell_type(); }
+  Index num_facets(const FacetGroup& g) const {
+    return static_cast<Index>(g.facets.size()) / cell_num_nodes(facet_type_of(g));
+  }
 
   /// Replaces the cells by `connectivity`, cells of type t one after the other.
   void set_cells(CellType t, std::vector<Index> connectivity);
@@ -127,17 +137,18 @@ struct Mesh {
   Index orient_cells();
 };
 
-/// Whether cells of types a and b can be in one mesh: the same dimension, order and facet type (a
-/// triangle and a quadrilateral of the same order, in 2D).
+/// Whether cells of types a and b can be in one mesh: the same dimension and order, and a facet type in
+/// common (a triangle and a quadrilateral of the same order in 2D; a prism and a tetrahedron, or a prism and
+/// a hexahedron, in 3D; a tetrahedron and a hexahedron need pyramids between them).
 bool compatible_cell_types(CellType a, CellType b);
 
 /// Signed measure-like determinant of the vertex simplex of cell c (2× area, 6× volume); for a
-/// quadrilateral or hexahedron, that of the simplex at its vertex 0 (corner_determinant(m, c, 0)).
+/// quadrilateral, hexahedron or prism, that of the simplex at its vertex 0 (corner_determinant(m, c, 0)).
 double simplex_determinant(const Mesh& m, Index c);
 
 /// Determinant of the edges leaving vertex `corner` of cell c along the reference axes, signed so that
-/// it is positive for a positively oriented cell: the sign of det J at that vertex for a quadrilateral
-/// or hexahedron (corner < cell_num_vertices()). For a simplex, simplex_determinant() at any corner.
+/// it is positive for a positively oriented cell: the sign of det J at that vertex for a quadrilateral,
+/// hexahedron or prism (corner < cell_num_vertices()). For a simplex, simplex_determinant() at any corner.
 double corner_determinant(const Mesh& m, Index c, int corner);
 
 }  // namespace symcontact

@@ -251,7 +251,6 @@ int side_of(const Mesh& m, const FacetKey& k, const Eigen::VectorXd& r) {
 }  // namespace
 
 void check_folds(const Mesh& m) {
-  const int nfv = cell_num_vertices(m.facet_cell_type());
   Index positive = 0, negative = 0;
   for (Index c = 0; c < m.num_cells(); ++c) (simplex_determinant(m, c) > 0 ? positive : negative) += 1;
   const int majority = positive >= negative ? 1 : -1;
@@ -267,6 +266,7 @@ void check_folds(const Mesh& m) {
     const int nv = cell_num_vertices(t);
     for (int f = 0; f < cell_num_facets(t); ++f) {
       const int* loc = cell_facet_nodes(t, f);
+      const int nfv = cell_num_vertices(cell_facet_type(t, f));
       Index fv[4];
       for (int i = 0; i < nfv; ++i) fv[i] = n[loc[i]];
       const FacetKey k = facet_key(fv, nfv);

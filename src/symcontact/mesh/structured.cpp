@@ -1,5 +1,6 @@
 #include "symcontact/mesh/structured.hpp"
 
+#include <array>
 #include <algorithm>
 #include <map>
 #include <random>
@@ -166,6 +167,61 @@ Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, 
   } else {
     m.node_groups["origin"] = {m.cell(0)[0]};
   }
+  m.locate_facets();
+  return m;
+}
+
+Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
+  if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("prism_mesh: divisions must be >= 1");
+  Mesh m;
+  m.dim = 3;
+  const int n[3] = {nx, ny, nz};
+  auto id = [&](int i, int j, int k) -> Index { return (static_cast<Index>(k) * (ny + 1) + j) * (nx + 1) + i; };
+  m.x.resize(3, static_cast<Index>(nx + 1) * (ny + 1) * (nz + 1));
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        for (int a = 0; a < 3; ++a) {
+          const int c[3] = {i, j, k};
+          m.x(a, id(i, j, k)) = lo[a] + (hi[a] - lo[a]) * c[a] / n[a];
+        }
+  // The square (i, j) cut along its diagonal from (i, j) to (i + 1, j + 1): triangles counter-clockwise
+  // seen from z > 0, each extruded from level k to k + 1.
+  const auto triangles = [&](int i, int j, int k) {
+    const Index a = id(i, j, k), b = id(i + 1, j, k), c = id(i + 1, j + 1, k), d = id(i, j + 1, k);
+    return std::array<std::array<Index, 3>, 2>{{{a, b, c}, {a, c, d}}};
+  };
+  const Index layer = static_cast<Index>(nx + 1) * (ny + 1);
+  std::vector<Index> cells;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& t : triangles(i, j, k)) cells.insert(cells.end(), {t[0], t[1], t[2], t[0] + layer, t[1] + layer, t[2] + layer});
+  m.set_cells(CellType::kPrism6, std::move(cells));
+  for (int side = 0; side < 2; ++side) {
+    FacetGroup& g = m.facet_groups[side == 0 ? "zmin" : "zmax"];
+    g.type = CellType::kTri3;
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        for (const auto& t : triangles(i, j, side * nz)) g.facets.insert(g.facets.end(), t.begin(), t.end());
+  }
+  const char* names[2][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}};
+  for (int ax = 0; ax < 2; ++ax)
+    for (int side = 0; side < 2; ++side) {
+      FacetGroup& g = m.facet_groups[names[ax][side]];
+      g.type = CellType::kQuad4;
+      for (int k = 0; k < nz; ++k)
+        for (int t = 0; t < n[1 - ax]; ++t) {
+          const auto node = [&](int dt, int dk) {
+            int c[2];
+            c[ax] = side * n[ax];
+            c[1 - ax] = t + dt;
+            return id(c[0], c[1], k + dk);
+          };
+          g.facets.insert(g.facets.end(), {node(0, 0), node(1, 0), node(1, 1), node(0, 1)});
+        }
+    }
+  m.node_groups["origin"] = {id(0, 0, 0)};
   m.locate_facets();
   return m;
 }

@@ -7,29 +7,38 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "symcontact/contact/contact_surface.hpp"
 #include "symcontact/mesh/structured.hpp"
 
 namespace symcontact {
 namespace {
 
+/// One symmetric pair "interface" between surfaces a and b, search distance 0.1.
+ContactSet one_pair(ContactSurface a, ContactSurface b) {
+  ContactSet contacts;
+  contacts.surfaces.push_back(std::move(a));
+  contacts.surfaces.push_back(std::move(b));
+  ContactPair pair;
+  pair.name = "interface";
+  pair.surface_a = 0;
+  pair.surface_b = 1;
+  pair.search_distance = 0.1;
+  contacts.pairs.push_back(pair);
+  contacts.finalize();
+  return contacts;
+}
+
 struct TwoSquares {
   Mesh lower = rectangle_mesh(0, 0, 1, 1, 4, 4);
   Mesh upper = rectangle_mesh(0, 1, 1, 2, 4, 4);
   DofMap dofs{2};
-  ContactSet contacts;
+  ContactSet contacts =
+      one_pair(make_contact_surface(lower, "top", 0, "lower.top"), make_contact_surface(upper, "bottom", 1, "upper.bottom"));
   TwoSquares() {
     dofs.add_body(lower.num_nodes());
     dofs.add_body(upper.num_nodes());
-    contacts.surfaces.push_back(make_contact_surface(lower, "top", 0, "lower.top"));
-    contacts.surfaces.push_back(make_contact_surface(upper, "bottom", 1, "upper.bottom"));
-    ContactPair pair;
-    pair.name = "interface";
-    pair.surface_a = 0;
-    pair.surface_b = 1;
-    pair.search_distance = 0.1;
-    contacts.pairs.push_back(pair);
-    contacts.finalize();
   }
   std::vector<const Mesh*> meshes() const { return {&lower, &upper}; }
   /// u with the upper square translated by (0, dy).
@@ -71,6 +80,37 @@ TEST(Penetration, OverlapBeyondTheToleranceIsFoundWithItsDepth) {
   // The upper surface's end nodes lie on the lower square's sides (its boundary, not inside it) and count
   // as behind its top; the lower surface's nodes lie inside the upper square, on edges between its cells.
   EXPECT_GE(inside, 1);
+}
+
+// The same in 3D on two cubes of 6-node prisms (prism_mesh(), 4 × 4 × 4 boxes each), the upper one's bottom
+// pushed up to 0.3 into the lower one through their triangular faces: found inside the other body's prisms.
+TEST(Penetration, OverlapIntoPrismsIsFoundWithItsDepth) {
+  const Mesh lower = prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 4, 4, 4);
+  const Mesh upper = prism_mesh(Vec3(0, 0, 1), Vec3(1, 1, 2), 4, 4, 4);
+  DofMap dofs{3};
+  dofs.add_body(lower.num_nodes());
+  dofs.add_body(upper.num_nodes());
+  const ContactSet contacts = one_pair(make_contact_surface(lower, "zmax", 0, "lower.zmax", AnalysisModel::kThreeD),
+                                      make_contact_surface(upper, "zmin", 1, "upper.zmin", AnalysisModel::kThreeD));
+  VectorXd u = VectorXd::Zero(dofs.num_dofs());
+  EXPECT_LT(worst_ratio(find_penetrations(contacts, {&lower, &upper}, dofs, u)), 1e-9);
+  // A bump pressed down: u_z = −0.3 at the centre of the upper cube's bottom, falling to 0 at its sides, so
+  // that the deepest node, (0.5, 0.5, 0.7), is inside the lower cube (on the side faces a node would be on
+  // its boundary, not in it).
+  for (Index v = 0; v < upper.num_nodes(); ++v)
+    u[dofs.dof(1, v, 2)] = -0.3 * (1 - 2 * std::abs(upper.x(0, v) - 0.5)) * (1 - 2 * std::abs(upper.x(1, v) - 0.5));
+  const auto found = find_penetrations(contacts, {&lower, &upper}, dofs, u);
+  ASSERT_EQ(found.size(), 2u);
+  bool upper_found = false;
+  for (const auto& p : found) {
+    EXPECT_TRUE(p.exceeds());
+    if (p.depth > 0.3 - 1e-12) {  // the upper surface's centre node, 0.3 into the lower cube's prisms
+      upper_found = true;
+      EXPECT_NEAR(p.depth, 0.3, 1e-12);
+      EXPECT_FALSE(p.passed_through);
+    }
+  }
+  EXPECT_TRUE(upper_found);
 }
 
 TEST(Penetration, BodyPushedRightThroughTheOtherIsFound) {

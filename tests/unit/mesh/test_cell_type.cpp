@@ -20,15 +20,15 @@ Eigen::VectorXd ref_point(CellType t, int a) {
 }  // namespace
 
 TEST(CellType, GmshNumbersRoundTrip) {
-  for (int k = 0; k <= static_cast<int>(CellType::kHex27); ++k) {
+  for (int k = 0; k <= static_cast<int>(CellType::kPrism6); ++k) {
     const auto t = static_cast<CellType>(k);
     CellType back;
     ASSERT_TRUE(from_gmsh_element_type(gmsh_element_type(t), back));
     EXPECT_EQ(back, t);
   }
   CellType none;
-  EXPECT_FALSE(from_gmsh_element_type(6, none));  // prism
-  EXPECT_FALSE(from_gmsh_element_type(7, none));  // pyramid
+  EXPECT_FALSE(from_gmsh_element_type(13, none));  // 18-node prism
+  EXPECT_FALSE(from_gmsh_element_type(7, none));   // pyramid
 }
 
 // The reflection maps each node to the node at the mirrored reference point (ξ ↔ η swapped).
@@ -75,6 +75,36 @@ TEST(CellType, FacetsAreOrderedAndOutward) {
       EXPECT_GT(normal.dot(ref_point(t, loc[0]) - centre), 0.0) << cell_name(t) << " facet " << f;
     }
   }
+}
+
+// The 6-node prism: its reflection swaps ξ and η; each facet (triangles ζ = 0, 1, then the three
+// quadrilateral sides) has its vertices on one face of the reference prism, and its right-hand normal from
+// its first, second and last vertices points out of the prism; VTK's wedge lists the first triangle the
+// other way round (its normal into the prism).
+TEST(CellType, PrismFacetsAreOutwardAndItsReflectionSwapsXiAndEta) {
+  const CellType t = CellType::kPrism6;
+  const int* p = cell_reflection(t);
+  for (int a = 0; a < 6; ++a) {
+    Eigen::VectorXd x = ref_point(t, a);
+    std::swap(x[0], x[1]);
+    EXPECT_LT((ref_point(t, p[a]) - x).norm(), 1e-15) << "node " << a;
+  }
+  const Eigen::Vector3d centre(1.0 / 3, 1.0 / 3, 0.5);
+  for (int f = 0; f < cell_num_facets(t); ++f) {
+    const int* loc = cell_facet_nodes(t, f);
+    const int nfv = cell_num_vertices(cell_facet_type(t, f));
+    EXPECT_EQ(nfv, f < 2 ? 3 : 4);
+    const Eigen::Vector3d a = ref_point(t, loc[1]) - ref_point(t, loc[0]);
+    const Eigen::Vector3d b = ref_point(t, loc[nfv - 1]) - ref_point(t, loc[0]);
+    const Eigen::Vector3d normal = a.cross(b);
+    EXPECT_GT(normal.dot(ref_point(t, loc[0]) - centre), 0.0) << "facet " << f;
+    for (int v = 0; v < nfv; ++v)  // every vertex on the facet's plane
+      EXPECT_NEAR(normal.dot(ref_point(t, loc[v]) - ref_point(t, loc[0])), 0.0, 1e-15) << "facet " << f;
+  }
+  const int* vtk = vtk_node_order(t);
+  const Eigen::Vector3d v0 = ref_point(t, vtk[0]), v1 = ref_point(t, vtk[1]), v2 = ref_point(t, vtk[2]);
+  EXPECT_LT((v1 - v0).cross(v2 - v0).dot(ref_point(t, vtk[3]) - v0), 0.0);
+  EXPECT_EQ(vtk_cell_type(t), 13);
 }
 
 // VTK's node k of a Hex27 (VTK_TRIQUADRATIC_HEXAHEDRON, vtkTriQuadraticHexahedron.h) is the centroid of

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <tuple>
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/energy/external_load.hpp"
@@ -128,6 +129,30 @@ TEST(Mesh, MixedRectangleMeshHasBlocksOfBothTypes) {
   }
 }
 
+// Prisms: triangles at z = 0 and 1, quadrilaterals on the sides, each group of one type and located
+// on the cells with outward normals; every cell positive, reflected ones turned back.
+TEST(Mesh, PrismMeshHasGroupsOfBothFacetTypes) {
+  Mesh m = prism_mesh(Vec3(0, 0, 0), Vec3(1, 2, 3), 2, 3, 4);
+  EXPECT_EQ(m.num_cells(), 2 * 2 * 3 * 4);
+  EXPECT_NO_THROW(m.check());
+  for (const auto& [name, area, type] : {std::tuple{"zmin", 2.0, CellType::kTri3}, std::tuple{"zmax", 2.0, CellType::kTri3},
+                                         std::tuple{"xmin", 6.0, CellType::kQuad4}, std::tuple{"ymax", 3.0, CellType::kQuad4}}) {
+    const FacetGroup& g = m.facet_groups.at(name);
+    EXPECT_EQ(m.facet_type_of(g), type) << name;
+    Eigen::VectorXd n;
+    EXPECT_NEAR(facet_group_measure(m, g, &n), area, 1e-12) << name;
+    EXPECT_NEAR(n.norm(), area, 1e-12) << name;  // a flat face: Σ n dA = its area times its outward normal
+    const int axis = name[0] - 'x';
+    EXPECT_NEAR(n[axis], name[1] == 'm' && name[2] == 'i' ? -area : area, 1e-12) << name;
+  }
+  const int* p = cell_reflection(CellType::kPrism6);
+  std::vector<Index> c0(m.cell(0), m.cell(0) + 6);
+  for (int a = 0; a < 6; ++a) m.cells[a] = c0[p[a]];
+  EXPECT_LT(simplex_determinant(m, 0), 0.0);
+  EXPECT_EQ(m.orient_cells(), 1);
+  EXPECT_NO_THROW(m.check());
+}
+
 // Cells of another order or facet type cannot join a mesh; types of one order and facet type can.
 TEST(Mesh, AddCellsRefusesTypesOfAnotherOrder) {
   Mesh m;
@@ -148,4 +173,15 @@ TEST(Mesh, AddCellsRefusesTypesOfAnotherOrder) {
   EXPECT_EQ(m.cell(3) - m.cells.data(), 11);
   EXPECT_EQ(m.max_nodes_per_cell(), 4);
   EXPECT_EQ(m.cell_types_label(), "tri3 (2) + quad4 (2)");
+  // 3D: prisms share triangles with tetrahedra and quadrilaterals with hexahedra; tetrahedra and hexahedra
+  // share nothing (Gmsh puts pyramids between them).
+  Mesh solid;
+  solid.dim = 3;
+  const Index tet[4] = {0, 1, 2, 3}, prism[6] = {0, 1, 2, 3, 4, 5}, hex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  solid.add_cells(CellType::kTet4, tet, 1);
+  solid.add_cells(CellType::kPrism6, prism, 1);
+  EXPECT_THROW(solid.add_cells(CellType::kHex8, hex, 1), std::invalid_argument);
+  EXPECT_TRUE(compatible_cell_types(CellType::kPrism6, CellType::kHex8));
+  EXPECT_FALSE(compatible_cell_types(CellType::kTet4, CellType::kHex8));
+  EXPECT_FALSE(compatible_cell_types(CellType::kTet10, CellType::kPrism6));
 }
