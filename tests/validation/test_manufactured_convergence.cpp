@@ -1,6 +1,6 @@
 // Manufactured-solution convergence of linear elasticity, 2D (plane strain) and 3D, P1 and P2 simplices,
 // and quadrilaterals and hexahedra: Q1 (Quad4, Hex8), serendipity (Quad8, Hex20) and Q2 (Quad9, Hex27);
-// 6-node prisms; and meshes of two cell types, quadrilaterals and triangles in a checkerboard (Quad4 + Tri3,
+// 6- and 18-node prisms; and meshes of two cell types, quadrilaterals and triangles in a checkerboard (Quad4 + Tri3,
 // Quad9 + Tri6).
 // Exact field: u_i(x) = A_i Π_d sin(k_id x_d + φ_id); body force b = −div σ(u) with
 // div σ = μ Δu + (λ + μ) ∇(div u); Dirichlet data = u on the whole boundary.
@@ -76,7 +76,8 @@ struct TrigField {
 /// other one cut into two triangles when `mixed`.
 Mesh unit_mesh(int dim, int order, std::optional<CellType> tensor, int n, bool mixed) {
   if (tensor && mixed) return mixed_rectangle_mesh(*tensor, 0, 0, 1, 1, n, n);
-  if (tensor == CellType::kPrism6) return prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n);
+  if (tensor && cell_shape(*tensor) == CellShape::kPrism)
+    return prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, cell_order(*tensor));
   if (tensor) return tensor_mesh(*tensor, Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n);
   return dim == 2 ? rectangle_mesh(0, 0, 1, 1, n, n, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, order);
 }
@@ -152,7 +153,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Study{2, 1, {8, 16, 32}, CellType::kQuad4}, Study{2, 2, {4, 8, 16}, CellType::kQuad8},
                       Study{2, 2, {4, 8, 16}, CellType::kQuad9}, Study{3, 1, {2, 4, 8}, CellType::kHex8},
                       Study{3, 2, {2, 4, 8}, CellType::kHex20}, Study{3, 2, {2, 4, 8}, CellType::kHex27},
-                      Study{3, 1, {4, 8, 16}, CellType::kPrism6}),
+                      Study{3, 1, {4, 8, 16}, CellType::kPrism6}, Study{3, 2, {2, 4, 8}, CellType::kPrism18}),
     [](const auto& p) { return cell_name(*p.param.tensor); });
 
 INSTANTIATE_TEST_SUITE_P(

@@ -106,15 +106,18 @@ TEST(PatchTest, DistortedQuadrilateralsAndHexahedra) {
   }
 }
 
-// 6-node prisms: a structured box of them, interior vertices moved; and one body of prisms under
+// Prisms: structured boxes of 6- and 18-node ones, interior vertices moved; and one body of prisms under
 // tetrahedra read from Gmsh (tests/data/geo/prism_layer.geo), conforming on their common triangles.
 TEST(PatchTest, DistortedPrismsAndPrismsUnderTetrahedra) {
-  Mesh m = prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
-  perturb_interior_nodes(m, 1.0 / 3, 0.25, 45);
-  auto [eu, es] = patch_errors(m, "xmin");
-  std::printf("  prism6: displacement error %.2e, cell stress error %.2e\n", eu, es);
-  EXPECT_LT(eu, 1e-10);
-  EXPECT_LT(es, 1e-10);
+  double eu = 0, es = 0;
+  for (int order : {1, 2}) {
+    Mesh m = prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3, order);
+    perturb_interior_nodes(m, 1.0 / 3, 0.25, 45);
+    std::tie(eu, es) = patch_errors(m, "xmin");
+    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
+    EXPECT_LT(eu, 1e-10) << order;
+    EXPECT_LT(es, 1e-10) << order;
+  }
   MeshReadOptions o3;
   o3.dim = 3;
   Mesh layer = extract_body(read_mesh_file(std::string(SYMCONTACT_TEST_DATA) + "/geo/prism_layer.geo", o3), 3,

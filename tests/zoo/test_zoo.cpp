@@ -244,6 +244,17 @@ TEST_P(ExampleVariant, SolvesAndPassesItsChecks) {
   const auto c = solve_case(read_text(path), fs::path(path).parent_path().string());
   expect_invariants(*c, v.example + " " + v.name);
   if (v.example == "oring_axisymmetric/oring.toml" && v.name == "order2") expect_oring(*c, 19.6, 56.3);
+  if (v.example.rfind("prism_blocks_3d/", 0) == 0) {
+    // The V3 contact patch test on 18-node prisms (Tri6 ends, Quad9 sides), exact to round-off.
+    ContactPatchCase v3;
+    v3.dim = 3;
+    const ContactPatchErrors e = contact_patch_errors(v3, *c);
+    std::printf("%s %s: displacement error %.2e, pressure error %.2e\n", v.example.c_str(), v.name.c_str(),
+                e.displacement, e.pressure);
+    for (const auto& body : c->model->bodies()) EXPECT_EQ(body->mesh.first_cell_type(), CellType::kPrism18);
+    EXPECT_LT(e.displacement, 1e-8);
+    EXPECT_LT(e.pressure, 1e-8);
+  }
 }
 
 /// The contact examples in four variants each; a coarser mesh where the example's own would make the zoo slow.
@@ -281,6 +292,9 @@ std::vector<VariantCase> variants() {
   ProblemVariant oring_p2;
   oring_p2.order = 2;
   out.push_back({"oring_axisymmetric/oring.toml", "order2", oring_p2, {}});
+  // The prism blocks on 18-node prisms: V3 through their 6-node triangles and their 9-node sides.
+  out.push_back({"prism_blocks_3d/prism_blocks.toml", "order2", oring_p2, {}});
+  out.push_back({"prism_blocks_3d/prism_sides.toml", "order2", oring_p2, {}});
   return out;
 }
 

@@ -28,6 +28,7 @@ decltype(auto) dispatch_cell(CellType t, F&& f) {
     case CellType::kHex20: return f(integral_constant<int, 3>{}, integral_constant<int, 20>{});
     case CellType::kHex27: return f(integral_constant<int, 3>{}, integral_constant<int, 27>{});
     case CellType::kPrism6: return f(integral_constant<int, 3>{}, integral_constant<int, 6>{});
+    case CellType::kPrism18: return f(integral_constant<int, 3>{}, integral_constant<int, 18>{});
     default: break;
   }
   throw std::logic_error("dispatch_cell: unsupported cell type " + cell_name(t));

@@ -87,20 +87,24 @@ void tensor_shape_functions(CellType t, const double* xi, double* N, double* dN)
       for (int k = 0; k < d; ++k) dN[a * d + k] = g[k];
   }
 }
-/// The 6-node prism: the linear triangle's functions of (ξ, η) times 1 − ζ (v0..v2) or ζ (v3..v5).
-void prism_shape_functions(const double* xi, double* N, double* dN) {
-  const double L[3] = {1.0 - xi[0] - xi[1], xi[0], xi[1]};
-  const double dL[3][2] = {{-1.0, -1.0}, {1.0, 0.0}, {0.0, 1.0}};
-  for (int level = 0; level < 2; ++level) {
-    const double Z = level == 0 ? 1.0 - xi[2] : xi[2], dZ = level == 0 ? -1.0 : 1.0;
-    for (int v = 0; v < 3; ++v) {
-      const int a = 3 * level + v;
-      if (N) N[a] = L[v] * Z;
-      if (dN) {
-        dN[3 * a] = dL[v][0] * Z;
-        dN[3 * a + 1] = dL[v][1] * Z;
-        dN[3 * a + 2] = L[v] * dZ;
-      }
+/// The prisms: node a's function is the triangle's (Tri3, Tri6) function of its node kTriNode[a] in (ξ, η)
+/// times the 1D Lagrange function of its level in ζ (−1, 0, 1: ζ = 0, ½, 1), in Gmsh's node order.
+void prism_shape_functions(CellType t, const double* xi, double* N, double* dN) {
+  static const int kTriNode[18] = {0, 1, 2, 0, 1, 2, 3, 5, 0, 4, 1, 2, 3, 5, 4, 3, 5, 4};
+  static const int kLevel[18] = {-1, -1, -1, 1, 1, 1, -1, -1, 0, -1, 0, 0, 1, 1, 1, 0, 0, 0};
+  const int p = cell_order(t);
+  const CellType tri = p == 1 ? CellType::kTri3 : CellType::kTri6;
+  double Nt[6], dNt[12];
+  shape_functions(tri, xi, Nt, dNt);
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    double z, dz;
+    lagrange_1d(p, kLevel[a], xi[2], z, dz);
+    const int i = kTriNode[a];
+    if (N) N[a] = Nt[i] * z;
+    if (dN) {
+      dN[3 * a] = dNt[2 * i] * z;
+      dN[3 * a + 1] = dNt[2 * i + 1] * z;
+      dN[3 * a + 2] = Nt[i] * dz;
     }
   }
 }
@@ -108,7 +112,7 @@ void prism_shape_functions(const double* xi, double* N, double* dN) {
 
 void shape_functions(CellType t, const double* xi, double* N, double* dN) {
   if (cell_shape(t) == CellShape::kTensor) return tensor_shape_functions(t, xi, N, dN);
-  if (cell_shape(t) == CellShape::kPrism) return prism_shape_functions(xi, N, dN);
+  if (cell_shape(t) == CellShape::kPrism) return prism_shape_functions(t, xi, N, dN);
   const int d = cell_dim(t);
   if (d == 0) {
     if (N) N[0] = 1.0;
@@ -157,7 +161,14 @@ std::vector<double> reference_nodes(CellType t) {
       for (int i = 0; i < d; ++i) v.push_back(0.5 * (tensor_node_coordinates(t, a)[i] + 1));
     return v;
   }
-  if (cell_shape(t) == CellShape::kPrism) return {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1};
+  if (cell_shape(t) == CellShape::kPrism) {
+    static const double prism18[18][3] = {{0, 0, 0},   {1, 0, 0},   {0, 1, 0},     {0, 0, 1},   {1, 0, 1},
+                                          {0, 1, 1},   {.5, 0, 0},  {0, .5, 0},    {0, 0, .5},  {.5, .5, 0},
+                                          {1, 0, .5},  {0, 1, .5},  {.5, 0, 1},    {0, .5, 1},  {.5, .5, 1},
+                                          {.5, 0, .5}, {0, .5, .5}, {.5, .5, .5}};  // Gmsh's, ζ mapped to [0, 1]
+    for (int a = 0; a < cell_num_nodes(t); ++a) v.insert(v.end(), prism18[a], prism18[a] + 3);
+    return v;
+  }
   const int nv = d + 1;
   std::vector<std::vector<double>> verts(nv, std::vector<double>(d, 0.0));
   for (int i = 0; i < d; ++i) verts[i + 1][i] = 1.0;

@@ -19,9 +19,9 @@ constexpr CellFacts kFacts[] = {
     {"point", 0, 1, 1, 0}, {"line2", 1, 2, 2, 1}, {"line3", 1, 3, 2, 2},   {"tri3", 2, 3, 3, 1},
     {"tri6", 2, 6, 3, 2},  {"tet4", 3, 4, 4, 1},  {"tet10", 3, 10, 4, 2},  {"quad4", 2, 4, 4, 1},
     {"quad8", 2, 8, 4, 2}, {"quad9", 2, 9, 4, 2}, {"hex8", 3, 8, 8, 1},    {"hex20", 3, 20, 8, 2},
-    {"hex27", 3, 27, 8, 2}, {"prism6", 3, 6, 6, 1}};
+    {"hex27", 3, 27, 8, 2}, {"prism6", 3, 6, 6, 1}, {"prism18", 3, 18, 6, 2}};
 /// The last CellType.
-constexpr CellType kLastType = CellType::kPrism6;
+constexpr CellType kLastType = CellType::kPrism18;
 static_assert(sizeof(kFacts) / sizeof(kFacts[0]) == ix(kLastType) + 1, "one entry per CellType");
 
 /// 0, 1, …, n − 1.
@@ -34,7 +34,7 @@ constexpr std::array<int, n> identity_permutation() {
 }  // namespace
 
 CellShape cell_shape(CellType t) {
-  if (t == CellType::kPrism6) return CellShape::kPrism;
+  if (t == CellType::kPrism6 || t == CellType::kPrism18) return CellShape::kPrism;
   return ix(t) >= ix(CellType::kQuad4) ? CellShape::kTensor : CellShape::kSimplex;
 }
 
@@ -59,6 +59,7 @@ CellType facet_type(CellType t) {
     case CellType::kQuad9: return CellType::kLine3;
     case CellType::kTet4:
     case CellType::kPrism6: return CellType::kTri3;
+    case CellType::kPrism18: return CellType::kTri6;
     case CellType::kTet10: return CellType::kTri6;
     case CellType::kHex8: return CellType::kQuad4;
     case CellType::kHex20: return CellType::kQuad8;
@@ -70,6 +71,7 @@ CellType facet_type(CellType t) {
 
 CellType cell_facet_type(CellType t, int f) {
   if (t == CellType::kPrism6 && f >= 2) return CellType::kQuad4;
+  if (t == CellType::kPrism18 && f >= 2) return CellType::kQuad9;
   return facet_type(t);
 }
 
@@ -94,7 +96,7 @@ CellType cell_type_with_facet(CellType facet) {
 }
 
 int gmsh_element_type(CellType t) {
-  static const int n[] = {15, 1, 8, 2, 9, 4, 11, 3, 16, 10, 5, 17, 12, 6};
+  static const int n[] = {15, 1, 8, 2, 9, 4, 11, 3, 16, 10, 5, 17, 12, 6, 13};
   return n[ix(t)];
 }
 
@@ -108,7 +110,7 @@ bool from_gmsh_element_type(int g, CellType& out) {
 }
 
 int vtk_cell_type(CellType t) {
-  static const int n[] = {1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29, 13};
+  static const int n[] = {1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29, 13, 32};
   return n[ix(t)];
 }
 
@@ -119,9 +121,9 @@ const int* vtk_node_order(CellType t) {
   // ξ = 0 (0 4 7 3), ξ = 1 (1 2 6 5), η = 0 (0 1 5 4), η = 1 (2 3 7 6), ζ = 0 (0 3 2 1), ζ = 1 likewise.
   static const int hex[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  11, 13, 9,  16, 18,
                             19, 17, 10, 12, 14, 15, 22, 23, 21, 24, 20, 25, 26};
-  static const int wedge[] = {0, 2, 1, 3, 5, 4};
+  static const int wedge[] = {0, 2, 1, 3, 5, 4, 7, 9, 6, 13, 14, 12, 8, 11, 10, 16, 17, 15};
   const int* const id = ident.data();
-  static const int* const order[] = {id, id, id, id, id, id, tet10, id, id, id, id, hex, hex, wedge};  // CellType order
+  static const int* const order[] = {id, id, id, id, id, id, tet10, id, id, id, id, hex, hex, wedge, wedge};  // CellType order
   static_assert(sizeof(order) / sizeof(order[0]) == ix(kLastType) + 1, "one entry per CellType");
   return order[ix(t)];
 }
@@ -134,7 +136,8 @@ int cell_num_facets(CellType t) {
     case CellType::kHex8:
     case CellType::kHex20:
     case CellType::kHex27: return 6;
-    case CellType::kPrism6: return 5;
+    case CellType::kPrism6:
+    case CellType::kPrism18: return 5;
     default: break;
   }
   switch (cell_dim(t)) {
@@ -171,8 +174,11 @@ const int* cell_facet_nodes(CellType t, int f) {
       {4, 5, 6, 7, 16, 18, 19, 17, 25},  // ζ = 1
   };
   // Prisms: the triangles ζ = 0 and ζ = 1, then the sides η = 0, ξ = 0 and ξ + η = 1, each
-  // counter-clockwise seen from outside.
-  static const int prism[5][4] = {{0, 2, 1, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {0, 3, 5, 2}, {1, 2, 5, 4}};
+  // counter-clockwise seen from outside; then the edge nodes (Gmsh numbering m01=6 m02=7 m03=8 m12=9
+  // m14=10 m25=11 m34=12 m35=13 m45=14) and the side's centre (15..17).
+  static const int prism[5][9] = {{0, 2, 1, 7, 9, 6, -1, -1, -1},     {3, 4, 5, 12, 14, 13, -1, -1, -1},
+                                  {0, 1, 4, 3, 6, 10, 12, 8, 15},      {0, 3, 5, 2, 8, 13, 11, 7, 16},
+                                  {1, 2, 5, 4, 9, 11, 14, 10, 17}};
   static const int line[2][1] = {{0}, {1}};
   if (cell_shape(t) == CellShape::kTensor) return cell_dim(t) == 2 ? quad[f] : hex[f];
   if (cell_shape(t) == CellShape::kPrism) return prism[f];
@@ -207,9 +213,10 @@ const int* cell_reflection(CellType t) {
   // Hexahedra: ξ and η swapped, so v1 <-> v3, v5 <-> v7, with their edges and faces.
   static const int hex[] = {0,  3,  2,  1,  4,  7,  6,  5,  9,  8,  10, 13, 15, 11,
                             14, 12, 17, 16, 19, 18, 20, 22, 21, 24, 23, 25, 26};
-  static const int prism[] = {0, 2, 1, 3, 5, 4};  // v1 <-> v2 and v4 <-> v5: ξ and η swapped
+  // Prisms: ξ and η swapped, so v1 <-> v2 and v4 <-> v5, with their edges and sides.
+  static const int prism[] = {0, 2, 1, 3, 5, 4, 7, 6, 8, 9, 11, 10, 13, 12, 14, 16, 15, 17};
   static const int* const reflection[] = {ident, line3, line3, tri, tri, tet, tet,
-                                          quad,  quad,  quad,  hex, hex, hex, prism};  // in CellType order
+                                          quad,  quad,  quad,  hex, hex, hex, prism, prism};  // in CellType order
   static_assert(sizeof(reflection) / sizeof(reflection[0]) == ix(kLastType) + 1, "one entry per CellType");
   return reflection[ix(t)];
 }

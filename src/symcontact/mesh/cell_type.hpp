@@ -15,9 +15,12 @@
 /// m04 m15 m26 m37 and Hex27 faces as ξ = 0, ξ = 1, η = 0, η = 1, ζ = 0, ζ = 1: vtk_node_order()
 /// permutes them on output. Quadrilaterals have the same order in both.
 ///
-///  - Prism6: v0 v1 v2 the triangle ζ = 0 (counter-clockwise seen from ζ > 0), v3 v4 v5 above them.
+///  - Prism6: v0 v1 v2 the triangle ζ = 0 (counter-clockwise seen from ζ > 0), v3 v4 v5 above them;
+///    Prism18 adds the edge nodes m01 m02 m03 m12 m14 m25 m34 m35 m45 and the centres of the sides
+///    (0 1 4 3) (0 2 5 3) (1 2 5 4).
 /// VTK lists a wedge's first triangle clockwise seen from the second (its normal pointing away from it):
-/// vtk_node_order() swaps v1, v2 and v4, v5.
+/// vtk_node_order() swaps v1, v2 and v4, v5, and orders Prism18's edges (0 1) (1 2) (2 0) (3 4) (4 5)
+/// (5 3) (0 3) (1 4) (2 5) and sides (0 1 4 3) (1 2 5 4) (2 0 3 5) in its own numbering.
 ///
 /// Quadrilaterals and hexahedra map from the unit square or cube [0, 1]^d (v0 at the origin, v1 on
 /// the ξ axis, v3 on the η axis, v4 on the ζ axis); simplices from the unit simplex; prisms from the unit
@@ -30,7 +33,7 @@ namespace symcontact {
 
 enum class CellType : int {
   kPoint1, kLine2, kLine3, kTri3, kTri6, kTet4, kTet10,
-  kQuad4, kQuad8, kQuad9, kHex8, kHex20, kHex27, kPrism6
+  kQuad4, kQuad8, kQuad9, kHex8, kHex20, kHex27, kPrism6, kPrism18
 };
 
 /// The reference shape of a cell type: a simplex (point, segment, triangle, tetrahedron), a
@@ -56,11 +59,11 @@ CellType cell_type_of(int dim, int order);
 /// surface made of facets alone.
 CellType cell_type_with_facet(CellType facet);
 /// Gmsh element type number (1 line2, 2 tri3, 3 quad4, 4 tet4, 5 hex8, 6 prism6, 8 line3, 9 tri6, 10 quad9,
-/// 11 tet10, 12 hex27, 15 point, 16 quad8, 17 hex20).
+/// 11 tet10, 12 hex27, 13 prism18, 15 point, 16 quad8, 17 hex20).
 int gmsh_element_type(CellType t);
 /// Inverse of gmsh_element_type(); returns false for types symcontact does not support.
 bool from_gmsh_element_type(int gmsh_type, CellType& out);
-/// VTK cell type id (1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29, 13).
+/// VTK cell type id (1, 3, 21, 5, 22, 10, 24, 9, 23, 28, 12, 25, 29, 13, 32).
 int vtk_cell_type(CellType t);
 /// vtk_node_order(t)[k] is the index, in our ordering, of VTK's k-th node.
 const int* vtk_node_order(CellType t);

@@ -171,57 +171,80 @@ Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, 
   return m;
 }
 
-Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
+Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order) {
   if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("prism_mesh: divisions must be >= 1");
+  if (order != 1 && order != 2) throw std::invalid_argument("prism_mesh: order must be 1 or 2");
   Mesh m;
   m.dim = 3;
-  const int n[3] = {nx, ny, nz};
-  auto id = [&](int i, int j, int k) -> Index { return (static_cast<Index>(k) * (ny + 1) + j) * (nx + 1) + i; };
-  m.x.resize(3, static_cast<Index>(nx + 1) * (ny + 1) * (nz + 1));
-  for (int k = 0; k <= nz; ++k)
-    for (int j = 0; j <= ny; ++j)
-      for (int i = 0; i <= nx; ++i)
-        for (int a = 0; a < 3; ++a) {
-          const int c[3] = {i, j, k};
-          m.x(a, id(i, j, k)) = lo[a] + (hi[a] - lo[a]) * c[a] / n[a];
-        }
-  // The square (i, j) cut along its diagonal from (i, j) to (i + 1, j + 1): triangles counter-clockwise
-  // seen from z > 0, each extruded from level k to k + 1.
-  const auto triangles = [&](int i, int j, int k) {
-    const Index a = id(i, j, k), b = id(i + 1, j, k), c = id(i + 1, j + 1, k), d = id(i, j + 1, k);
-    return std::array<std::array<Index, 3>, 2>{{{a, b, c}, {a, c, d}}};
+  // A lattice of q·n + 1 points per direction (q the order); every point is a node.
+  const int q = order, n[3] = {nx, ny, nz}, l[3] = {q * nx + 1, q * ny + 1, q * nz + 1};
+  using P = std::array<int, 3>;
+  auto id = [&](const P& p) -> Index { return (static_cast<Index>(p[2]) * l[1] + p[1]) * l[0] + p[0]; };
+  auto mid = [](const P& a, const P& b) { return P{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; };
+  auto up = [](P a, int dk) {
+    a[2] += dk;
+    return a;
   };
-  const Index layer = static_cast<Index>(nx + 1) * (ny + 1);
+  m.x.resize(3, static_cast<Index>(l[0]) * l[1] * l[2]);
+  for (int k = 0; k < l[2]; ++k)
+    for (int j = 0; j < l[1]; ++j)
+      for (int i = 0; i < l[0]; ++i) {
+        const P p{i, j, k};
+        for (int a = 0; a < 3; ++a) m.x(a, id(p)) = lo[a] + (hi[a] - lo[a]) * p[a] / (q * n[a]);
+      }
+  // The square (i, j) cut along its diagonal from (i, j) to (i + 1, j + 1): triangles counter-clockwise
+  // seen from z > 0 (lattice points at level k), each extruded from level k to k + 1.
+  const auto triangles = [&](int i, int j, int k) {
+    const P a{q * i, q * j, q * k}, b{q * (i + 1), q * j, q * k}, c{q * (i + 1), q * (j + 1), q * k},
+        d{q * i, q * (j + 1), q * k};
+    return std::array<std::array<P, 3>, 2>{{{a, b, c}, {a, c, d}}};
+  };
+  // Gmsh's order (cell_type.hpp): Prism18 adds m01 m02 m03 m12 m14 m25 m34 m35 m45, then the sides'
+  // centres (0 1 4 3) (0 2 5 3) (1 2 5 4).
+  const auto prism = [&](const std::array<P, 3>& t) {
+    std::vector<P> v{t[0], t[1], t[2], up(t[0], q), up(t[1], q), up(t[2], q)};
+    if (q == 2)
+      v.insert(v.end(), {mid(t[0], t[1]), mid(t[0], t[2]), up(t[0], 1), mid(t[1], t[2]), up(t[1], 1), up(t[2], 1),
+                         up(mid(t[0], t[1]), 2), up(mid(t[0], t[2]), 2), up(mid(t[1], t[2]), 2),
+                         up(mid(t[0], t[1]), 1), up(mid(t[0], t[2]), 1), up(mid(t[1], t[2]), 1)});
+    return v;
+  };
   std::vector<Index> cells;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        for (const auto& t : triangles(i, j, k)) cells.insert(cells.end(), {t[0], t[1], t[2], t[0] + layer, t[1] + layer, t[2] + layer});
-  m.set_cells(CellType::kPrism6, std::move(cells));
+        for (const auto& t : triangles(i, j, k))
+          for (const P& p : prism(t)) cells.push_back(id(p));
+  m.set_cells(q == 1 ? CellType::kPrism6 : CellType::kPrism18, std::move(cells));
+  // Facet groups: their vertices (locate_facets() takes the other nodes from the cells, in their order).
+  const int tri_nodes = q == 1 ? 3 : 6, quad_nodes = q == 1 ? 4 : 9;
   for (int side = 0; side < 2; ++side) {
     FacetGroup& g = m.facet_groups[side == 0 ? "zmin" : "zmax"];
-    g.type = CellType::kTri3;
+    g.type = q == 1 ? CellType::kTri3 : CellType::kTri6;
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        for (const auto& t : triangles(i, j, side * nz)) g.facets.insert(g.facets.end(), t.begin(), t.end());
+        for (const auto& t : triangles(i, j, side * nz))
+          for (int a = 0; a < tri_nodes; ++a) g.facets.push_back(id(t[a % 3]));
   }
   const char* names[2][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}};
   for (int ax = 0; ax < 2; ++ax)
     for (int side = 0; side < 2; ++side) {
       FacetGroup& g = m.facet_groups[names[ax][side]];
-      g.type = CellType::kQuad4;
+      g.type = q == 1 ? CellType::kQuad4 : CellType::kQuad9;
       for (int k = 0; k < nz; ++k)
         for (int t = 0; t < n[1 - ax]; ++t) {
           const auto node = [&](int dt, int dk) {
-            int c[2];
-            c[ax] = side * n[ax];
-            c[1 - ax] = t + dt;
-            return id(c[0], c[1], k + dk);
+            P c;
+            c[ax] = q * side * n[ax];
+            c[1 - ax] = q * (t + dt);
+            c[2] = q * (k + dk);
+            return id(c);
           };
-          g.facets.insert(g.facets.end(), {node(0, 0), node(1, 0), node(1, 1), node(0, 1)});
+          const Index corners[4] = {node(0, 0), node(1, 0), node(1, 1), node(0, 1)};
+          for (int a = 0; a < quad_nodes; ++a) g.facets.push_back(corners[a % 4]);
         }
     }
-  m.node_groups["origin"] = {id(0, 0, 0)};
+  m.node_groups["origin"] = {0};
   m.locate_facets();
   return m;
 }
@@ -328,6 +351,21 @@ void reset_tensor_nodes(Mesh& mesh, const CellBlock& b) {
   }
 }
 
+/// Puts the edge nodes of 18-node prisms at the midpoints of their edges and the sides' centre nodes at the
+/// mean of the side's vertices: where the 6-node prism of the vertices maps them.
+void reset_prism_nodes(Mesh& mesh, const CellBlock& b) {
+  static const std::vector<int> from[12] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 4}, {2, 5},
+                                            {3, 4}, {3, 5}, {4, 5}, {0, 1, 4, 3}, {0, 2, 5, 3}, {1, 2, 5, 4}};
+  for (Index c = b.begin; c < b.end; ++c) {
+    const Index* n = mesh.cell(c);
+    for (int a = 6; a < cell_num_nodes(b.type); ++a) {
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.dim);
+      for (int v : from[a - 6]) x += mesh.x.col(n[v]) / static_cast<double>(from[a - 6].size());
+      mesh.x.col(n[a]) = x;
+    }
+  }
+}
+
 /// Puts the edge nodes of quadratic simplices at the midpoints of their edges.
 void reset_simplex_edge_nodes(Mesh& mesh, const CellBlock& b) {
   static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
@@ -360,6 +398,8 @@ void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned see
   for (const CellBlock& b : mesh.cell_blocks) {
     if (cell_shape(b.type) == CellShape::kTensor)
       reset_tensor_nodes(mesh, b);
+    else if (cell_shape(b.type) == CellShape::kPrism)
+      reset_prism_nodes(mesh, b);
     else if (cell_order(b.type) == 2)
       reset_simplex_edge_nodes(mesh, b);
   }

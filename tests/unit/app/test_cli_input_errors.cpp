@@ -250,7 +250,7 @@ TEST_F(CliInputErrors, TractionWithBothOrNeitherOfTractionAndTotalForceIsAnInput
 // ---- 7. Element types ----
 
 // A recombined block, a body half recombined (quadrilaterals and triangles) and a mesh of 6-node prisms are
-// accepted by `check`; quadratic prisms are an input error.
+// accepted by `check`; 15-node prisms are an input error.
 TEST_F(CliInputErrors, ElementTypesAcceptedAndRefused) {
   write("quads.geo", block_geo_with("Plane Surface(1) = {1};", "Plane Surface(1) = {1};\nRecombine Surface{1};"));
   const fs::path quads = write("quads.toml", block_toml("quads.geo"));
@@ -285,9 +285,10 @@ TEST_F(CliInputErrors, ElementTypesAcceptedAndRefused) {
       run("check " + shell_quote(write("prisms.toml", symcontact::testing::replaced(solid, "MESH", "prisms.geo") + held).string()));
   EXPECT_EQ(prisms.exit_code, 0) << prisms.output;
   EXPECT_NE(prisms.output.find("prism6 cells"), std::string::npos) << prisms.output;
-  // Quadratic prisms are not supported yet.
-  expect_input_error(write("prisms2.toml", symcontact::testing::replaced(
-                                               symcontact::testing::replaced(solid, "MESH", "prisms.geo"),
-                                               "dimension = 3\n", "dimension = 3\norder = 2\n") + held),
-                     {"prisms2.toml", "body[0].mesh", "prisms.geo", "unsupported element type 'Prism 18'"});
+  // Serendipity prisms (15 nodes) are not supported.
+  write("prisms15.geo", read_text(dir_ / "prisms.geo") + "Mesh.SecondOrderIncomplete = 1;\n");
+  expect_input_error(write("prisms15.toml", symcontact::testing::replaced(
+                                                symcontact::testing::replaced(solid, "MESH", "prisms15.geo"),
+                                                "dimension = 3\n", "dimension = 3\norder = 2\n") + held),
+                     {"prisms15.toml", "body[0].mesh", "prisms15.geo", "unsupported element type 'Prism 15'"});
 }

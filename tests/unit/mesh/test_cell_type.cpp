@@ -20,14 +20,14 @@ Eigen::VectorXd ref_point(CellType t, int a) {
 }  // namespace
 
 TEST(CellType, GmshNumbersRoundTrip) {
-  for (int k = 0; k <= static_cast<int>(CellType::kPrism6); ++k) {
+  for (int k = 0; k <= static_cast<int>(CellType::kPrism18); ++k) {
     const auto t = static_cast<CellType>(k);
     CellType back;
     ASSERT_TRUE(from_gmsh_element_type(gmsh_element_type(t), back));
     EXPECT_EQ(back, t);
   }
   CellType none;
-  EXPECT_FALSE(from_gmsh_element_type(13, none));  // 18-node prism
+  EXPECT_FALSE(from_gmsh_element_type(18, none));  // 15-node prism
   EXPECT_FALSE(from_gmsh_element_type(7, none));   // pyramid
 }
 
@@ -105,6 +105,41 @@ TEST(CellType, PrismFacetsAreOutwardAndItsReflectionSwapsXiAndEta) {
   const Eigen::Vector3d v0 = ref_point(t, vtk[0]), v1 = ref_point(t, vtk[1]), v2 = ref_point(t, vtk[2]);
   EXPECT_LT((v1 - v0).cross(v2 - v0).dot(ref_point(t, vtk[3]) - v0), 0.0);
   EXPECT_EQ(vtk_cell_type(t), 13);
+}
+
+// The 18-node prism: its reflection maps each node to the mirrored reference point; VTK's node k
+// (VTK_BIQUADRATIC_QUADRATIC_WEDGE, vtkBiQuadraticQuadraticWedge.h) is the midpoint of VTK's edges
+// (0 1) (1 2) (2 0) (3 4) (4 5) (5 3) (0 3) (1 4) (2 5), then the centre of its sides (0 1 4 3) (1 2 5 4)
+// (2 0 3 5), all in VTK's numbering.
+TEST(CellType, Prism18ReflectionAndVtkOrder) {
+  const CellType t = CellType::kPrism18;
+  const int* p = cell_reflection(t);
+  for (int a = 0; a < 18; ++a) {
+    Eigen::VectorXd x = ref_point(t, a);
+    std::swap(x[0], x[1]);
+    EXPECT_LT((ref_point(t, p[a]) - x).norm(), 1e-15) << "node " << a;
+  }
+  const int* vtk = vtk_node_order(t);
+  const auto at = [&](int k) { return ref_point(t, vtk[k]); };
+  const int edges[9][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}, {0, 3}, {1, 4}, {2, 5}};
+  for (int e = 0; e < 9; ++e)
+    EXPECT_LT((at(6 + e) - 0.5 * (at(edges[e][0]) + at(edges[e][1]))).norm(), 1e-15) << "VTK edge node " << 6 + e;
+  const int sides[3][4] = {{0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}};
+  for (int s = 0; s < 3; ++s) {
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(3);
+    for (int v : sides[s]) c += 0.25 * at(v);
+    EXPECT_LT((at(15 + s) - c).norm(), 1e-15) << "VTK side node " << 15 + s;
+  }
+  // Each facet's nodes, past its vertices, at the midpoints of its edges (and its side's centre).
+  for (int f = 0; f < 5; ++f) {
+    const int* loc = cell_facet_nodes(t, f);
+    const int nv = f < 2 ? 3 : 4;
+    for (int e = 0; e < nv; ++e) {
+      const Eigen::VectorXd m = 0.5 * (ref_point(t, loc[e]) + ref_point(t, loc[(e + 1) % nv]));
+      EXPECT_LT((ref_point(t, loc[nv + e]) - m).norm(), 1e-15) << "facet " << f << " edge " << e;
+    }
+  }
+  EXPECT_EQ(vtk_cell_type(t), 32);
 }
 
 // VTK's node k of a Hex27 (VTK_TRIQUADRATIC_HEXAHEDRON, vtkTriQuadraticHexahedron.h) is the centroid of
