@@ -139,6 +139,24 @@ void check_predicted_size(const std::string& path, const MeshReadOptions& opt) {
                        " cells; use a larger mesh size, or pass --allow-large-mesh to mesh it anyway");
 }
 
+/// Gmsh's name of element type `type` ("Pyramid 5", ...). The types symcontact refuses that Gmsh makes
+/// from a .geo (pyramids, 15-node prisms) are named here: Gmsh 4.8's getElementProperties() of a 15-node
+/// prism frees with delete an array it allocated with new[] (AddressSanitizer reports it).
+std::string gmsh_type_name(int type) {
+  switch (type) {
+    case 7: return "Pyramid 5";
+    case 14: return "Pyramid 14";
+    case 18: return "Prism 15";
+    case 19: return "Pyramid 13";
+    default: break;
+  }
+  std::string name;
+  int d, o, nn, np;
+  std::vector<double> lc;
+  gmsh::model::mesh::getElementProperties(type, name, d, o, nn, lc, np);
+  return name;
+}
+
 MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, bool is_geo) {
   gmsh::open(path);
   throw_on_gmsh_errors(path, "reading the file");
@@ -194,15 +212,11 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
     gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
     for (std::size_t b = 0; b < types.size(); ++b) {
       CellType ct;
-      if (!from_gmsh_element_type(types[b], ct)) {
-        std::string name;
-        int d, o, nn, np;
-        std::vector<double> lc;
-        gmsh::model::mesh::getElementProperties(types[b], name, d, o, nn, lc, np);
-        throw InputError(path, "", "unsupported element type '" + name +
-                                       "': symcontact uses triangles and quadrilaterals in 2D, tetrahedra and "
-                                       "hexahedra in 3D, of order 1 or 2 (not prisms, pyramids nor order 3 and above)");
-      }
+      if (!from_gmsh_element_type(types[b], ct))
+        throw InputError(path, "", "unsupported element type '" + gmsh_type_name(types[b]) +
+                                       "': symcontact uses triangles and quadrilaterals in 2D, tetrahedra, "
+                                       "hexahedra and prisms in 3D, of order 1 or 2 (not 15-node prisms, pyramids "
+                                       "nor order 3 and above)");
       MeshFile::Block blk{ct, {}, {}};
       blk.nodes.reserve(nodes[b].size());
       blk.tags.assign(tags[b].begin(), tags[b].end());
