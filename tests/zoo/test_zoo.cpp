@@ -106,6 +106,16 @@ void expect_oring(const SolvedCase& c, double lid10_expected, double lid20_expec
   EXPECT_LT(highest, 0.2) << example;  // the bottom only (the walls rise from z = 0 to 1.6)
 }
 
+/// The V3 contact patch test's exact field (2D, or 3D when dim = 3) met within 1e-8 by a solved example.
+void expect_v3_exact(const std::string& what, const SolvedCase& c, int dim = 2) {
+  ContactPatchCase v3;
+  v3.dim = dim;
+  const ContactPatchErrors e = contact_patch_errors(v3, c);
+  std::printf("%s: displacement error %.2e, pressure error %.2e\n", what.c_str(), e.displacement, e.pressure);
+  EXPECT_LT(e.displacement, 1e-8) << what;
+  EXPECT_LT(e.pressure, 1e-8) << what;
+}
+
 void expect_header_figures(const std::string& example, const SolvedCase& c) {
   if (example == "oring_axisymmetric/oring.toml") expect_oring(c, 20.8, 57.3);
   if (example == "bimaterial_2d/bimaterial.toml") {
@@ -146,54 +156,35 @@ void expect_header_figures(const std::string& example, const SolvedCase& c) {
   }
   if (example == "quad_blocks_2d/quad_blocks.toml") {
     // Header: the V3 contact patch test on 9-node quadrilaterals, exact to round-off.
-    const ContactPatchErrors e = contact_patch_errors(ContactPatchCase{}, c);
-    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    expect_v3_exact(example, c);
     EXPECT_EQ(c.model->bodies()[0]->mesh.first_cell_type(), CellType::kQuad9) << example;
     EXPECT_EQ(c.model->bodies()[1]->mesh.first_cell_type(), CellType::kQuad9) << example;
-    EXPECT_LT(e.displacement, 1e-8) << example;
-    EXPECT_LT(e.pressure, 1e-8) << example;
   }
   if (example == "mixed_blocks_2d/mixed_blocks.toml") {
     // Header: the V3 contact patch test on bodies of 9-node quadrilaterals and 6-node triangles, within 1e-8.
-    const ContactPatchErrors e = contact_patch_errors(ContactPatchCase{}, c);
-    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    expect_v3_exact(example, c);
     for (const auto& body : c.model->bodies()) {
       EXPECT_EQ(body->mesh.cell_type_counts().size(), 2u) << body->name << ": " << body->mesh.cell_types_label();
       for (const auto& [type, count] : body->mesh.cell_type_counts())
         EXPECT_TRUE(type == CellType::kQuad9 || type == CellType::kTri6) << body->name << ": " << cell_name(type);
     }
-    EXPECT_LT(e.displacement, 1e-8) << example;
-    EXPECT_LT(e.pressure, 1e-8) << example;
   }
   if (example == "hex_blocks_3d/hex_blocks.toml") {
     // Header: the V3 contact patch test in 3D on 8-node hexahedra, exact to round-off.
-    ContactPatchCase v3;
-    v3.dim = 3;
-    const ContactPatchErrors e = contact_patch_errors(v3, c);
-    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    expect_v3_exact(example, c, 3);
     EXPECT_EQ(c.model->bodies()[0]->mesh.first_cell_type(), CellType::kHex8) << example;
     EXPECT_EQ(c.model->bodies()[1]->mesh.first_cell_type(), CellType::kHex8) << example;
-    EXPECT_LT(e.displacement, 1e-8) << example;
-    EXPECT_LT(e.pressure, 1e-8) << example;
   }
   if (example == "prism_blocks_3d/prism_blocks.toml" || example == "prism_blocks_3d/prism_sides.toml") {
     // Header: the V3 contact patch test in 3D on 6-node prisms, through their triangular faces
     // (prism_blocks) or their quadrilateral sides (prism_sides), within 1e-8.
-    ContactPatchCase v3;
-    v3.dim = 3;
-    const ContactPatchErrors e = contact_patch_errors(v3, c);
-    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
+    expect_v3_exact(example, c, 3);
     EXPECT_EQ(c.model->bodies()[0]->mesh.first_cell_type(), CellType::kPrism6) << example;
     EXPECT_EQ(c.model->bodies()[1]->mesh.first_cell_type(), CellType::kPrism6) << example;
-    EXPECT_LT(e.displacement, 1e-8) << example;
-    EXPECT_LT(e.pressure, 1e-8) << example;
   }
   if (example == "cracked_block_2d/cracked_block.toml") {
     // Header: the V3 contact patch test as one body (the same loads and supports), exact to round-off.
-    const ContactPatchErrors e = contact_patch_errors(ContactPatchCase{}, c);
-    std::printf("%s: displacement error %.2e, pressure error %.2e\n", example.c_str(), e.displacement, e.pressure);
-    EXPECT_LT(e.displacement, 1e-8) << example;
-    EXPECT_LT(e.pressure, 1e-8) << example;
+    expect_v3_exact(example, c);
   }
 }
 
@@ -246,14 +237,8 @@ TEST_P(ExampleVariant, SolvesAndPassesItsChecks) {
   if (v.example == "oring_axisymmetric/oring.toml" && v.name == "order2") expect_oring(*c, 19.6, 56.3);
   if (v.example.rfind("prism_blocks_3d/", 0) == 0) {
     // The V3 contact patch test on 18-node prisms (Tri6 ends, Quad9 sides), exact to round-off.
-    ContactPatchCase v3;
-    v3.dim = 3;
-    const ContactPatchErrors e = contact_patch_errors(v3, *c);
-    std::printf("%s %s: displacement error %.2e, pressure error %.2e\n", v.example.c_str(), v.name.c_str(),
-                e.displacement, e.pressure);
+    expect_v3_exact(v.example + " " + v.name, *c, 3);
     for (const auto& body : c->model->bodies()) EXPECT_EQ(body->mesh.first_cell_type(), CellType::kPrism18);
-    EXPECT_LT(e.displacement, 1e-8);
-    EXPECT_LT(e.pressure, 1e-8);
   }
 }
 
