@@ -50,8 +50,8 @@ FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h, 
 
 Mesh distorted_mesh(int dim, int order, std::optional<CellType> tensor, bool mixed) {
   Mesh m = tensor && mixed                ? mixed_rectangle_mesh(*tensor, 0, 0, 2, 1, 4, 3)
-         : tensor && cell_shape(*tensor) == CellShape::kPrism
-             ? prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 2), 2, 2, 3, cell_order(*tensor))
+         : tensor && cell_dim(*tensor) == 3 && cell_shape(*tensor) != CellShape::kTensor
+             ? structured_mesh(*tensor, Vec3(0, 0, 0), Vec3(1, 1, 2), 2, 2, 3)
          : tensor ? tensor_mesh(*tensor, Vec3(0, 0, 0), dim == 2 ? Vec3(2, 1, 0) : Vec3(1, 1, 2), dim == 2 ? 4 : 2,
                                 dim == 2 ? 3 : 2, 2)
          : dim == 2 ? rectangle_mesh(0, 0, 2, 1, 4, 3, order)

@@ -27,7 +27,8 @@ FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h =
 /// same domain in cells of that quadrilateral or hexahedron type (structured.hpp's tensor_mesh(); `order`
 /// is then the type's): 4 × 3 quadrilaterals, or 2 × 2 × 2 hexahedra (one interior vertex, moved). With
 /// `mixed` (Quad4 or Quad9), every other quadrilateral cut into two triangles (mixed_rectangle_mesh()); with
-/// `tensor` a prism type, the box's 2 × 2 × 3 cubes each cut into two prisms (prism_mesh()).
+/// `tensor` a prism or pyramid type, the box's 2 × 2 × 3 cubes each cut into prisms or pyramids
+/// (structured_mesh()).
 Mesh distorted_mesh(int dim, int order, std::optional<CellType> tensor = {}, bool mixed = false);
 
 }  // namespace symcontact::testing

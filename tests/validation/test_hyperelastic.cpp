@@ -44,7 +44,7 @@ AnalysisModel analysis(int dim) { return dim == 2 ? AnalysisModel::kPlaneStrain 
 
 /// The block [0, 2] × [0, 1] (× [0, 1]): structured simplices of `order`, or cells of the tensor type `tensor`.
 Mesh block(int dim, int order, std::optional<CellType> tensor = {}) {
-  if (tensor) return tensor_mesh(*tensor, Vec3(0, 0, 0), Vec3(2, 1, 1), dim == 2 ? 8 : 4, dim == 2 ? 4 : 2, 2);
+  if (tensor) return structured_mesh(*tensor, Vec3(0, 0, 0), Vec3(2, 1, 1), dim == 2 ? 8 : 4, dim == 2 ? 4 : 2, 2);
   return dim == 2 ? rectangle_mesh(0, 0, 2, 1, 8, 4, order) : box_mesh(Vec3(0, 0, 0), Vec3(2, 1, 1), 4, 2, 2, order);
 }
 
@@ -225,10 +225,11 @@ TEST(HyperelasticValidation, UniaxialStretchReactionMatchesClosedForm) {
 
 // The same homogeneous stretch on quadrilaterals and hexahedra of every type (Neo-Hookean): reaction,
 // lateral stretch and recovered fields exact, as on simplices.
-TEST(HyperelasticValidation, UniaxialStretchOnQuadrilateralsAndHexahedra) {
+TEST(HyperelasticValidation, UniaxialStretchOnQuadrilateralsHexahedraPrismsAndPyramids) {
   const auto mat = materials().front().second;
   for (CellType t : {CellType::kQuad4, CellType::kQuad8, CellType::kQuad9, CellType::kHex8, CellType::kHex20,
-                     CellType::kHex27}) {
+                     CellType::kHex27, CellType::kPrism6, CellType::kPrism15, CellType::kPrism18, CellType::kPyramid5,
+                     CellType::kPyramid13, CellType::kPyramid14}) {
     int iterations = 0;
     const double err = uniaxial_stretch_error(mat, cell_dim(t), cell_order(t), 2.0, kSteps, iterations, t);
     EXPECT_LT(err, 1e-8) << cell_name(t);

@@ -76,9 +76,7 @@ struct TrigField {
 /// other one cut into two triangles when `mixed`.
 Mesh unit_mesh(int dim, int order, std::optional<CellType> tensor, int n, bool mixed) {
   if (tensor && mixed) return mixed_rectangle_mesh(*tensor, 0, 0, 1, 1, n, n);
-  if (tensor && cell_shape(*tensor) == CellShape::kPrism)
-    return prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, cell_order(*tensor));
-  if (tensor) return tensor_mesh(*tensor, Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n);
+  if (tensor) return structured_mesh(*tensor, Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n);
   return dim == 2 ? rectangle_mesh(0, 0, 1, 1, n, n, order) : box_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), n, n, n, order);
 }
 
@@ -153,7 +151,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Study{2, 1, {8, 16, 32}, CellType::kQuad4}, Study{2, 2, {4, 8, 16}, CellType::kQuad8},
                       Study{2, 2, {4, 8, 16}, CellType::kQuad9}, Study{3, 1, {2, 4, 8}, CellType::kHex8},
                       Study{3, 2, {2, 4, 8}, CellType::kHex20}, Study{3, 2, {2, 4, 8}, CellType::kHex27},
-                      Study{3, 1, {4, 8, 16}, CellType::kPrism6}, Study{3, 2, {2, 4, 8}, CellType::kPrism18}),
+                      Study{3, 1, {4, 8, 16}, CellType::kPrism6}, Study{3, 2, {2, 4, 8}, CellType::kPrism18},
+                      Study{3, 2, {2, 4, 8}, CellType::kPrism15}, Study{3, 1, {2, 4, 8}, CellType::kPyramid5},
+                      Study{3, 2, {2, 4, 8}, CellType::kPyramid13}, Study{3, 2, {2, 4, 8}, CellType::kPyramid14}),
     [](const auto& p) { return cell_name(*p.param.tensor); });
 
 INSTANTIATE_TEST_SUITE_P(

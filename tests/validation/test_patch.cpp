@@ -3,6 +3,10 @@
 // traction σ n on all the others; meshes distorted (structured with moved interior nodes) or
 // unstructured from Gmsh, with curved P2 edges on the disk.
 #include <gtest/gtest.h>
+#include <gmsh.h>
+#include <unistd.h>
+
+#include <filesystem>
 
 #include "symcontact/energy/energy_sum.hpp"
 #include "symcontact/energy/external_load.hpp"
@@ -110,13 +114,13 @@ TEST(PatchTest, DistortedQuadrilateralsAndHexahedra) {
 // tetrahedra read from Gmsh (tests/data/geo/prism_layer.geo), conforming on their common triangles.
 TEST(PatchTest, DistortedPrismsAndPrismsUnderTetrahedra) {
   double eu = 0, es = 0;
-  for (int order : {1, 2}) {
-    Mesh m = prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3, order);
+  for (CellType t : {CellType::kPrism6, CellType::kPrism15, CellType::kPrism18}) {
+    Mesh m = prism_mesh(t, Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
     perturb_interior_nodes(m, 1.0 / 3, 0.25, 45);
     std::tie(eu, es) = patch_errors(m, "xmin");
     std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
-    EXPECT_LT(eu, 1e-10) << order;
-    EXPECT_LT(es, 1e-10) << order;
+    EXPECT_LT(eu, 1e-10) << cell_name(t);
+    EXPECT_LT(es, 1e-10) << cell_name(t);
   }
   MeshReadOptions o3;
   o3.dim = 3;
@@ -164,4 +168,53 @@ TEST(PatchTest, UnstructuredGmshMeshesIncludingCurvedP2) {
     EXPECT_LT(eu, 1e-10) << "cube P" << order;
     EXPECT_LT(es, 1e-10) << "cube P" << order;
   }
+}
+
+// Pyramids: structured boxes of 5-, 13- and 14-node ones (six per box), interior vertices moved; and one
+// body of hexahedra, pyramids and tetrahedra (tests/data/geo/hex_tet.geo) at order 1, at order 2 (Hex27,
+// Pyramid14, Tet10) and at incomplete order 2 (Hex20, Pyramid13, Tet10). Gmsh 4.8 builds pyramids once per
+// process (gmsh_io.cpp): the geometry is meshed once, written at the three orders, and read back.
+TEST(PatchTest, DistortedPyramidsAndHexahedraWithTetrahedra) {
+  double eu = 0, es = 0;
+  for (CellType t : {CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14}) {
+    Mesh m = pyramid_mesh(t, Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
+    perturb_interior_nodes(m, 1.0 / 3, 0.25, 46);
+    std::tie(eu, es) = patch_errors(m, "xmin");
+    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
+    EXPECT_LT(eu, 1e-10) << cell_name(t);
+    EXPECT_LT(es, 1e-10) << cell_name(t);
+  }
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("symcontact_hex_tet_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string names[3] = {(dir / "order1.msh").string(), (dir / "order2.msh").string(), (dir / "order2i.msh").string()};
+  gmsh::initialize(0, nullptr, false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(std::string(SYMCONTACT_TEST_DATA) + "/geo/hex_tet.geo");
+  gmsh::model::mesh::generate(3);
+  gmsh::write(names[0]);
+  gmsh::model::mesh::setOrder(2);
+  gmsh::write(names[1]);
+  gmsh::option::setNumber("Mesh.SecondOrderIncomplete", 1);
+  gmsh::model::mesh::setOrder(1);
+  gmsh::model::mesh::setOrder(2);
+  gmsh::write(names[2]);
+  gmsh::finalize();
+  const CellType pyramids[3] = {CellType::kPyramid5, CellType::kPyramid14, CellType::kPyramid13};
+  for (int variant = 0; variant < 3; ++variant) {
+    MeshReadOptions o;
+    o.dim = 3;
+    o.order = variant == 0 ? 1 : 2;
+    Mesh m = extract_body(read_mesh_file(names[variant], o), 3, "block", "g");
+    const auto counts = m.cell_type_counts();
+    ASSERT_EQ(counts.size(), 3u) << m.cell_types_label();
+    bool has_pyramids = false;
+    for (const auto& [type, n] : counts) has_pyramids = has_pyramids || type == pyramids[variant];
+    EXPECT_TRUE(has_pyramids) << m.cell_types_label();
+    EXPECT_EQ(m.node_groups.count("sides"), 1u);
+    std::tie(eu, es) = patch_errors(m, "zmin");
+    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
+    EXPECT_LT(eu, 1e-10) << m.cell_types_label();
+    EXPECT_LT(es, 1e-10) << m.cell_types_label();
+  }
+  std::filesystem::remove_all(dir);
 }

@@ -148,8 +148,8 @@ struct CellSearch {
   }
 
   /// Whether p lies inside the body: in the closed vertex cell of some cell (the simplex of its vertices,
-  /// barycentric coordinates ≥ −1e-9; the bilinear or trilinear cell of the vertices of a quadrilateral
-  /// or hexahedron, reference coordinates in [−1e-9, 1 + 1e-9]) and on none of that cell's facets that
+  /// barycentric coordinates ≥ −1e-9; the bilinear or trilinear cell of the vertices of a quadrilateral,
+  /// hexahedron, prism or pyramid, reference coordinates in [−1e-9, 1 + 1e-9]) and on none of that cell's facets that
   /// lie on the body's boundary (a point on a facet or edge shared by cells is inside; one on the
   /// boundary touches the body, it is not in it).
   bool contains(const Eigen::Vector3d& p) const {
@@ -178,12 +178,18 @@ struct CellSearch {
   }
 
   /// Reference coordinates ξ of p in the cell of c's vertices by Newton's method (x(ξ) = Σ X_a N_a(ξ)
-  /// over the Quad4, Hex8 or Prism6 shape functions); then the test of contains() on facet_distance().
+  /// over the Quad4, Hex8 or Prism6 shape functions; a pyramid as the hexahedron whose face ζ = 1 is
+  /// collapsed to the apex, x = (1 − ζ) B(ξ, η) + ζ X_4, which is its 5-node map in the collapsed
+  /// coordinates); then the test of contains() on facet_distance().
   bool in_mapped_cell(Index c, const Eigen::Vector3d& p) const {
     const int D = mesh->dim;
     const CellType type = mesh->cell_type(c);
+    const bool pyramid = cell_shape(type) == CellShape::kPyramid;
     const CellType linear =
         cell_shape(type) == CellShape::kPrism ? CellType::kPrism6 : (D == 2 ? CellType::kQuad4 : CellType::kHex8);
+    static const int kVertex[8] = {0, 1, 2, 3, 4, 5, 6, 7}, kCollapsed[8] = {0, 1, 2, 3, 4, 4, 4, 4};
+    static const int kPyramidFacet[6] = {4, 0, 1, 2, 3, -1};  // the hexahedron's facets as the pyramid's
+    const int* vertex = pyramid ? kCollapsed : kVertex;
     const int nv = cell_num_vertices(linear);
     const Index* n = mesh->cell(c);
     Eigen::VectorXd xi = Eigen::VectorXd::Constant(D, 0.5);
@@ -193,8 +199,8 @@ struct CellSearch {
       Eigen::VectorXd r = -p.head(D);
       Eigen::MatrixXd J = Eigen::MatrixXd::Zero(D, D);
       for (int a = 0; a < nv; ++a) {
-        r += N[a] * x.col(n[a]);
-        for (int i = 0; i < D; ++i) J.col(i) += dN[a * D + i] * x.col(n[a]);
+        r += N[a] * x.col(n[vertex[a]]);
+        for (int i = 0; i < D; ++i) J.col(i) += dN[a * D + i] * x.col(n[vertex[a]]);
       }
       const Eigen::VectorXd step = J.partialPivLu().solve(r);
       if (!step.allFinite()) return false;
@@ -203,8 +209,11 @@ struct CellSearch {
     }
     for (int f = 0; f < cell_num_facets(linear); ++f)
       if (facet_distance(linear, f, xi.data()) < -eps) return false;
-    for (int f = 0; f < cell_num_facets(linear); ++f)
-      if (facet_distance(linear, f, xi.data()) <= eps && boundary.count(cell_facet_key(*mesh, c, f))) return false;
+    for (int f = 0; f < cell_num_facets(linear); ++f) {
+      const int own = pyramid ? kPyramidFacet[f] : f;
+      if (own >= 0 && facet_distance(linear, f, xi.data()) <= eps && boundary.count(cell_facet_key(*mesh, c, own)))
+        return false;
+    }
     return true;
   }
 };

@@ -29,6 +29,10 @@ decltype(auto) dispatch_cell(CellType t, F&& f) {
     case CellType::kHex27: return f(integral_constant<int, 3>{}, integral_constant<int, 27>{});
     case CellType::kPrism6: return f(integral_constant<int, 3>{}, integral_constant<int, 6>{});
     case CellType::kPrism18: return f(integral_constant<int, 3>{}, integral_constant<int, 18>{});
+    case CellType::kPrism15: return f(integral_constant<int, 3>{}, integral_constant<int, 15>{});
+    case CellType::kPyramid5: return f(integral_constant<int, 3>{}, integral_constant<int, 5>{});
+    case CellType::kPyramid13: return f(integral_constant<int, 3>{}, integral_constant<int, 13>{});
+    case CellType::kPyramid14: return f(integral_constant<int, 3>{}, integral_constant<int, 14>{});
     default: break;
   }
   throw std::logic_error("dispatch_cell: unsupported cell type " + cell_name(t));

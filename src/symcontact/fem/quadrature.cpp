@@ -145,10 +145,27 @@ QuadratureRule prism_quadrature(int degree) {
   return r;
 }
 
+QuadratureRule pyramid_quadrature(int degree) {
+  std::vector<double> x, w, z, wz;
+  gauss_legendre_01(std::max(degree, 0) / 2 + 1, x, w);
+  gauss_legendre_01(std::max(degree, 0) / 2 + 2, z, wz);  // the Jacobian (1 − ζ)² adds 2 to the degree in ζ
+  QuadratureRule r;
+  r.dim = 3;
+  for (std::size_t k = 0; k < z.size(); ++k)
+    for (std::size_t j = 0; j < x.size(); ++j)
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const double s = 1.0 - z[k];
+        r.points.insert(r.points.end(), {x[i] * s, x[j] * s, z[k]});
+        r.weights.push_back(w[i] * w[j] * wz[k] * s * s);
+      }
+  return r;
+}
+
 QuadratureRule cell_quadrature(CellType t, int degree) {
   switch (cell_shape(t)) {
     case CellShape::kTensor: return tensor_quadrature(cell_dim(t), degree);
     case CellShape::kPrism: return prism_quadrature(degree);
+    case CellShape::kPyramid: return pyramid_quadrature(degree);
     default: return simplex_quadrature(cell_dim(t), degree);
   }
 }

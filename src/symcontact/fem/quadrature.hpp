@@ -36,15 +36,23 @@ QuadratureRule tensor_quadrature(int dim, int degree);
 /// points in ζ (exact for degree ≤ `degree` in (ξ, η) and in ζ separately).
 QuadratureRule prism_quadrature(int degree);
 
+/// The collapsed rule on the pyramid {0 ≤ ζ ≤ 1, 0 ≤ ξ, η ≤ 1 − ζ} (volume 1/3): (ξ, η, ζ) =
+/// (a (1 − c), b (1 − c), c) over the cube of (a, b, c), with degree / 2 + 1 Gauss points in a and b,
+/// degree / 2 + 2 in c and the Jacobian (1 − c)² in the weights. Exact for polynomials of total degree
+/// ≤ `degree`, and for the pyramids' rational functions of that degree in (a, b) and in c (Stroud, 1971,
+/// §2.4; Bergot et al. 2010, §3).
+QuadratureRule pyramid_quadrature(int degree);
+
 /// The rule on the reference cell of `t`: simplex_quadrature() for a simplex, tensor_quadrature() for a
 /// quadrilateral or hexahedron (whose Q_p shape functions have degree p in each variable),
-/// prism_quadrature() for a prism.
+/// prism_quadrature() for a prism, pyramid_quadrature() for a pyramid.
 QuadratureRule cell_quadrature(CellType t, int degree);
 
 /// The degree of the rule that integrates stiffness and elastic energy over a cell of type t: 2(p − 1) for
 /// straight simplices, exact for their polynomial integrand; 3 for P2, whose cells may be curved; 2p per
-/// variable for quadrilaterals, hexahedra and prisms (p + 1 Gauss points per direction, full integration,
-/// exact for parallelogram and parallelepiped cells; Hughes, "The finite element method", 2000, §3.8).
+/// variable for quadrilaterals, hexahedra, prisms and pyramids (p + 1 Gauss points per direction, full
+/// integration, exact for parallelogram and parallelepiped cells and affine pyramids; Hughes, "The finite
+/// element method", 2000, §3.8).
 /// Axisymmetric models (analysis_model.hpp) use 2 more: the integrand gains the factor r and the hoop
 /// terms N_a N_b / r, and a one-point rule on a linear triangle would leave a zero-energy rotation of each
 /// cell (its hoop strain vanishing at the centroid only; Zienkiewicz & Taylor vol. 1, §5.3).

@@ -1,7 +1,11 @@
 #include "symcontact/fem/shape_functions.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
+
+#include <Eigen/Dense>
 
 namespace symcontact {
 
@@ -87,24 +91,113 @@ void tensor_shape_functions(CellType t, const double* xi, double* N, double* dN)
       for (int k = 0; k < d; ++k) dN[a * d + k] = g[k];
   }
 }
-/// The prisms: node a's function is the triangle's (Tri3, Tri6) function of its node kTriNode[a] in (ξ, η)
-/// times the 1D Lagrange function of its level in ζ (−1, 0, 1: ζ = 0, ½, 1), in Gmsh's node order.
+/// The prisms in Gmsh's node order, each node with its node of the triangle (Tri3, Tri6) in (ξ, η) and its
+/// level in ζ (−1, 0, 1: ζ = 0, ½, 1). Prism6 and Prism18: the triangle's function times the 1D Lagrange one
+/// of the level. Prism15 (serendipity), with s = 2ζ − 1, T the Tri6 and L the Tri3 function: vertices
+/// ½ T (1 + c s) − ½ L (1 − s²), triangle edge nodes ½ T (1 + c s), vertical edge nodes L (1 − s²)
+/// (Zienkiewicz & Taylor, "The finite element method", vol. 1, §8.9).
 void prism_shape_functions(CellType t, const double* xi, double* N, double* dN) {
   static const int kTriNode[18] = {0, 1, 2, 0, 1, 2, 3, 5, 0, 4, 1, 2, 3, 5, 4, 3, 5, 4};
   static const int kLevel[18] = {-1, -1, -1, 1, 1, 1, -1, -1, 0, -1, 0, 0, 1, 1, 1, 0, 0, 0};
   const int p = cell_order(t);
-  const CellType tri = p == 1 ? CellType::kTri3 : CellType::kTri6;
-  double Nt[6], dNt[12];
-  shape_functions(tri, xi, Nt, dNt);
+  double T[6], dT[12], L[3], dL[6];
+  shape_functions(p == 1 ? CellType::kTri3 : CellType::kTri6, xi, T, dT);
+  shape_functions(CellType::kTri3, xi, L, dL);
+  const double s = 2.0 * xi[2] - 1.0;
   for (int a = 0; a < cell_num_nodes(t); ++a) {
-    double z, dz;
-    lagrange_1d(p, kLevel[a], xi[2], z, dz);
-    const int i = kTriNode[a];
-    if (N) N[a] = Nt[i] * z;
+    const int i = kTriNode[a], c = kLevel[a];
+    double f, df, g = 0.0, dg = 0.0;  // N = T_i f(ζ) + L_i g(ζ)
+    if (t != CellType::kPrism15) {
+      lagrange_1d(p, c, xi[2], f, df);
+    } else if (c == 0) {
+      f = df = 0.0;
+      g = 1.0 - s * s;
+      dg = -4.0 * s;
+    } else {
+      f = 0.5 * (1.0 + c * s);
+      df = c;
+      if (i < 3) {
+        g = -0.5 * (1.0 - s * s);
+        dg = 2.0 * s;
+      }
+    }
+    const double Li = i < 3 ? L[i] : 0.0, dLx = i < 3 ? dL[2 * i] : 0.0, dLy = i < 3 ? dL[2 * i + 1] : 0.0;
+    if (N) N[a] = T[i] * f + Li * g;
     if (dN) {
-      dN[3 * a] = dNt[2 * i] * z;
-      dN[3 * a + 1] = dNt[2 * i + 1] * z;
-      dN[3 * a + 2] = Nt[i] * dz;
+      dN[3 * a] = dT[2 * i] * f + dLx * g;
+      dN[3 * a + 1] = dT[2 * i + 1] * f + dLy * g;
+      dN[3 * a + 2] = T[i] * df + Li * dg;
+    }
+  }
+}
+
+/// Reference nodes of the pyramids: Gmsh's (X, Y, Z) on the base [−1, 1]² with the apex at (0, 0, 1),
+/// mapped to ξ = (X + 1 − Z) / 2, η = (Y + 1 − Z) / 2, ζ = Z.
+const double kPyramidNodes[14][3] = {{0, 0, 0},   {1, 0, 0},   {1, 1, 0},    {0, 1, 0},   {0, 0, 1},
+                                     {.5, 0, 0},  {0, .5, 0},  {0, 0, .5},   {1, .5, 0},  {.5, 0, .5},
+                                     {.5, 1, 0},  {.5, .5, .5}, {0, .5, .5}, {.5, .5, 0}};
+
+/// The pyramids' space (Bergot, Cohen & Duruflé, "Higher-order finite elements for hybrid meshes using
+/// new nodal pyramidal elements", J. Sci. Comput. 42, 2010): with a = ξ / (1 − ζ), b = η / (1 − ζ),
+/// φ_ijk = a^i b^j (1 − ζ)^max(i,j) ζ^k for 0 ≤ i, j ≤ p and 0 ≤ k ≤ p − max(i, j). It holds P_p, its trace
+/// on a triangle is P_p and on the base Q_p: Pyramid5 (p = 1) is the classical rational pyramid, Pyramid14
+/// (p = 2) conforms to Tet10 and Hex27. Pyramid13 drops φ_220 (the a²b² of the base), whose trace on the
+/// triangles lies in the span of the others: its base trace is the serendipity Quad8's, so it conforms to
+/// Tet10 and Hex20. The nodal basis is C φ with C the inverse of the matrix of the φ at the nodes.
+struct PyramidBasis {
+  std::vector<std::array<int, 3>> ijk;
+  Eigen::MatrixXd C;  ///< C(p, a): coefficient of φ_p in node a's function
+
+  explicit PyramidBasis(CellType t) {
+    const int p = cell_order(t);
+    for (int i = 0; i <= p; ++i)
+      for (int j = 0; j <= p; ++j)
+        for (int k = 0; k <= p - std::max(i, j); ++k)
+          if (!(t == CellType::kPyramid13 && i == 2 && j == 2)) ijk.push_back({i, j, k});
+    const int n = cell_num_nodes(t);
+    if (static_cast<int>(ijk.size()) != n) throw std::logic_error("PyramidBasis: space and nodes differ in size");
+    Eigen::MatrixXd V(n, n);
+    for (int a = 0; a < n; ++a) evaluate(kPyramidNodes[a], V.data() + a, n, nullptr);
+    C = V.fullPivLu().inverse();
+  }
+
+  /// φ_p(ξ) into phi[p * stride] and, if dphi is given, ∇φ_p into dphi[3 p ..]. At the apex (ζ = 1) the
+  /// values are 1 for the φ with max(i, j) = 0 and 0 for the others, whatever a and b; the gradients, which
+  /// depend on the direction of approach, are their limits along the axis (a = b = ½).
+  void evaluate(const double* xi, double* phi, int stride, double* dphi) const {
+    const double w = 1.0 - xi[2], z = xi[2];
+    const double a = w > 0 ? xi[0] / w : 0.5, b = w > 0 ? xi[1] / w : 0.5;
+    for (std::size_t q = 0; q < ijk.size(); ++q) {
+      const int i = ijk[q][0], j = ijk[q][1], k = ijk[q][2], m = std::max(i, j);
+      const double ab = std::pow(a, i) * std::pow(b, j), zk = std::pow(z, k);
+      phi[q * stride] = ab * std::pow(w, m) * zk;
+      if (!dphi) continue;
+      const double wm1 = m > 0 ? std::pow(w, m - 1) : 0.0;  // (1 − ζ)^(m − 1), multiplied by 0 when m = 0
+      double* g = dphi + 3 * q;
+      g[0] = i > 0 ? i * std::pow(a, i - 1) * std::pow(b, j) * wm1 * zk : 0.0;
+      g[1] = j > 0 ? j * std::pow(a, i) * std::pow(b, j - 1) * wm1 * zk : 0.0;
+      g[2] = (i + j - m) * ab * wm1 * zk + (k > 0 ? k * ab * std::pow(w, m) * std::pow(z, k - 1) : 0.0);
+    }
+  }
+};
+
+/// The pyramids' nodal functions.
+void pyramid_shape_functions(CellType t, const double* xi, double* N, double* dN) {
+  static const PyramidBasis basis[3] = {PyramidBasis(CellType::kPyramid5), PyramidBasis(CellType::kPyramid13),
+                                        PyramidBasis(CellType::kPyramid14)};
+  const PyramidBasis& B = basis[static_cast<int>(t) - static_cast<int>(CellType::kPyramid5)];
+  const int n = cell_num_nodes(t);
+  double phi[14], dphi[42];
+  const bool gradients = dN != nullptr;
+  B.evaluate(xi, phi, 1, gradients ? dphi : nullptr);
+  for (int a = 0; a < n; ++a) {
+    if (N) N[a] = 0.0;
+    if (gradients) dN[3 * a] = dN[3 * a + 1] = dN[3 * a + 2] = 0.0;
+    for (int q = 0; q < n; ++q) {
+      const double c = B.C(q, a);
+      if (N) N[a] += c * phi[q];
+      if (gradients)
+        for (int i = 0; i < 3; ++i) dN[3 * a + i] += c * dphi[3 * q + i];
     }
   }
 }
@@ -113,6 +206,7 @@ void prism_shape_functions(CellType t, const double* xi, double* N, double* dN) 
 void shape_functions(CellType t, const double* xi, double* N, double* dN) {
   if (cell_shape(t) == CellShape::kTensor) return tensor_shape_functions(t, xi, N, dN);
   if (cell_shape(t) == CellShape::kPrism) return prism_shape_functions(t, xi, N, dN);
+  if (cell_shape(t) == CellShape::kPyramid) return pyramid_shape_functions(t, xi, N, dN);
   const int d = cell_dim(t);
   if (d == 0) {
     if (N) N[0] = 1.0;
@@ -167,6 +261,10 @@ std::vector<double> reference_nodes(CellType t) {
                                           {1, 0, .5},  {0, 1, .5},  {.5, 0, 1},    {0, .5, 1},  {.5, .5, 1},
                                           {.5, 0, .5}, {0, .5, .5}, {.5, .5, .5}};  // Gmsh's, ζ mapped to [0, 1]
     for (int a = 0; a < cell_num_nodes(t); ++a) v.insert(v.end(), prism18[a], prism18[a] + 3);
+    return v;
+  }
+  if (cell_shape(t) == CellShape::kPyramid) {
+    for (int a = 0; a < cell_num_nodes(t); ++a) v.insert(v.end(), kPyramidNodes[a], kPyramidNodes[a] + 3);
     return v;
   }
   const int nv = d + 1;

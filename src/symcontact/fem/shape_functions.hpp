@@ -10,6 +10,9 @@
 ///    corners N = 2^{−d} Π(1 + s_i c_i) (Σ s_i c_i − d + 1), edge nodes (c_j = 0)
 ///    N = 2^{1−d} (1 − s_j²) Π_{i≠j}(1 + s_i c_i) (Zienkiewicz & Taylor, "The finite element method",
 ///    vol. 1, §8.7).
+///  - Prisms: the triangle's functions times the 1D ones in ζ; Prism15 the serendipity wedge.
+///  - Pyramids: the rational nodal bases of Bergot, Cohen & Duruflé (2010), which hold P_p and conform to
+///    tetrahedra on their triangles and to hexahedra on their base (shape_functions.cpp).
 
 #include <vector>
 

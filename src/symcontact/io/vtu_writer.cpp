@@ -80,8 +80,9 @@ void VtuWriter::append_cells(CellType type, const Index* connectivity, std::size
     }
   }
   const int* order = vtk_node_order(type);
+  const auto nvtk = static_cast<std::size_t>(vtk_num_nodes(type));
   for (std::size_t c = 0; c < entries; c += npc) {
-    for (std::size_t k = 0; k < npc; ++k) connectivity_.push_back(connectivity[c + static_cast<std::size_t>(order[k])]);
+    for (std::size_t k = 0; k < nvtk; ++k) connectivity_.push_back(connectivity[c + static_cast<std::size_t>(order[k])]);
     offsets_.push_back(static_cast<std::int64_t>(connectivity_.size()));
     types_.push_back(static_cast<std::uint8_t>(vtk_cell_type(type)));
   }

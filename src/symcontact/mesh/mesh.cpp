@@ -70,9 +70,11 @@ std::string Mesh::cell_types_label() const {
 bool compatible_cell_types(CellType a, CellType b) {
   if (cell_dim(a) != cell_dim(b) || cell_order(a) != cell_order(b)) return false;
   for (int f = 0; f < cell_num_facets(a); ++f)
-    for (int g = 0; g < cell_num_facets(b); ++g)
-      if (cell_facet_type(a, f) == cell_facet_type(b, g)) return true;
-  return false;
+    for (int g = 0; g < cell_num_facets(b); ++g) {
+      const CellType fa = cell_facet_type(a, f), fb = cell_facet_type(b, g);
+      if (cell_shape(fa) == cell_shape(fb) && fa != fb) return false;
+    }
+  return true;
 }
 
 void Mesh::set_cells(CellType t, std::vector<Index> connectivity) {
@@ -144,6 +146,17 @@ double corner_determinant(const Mesh& m, Index c, int corner) {
     const Vec3 d_xi = m.x.col(n[b + 1]) - m.x.col(n[b]), d_eta = m.x.col(n[b + 2]) - m.x.col(n[b]);
     const Vec3 d_zeta = m.x.col(n[v + 3]) - m.x.col(n[v]);
     return d_xi.cross(d_eta).dot(d_zeta);
+  }
+  if (shape == CellShape::kPyramid) {
+    // The 5-node pyramid is x = (1 − ζ) B(a, b) + ζ x4 with B the bilinear base and a = ξ / (1 − ζ),
+    // b = η / (1 − ζ), so det J = det[∂B/∂a, ∂B/∂b, x4 − B] depends on (a, b) alone: at a base vertex, or
+    // for the apex at the centre of the base (a = b = ½).
+    const Vec3 x0 = m.x.col(n[0]), x1 = m.x.col(n[1]), x2 = m.x.col(n[2]), x3 = m.x.col(n[3]), x4 = m.x.col(n[4]);
+    static const double ab[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}};
+    const double a = ab[corner][0], b = ab[corner][1];
+    const Vec3 Ba = (1 - b) * (x1 - x0) + b * (x2 - x3), Bb = (1 - a) * (x3 - x0) + a * (x2 - x1);
+    const Vec3 B = (1 - a) * (1 - b) * x0 + a * (1 - b) * x1 + a * b * x2 + (1 - a) * b * x3;
+    return Ba.cross(Bb).dot(x4 - B);
   }
   if (m.dim == 2) {  // neighbours v_{a+1} and v_{a−1}: counter-clockwise at every corner
     const Vec3 a = edge((corner + 1) % 4), b = edge((corner + 3) % 4);

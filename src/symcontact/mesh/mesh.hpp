@@ -7,8 +7,8 @@
 /// after cell, in Gmsh node ordering (cell_type.hpp); cell c's are cells[cell_offsets[c]] up to
 /// cells[cell_offsets[c + 1]]. `cell_blocks` cuts the cells into runs of one type, so that kernels
 /// dispatch on the type once a block (a uniform mesh has one block). The types of a mesh share one order
-/// and, pairwise, a facet type (triangles with quadrilaterals in 2D; prisms with tetrahedra or with
-/// hexahedra in 3D: compatible_cell_types()). Facet groups hold facets of one type each the same way
+/// and one facet type of each shape (triangles with quadrilaterals in 2D; in 3D tetrahedra, hexahedra,
+/// prisms and pyramids, but not Hex20 with Hex27: compatible_cell_types()). Facet groups hold facets of one type each the same way
 /// (FacetGroup::type). Every cell is positively oriented (det J > 0 at its vertices); mesh builders
 /// reorient cells read with the other orientation.
 /// A facet is keyed by its sorted vertex indices (std::array<Index, 4>, −1 for the entries a segment or
@@ -137,18 +137,20 @@ struct Mesh {
   Index orient_cells();
 };
 
-/// Whether cells of types a and b can be in one mesh: the same dimension and order, and a facet type in
-/// common (a triangle and a quadrilateral of the same order in 2D; a prism and a tetrahedron, or a prism and
-/// a hexahedron, in 3D; a tetrahedron and a hexahedron need pyramids between them).
+/// Whether cells of types a and b can be in one mesh: the same dimension and order, and the same facet
+/// type wherever both have facets of one shape (a triangle and a quadrilateral of the same order in 2D; in
+/// 3D tetrahedra, hexahedra, prisms and pyramids of one order, a hexahedron meeting a tetrahedron through
+/// pyramids; not an 8-node with a 9-node quadrilateral face, as Hex20 with Hex27 or Prism18).
 bool compatible_cell_types(CellType a, CellType b);
 
 /// Signed measure-like determinant of the vertex simplex of cell c (2× area, 6× volume); for a
-/// quadrilateral, hexahedron or prism, that of the simplex at its vertex 0 (corner_determinant(m, c, 0)).
+/// quadrilateral, hexahedron, prism or pyramid, that of the simplex at its vertex 0 (corner_determinant(m, c, 0)).
 double simplex_determinant(const Mesh& m, Index c);
 
 /// Determinant of the edges leaving vertex `corner` of cell c along the reference axes, signed so that
 /// it is positive for a positively oriented cell: the sign of det J at that vertex for a quadrilateral,
-/// hexahedron or prism (corner < cell_num_vertices()). For a simplex, simplex_determinant() at any corner.
+/// hexahedron or prism (corner < cell_num_vertices()); for a pyramid, det J of its vertex map at a base
+/// vertex, and at the apex seen from the base's centre. For a simplex, simplex_determinant() at any corner.
 double corner_determinant(const Mesh& m, Index c, int corner);
 
 }  // namespace symcontact

@@ -22,7 +22,7 @@ namespace {
 
 /// Gmsh element types symcontact's reader may meet (gmsh.info, "MSH file format"): number of nodes and
 /// dimension. Types outside this table are rejected here; types in it that symcontact cannot use
-/// (prisms, pyramids, higher orders) are rejected by read_mesh_file().
+/// (order 3 and above) are rejected by read_mesh_file().
 bool element_type_info(std::int64_t type, int& num_nodes, int& dim) {
   struct Info { int type, nodes, dim; };
   static const Info table[] = {

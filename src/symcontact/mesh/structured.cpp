@@ -171,13 +171,34 @@ Mesh tensor_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, 
   return m;
 }
 
-Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int order) {
+namespace {
+/// Removes the nodes no cell uses, keeping the others' order, and renumbers cells and groups.
+void drop_unused_nodes(Mesh& m) {
+  std::vector<Index> to(static_cast<std::size_t>(m.num_nodes()), -1);
+  for (Index v : m.cells) to[v] = 0;
+  Index next = 0;
+  for (Index v = 0; v < m.num_nodes(); ++v)
+    if (to[v] == 0) {
+      m.x.col(next) = m.x.col(v);
+      to[v] = next++;
+    }
+  m.x.conservativeResize(Eigen::NoChange, next);
+  for (Index& v : m.cells) v = to[v];
+  for (auto& [name, g] : m.facet_groups)
+    for (Index& v : g.facets) v = to[v];
+  for (auto& [name, g] : m.node_groups)
+    for (Index& v : g) v = to[v];
+}
+}  // namespace
+
+Mesh prism_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
   if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("prism_mesh: divisions must be >= 1");
-  if (order != 1 && order != 2) throw std::invalid_argument("prism_mesh: order must be 1 or 2");
+  if (cell_shape(type) != CellShape::kPrism) throw std::invalid_argument("prism_mesh: expects a prism type");
   Mesh m;
   m.dim = 3;
-  // A lattice of q·n + 1 points per direction (q the order); every point is a node.
-  const int q = order, n[3] = {nx, ny, nz}, l[3] = {q * nx + 1, q * ny + 1, q * nz + 1};
+  // A lattice of q·n + 1 points per direction (q the order); every point is a node (but the sides' centres
+  // of 15-node prisms, dropped at the end).
+  const int q = cell_order(type), n[3] = {nx, ny, nz}, l[3] = {q * nx + 1, q * ny + 1, q * nz + 1};
   using P = std::array<int, 3>;
   auto id = [&](const P& p) -> Index { return (static_cast<Index>(p[2]) * l[1] + p[1]) * l[0] + p[0]; };
   auto mid = [](const P& a, const P& b) { return P{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; };
@@ -213,14 +234,16 @@ Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int orde
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        for (const auto& t : triangles(i, j, k))
-          for (const P& p : prism(t)) cells.push_back(id(p));
-  m.set_cells(q == 1 ? CellType::kPrism6 : CellType::kPrism18, std::move(cells));
+        for (const auto& t : triangles(i, j, k)) {
+          const std::vector<P> v = prism(t);
+          for (int a = 0; a < cell_num_nodes(type); ++a) cells.push_back(id(v[a]));
+        }
+  m.set_cells(type, std::move(cells));
   // Facet groups: their vertices (locate_facets() takes the other nodes from the cells, in their order).
-  const int tri_nodes = q == 1 ? 3 : 6, quad_nodes = q == 1 ? 4 : 9;
+  const int tri_nodes = cell_num_nodes(facet_type(type)), quad_nodes = cell_num_nodes(cell_facet_type(type, 2));
   for (int side = 0; side < 2; ++side) {
     FacetGroup& g = m.facet_groups[side == 0 ? "zmin" : "zmax"];
-    g.type = q == 1 ? CellType::kTri3 : CellType::kTri6;
+    g.type = facet_type(type);
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
         for (const auto& t : triangles(i, j, side * nz))
@@ -230,7 +253,7 @@ Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int orde
   for (int ax = 0; ax < 2; ++ax)
     for (int side = 0; side < 2; ++side) {
       FacetGroup& g = m.facet_groups[names[ax][side]];
-      g.type = q == 1 ? CellType::kQuad4 : CellType::kQuad9;
+      g.type = cell_facet_type(type, 2);
       for (int k = 0; k < nz; ++k)
         for (int t = 0; t < n[1 - ax]; ++t) {
           const auto node = [&](int dt, int dk) {
@@ -245,6 +268,7 @@ Mesh prism_mesh(const Vec3& lo, const Vec3& hi, int nx, int ny, int nz, int orde
         }
     }
   m.node_groups["origin"] = {0};
+  drop_unused_nodes(m);
   m.locate_facets();
   return m;
 }
@@ -330,53 +354,86 @@ Mesh elevate_to_p2(const Mesh& p1) {
   return m;
 }
 
-namespace {
-/// Puts the non-vertex nodes of quadrilaterals and hexahedra at the multilinear map of their cell's
-/// vertices: x = Σ_v X_v Π_i (ξ_i or 1 − ξ_i), ξ = (c + 1)/2 the node's reference point.
-void reset_tensor_nodes(Mesh& mesh, const CellBlock& b) {
-  const int D = mesh.dim, nv = cell_num_vertices(b.type), npc = cell_num_nodes(b.type);
-  for (Index c = b.begin; c < b.end; ++c) {
-    const Index* n = mesh.cell(c);
-    for (int a = nv; a < npc; ++a) {
-      const int* ca = tensor_node_coordinates(b.type, a);
-      Eigen::VectorXd x = Eigen::VectorXd::Zero(D);
-      for (int v = 0; v < nv; ++v) {
-        const int* cv = tensor_node_coordinates(b.type, v);
-        double w = 1.0;
-        for (int i = 0; i < D; ++i) w *= cv[i] > 0 ? 0.5 * (ca[i] + 1) : 0.5 * (1 - ca[i]);
-        x += w * mesh.x.col(n[v]);
+Mesh pyramid_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
+  if (nx < 1 || ny < 1 || nz < 1) throw std::invalid_argument("pyramid_mesh: divisions must be >= 1");
+  if (cell_shape(type) != CellShape::kPyramid) throw std::invalid_argument("pyramid_mesh: expects a pyramid type");
+  Mesh m;
+  m.dim = 3;
+  // Lattice points at 1/S of a box (S = 2 at order 1 for the centres, 4 at order 2 for the midpoints of
+  // the edges to them), numbered as first used.
+  using P = std::array<int, 3>;
+  const int S = 2 * cell_order(type), n[3] = {nx, ny, nz};
+  std::map<P, Index> index;
+  std::vector<P> points;
+  const auto id = [&](const P& p) {
+    const auto [it, added] = index.emplace(p, static_cast<Index>(points.size()));
+    if (added) points.push_back(p);
+    return it->second;
+  };
+  const auto mid = [](const P& a, const P& b) { return P{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; };
+  static const char* const kGroup[6] = {"zmin", "ymin", "xmin", "xmax", "ymax", "zmax"};  // the Hex8 facets' sides
+  const int face_nodes = cell_num_nodes(cell_facet_type(type, 4));
+  std::vector<Index> cells;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const P centre{S * i + S / 2, S * j + S / 2, S * k + S / 2};
+        for (int f = 0; f < 6; ++f) {
+          // The box's face f (counter-clockwise seen from outside) is the base of a pyramid with its apex at
+          // the centre, listed in reverse to be counter-clockwise seen from the apex.
+          const int* loc = cell_facet_nodes(CellType::kHex8, f);
+          std::array<P, 4> face;
+          for (int a = 0; a < 4; ++a) {
+            const int* c = tensor_node_coordinates(CellType::kHex8, loc[a]);
+            face[a] = P{S * (i + (c[0] + 1) / 2), S * (j + (c[1] + 1) / 2), S * (k + (c[2] + 1) / 2)};
+          }
+          const P v[5] = {face[3], face[2], face[1], face[0], centre};
+          std::vector<P> nodes(v, v + 5);
+          if (cell_order(type) == 2)  // Gmsh's m01 m03 m04 m12 m14 m23 m24 m34 (and the base's centre)
+            for (int e = 5; e < cell_num_nodes(type); ++e) {
+              const std::vector<int> ends = node_vertices(type, e);
+              nodes.push_back(mid(v[ends[0]], v[ends[ends.size() / 2]]));
+            }
+          for (const P& p : nodes) cells.push_back(id(p));
+          const int side = f == 0 ? k : (f == 5 ? nz - 1 - k : (f == 1 ? j : (f == 4 ? ny - 1 - j : (f == 2 ? i : nx - 1 - i))));
+          if (side != 0) continue;
+          FacetGroup& g = m.facet_groups[kGroup[f]];  // vertices; locate_facets() fills in the rest
+          g.type = cell_facet_type(type, 4);
+          for (int a = 0; a < face_nodes; ++a) g.facets.push_back(id(face[a % 4]));
+        }
       }
-      mesh.x.col(n[a]) = x;
-    }
-  }
+  m.set_cells(type, std::move(cells));
+  m.x.resize(3, static_cast<Index>(points.size()));
+  for (std::size_t p = 0; p < points.size(); ++p)
+    for (int a = 0; a < 3; ++a)
+      m.x(a, static_cast<Index>(p)) = lo[a] + (hi[a] - lo[a]) * points[p][a] / (S * n[a]);
+  m.node_groups["origin"] = {id(P{0, 0, 0})};
+  m.locate_facets();
+  return m;
 }
 
-/// Puts the edge nodes of 18-node prisms at the midpoints of their edges and the sides' centre nodes at the
-/// mean of the side's vertices: where the 6-node prism of the vertices maps them.
-void reset_prism_nodes(Mesh& mesh, const CellBlock& b) {
-  static const std::vector<int> from[12] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 4}, {2, 5},
-                                            {3, 4}, {3, 5}, {4, 5}, {0, 1, 4, 3}, {0, 2, 5, 3}, {1, 2, 5, 4}};
+Mesh structured_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny, int nz) {
+  switch (cell_shape(type)) {
+    case CellShape::kPrism: return prism_mesh(type, lo, hi, nx, ny, nz);
+    case CellShape::kPyramid: return pyramid_mesh(type, lo, hi, nx, ny, nz);
+    case CellShape::kTensor: return tensor_mesh(type, lo, hi, nx, ny, nz);
+    default: break;
+  }
+  return cell_dim(type) == 2 ? rectangle_mesh(lo[0], lo[1], hi[0], hi[1], nx, ny, cell_order(type))
+                             : box_mesh(lo, hi, nx, ny, nz, cell_order(type));
+}
+
+namespace {
+/// Puts the non-vertex nodes of each cell where the order-1 map of its vertices puts them: at the mean of
+/// their node_vertices().
+void reset_higher_nodes(Mesh& mesh, const CellBlock& b) {
   for (Index c = b.begin; c < b.end; ++c) {
     const Index* n = mesh.cell(c);
-    for (int a = 6; a < cell_num_nodes(b.type); ++a) {
+    for (int a = cell_num_vertices(b.type); a < cell_num_nodes(b.type); ++a) {
+      const std::vector<int> from = node_vertices(b.type, a);
       Eigen::VectorXd x = Eigen::VectorXd::Zero(mesh.dim);
-      for (int v : from[a - 6]) x += mesh.x.col(n[v]) / static_cast<double>(from[a - 6].size());
-      mesh.x.col(n[a]) = x;
-    }
-  }
-}
-
-/// Puts the edge nodes of quadratic simplices at the midpoints of their edges.
-void reset_simplex_edge_nodes(Mesh& mesh, const CellBlock& b) {
-  static const int tri_edges[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-  static const int tet_edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
-  const bool tri = cell_dim(b.type) == 2;
-  const int nv = cell_num_vertices(b.type), npc = cell_num_nodes(b.type);
-  for (Index c = b.begin; c < b.end; ++c) {
-    const Index* n = mesh.cell(c);
-    for (int e = 0; e < npc - nv; ++e) {
-      const auto& ed = tri ? tri_edges[e] : tet_edges[e];
-      mesh.x.col(n[nv + e]) = 0.5 * (mesh.x.col(n[ed[0]]) + mesh.x.col(n[ed[1]]));
+      for (int v : from) x += mesh.x.col(n[v]);
+      mesh.x.col(n[a]) = x / static_cast<double>(from.size());
     }
   }
 }
@@ -395,14 +452,7 @@ void perturb_interior_nodes(Mesh& mesh, double h, double amplitude, unsigned see
   for (Index v = 0; v < mesh.num_nodes(); ++v)
     if (!on_boundary[v] && is_vertex[v])
       for (int i = 0; i < mesh.dim; ++i) mesh.x(i, v) += U(rng);
-  for (const CellBlock& b : mesh.cell_blocks) {
-    if (cell_shape(b.type) == CellShape::kTensor)
-      reset_tensor_nodes(mesh, b);
-    else if (cell_shape(b.type) == CellShape::kPrism)
-      reset_prism_nodes(mesh, b);
-    else if (cell_order(b.type) == 2)
-      reset_simplex_edge_nodes(mesh, b);
-  }
+  for (const CellBlock& b : mesh.cell_blocks) reset_higher_nodes(mesh, b);
 }
 
 }  // namespace symcontact

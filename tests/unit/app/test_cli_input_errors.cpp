@@ -285,10 +285,16 @@ TEST_F(CliInputErrors, ElementTypesAcceptedAndRefused) {
       run("check " + shell_quote(write("prisms.toml", symcontact::testing::replaced(solid, "MESH", "prisms.geo") + held).string()));
   EXPECT_EQ(prisms.exit_code, 0) << prisms.output;
   EXPECT_NE(prisms.output.find("prism6 cells"), std::string::npos) << prisms.output;
-  // Serendipity prisms (15 nodes) are not supported.
+  // Serendipity prisms (15 nodes).
   write("prisms15.geo", read_text(dir_ / "prisms.geo") + "Mesh.SecondOrderIncomplete = 1;\n");
-  expect_input_error(write("prisms15.toml", symcontact::testing::replaced(
-                                                symcontact::testing::replaced(solid, "MESH", "prisms15.geo"),
-                                                "dimension = 3\n", "dimension = 3\norder = 2\n") + held),
-                     {"prisms15.toml", "body[0].mesh", "prisms15.geo", "unsupported element type 'Prism 15'"});
+  const CliResult prisms15 = run("check " + shell_quote(write("prisms15.toml", symcontact::testing::replaced(
+                                                                                  symcontact::testing::replaced(solid, "MESH", "prisms15.geo"),
+                                                                                  "dimension = 3\n", "dimension = 3\norder = 2\n") + held)
+                                                                .string()));
+  EXPECT_EQ(prisms15.exit_code, 0) << prisms15.output;
+  EXPECT_NE(prisms15.output.find("prism15 cells"), std::string::npos) << prisms15.output;
+  // Elements of order 3 are refused, named as Gmsh names them.
+  write("cubic.geo", read_text(kBlockGeo) + "Mesh.ElementOrder = 3;\n");
+  expect_input_error(write("cubic.toml", block_toml("cubic.geo")),
+                     {"cubic.toml", "body[0].mesh", "cubic.geo", "unsupported element type 'Triangle 10'", "order 1 or 2"});
 }

@@ -83,10 +83,13 @@ TEST(Penetration, OverlapBeyondTheToleranceIsFoundWithItsDepth) {
 }
 
 // The same in 3D on two cubes of 6-node prisms (prism_mesh(), 4 × 4 × 4 boxes each), the upper one's bottom
-// pushed up to 0.3 into the lower one through their triangular faces: found inside the other body's prisms.
-TEST(Penetration, OverlapIntoPrismsIsFoundWithItsDepth) {
-  const Mesh lower = prism_mesh(Vec3(0, 0, 0), Vec3(1, 1, 1), 4, 4, 4);
-  const Mesh upper = prism_mesh(Vec3(0, 0, 1), Vec3(1, 1, 2), 4, 4, 4);
+// pushed up to 0.3 into the lower one through their triangular faces: found inside the other body's prisms;
+// and on two cubes of pyramids (pyramid_mesh()) through their bases.
+class PenetrationInto : public ::testing::TestWithParam<CellType> {};
+
+TEST_P(PenetrationInto, OverlapIsFoundWithItsDepth) {
+  const Mesh lower = structured_mesh(GetParam(), Vec3(0, 0, 0), Vec3(1, 1, 1), 4, 4, 4);
+  const Mesh upper = structured_mesh(GetParam(), Vec3(0, 0, 1), Vec3(1, 1, 2), 4, 4, 4);
   DofMap dofs{3};
   dofs.add_body(lower.num_nodes());
   dofs.add_body(upper.num_nodes());
@@ -112,6 +115,9 @@ TEST(Penetration, OverlapIntoPrismsIsFoundWithItsDepth) {
   }
   EXPECT_TRUE(upper_found);
 }
+
+INSTANTIATE_TEST_SUITE_P(PrismsAndPyramids, PenetrationInto, ::testing::Values(CellType::kPrism6, CellType::kPyramid5),
+                         [](const auto& p) { return cell_name(p.param); });
 
 TEST(Penetration, BodyPushedRightThroughTheOtherIsFound) {
   // The upper square ends at [0,1]×[−4,−3]: no node lies inside the other square, but each surface's

@@ -123,7 +123,9 @@ INSTANTIATE_TEST_SUITE_P(AllCells, HyperelasticEnergyDerivatives,
                                            Case{2, 2, CellType::kQuad9}, Case{3, 1, CellType::kHex8},
                                            Case{3, 2, CellType::kHex20}, Case{3, 2, CellType::kHex27},
                                            Case{2, 1, CellType::kQuad4, true}, Case{2, 2, CellType::kQuad9, true},
-                                           Case{3, 1, CellType::kPrism6}, Case{3, 2, CellType::kPrism18}),
+                                           Case{3, 1, CellType::kPrism6}, Case{3, 2, CellType::kPrism18},
+                                           Case{3, 2, CellType::kPrism15}, Case{3, 1, CellType::kPyramid5},
+                                           Case{3, 2, CellType::kPyramid13}, Case{3, 2, CellType::kPyramid14}),
                          [](const ::testing::TestParamInfo<Case>& c) {
                            if (c.param.tensor) return cell_name(*c.param.tensor) + (c.param.mixed ? "WithTriangles" : "");
                            return "D" + std::to_string(c.param.dim) + "P" + std::to_string(c.param.order);

@@ -7,9 +7,11 @@
 using namespace symcontact;
 
 namespace {
-const CellType kAll[] = {CellType::kLine2, CellType::kLine3, CellType::kTri3,  CellType::kTri6,
-                         CellType::kTet4,  CellType::kTet10, CellType::kQuad4, CellType::kQuad8,
-                         CellType::kQuad9, CellType::kHex8,  CellType::kHex20, CellType::kHex27};
+const CellType kAll[] = {CellType::kLine2,    CellType::kLine3,     CellType::kTri3,     CellType::kTri6,
+                         CellType::kTet4,     CellType::kTet10,     CellType::kQuad4,    CellType::kQuad8,
+                         CellType::kQuad9,    CellType::kHex8,      CellType::kHex20,    CellType::kHex27,
+                         CellType::kPrism6,   CellType::kPrism15,   CellType::kPrism18,  CellType::kPyramid5,
+                         CellType::kPyramid13, CellType::kPyramid14};
 
 std::vector<double> random_point(int d, std::mt19937& rng) {
   std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -70,8 +72,9 @@ TEST(ShapeFunctions, ReproduceLinearFieldsAndGradientsMatchFiniteDifferences) {
 // Hex27 also reproduce the full tensor product Π ξ_i², which Quad8 and Hex20 (serendipity) do not.
 TEST(ShapeFunctions, QuadraticCompletenessAndTensorProducts) {
   std::mt19937 rng(5);
-  const CellType order2[] = {CellType::kTri6,  CellType::kTet10, CellType::kQuad8,
-                             CellType::kQuad9, CellType::kHex20, CellType::kHex27};
+  const CellType order2[] = {CellType::kTri6,    CellType::kTet10,     CellType::kQuad8,    CellType::kQuad9,
+                             CellType::kHex20,   CellType::kHex27,     CellType::kPrism15,  CellType::kPrism18,
+                             CellType::kPyramid13, CellType::kPyramid14};
   for (CellType t : order2) {
     const int n = cell_num_nodes(t), d = cell_dim(t);
     const auto nodes = reference_nodes(t);
@@ -96,5 +99,53 @@ TEST(ShapeFunctions, QuadraticCompletenessAndTensorProducts) {
       EXPECT_NEAR(v, exact, 1e-14) << cell_name(t);
     else
       EXPECT_GT(std::abs(v - exact), 1e-6) << cell_name(t);
+  }
+}
+
+// Conformity: on each facet of a 3D cell, the functions of the nodes off the facet vanish and those of its
+// nodes are the facet type's own (at the facet's point s, mapped into the cell by the facet's vertices), so
+// that a tetrahedron, hexahedron, prism or pyramid sharing that facet agrees with the cell along it.
+TEST(ShapeFunctions, TracesOnFacetsAreTheFacetsFunctions) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  for (CellType t : kAll) {
+    if (cell_dim(t) != 3) continue;
+    const int n = cell_num_nodes(t);
+    const auto nodes = reference_nodes(t);
+    for (int f = 0; f < cell_num_facets(t); ++f) {
+      const CellType ft = cell_facet_type(t, f);
+      const int fn = cell_num_nodes(ft), fv = cell_num_vertices(ft);
+      const CellType flin = fv == 3 ? CellType::kTri3 : CellType::kQuad4;
+      const int* loc = cell_facet_nodes(t, f);
+      for (int trial = 0; trial < 5; ++trial) {
+        double s[2] = {U(rng), U(rng)};
+        if (fv == 3 && s[0] + s[1] > 1) s[0] = 1 - s[0], s[1] = 1 - s[1];
+        double Nl[4], Nf[9], N[27], x[3] = {0, 0, 0};
+        shape_functions(flin, s, Nl, nullptr);
+        shape_functions(ft, s, Nf, nullptr);
+        for (int v = 0; v < fv; ++v)
+          for (int i = 0; i < 3; ++i) x[i] += Nl[v] * nodes[3 * loc[v] + i];
+        shape_functions(t, x, N, nullptr);
+        std::vector<double> expected(n, 0.0);
+        for (int k = 0; k < fn; ++k) expected[loc[k]] = Nf[k];
+        for (int a = 0; a < n; ++a)
+          EXPECT_NEAR(N[a], expected[a], 1e-13) << cell_name(t) << " facet " << f << " node " << a;
+      }
+    }
+  }
+}
+
+// The pyramids' gradients at the apex are their limits along the axis from the base's centre.
+TEST(ShapeFunctions, PyramidGradientsAtTheApexAreTheLimitsAlongTheAxis) {
+  for (CellType t : {CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14}) {
+    const int n = cell_num_nodes(t);
+    std::vector<double> N(n), dN(3 * n), Nn(n), dNn(3 * n);
+    const double apex[3] = {0, 0, 1}, near[3] = {0.5e-9, 0.5e-9, 1 - 1e-9};
+    shape_functions(t, apex, N.data(), dN.data());
+    shape_functions(t, near, Nn.data(), dNn.data());
+    for (int a = 0; a < n; ++a) {
+      EXPECT_EQ(N[a], a == 4 ? 1.0 : 0.0) << cell_name(t);
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(dN[3 * a + i], dNn[3 * a + i], 1e-7) << cell_name(t) << " node " << a;
+    }
   }
 }

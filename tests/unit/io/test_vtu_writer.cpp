@@ -119,6 +119,27 @@ TEST(VtuWriter, Tet10SwapsLastEdgeNodes) {
   EXPECT_TRUE(contains(s, "Name=\"types\" format=\"ascii\">\n          24\n"));
 }
 
+// VTK has no 14-node pyramid: Pyramid14 is written as VTK's 13-node quadratic pyramid (type 27), its
+// edges in VTK's order (0 1) (1 2) (2 3) (3 0) (0 4) (1 4) (2 4) (3 4), the base's centre left out.
+TEST(VtuWriter, Pyramid14IsWrittenAsAQuadraticPyramid) {
+  const testing::TempFolder folder;
+  Mesh m;
+  m.dim = 3;
+  m.x = Eigen::MatrixXd::Random(3, 14);
+  std::vector<Index> cell(14);
+  for (int a = 0; a < 14; ++a) cell[a] = a;
+  m.set_cells(CellType::kPyramid14, cell);
+  VtuWriter w(m);
+  const std::string path = (folder.path() / "pyramid14.vtu").string();
+  w.write(path);
+  const std::string s = testing::read_text(path);
+  EXPECT_TRUE(contains(s, "<Piece NumberOfPoints=\"14\" NumberOfCells=\"1\">"));
+  // Gmsh's m01 m03 m04 m12 m14 m23 m24 m34 are nodes 5..12.
+  EXPECT_TRUE(contains(s, "Name=\"connectivity\" format=\"ascii\">\n          0 1 2 3 4 5 8 10 6 7 9 11 12\n")) << s;
+  EXPECT_TRUE(contains(s, "Name=\"offsets\" format=\"ascii\">\n          13\n"));
+  EXPECT_TRUE(contains(s, "Name=\"types\" format=\"ascii\">\n          27\n"));
+}
+
 TEST(VtuWriter, RawFacetsAndEmptySurface) {
   const testing::TempFolder folder;
   const fs::path& dir = folder.path();

@@ -20,15 +20,15 @@ Eigen::VectorXd ref_point(CellType t, int a) {
 }  // namespace
 
 TEST(CellType, GmshNumbersRoundTrip) {
-  for (int k = 0; k <= static_cast<int>(CellType::kPrism18); ++k) {
+  for (int k = 0; k <= static_cast<int>(CellType::kPyramid14); ++k) {
     const auto t = static_cast<CellType>(k);
     CellType back;
     ASSERT_TRUE(from_gmsh_element_type(gmsh_element_type(t), back));
     EXPECT_EQ(back, t);
   }
   CellType none;
-  EXPECT_FALSE(from_gmsh_element_type(18, none));  // 15-node prism
-  EXPECT_FALSE(from_gmsh_element_type(7, none));   // pyramid
+  EXPECT_FALSE(from_gmsh_element_type(21, none));  // 10-node triangle (order 3)
+  EXPECT_FALSE(from_gmsh_element_type(29, none));  // 20-node tetrahedron (order 3)
 }
 
 // The reflection maps each node to the node at the mirrored reference point (ξ ↔ η swapped).
@@ -166,4 +166,78 @@ TEST(CellType, VtkOrderOfHexahedraMatchesVtkDefinition) {
   EXPECT_EQ(vtk_cell_type(CellType::kHex8), 12);
   EXPECT_EQ(vtk_cell_type(CellType::kHex20), 25);
   EXPECT_EQ(vtk_cell_type(CellType::kHex27), 29);
+}
+
+// Every node is the mean of its node_vertices() in the reference cell (whose order-1 map is affine on
+// each edge and face), for every type.
+TEST(CellType, NodesAreTheMeansOfTheirVertices) {
+  for (int k = 1; k <= static_cast<int>(CellType::kPyramid14); ++k) {
+    const auto t = static_cast<CellType>(k);
+    for (int a = 0; a < cell_num_nodes(t); ++a) {
+      const std::vector<int> from = node_vertices(t, a);
+      Eigen::VectorXd x = Eigen::VectorXd::Zero(cell_dim(t));
+      for (int v : from) {
+        EXPECT_LT(v, cell_num_vertices(t));
+        x += ref_point(t, v) / static_cast<double>(from.size());
+      }
+      EXPECT_LT((ref_point(t, a) - x).norm(), 1e-15) << cell_name(t) << " node " << a;
+    }
+  }
+}
+
+// The pyramids: the reflection mirrors ξ and η; each facet (the four triangles, then the base) has its
+// vertices on one face of the reference pyramid, its right-hand normal out of it and its other nodes at
+// the midpoints of its edges (and the base's centre); VTK's quadratic pyramid (vtkQuadraticPyramid.h)
+// lists the midpoints of (0 1) (1 2) (2 3) (3 0) (0 4) (1 4) (2 4) (3 4).
+TEST(CellType, PyramidFacetsReflectionAndVtkOrder) {
+  for (CellType t : {CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14}) {
+    const int* p = cell_reflection(t);
+    for (int a = 0; a < cell_num_nodes(t); ++a) {
+      Eigen::VectorXd x = ref_point(t, a);
+      std::swap(x[0], x[1]);
+      EXPECT_LT((ref_point(t, p[a]) - x).norm(), 1e-15) << cell_name(t) << " node " << a;
+    }
+    const Eigen::Vector3d centre(0.4, 0.4, 0.2);
+    for (int f = 0; f < cell_num_facets(t); ++f) {
+      const CellType ft = cell_facet_type(t, f);
+      const int* loc = cell_facet_nodes(t, f);
+      const int nfv = cell_num_vertices(ft);
+      EXPECT_EQ(nfv, f < 4 ? 3 : 4);
+      const Eigen::Vector3d a = ref_point(t, loc[1]) - ref_point(t, loc[0]);
+      const Eigen::Vector3d b = ref_point(t, loc[nfv - 1]) - ref_point(t, loc[0]);
+      const Eigen::Vector3d normal = a.cross(b);
+      EXPECT_GT(normal.dot(ref_point(t, loc[0]) - centre), 0.0) << cell_name(t) << " facet " << f;
+      for (int k = 0; k < cell_num_nodes(ft); ++k) {
+        EXPECT_NEAR(normal.dot(ref_point(t, loc[k]) - ref_point(t, loc[0])), 0.0, 1e-15) << "facet " << f;
+        if (k < nfv || k >= 2 * nfv) continue;
+        const Eigen::Vector3d m = 0.5 * (ref_point(t, loc[k - nfv]) + ref_point(t, loc[(k - nfv + 1) % nfv]));
+        EXPECT_LT((ref_point(t, loc[k]) - m).norm(), 1e-15) << cell_name(t) << " facet " << f << " node " << k;
+      }
+    }
+    const int* vtk = vtk_node_order(t);
+    const int edges[8][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {1, 4}, {2, 4}, {3, 4}};
+    for (int k = 0; k < vtk_num_nodes(t); ++k) {
+      const Eigen::Vector3d x = k < 5 ? ref_point(t, k) : 0.5 * (ref_point(t, edges[k - 5][0]) + ref_point(t, edges[k - 5][1]));
+      EXPECT_LT((ref_point(t, vtk[k]) - x).norm(), 1e-15) << cell_name(t) << " VTK node " << k;
+    }
+    EXPECT_EQ(vtk_cell_type(t), cell_order(t) == 1 ? 14 : 27);
+  }
+  EXPECT_EQ(vtk_num_nodes(CellType::kPyramid14), 13);
+}
+
+// The 15-node prism is the 18-node one without the sides' centres, in its nodes, facets, reflection and
+// VTK order (VTK_QUADRATIC_WEDGE, the first 15 of the biquadratic wedge's).
+TEST(CellType, Prism15IsPrism18WithoutTheSidesCentres) {
+  const CellType t = CellType::kPrism15, u = CellType::kPrism18;
+  for (int a = 0; a < 15; ++a) {
+    EXPECT_LT((ref_point(t, a) - ref_point(u, a)).norm(), 1e-15);
+    EXPECT_EQ(cell_reflection(t)[a], cell_reflection(u)[a]);
+    EXPECT_EQ(vtk_node_order(t)[a], vtk_node_order(u)[a]);
+  }
+  for (int f = 0; f < 5; ++f) {
+    EXPECT_EQ(cell_facet_type(t, f), f < 2 ? CellType::kTri6 : CellType::kQuad8);
+    for (int k = 0; k < cell_num_nodes(cell_facet_type(t, f)); ++k)
+      EXPECT_EQ(cell_facet_nodes(t, f)[k], cell_facet_nodes(u, f)[k]);
+  }
+  EXPECT_EQ(vtk_cell_type(t), 26);
 }

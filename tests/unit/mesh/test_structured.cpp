@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <set>
 #include <tuple>
 
@@ -132,7 +134,7 @@ TEST(Mesh, MixedRectangleMeshHasBlocksOfBothTypes) {
 // Prisms: triangles at z = 0 and 1, quadrilaterals on the sides, each group of one type and located
 // on the cells with outward normals; every cell positive, reflected ones turned back.
 TEST(Mesh, PrismMeshHasGroupsOfBothFacetTypes) {
-  Mesh m = prism_mesh(Vec3(0, 0, 0), Vec3(1, 2, 3), 2, 3, 4);
+  Mesh m = prism_mesh(CellType::kPrism6, Vec3(0, 0, 0), Vec3(1, 2, 3), 2, 3, 4);
   EXPECT_EQ(m.num_cells(), 2 * 2 * 3 * 4);
   EXPECT_NO_THROW(m.check());
   for (const auto& [name, area, type] : {std::tuple{"zmin", 2.0, CellType::kTri3}, std::tuple{"zmax", 2.0, CellType::kTri3},
@@ -153,7 +155,7 @@ TEST(Mesh, PrismMeshHasGroupsOfBothFacetTypes) {
   EXPECT_NO_THROW(m.check());
 }
 
-// Cells of another order or facet type cannot join a mesh; types of one order and facet type can.
+// Cells of another order or of another quadrilateral face cannot join a mesh; the others can.
 TEST(Mesh, AddCellsRefusesTypesOfAnotherOrder) {
   Mesh m;
   const Index tri[3] = {0, 1, 2};
@@ -173,15 +175,56 @@ TEST(Mesh, AddCellsRefusesTypesOfAnotherOrder) {
   EXPECT_EQ(m.cell(3) - m.cells.data(), 11);
   EXPECT_EQ(m.max_nodes_per_cell(), 4);
   EXPECT_EQ(m.cell_types_label(), "tri3 (2) + quad4 (2)");
-  // 3D: prisms share triangles with tetrahedra and quadrilaterals with hexahedra; tetrahedra and hexahedra
-  // share nothing (Gmsh puts pyramids between them).
+  // 3D: tetrahedra, hexahedra, prisms and pyramids of one order join (pyramids between tetrahedra and
+  // hexahedra); an 8-node quadrilateral face cannot meet a 9-node one.
   Mesh solid;
   solid.dim = 3;
   const Index tet[4] = {0, 1, 2, 3}, prism[6] = {0, 1, 2, 3, 4, 5}, hex[8] = {0, 1, 2, 3, 4, 5, 6, 7};
   solid.add_cells(CellType::kTet4, tet, 1);
   solid.add_cells(CellType::kPrism6, prism, 1);
-  EXPECT_THROW(solid.add_cells(CellType::kHex8, hex, 1), std::invalid_argument);
-  EXPECT_TRUE(compatible_cell_types(CellType::kPrism6, CellType::kHex8));
-  EXPECT_FALSE(compatible_cell_types(CellType::kTet4, CellType::kHex8));
+  solid.add_cells(CellType::kHex8, hex, 1);
+  solid.add_cells(CellType::kPyramid5, hex, 1);
+  EXPECT_EQ(solid.cell_types_label(), "tet4 (1) + prism6 (1) + hex8 (1) + pyramid5 (1)");
+  EXPECT_THROW(solid.add_cells(CellType::kTet10, hex, 0), std::invalid_argument);
+  EXPECT_TRUE(compatible_cell_types(CellType::kTet10, CellType::kHex27));
+  EXPECT_TRUE(compatible_cell_types(CellType::kPyramid13, CellType::kHex20));
+  EXPECT_TRUE(compatible_cell_types(CellType::kPrism15, CellType::kPyramid13));
+  EXPECT_FALSE(compatible_cell_types(CellType::kHex20, CellType::kHex27));
+  EXPECT_FALSE(compatible_cell_types(CellType::kPyramid14, CellType::kPrism15));
   EXPECT_FALSE(compatible_cell_types(CellType::kTet10, CellType::kPrism6));
+}
+
+// Pyramids: six per box, the box's faces their bases; the groups are quadrilaterals of the pyramids'
+// bases with outward normals; the cells fill the box; a reflected pyramid is found and turned back, and one
+// whose apex went through its base is refused by the mesh checks.
+TEST(Mesh, PyramidMeshFillsTheBoxAndItsChecksSeeInvertedPyramids) {
+  for (CellType t : {CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14}) {
+    Mesh m = pyramid_mesh(t, Vec3(0, 0, 0), Vec3(1, 2, 3), 2, 3, 4);
+    EXPECT_EQ(m.num_cells(), 6 * 2 * 3 * 4);
+    EXPECT_NO_THROW(m.check());
+    for (const auto& [name, area] : {std::pair{"zmin", 2.0}, std::pair{"xmax", 6.0}, std::pair{"ymin", 3.0}}) {
+      const FacetGroup& g = m.facet_groups.at(name);
+      EXPECT_EQ(m.facet_type_of(g), cell_facet_type(t, 4)) << name;
+      Eigen::VectorXd n;
+      EXPECT_NEAR(facet_group_measure(m, g, &n), area, 1e-12) << name;
+      EXPECT_NEAR(n.norm(), area, 1e-12) << name;
+    }
+    double volume = 0.0;
+    for (Index c = 0; c < m.num_cells(); ++c) {
+      const Index* v = m.cell(c);  // a straight pyramid: a third of its base times its height
+      const Vec3 a = m.x.col(v[1]) - m.x.col(v[0]), b = m.x.col(v[3]) - m.x.col(v[0]), h = m.x.col(v[4]) - m.x.col(v[0]);
+      volume += a.cross(b).dot(h) / 3.0;
+    }
+    EXPECT_NEAR(volume, 6.0, 1e-12) << cell_name(t);
+  }
+  Mesh m = pyramid_mesh(CellType::kPyramid5, Vec3(0, 0, 0), Vec3(1, 1, 1), 1, 1, 1);
+  const int* p = cell_reflection(CellType::kPyramid5);
+  std::vector<Index> c0(m.cell(0), m.cell(0) + 5);
+  for (int a = 0; a < 5; ++a) m.cells[a] = c0[p[a]];
+  EXPECT_LT(simplex_determinant(m, 0), 0.0);
+  EXPECT_EQ(m.orient_cells(), 1);
+  EXPECT_NO_THROW(m.check());
+  m.x.col(m.cell(0)[4]) = 0.5 * (m.x.col(m.cell(0)[0]) + m.x.col(m.cell(0)[2])) - 0.1 * Vec3(0, 0, 1);
+  // The apex of cell 0 (the box's centre) pushed through the base z = 0: every cell around it is inverted.
+  EXPECT_THROW(m.check(), InputError);
 }
