@@ -182,6 +182,12 @@ void expect_header_figures(const std::string& example, const SolvedCase& c) {
     EXPECT_EQ(c.model->bodies()[0]->mesh.first_cell_type(), CellType::kPrism6) << example;
     EXPECT_EQ(c.model->bodies()[1]->mesh.first_cell_type(), CellType::kPrism6) << example;
   }
+  if (example == "hex_dominant_3d/hex_dominant.toml") {
+    // Header: the V3 contact patch test in 3D on hex-dominant meshes (hexahedra at the interface,
+    // tetrahedra and pyramids), within 1e-8.
+    expect_v3_exact(example, c, 3);
+    for (const auto& body : c.model->bodies()) EXPECT_EQ(body->mesh.cell_type_counts().size(), 3u) << example;
+  }
   if (example == "cracked_block_2d/cracked_block.toml") {
     // Header: the V3 contact patch test as one body (the same loads and supports), exact to round-off.
     expect_v3_exact(example, c);
@@ -240,6 +246,11 @@ TEST_P(ExampleVariant, SolvesAndPassesItsChecks) {
     expect_v3_exact(v.example + " " + v.name, *c, 3);
     for (const auto& body : c->model->bodies()) EXPECT_EQ(body->mesh.first_cell_type(), CellType::kPrism18);
   }
+  if (v.example == "hex_dominant_3d/hex_dominant.toml") {
+    // The V3 contact patch test on Hex27, Pyramid14 and Tet10 (Quad9 contact faces), exact to round-off.
+    expect_v3_exact(v.example + " " + v.name, *c, 3);
+    for (const auto& body : c->model->bodies()) EXPECT_EQ(body->mesh.first_cell_type(), CellType::kHex27);
+  }
 }
 
 /// The contact examples in four variants each; a coarser mesh where the example's own would make the zoo slow.
@@ -280,6 +291,8 @@ std::vector<VariantCase> variants() {
   // The prism blocks on 18-node prisms: V3 through their 6-node triangles and their 9-node sides.
   out.push_back({"prism_blocks_3d/prism_blocks.toml", "order2", oring_p2, {}});
   out.push_back({"prism_blocks_3d/prism_sides.toml", "order2", oring_p2, {}});
+  // The hex-dominant blocks at order 2: Hex27, Pyramid14 and Tet10.
+  out.push_back({"hex_dominant_3d/hex_dominant.toml", "order2", oring_p2, {}});
   return out;
 }
 

@@ -3,12 +3,17 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <iterator>
+#include <fstream>
 #include <map>
+#include <mutex>
+#include <optional>
+#include <sstream>
 #include <unordered_map>
 
 #include "symcontact/core/error.hpp"
@@ -139,22 +144,74 @@ void check_predicted_size(const std::string& path, const MeshReadOptions& opt) {
                        " cells; use a larger mesh size, or pass --allow-large-mesh to mesh it anyway");
 }
 
-/// Gmsh's name of element type `type` ("Pyramid 5", ...). The types symcontact refuses that Gmsh makes
-/// from a .geo (pyramids, 15-node prisms) are named here: Gmsh 4.8's getElementProperties() of a 15-node
-/// prism frees with delete an array it allocated with new[] (AddressSanitizer reports it).
+/// Gmsh's name of element type `type` ("Triangle 10", ...).
 std::string gmsh_type_name(int type) {
-  switch (type) {
-    case 7: return "Pyramid 5";
-    case 14: return "Pyramid 14";
-    case 18: return "Prism 15";
-    case 19: return "Pyramid 13";
-    default: break;
-  }
   std::string name;
   int d, o, nn, np;
   std::vector<double> lc;
   gmsh::model::mesh::getElementProperties(type, name, d, o, nn, lc, np);
   return name;
+}
+
+/// Whether Gmsh has built pyramids in this process. Gmsh 4.8 keeps state across gmsh::finalize() that
+/// its next session's pyramid builder reads after it is freed (an Eigen assertion aborts the process, in
+/// RelocateVerticesOfPyramids()): a second .geo whose volumes are bounded by quadrilaterals is refused
+/// instead (refuse_second_pyramid_meshing()).
+std::atomic<bool> gmsh_built_pyramids{false};
+
+/// Whether the current Gmsh model holds elements of `dim` whose type satisfies `pred`.
+template <class Pred>
+bool has_elements(int dim, Pred pred) {
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, dim, -1);
+  for (int t : types) {
+    CellType ct;
+    if (from_gmsh_element_type(t, ct) && pred(ct)) return true;
+  }
+  return false;
+}
+
+/// After pyramids in this process, meshes the surfaces first and refuses a 3D mesh with quadrilateral faces,
+/// where Gmsh would build pyramids again (gmsh_built_pyramids).
+void refuse_second_pyramid_meshing(const std::string& path, const MeshReadOptions& opt) {
+  if (!gmsh_built_pyramids || opt.dim != 3) return;
+  gmsh::model::mesh::generate(2);
+  throw_on_gmsh_errors(path, "meshing the geometry");
+  if (has_elements(2, [](CellType t) { return cell_shape(t) == CellShape::kTensor; }))
+    throw InputError(path, "", "Gmsh 4.8 cannot build pyramids twice in one process, and a .geo meshed before "
+                                "in this run already made some; mesh this file to a .msh once (gmsh -3 -order " +
+                                    std::to_string(opt.order) + " " + path + ") and use the .msh");
+}
+
+/// The meshes of the .geo files that built pyramids in this process, by geo_read_key(): read again (a
+/// Python script building several models of one hex-dominant body) they are taken from here, as Gmsh
+/// cannot build them a second time (gmsh_built_pyramids).
+std::mutex pyramid_meshes_mutex;
+std::map<std::string, MeshFile> pyramid_meshes;
+
+/// What a .geo's mesh depends on: its path, its text and the reading options.
+std::string geo_read_key(const std::string& path, const MeshReadOptions& o) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream key;
+  key << path << '\n' << in.rdbuf() << '\n' << o.dim << ' ' << o.order << ' ' << std::hexfloat << o.mesh_size << ' '
+      << o.max_predicted_cells << ' ' << static_cast<int>(o.geo_commands);
+  for (const auto& [name, value] : o.geo_parameters) key << ' ' << name << '=' << value;
+  return key.str();
+}
+
+std::optional<MeshFile> remembered_pyramid_mesh(const std::string& key) {
+  const std::lock_guard<std::mutex> lock(pyramid_meshes_mutex);
+  const auto it = pyramid_meshes.find(key);
+  if (it == pyramid_meshes.end()) return std::nullopt;
+  return it->second;
+}
+
+void remember_pyramid_mesh(const std::string& key, const MeshFile& f) {
+  bool pyramids = false;
+  for (const MeshFile::Block& b : f.all_cells) pyramids = pyramids || cell_shape(b.type) == CellShape::kPyramid;
+  if (!pyramids) return;
+  const std::lock_guard<std::mutex> lock(pyramid_meshes_mutex);
+  pyramid_meshes.emplace(key, f);
 }
 
 MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, bool is_geo) {
@@ -165,8 +222,10 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
       if (opt.max_predicted_cells > 0) check_predicted_size(path, opt);
       gmsh::option::setNumber("Mesh.MeshSizeMax", opt.mesh_size);
     }
+    refuse_second_pyramid_meshing(path, opt);
     gmsh::model::mesh::generate(opt.dim);
     throw_on_gmsh_errors(path, "meshing the geometry");
+    if (has_elements(3, [](CellType t) { return cell_shape(t) == CellShape::kPyramid; })) gmsh_built_pyramids = true;
   }
   // Raise or lower the element order when the file's differs from the problem's.
   {
@@ -215,8 +274,8 @@ MeshFile read_with_gmsh(const std::string& path, const MeshReadOptions& opt, boo
       if (!from_gmsh_element_type(types[b], ct))
         throw InputError(path, "", "unsupported element type '" + gmsh_type_name(types[b]) +
                                        "': symcontact uses triangles and quadrilaterals in 2D, tetrahedra, "
-                                       "hexahedra and prisms in 3D, of order 1 or 2 (not 15-node prisms, pyramids "
-                                       "nor order 3 and above)");
+                                       "hexahedra, prisms and pyramids in 3D, of order 1 or 2 (not order 3 and "
+                                       "above)");
       MeshFile::Block blk{ct, {}, {}};
       blk.nodes.reserve(nodes[b].size());
       blk.tags.assign(tags[b].begin(), tags[b].end());
@@ -276,9 +335,14 @@ MeshFile read_mesh_file(const std::string& path, const MeshReadOptions& options)
   if (ext == ".geo" && options.geo_commands == GeoCommands::kRefuse) check_geo_commands(path);
   // Gmsh's own parser trusts the file's structure: check it first (msh_validation.hpp).
   if (ext == ".msh") validate_msh_file(path);
+  const std::string key = ext == ".geo" ? geo_read_key(path, options) : std::string();
+  if (ext == ".geo")
+    if (std::optional<MeshFile> f = remembered_pyramid_mesh(key)) return *f;
   GmshInstance gmsh_instance(options.verbose, ext == ".geo" ? options.geo_parameters : std::map<std::string, double>{});
   try {
-    return read_with_gmsh(path, options, ext == ".geo");
+    MeshFile f = read_with_gmsh(path, options, ext == ".geo");
+    if (ext == ".geo") remember_pyramid_mesh(key, f);
+    return f;
   } catch (const InputError&) {
     throw;
   } catch (const std::string& s) {
@@ -369,9 +433,9 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
     if (first && !compatible_cell_types(b.type, first->type))
       throw InputError(file.path, group_key,
                        "the body mixes element types that cannot share an edge or a face (" + cell_name(first->type) +
-                           " and " + cell_name(b.type) + "): a body may mix triangles and quadrilaterals of one "
-                           "order; make each part with its own type a body of its own, or mesh all parts "
-                           "with one order");
+                           " and " + cell_name(b.type) + "): a body may mix cell types of one order whose "
+                           "quadrilateral faces are of one type; make each part with its own type a body of "
+                           "its own, or mesh all parts with one order");
     if (!first) first = &b;
   }
   if (!first)
