@@ -371,7 +371,17 @@ Mesh pyramid_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny,
     return it->second;
   };
   const auto mid = [](const P& a, const P& b) { return P{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}; };
-  static const char* const kGroup[6] = {"zmin", "ymin", "xmin", "xmax", "ymax", "zmax"};  // the Hex8 facets' sides
+  // The group of a face on the box's boundary (its corners on one plane x, y or z = lo or hi), or null.
+  const auto box_side = [&](const std::array<P, 4>& face) -> const char* {
+    static const char* const kNames[3][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}, {"zmin", "zmax"}};
+    for (int axis = 0; axis < 3; ++axis) {
+      const int c = face[0][axis];
+      bool flat = true;
+      for (const P& p : face) flat = flat && p[axis] == c;
+      if (flat && (c == 0 || c == S * n[axis])) return kNames[axis][c == 0 ? 0 : 1];
+    }
+    return nullptr;
+  };
   const int face_nodes = cell_num_nodes(cell_facet_type(type, 4));
   std::vector<Index> cells;
   for (int k = 0; k < nz; ++k)
@@ -395,9 +405,9 @@ Mesh pyramid_mesh(CellType type, const Vec3& lo, const Vec3& hi, int nx, int ny,
               nodes.push_back(mid(v[ends[0]], v[ends[ends.size() / 2]]));
             }
           for (const P& p : nodes) cells.push_back(id(p));
-          const int side = f == 0 ? k : (f == 5 ? nz - 1 - k : (f == 1 ? j : (f == 4 ? ny - 1 - j : (f == 2 ? i : nx - 1 - i))));
-          if (side != 0) continue;
-          FacetGroup& g = m.facet_groups[kGroup[f]];  // vertices; locate_facets() fills in the rest
+          const char* group = box_side(face);
+          if (!group) continue;
+          FacetGroup& g = m.facet_groups[group];  // vertices; locate_facets() fills in the rest
           g.type = cell_facet_type(type, 4);
           for (int a = 0; a < face_nodes; ++a) g.facets.push_back(id(face[a % 4]));
         }
