@@ -1,6 +1,7 @@
 // The stiffness system solved on PETSc by CG + GAMG (src/symcontact/distributed/gamg_elasticity.hpp) against
 // the sparse Cholesky solve of the same system, on one rank and, registered a second time under mpirun, on
-// two: the same answer to 1e-8, and iteration counts that stay flat as the mesh is refined.
+// two, each rank assembling the stiffness of its own cells: the same answer to 1e-8, and iteration counts
+// that stay flat as the mesh is refined.
 
 #include "symcontact/distributed/gamg_elasticity.hpp"
 
@@ -15,6 +16,8 @@
 
 namespace symcontact {
 namespace {
+
+const PetscSession* g_petsc = nullptr;  ///< main()'s
 
 /// The same system solved by a sparse Cholesky factorisation of K_ff (Eigen's simplicial LLᵀ): the reference.
 VectorXd cholesky_solution(const BlockSystem& s) {
@@ -45,14 +48,16 @@ VectorXd cholesky_solution(const BlockSystem& s) {
   return u;
 }
 
-GamgResult solve(const BlockSystem& b) {
+/// The block's system solved with this rank's share of the stiffness (its cells).
+GamgResult solve(int dim, int n) {
+  const BlockSystem b = clamped_block_system(dim, n, g_petsc->rank(), g_petsc->size());
   return solve_elasticity_gamg(b.K_lower, b.f, b.fixed, b.fixed_values, b.mesh.x);
 }
 
 TEST(GamgElasticity, EqualsTheCholeskySolveIn2DAnd3D) {
   for (const auto& [dim, n] : {std::pair{2, 24}, std::pair{3, 8}}) {
     const BlockSystem b = clamped_block_system(dim, n);
-    const GamgResult r = solve(b);
+    const GamgResult r = solve(dim, n);
     ASSERT_TRUE(r.converged) << r.reason;
     const VectorXd u = cholesky_solution(b);
     const double error = (r.u - u).norm() / u.norm();
@@ -65,17 +70,30 @@ TEST(GamgElasticity, EqualsTheCholeskySolveIn2DAnd3D) {
   }
 }
 
+// The parts' shares of the stiffness (their cells') sum to the whole stiffness, whatever the number of parts.
+TEST(GamgElasticity, TheSharesOfTheStiffnessSumToIt) {
+  const SparseMatrix whole = clamped_block_system(3, 5).K_lower;
+  for (const int parts : {2, 3}) {
+    SparseMatrix sum(whole.rows(), whole.cols());
+    for (int p = 0; p < parts; ++p) {
+      const SparseMatrix share = clamped_block_system(3, 5, p, parts).K_lower;
+      EXPECT_LT(share.nonZeros(), whole.nonZeros());
+      sum += share;
+    }
+    EXPECT_LE((sum - whole).cwiseAbs().sum(), 1e-12 * whole.cwiseAbs().sum()) << parts << " parts";
+  }
+}
+
 // Smoothed aggregation with the rigid-body modes: the CG iterations stay within ±30 % of their mean as the
 // cube is refined from 8 to 20 divisions (3D: 2.2e3 to 2.8e4 DOFs).
 TEST(GamgElasticity, IterationsStayFlatUnderRefinement) {
   std::vector<int> its;
   for (const int n : {8, 12, 16, 20}) {
-    const BlockSystem b = clamped_block_system(3, n);
-    const GamgResult r = solve(b);
+    const GamgResult r = solve(3, n);
     ASSERT_TRUE(r.converged) << r.reason;
     its.push_back(r.iterations);
-    std::printf("3D, %d divisions, %lld DOFs: %d CG iterations, %d levels\n", n,
-                static_cast<long long>(b.f.size()), r.iterations, r.levels);
+    std::printf("3D, %d divisions, %lld DOFs: %d CG iterations, %d levels\n", n, static_cast<long long>(r.u.size()),
+                r.iterations, r.levels);
   }
   double mean = 0.0;
   for (int i : its) mean += i;
@@ -89,6 +107,7 @@ TEST(GamgElasticity, IterationsStayFlatUnderRefinement) {
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
   const symcontact::PetscSession petsc(&argc, &argv);
+  symcontact::g_petsc = &petsc;
   // Every rank runs every test (the solves are collective); only rank 0 reports.
   if (petsc.rank() != 0) delete ::testing::UnitTest::GetInstance()->listeners().Release(
       ::testing::UnitTest::GetInstance()->listeners().default_result_printer());

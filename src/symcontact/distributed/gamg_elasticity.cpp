@@ -74,28 +74,39 @@ RowRange my_rows(int dim, Index num_nodes) {
   return {dim, num_nodes * rank / size, num_nodes * (rank + 1) / size};
 }
 
-/// The distributed matrix of block size dim, each rank inserting its rows of K (preallocated exactly).
-void assemble_matrix(const SparseMatrix& K_lower, const RowRange& mine, Mat A) {
-  const auto R = full_rows(K_lower);
-  std::vector<PetscInt> d_nnz(mine.local(), 0), o_nnz(mine.local(), 0);
-  for (Index i = mine.row0(); i < mine.row1(); ++i)
-    for (auto it = decltype(R)::InnerIterator(R, i); it; ++it) ++(mine.owns(it.col()) ? d_nnz : o_nnz)[i - mine.row0()];
-  const PetscInt n = static_cast<PetscInt>(K_lower.rows());
-  check(MatSetSizes(A, mine.local(), mine.local(), n, n), "MatSetSizes");
-  check(MatSetType(A, MATAIJ), "MatSetType");
-  check(MatSetBlockSize(A, mine.dim), "MatSetBlockSize");
-  check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
-  check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
+/// Adds every entry of this rank's share R (full rows) to A, in any row: PETSc sends the entries of other
+/// ranks' rows to them at the assembly.
+void add_share(const Eigen::SparseMatrix<double, Eigen::RowMajor, Index>& R, Mat A) {
   std::vector<PetscInt> cols;
-  for (Index i = mine.row0(); i < mine.row1(); ++i) {
+  for (Index i = 0; i < R.rows(); ++i) {
     const Index begin = R.outerIndexPtr()[i], count = R.outerIndexPtr()[i + 1] - begin;
+    if (count == 0) continue;
     cols.assign(R.innerIndexPtr() + begin, R.innerIndexPtr() + begin + count);
     const PetscInt row = static_cast<PetscInt>(i);
-    check(MatSetValues(A, 1, &row, static_cast<PetscInt>(count), cols.data(), R.valuePtr() + begin, INSERT_VALUES),
+    check(MatSetValues(A, 1, &row, static_cast<PetscInt>(count), cols.data(), R.valuePtr() + begin, ADD_VALUES),
           "MatSetValues");
   }
   check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
+/// The distributed matrix of block size dim, the sum of the ranks' shares of K: their entries first added to
+/// PETSc's preallocator (which learns every owned row's pattern, off-rank entries included), then to A.
+void assemble_matrix(const SparseMatrix& K_share, const RowRange& mine, Mat A) {
+  const auto R = full_rows(K_share);
+  const PetscInt n = static_cast<PetscInt>(K_share.rows());
+  Owned<Mat, MatDestroy> pattern;
+  check(MatCreate(PETSC_COMM_WORLD, &pattern.object), "MatCreate");
+  for (Mat M : {pattern.object, A}) {
+    check(MatSetSizes(M, mine.local(), mine.local(), n, n), "MatSetSizes");
+    check(MatSetBlockSize(M, mine.dim), "MatSetBlockSize");
+  }
+  check(MatSetType(pattern.object, MATPREALLOCATOR), "MatSetType");
+  check(MatSetUp(pattern.object), "MatSetUp");
+  add_share(R, pattern.object);
+  check(MatSetType(A, MATAIJ), "MatSetType");
+  check(MatPreallocatorPreallocate(pattern.object, PETSC_TRUE, A), "MatPreallocatorPreallocate");
+  add_share(R, A);
 }
 
 /// b = f and u = ū on the fixed rows, then the fixed rows and columns of A made identity rows, ū moved into b.
@@ -177,18 +188,18 @@ VectorXd gather_to_all(Vec u) {
 
 }  // namespace
 
-GamgResult solve_elasticity_gamg(const SparseMatrix& K_lower, const VectorXd& f, const std::vector<Index>& fixed,
+GamgResult solve_elasticity_gamg(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
                                  const VectorXd& fixed_values, const Eigen::MatrixXd& x, const GamgOptions& options) {
   const int dim = static_cast<int>(x.rows());
   const Index n = dim * x.cols();
-  if (K_lower.rows() != n || K_lower.cols() != n || f.size() != n ||
+  if (K_share.rows() != n || K_share.cols() != n || f.size() != n ||
       fixed_values.size() != static_cast<Index>(fixed.size()))
     throw std::invalid_argument("solve_elasticity_gamg: K, f, the fixed values and the coordinates do not match");
   const RowRange mine = my_rows(dim, x.cols());
   const auto t_setup = std::chrono::steady_clock::now();
   Owned<Mat, MatDestroy> A;
   check(MatCreate(PETSC_COMM_WORLD, &A.object), "MatCreate");
-  assemble_matrix(K_lower, mine, A.object);
+  assemble_matrix(K_share, mine, A.object);
   Owned<Vec, VecDestroy> b, u;
   check(MatCreateVecs(A.object, &u.object, &b.object), "MatCreateVecs");
   impose_fixed(f, fixed, fixed_values, mine, A.object, u.object, b.object);

@@ -15,9 +15,10 @@
 /// aggregation interpolates them exactly on every level (Vaněk, Mandel & Brezina, Computing 56 (1996)),
 /// which keeps the iteration count bounded as the mesh is refined.
 ///
-/// Distribution: each rank owns a contiguous range of nodes (rows dim·[first, last)) and inserts its rows
-/// of K, given on every rank; the assembly itself is not yet partitioned. The answer is gathered on every
-/// rank. Stopping: ‖r‖₂ ≤ relative_tolerance · ‖b‖₂, b the right-hand side after the fixed values moved
+/// Distribution: each rank owns a contiguous range of nodes (rows dim·[first, last)) and passes its share of
+/// K, the shares summing to K (the stiffness of the cells it assembles: clamped_block_system() gives each
+/// rank a contiguous range of cells); PETSc adds the entries that fall in other ranks' rows where they
+/// belong. The answer is gathered on every rank. Stopping: ‖r‖₂ ≤ relative_tolerance · ‖b‖₂, b the right-hand side after the fixed values moved
 /// into it: a test relative to the problem's own load, the same in any units.
 
 #include <string>
@@ -54,10 +55,11 @@ struct GamgResult {
   int levels = 0;                 ///< multigrid levels GAMG built
 };
 
-/// K_lower: the lower triangle of the stiffness, n × n with n = dim · num_nodes;
-/// f: the load on every DOF; fixed / fixed_values: the Dirichlet DOFs and their values; x: dim × num_nodes
-/// node coordinates. Collective over PETSC_COMM_WORLD; every rank passes the same data.
-GamgResult solve_elasticity_gamg(const SparseMatrix& K_lower, const VectorXd& f,
+/// K_share: this rank's share of the lower triangle of the stiffness, n × n with n = dim · num_nodes (on one
+/// rank, the whole of it); f: the load on every DOF; fixed / fixed_values: the Dirichlet DOFs and their
+/// values; x: dim × num_nodes node coordinates. Collective over PETSC_COMM_WORLD; every rank passes the same
+/// f, fixed DOFs and coordinates.
+GamgResult solve_elasticity_gamg(const SparseMatrix& K_share, const VectorXd& f,
                                  const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                  const Eigen::MatrixXd& x, const GamgOptions& options = {});
 
