@@ -7,9 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iterator>
-#include <fstream>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -189,7 +189,8 @@ void refuse_second_pyramid_meshing(const std::string& path, const MeshReadOption
 std::mutex pyramid_meshes_mutex;
 std::map<std::string, MeshFile> pyramid_meshes;
 
-/// What a .geo's mesh depends on: its path, its text and the reading options.
+/// What a .geo's mesh depends on: its path, its text and the reading options (not the text of the files it
+/// includes).
 std::string geo_read_key(const std::string& path, const MeshReadOptions& o) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream key;
