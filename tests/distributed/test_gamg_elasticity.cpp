@@ -61,8 +61,9 @@ TEST(GamgElasticity, EqualsTheCholeskySolveIn2DAnd3D) {
     ASSERT_TRUE(r.converged) << r.reason;
     const VectorXd u = cholesky_solution(b);
     const double error = (r.u - u).norm() / u.norm();
-    std::printf("dim %d, %lld DOFs: %d CG iterations, %d levels, relative residual %.2e, against Cholesky %.2e\n",
-                dim, static_cast<long long>(u.size()), r.iterations, r.levels, r.relative_residual, error);
+    if (g_petsc->rank() == 0)
+      std::printf("dim %d, %lld DOFs: %d CG iterations, %d levels, relative residual %.2e, against Cholesky %.2e\n",
+                  dim, static_cast<long long>(u.size()), r.iterations, r.levels, r.relative_residual, error);
     EXPECT_LE(r.relative_residual, 1e-10);
     EXPECT_LE(error, 1e-8);
     for (std::size_t k = 0; k < b.fixed.size(); ++k)
@@ -92,8 +93,9 @@ TEST(GamgElasticity, IterationsStayFlatUnderRefinement) {
     const GamgResult r = solve(3, n);
     ASSERT_TRUE(r.converged) << r.reason;
     its.push_back(r.iterations);
-    std::printf("3D, %d divisions, %lld DOFs: %d CG iterations, %d levels\n", n, static_cast<long long>(r.u.size()),
-                r.iterations, r.levels);
+    if (g_petsc->rank() == 0)
+      std::printf("3D, %d divisions, %lld DOFs: %d CG iterations, %d levels\n", n, static_cast<long long>(r.u.size()),
+                  r.iterations, r.levels);
   }
   double mean = 0.0;
   for (int i : its) mean += i;
