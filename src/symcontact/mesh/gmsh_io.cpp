@@ -153,10 +153,10 @@ std::string gmsh_type_name(int type) {
   return name;
 }
 
-/// Whether Gmsh has built pyramids in this process. Gmsh 4.8 keeps state across gmsh::finalize() that
-/// its next session's pyramid builder reads after it is freed (an Eigen assertion aborts the process, in
-/// RelocateVerticesOfPyramids()): a second .geo whose volumes are bounded by quadrilaterals is refused
-/// instead (refuse_second_pyramid_meshing()).
+/// Whether Gmsh has built pyramids in this process. Gmsh 4.8 keeps state across gmsh::finalize() that its
+/// pyramid builder reads after it is freed once Gmsh is initialised again (an Eigen assertion aborts the
+/// process, in RelocateVerticesOfPyramids()): a second .geo whose volumes are bounded by quadrilaterals is
+/// refused instead (refuse_second_pyramid_meshing()).
 std::atomic<bool> gmsh_built_pyramids{false};
 
 /// Whether the current Gmsh model holds elements of `dim` whose type satisfies `pred`.

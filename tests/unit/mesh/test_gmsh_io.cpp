@@ -268,9 +268,9 @@ TEST(GmshIo, BodyMixingTrianglesAndQuadrilateralsKeepsBothTypes) {
 }
 
 // A hex-dominant body: hexahedra, tetrahedra and the pyramids Gmsh builds between them, in one mesh. Gmsh
-// 4.8 cannot build pyramids in a second session of the same process (it aborts): the same .geo read again
-// with the same options is the mesh remembered from the first read, and another .geo with quadrilateral
-// faces is refused with the way out (a .msh). ctest runs each test in a process of its own; run alone,
+// 4.8 cannot build pyramids again in a process once it was finalised and initialised anew (it aborts): the
+// same .geo read again with the same options is the mesh remembered from the first read, and another .geo
+// with quadrilateral faces is refused with the way out (a .msh). ctest runs each test in a process of its own; run alone,
 // this test must be the process's first to mesh pyramids.
 TEST(GmshIo, HexDominantGeoGivesPyramidsAndASecondMeshingIsRefused) {
   MeshReadOptions opt;
