@@ -78,6 +78,14 @@ std::pair<double, double> patch_errors(const Mesh& m, const std::string& fixed_f
   return {err / umax, serr / sigma.norm()};
 }
 
+/// patch_errors() of m held at `fixed`, printed, both within 1e-10.
+void expect_patch_exact(const Mesh& m, const std::string& fixed) {
+  const auto [eu, es] = patch_errors(m, fixed);
+  std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
+  EXPECT_LT(eu, 1e-10) << m.cell_types_label();
+  EXPECT_LT(es, 1e-10) << m.cell_types_label();
+}
+
 }  // namespace
 
 TEST(PatchTest, DistortedStructuredMeshes) {
@@ -103,24 +111,17 @@ TEST(PatchTest, DistortedQuadrilateralsAndHexahedra) {
     const bool plane = cell_dim(t) == 2;
     Mesh m = plane ? tensor_mesh(t, Vec3(0, 0, 0), Vec3(2, 1, 0), 6, 4) : tensor_mesh(t, Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
     perturb_interior_nodes(m, plane ? 0.25 : 1.0 / 3, 0.25, 44);
-    const auto [eu, es] = patch_errors(m, plane ? "left" : "xmin");
-    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", cell_name(t).c_str(), eu, es);
-    EXPECT_LT(eu, 1e-10) << cell_name(t);
-    EXPECT_LT(es, 1e-10) << cell_name(t);
+    expect_patch_exact(m, plane ? "left" : "xmin");
   }
 }
 
 // Prisms: structured boxes of 6- and 18-node ones, interior vertices moved; and one body of prisms under
 // tetrahedra read from Gmsh (tests/data/geo/prism_layer.geo), conforming on their common triangles.
 TEST(PatchTest, DistortedPrismsAndPrismsUnderTetrahedra) {
-  double eu = 0, es = 0;
   for (CellType t : {CellType::kPrism6, CellType::kPrism15, CellType::kPrism18}) {
     Mesh m = prism_mesh(t, Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
     perturb_interior_nodes(m, 1.0 / 3, 0.25, 45);
-    std::tie(eu, es) = patch_errors(m, "xmin");
-    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
-    EXPECT_LT(eu, 1e-10) << cell_name(t);
-    EXPECT_LT(es, 1e-10) << cell_name(t);
+    expect_patch_exact(m, "xmin");
   }
   MeshReadOptions o3;
   o3.dim = 3;
@@ -133,10 +134,7 @@ TEST(PatchTest, DistortedPrismsAndPrismsUnderTetrahedra) {
   EXPECT_NE(layer.interior_facet_groups.at("sides").find("two types"), std::string::npos);
   EXPECT_EQ(layer.facet_type_of(layer.facet_groups.at("sides_prisms")), CellType::kQuad4);
   EXPECT_EQ(layer.facet_type_of(layer.facet_groups.at("sides_tets")), CellType::kTri3);
-  std::tie(eu, es) = patch_errors(layer, "zmin");
-  std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", layer.cell_types_label().c_str(), eu, es);
-  EXPECT_LT(eu, 1e-10);
-  EXPECT_LT(es, 1e-10);
+  expect_patch_exact(layer, "zmin");
 }
 
 TEST(PatchTest, UnstructuredGmshMeshesIncludingCurvedP2) {
@@ -175,14 +173,10 @@ TEST(PatchTest, UnstructuredGmshMeshesIncludingCurvedP2) {
 // Pyramid14, Tet10) and at incomplete order 2 (Hex20, Pyramid13, Tet10). Gmsh 4.8 builds pyramids once per
 // process (gmsh_io.cpp): the geometry is meshed once, written at the three orders, and read back.
 TEST(PatchTest, DistortedPyramidsAndHexahedraWithTetrahedra) {
-  double eu = 0, es = 0;
   for (CellType t : {CellType::kPyramid5, CellType::kPyramid13, CellType::kPyramid14}) {
     Mesh m = pyramid_mesh(t, Vec3(0, 0, 0), Vec3(1, 1, 1), 3, 3, 3);
     perturb_interior_nodes(m, 1.0 / 3, 0.25, 46);
-    std::tie(eu, es) = patch_errors(m, "xmin");
-    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
-    EXPECT_LT(eu, 1e-10) << cell_name(t);
-    EXPECT_LT(es, 1e-10) << cell_name(t);
+    expect_patch_exact(m, "xmin");
   }
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("symcontact_hex_tet_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -211,10 +205,7 @@ TEST(PatchTest, DistortedPyramidsAndHexahedraWithTetrahedra) {
     for (const auto& [type, n] : counts) has_pyramids = has_pyramids || type == pyramids[variant];
     EXPECT_TRUE(has_pyramids) << m.cell_types_label();
     EXPECT_EQ(m.node_groups.count("sides"), 1u);
-    std::tie(eu, es) = patch_errors(m, "zmin");
-    std::printf("  %s: displacement error %.2e, cell stress error %.2e\n", m.cell_types_label().c_str(), eu, es);
-    EXPECT_LT(eu, 1e-10) << m.cell_types_label();
-    EXPECT_LT(es, 1e-10) << m.cell_types_label();
+    expect_patch_exact(m, "zmin");
   }
   std::filesystem::remove_all(dir);
 }
