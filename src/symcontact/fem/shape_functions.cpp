@@ -131,11 +131,9 @@ void prism_shape_functions(CellType t, const double* xi, double* N, double* dN) 
   }
 }
 
-/// Reference nodes of the pyramids: Gmsh's (X, Y, Z) on the base [−1, 1]² with the apex at (0, 0, 1),
-/// mapped to ξ = (X + 1 − Z) / 2, η = (Y + 1 − Z) / 2, ζ = Z.
-const double kPyramidNodes[14][3] = {{0, 0, 0},   {1, 0, 0},   {1, 1, 0},    {0, 1, 0},   {0, 0, 1},
-                                     {.5, 0, 0},  {0, .5, 0},  {0, 0, .5},   {1, .5, 0},  {.5, 0, .5},
-                                     {.5, 1, 0},  {.5, .5, .5}, {0, .5, .5}, {.5, .5, 0}};
+/// The pyramid's vertices: Gmsh's (X, Y, Z) on the base [−1, 1]² with the apex at (0, 0, 1), mapped to
+/// ξ = (X + 1 − Z) / 2, η = (Y + 1 − Z) / 2, ζ = Z.
+const double kPyramidVertices[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}};
 
 /// The pyramids' space (Bergot, Cohen & Duruflé, "Higher-order finite elements for hybrid meshes using
 /// new nodal pyramidal elements", J. Sci. Comput. 42, 2010): with a = ξ / (1 − ζ), b = η / (1 − ζ),
@@ -157,7 +155,8 @@ struct PyramidBasis {
     const int n = cell_num_nodes(t);
     if (static_cast<int>(ijk.size()) != n) throw std::logic_error("PyramidBasis: space and nodes differ in size");
     Eigen::MatrixXd V(n, n);
-    for (int a = 0; a < n; ++a) evaluate(kPyramidNodes[a], V.data() + a, n, nullptr);
+    const std::vector<double> nodes = reference_nodes(t);
+    for (int a = 0; a < n; ++a) evaluate(nodes.data() + 3 * a, V.data() + a, n, nullptr);
     C = V.fullPivLu().inverse();
   }
 
@@ -247,35 +246,35 @@ void shape_functions(CellType t, const double* xi, double* N, double* dN) {
 }
 
 std::vector<double> reference_nodes(CellType t) {
-  const int d = cell_dim(t);
+  const int d = cell_dim(t), nv = cell_num_vertices(t);
   std::vector<double> v;
   if (d == 0) return v;
-  if (cell_shape(t) == CellShape::kTensor) {
-    for (int a = 0; a < cell_num_nodes(t); ++a)
-      for (int i = 0; i < d; ++i) v.push_back(0.5 * (tensor_node_coordinates(t, a)[i] + 1));
-    return v;
+  // The vertices (cell_type.hpp's reference cells), then every node at the mean of its node_vertices().
+  std::vector<double> vertex(static_cast<std::size_t>(nv) * d, 0.0);
+  for (int a = 0; a < nv; ++a) {
+    double* x = vertex.data() + a * d;
+    switch (cell_shape(t)) {
+      case CellShape::kTensor:
+        for (int i = 0; i < d; ++i) x[i] = 0.5 * (tensor_node_coordinates(t, a)[i] + 1);
+        break;
+      case CellShape::kPrism:  // the unit triangle's vertices at ζ = 0, then at ζ = 1
+        if (a % 3 > 0) x[a % 3 - 1] = 1.0;
+        x[2] = a < 3 ? 0.0 : 1.0;
+        break;
+      case CellShape::kPyramid:
+        std::copy(kPyramidVertices[a], kPyramidVertices[a] + 3, x);
+        break;
+      default:  // the origin, then the unit vectors
+        if (a > 0) x[a - 1] = 1.0;
+    }
   }
-  if (cell_shape(t) == CellShape::kPrism) {
-    static const double prism18[18][3] = {{0, 0, 0},   {1, 0, 0},   {0, 1, 0},     {0, 0, 1},   {1, 0, 1},
-                                          {0, 1, 1},   {.5, 0, 0},  {0, .5, 0},    {0, 0, .5},  {.5, .5, 0},
-                                          {1, 0, .5},  {0, 1, .5},  {.5, 0, 1},    {0, .5, 1},  {.5, .5, 1},
-                                          {.5, 0, .5}, {0, .5, .5}, {.5, .5, .5}};  // Gmsh's, ζ mapped to [0, 1]
-    for (int a = 0; a < cell_num_nodes(t); ++a) v.insert(v.end(), prism18[a], prism18[a] + 3);
-    return v;
-  }
-  if (cell_shape(t) == CellShape::kPyramid) {
-    for (int a = 0; a < cell_num_nodes(t); ++a) v.insert(v.end(), kPyramidNodes[a], kPyramidNodes[a] + 3);
-    return v;
-  }
-  const int nv = d + 1;
-  std::vector<std::vector<double>> verts(nv, std::vector<double>(d, 0.0));
-  for (int i = 0; i < d; ++i) verts[i + 1][i] = 1.0;
-  for (int a = 0; a < nv; ++a) v.insert(v.end(), verts[a].begin(), verts[a].end());
-  if (cell_order(t) == 2) {
-    const int(*edges)[2] = d == 1 ? kLineEdges : (d == 2 ? kTriEdges : kTetEdges);
-    const int ne = d == 1 ? 1 : (d == 2 ? 3 : 6);
-    for (int e = 0; e < ne; ++e)
-      for (int i = 0; i < d; ++i) v.push_back(0.5 * (verts[edges[e][0]][i] + verts[edges[e][1]][i]));
+  for (int a = 0; a < cell_num_nodes(t); ++a) {
+    const std::vector<int> from = node_vertices(t, a);
+    for (int i = 0; i < d; ++i) {
+      double sum = 0.0;
+      for (int w : from) sum += vertex[w * d + i];
+      v.push_back(sum / static_cast<double>(from.size()));
+    }
   }
   return v;
 }
