@@ -11,6 +11,7 @@
 #include <functional>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sstream>
@@ -363,11 +364,72 @@ double predicted_cell_count(int dim, const double extent[3], double h) {
 
 namespace {
 
+/// The body's nodes sorted by their first coordinate, to find the one at a given point.
+class CoincidentNodes {
+ public:
+  explicit CoincidentNodes(const Mesh& m) : m_(m) {
+    order_.resize(m.x.cols());
+    for (Index v = 0; v < m.x.cols(); ++v) order_[v] = v;
+    std::sort(order_.begin(), order_.end(), [&](Index a, Index b) { return m.x(0, a) < m.x(0, b); });
+    const Eigen::VectorXd extent = m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff();
+    tolerance_ = 1e-10 * extent.norm();
+  }
+  /// The body node within 1e-10 × the body's size of y, or −1.
+  Index at(const Eigen::VectorXd& y) const {
+    auto it = std::lower_bound(order_.begin(), order_.end(), y[0] - tolerance_,
+                               [&](Index v, double x0) { return m_.x(0, v) < x0; });
+    for (; it != order_.end() && m_.x(0, *it) <= y[0] + tolerance_; ++it)
+      if ((m_.x.col(*it) - y).norm() <= tolerance_) return *it;
+    return -1;
+  }
+
+ private:
+  const Mesh& m_;
+  std::vector<Index> order_;
+  double tolerance_ = 0.0;
+};
+
+/// Throws when a facet of group g has nodes in the body and others outside it that all sit at the position of
+/// a body node: the body's surface was meshed with nodes of its own (duplicates: Gmsh's
+/// Geometry.AutoCoherence = 0 leaves them on the curves of extruded surfaces). Such a facet would be dropped,
+/// as a facet of another body is, and a contact surface or a load would lose part of its area without a word.
+/// Facets of another body that shares nodes with this one (a conforming interface) have their other nodes
+/// away from this body's, and facets wholly outside it (a body in contact with coincident nodes) are left
+/// alone.
+void check_duplicated_nodes(const MeshFile& file, const MeshFile::Group& g, const std::vector<Index>& local,
+                            const Mesh& m, const Index* facet, std::size_t npf,
+                            std::unique_ptr<CoincidentNodes>& nodes) {
+  Index outside = -1, twin = -1;
+  bool any_inside = false;
+  for (std::size_t a = 0; a < npf; ++a) {
+    if (local[facet[a]] >= 0) {
+      any_inside = true;
+      continue;
+    }
+    if (!nodes) nodes = std::make_unique<CoincidentNodes>(m);
+    const Index at = nodes->at(file.x.col(facet[a]).head(m.dim));
+    if (at < 0) return;
+    if (outside < 0) outside = facet[a], twin = at;
+  }
+  if (!any_inside || outside < 0) return;
+  auto tag = [&](Index v, const std::vector<Index>& tags) {
+    return std::to_string(v < static_cast<Index>(tags.size()) ? tags[v] : v + 1);
+  };
+  std::ostringstream e;
+  e << "group '" << g.name << "': node " << tag(outside, file.node_tags) << " of one of its facets is not a node of "
+    << "the body's cells but sits at the position of body node " << tag(twin, m.node_tags)
+    << ": the mesh has duplicate nodes, and the facet would be left out of the group (in a .geo, "
+       "Geometry.AutoCoherence = 0 makes them; remove that line, or add Coherence Mesh; after the mesh is made)";
+  throw InputError(file.path, "", e.str());
+}
+
 /// The facets of physical group g (of dimension dim − 1) whose nodes are all in the body (local: the body's
 /// index of each node of the file, −1 outside), as a facet group of m of their type. A group holding facets
 /// of two types (the triangles and quadrilaterals of prisms) becomes a node group, listed in
-/// interior_facet_groups with the reason it cannot be a contact surface or a load.
-void add_facet_group(const MeshFile::Group& g, const std::vector<Index>& local, Mesh& m) {
+/// interior_facet_groups with the reason it cannot be a contact surface or a load. A facet partly in the body
+/// through duplicate nodes is an input error (check_duplicated_nodes).
+void add_facet_group(const MeshFile& file, const MeshFile::Group& g, const std::vector<Index>& local, Mesh& m) {
+  std::unique_ptr<CoincidentNodes> coincident;
   std::map<CellType, FacetGroup> by_type;
   for (const auto& b : g.blocks) {
     bool facet_of_body = false;
@@ -380,7 +442,10 @@ void add_facet_group(const MeshFile::Group& g, const std::vector<Index>& local, 
     for (std::size_t k = 0; k + npf <= b.nodes.size(); k += npf) {
       bool inside = true;
       for (std::size_t a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
-      if (!inside) continue;
+      if (!inside) {
+        check_duplicated_nodes(file, g, local, m, &b.nodes[k], npf, coincident);
+        continue;
+      }
       for (std::size_t a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);
       if (k / npf < b.tags.size()) fg.tags.push_back(b.tags[k / npf]);
     }
@@ -469,7 +534,7 @@ Mesh extract_body(const MeshFile& file, int dim, const std::string& group, const
   for (const auto& g : file.groups) {
     if (g.dim >= dim) continue;
     if (g.dim == dim - 1) {
-      add_facet_group(g, local, m);
+      add_facet_group(file, g, local, m);
     } else {
       std::vector<Index> nodes;
       for (const auto& b : g.blocks)

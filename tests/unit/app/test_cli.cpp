@@ -201,6 +201,16 @@ TEST_F(Cli, DuplicateNodesAreAnInputErrorNamingTheNodes) {
                          "node 1 and node 6 at (0, 0)", "same position without sharing any element"});
 }
 
+TEST_F(Cli, AGroupFacetOnDuplicateNodesIsAnInputErrorNamingTheNodes) {
+  // The top edge of the square is written from node 3 to node 6, a twin of the corner node 4 that no triangle
+  // uses (as Gmsh's Geometry.AutoCoherence = 0 leaves a surface's boundary nodes). Dropped as the edge of
+  // another body, it would take the pressure of the top away without a word.
+  const fs::path f = write("twin.toml", problem_toml(test_mesh("surface_duplicate_nodes.msh"), "square", "0.3",
+                                                     kClampBottom + kPressTop));
+  expect_input_error(f, {"surface_duplicate_nodes.msh", "group 'top'", "node 6 of one of its facets",
+                         "sits at the position of body node 4", "duplicate nodes", "AutoCoherence"});
+}
+
 TEST_F(Cli, CrackWithItsFacesInSelfContactIsAllowed) {
   // crack_faces.msh: crack_duplicate_nodes.msh with the crack's two faces in the boundary group "crack". In
   // self-contact, the twins are allowed; a contact of the crack with another surface does not allow them.
