@@ -389,16 +389,15 @@ class CoincidentNodes {
   double tolerance_ = 0.0;
 };
 
-/// Throws when a facet of group g has nodes in the body and others outside it that all sit at the position of
-/// a body node: the body's surface was meshed with nodes of its own (duplicates: Gmsh's
-/// Geometry.AutoCoherence = 0 leaves them on the curves of extruded surfaces). Such a facet would be dropped,
-/// as a facet of another body is, and a contact surface or a load would lose part of its area without a word.
-/// Facets of another body that shares nodes with this one (a conforming interface) have their other nodes
-/// away from this body's, and facets wholly outside it (a body in contact with coincident nodes) are left
-/// alone.
-void check_duplicated_nodes(const MeshFile& file, const MeshFile::Group& g, const std::vector<Index>& local,
-                            const Mesh& m, const Index* facet, std::size_t npf,
-                            std::unique_ptr<CoincidentNodes>& nodes) {
+/// Why a facet of group g is left out of the body although it lies on it, or "" where it is not: some of its
+/// nodes are the body's and the others, outside the body's cells, all sit at the position of a body node. The
+/// body's surface was then meshed with nodes of its own (duplicates: Gmsh's Geometry.AutoCoherence = 0
+/// leaves them on the curves of extruded surfaces), and a contact surface or a load on the group would lose
+/// part of its area without a word (Mesh::incomplete_groups). Facets of another body that shares nodes with
+/// this one (a conforming interface) have their other nodes away from this body's, and facets wholly outside
+/// it (a body in contact with coincident nodes) are that body's: both give "".
+std::string duplicated_nodes(const MeshFile& file, const std::vector<Index>& local, const Mesh& m, const Index* facet,
+                             std::size_t npf, std::unique_ptr<CoincidentNodes>& nodes) {
   Index outside = -1, twin = -1;
   bool any_inside = false;
   for (std::size_t a = 0; a < npf; ++a) {
@@ -408,26 +407,26 @@ void check_duplicated_nodes(const MeshFile& file, const MeshFile::Group& g, cons
     }
     if (!nodes) nodes = std::make_unique<CoincidentNodes>(m);
     const Index at = nodes->at(file.x.col(facet[a]).head(m.dim));
-    if (at < 0) return;
+    if (at < 0) return "";
     if (outside < 0) outside = facet[a], twin = at;
   }
-  if (!any_inside || outside < 0) return;
+  if (!any_inside || outside < 0) return "";
   auto tag = [&](Index v, const std::vector<Index>& tags) {
     return std::to_string(v < static_cast<Index>(tags.size()) ? tags[v] : v + 1);
   };
   std::ostringstream e;
-  e << "group '" << g.name << "': node " << tag(outside, file.node_tags) << " of one of its facets is not a node of "
-    << "the body's cells but sits at the position of body node " << tag(twin, m.node_tags)
-    << ": the mesh has duplicate nodes, and the facet would be left out of the group (in a .geo, "
+  e << "node " << tag(outside, file.node_tags) << " of one of its facets is not a node of the body's cells but sits "
+    << "at the position of body node " << tag(twin, m.node_tags)
+    << ": the mesh has duplicate nodes, and the group's facets on them are not the body's (in a .geo, "
        "Geometry.AutoCoherence = 0 makes them; remove that line, or add Coherence Mesh; after the mesh is made)";
-  throw InputError(file.path, "", e.str());
+  return e.str();
 }
 
 /// The facets of physical group g (of dimension dim − 1) whose nodes are all in the body (local: the body's
 /// index of each node of the file, −1 outside), as a facet group of m of their type. A group holding facets
 /// of two types (the triangles and quadrilaterals of prisms) becomes a node group, listed in
 /// interior_facet_groups with the reason it cannot be a contact surface or a load. A facet partly in the body
-/// through duplicate nodes is an input error (check_duplicated_nodes).
+/// through duplicate nodes puts the group in Mesh::incomplete_groups (duplicated_nodes()).
 void add_facet_group(const MeshFile& file, const MeshFile::Group& g, const std::vector<Index>& local, Mesh& m) {
   std::unique_ptr<CoincidentNodes> coincident;
   std::map<CellType, FacetGroup> by_type;
@@ -443,7 +442,10 @@ void add_facet_group(const MeshFile& file, const MeshFile::Group& g, const std::
       bool inside = true;
       for (std::size_t a = 0; a < npf; ++a) inside = inside && local[b.nodes[k + a]] >= 0;
       if (!inside) {
-        check_duplicated_nodes(file, g, local, m, &b.nodes[k], npf, coincident);
+        if (!m.incomplete_groups.count(g.name)) {
+          std::string why = duplicated_nodes(file, local, m, &b.nodes[k], npf, coincident);
+          if (!why.empty()) m.incomplete_groups[g.name] = std::move(why);
+        }
         continue;
       }
       for (std::size_t a = 0; a < npf; ++a) fg.facets.push_back(local[b.nodes[k + a]]);

@@ -75,6 +75,10 @@ struct Mesh {
   /// (extract_body()). Why, for the message of a contact surface or a load that names one. A Dirichlet
   /// condition may still hold its nodes.
   std::map<std::string, std::string> interior_facet_groups;
+  /// Groups of facets (dimension dim − 1) with facets left out because they lie partly on duplicate nodes
+  /// outside the body's cells (extract_body()), and why: a contact surface, a load or a Dirichlet condition
+  /// that names one would miss part of it, so naming one is an input error. Unused, they are harmless.
+  std::map<std::string, std::string> incomplete_groups;
 
   Index num_nodes() const { return x.cols(); }
   Index num_cells() const { return static_cast<Index>(cell_offsets.size()) - 1; }

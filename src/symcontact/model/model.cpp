@@ -32,9 +32,17 @@ std::string available_groups(const Mesh& m) {
   return s.empty() ? "none" : s;
 }
 
+/// Throws when `group` of body b lost facets to duplicate nodes (Mesh::incomplete_groups).
+void require_complete(const ProblemSpec& spec, const Body& b, const std::string& group, const std::string& key) {
+  if (auto in = b.mesh.incomplete_groups.find(group); in != b.mesh.incomplete_groups.end())
+    throw InputError(spec.file, key,
+                     "body '" + b.name + "' (mesh " + b.spec->mesh_file + "), group '" + group + "': " + in->second);
+}
+
 const FacetGroup& require_facets(const ProblemSpec& spec, const Body& b, const std::string& group,
                                  const std::string& key) {
   const std::string where = "body '" + b.name + "' (mesh " + b.spec->mesh_file + ")";
+  require_complete(spec, b, group, key);
   if (auto in = b.mesh.interior_facet_groups.find(group); in != b.mesh.interior_facet_groups.end())
     throw InputError(spec.file, key, where + ", group '" + group + "': " + in->second);
   auto it = b.mesh.facet_groups.find(group);
@@ -341,6 +349,7 @@ void Model::warn_free_axis_nodes(const Logger& log) {
 
 void Model::add_dirichlet(int b, const DirichletSpec& ds) {
   const Body& body = *bodies_[b];
+  require_complete(spec_, body, ds.group, ds.key + ".boundary");
   if (!body.mesh.has_group(ds.group))
     throw InputError(spec_.file, ds.key + ".boundary",
                      "body '" + body.name + "' (mesh " + body.spec->mesh_file + ") has no group '" + ds.group +

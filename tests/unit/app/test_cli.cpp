@@ -203,12 +203,21 @@ TEST_F(Cli, DuplicateNodesAreAnInputErrorNamingTheNodes) {
 
 TEST_F(Cli, AGroupFacetOnDuplicateNodesIsAnInputErrorNamingTheNodes) {
   // The top edge of the square is written from node 3 to node 6, a twin of the corner node 4 that no triangle
-  // uses (as Gmsh's Geometry.AutoCoherence = 0 leaves a surface's boundary nodes). Dropped as the edge of
-  // another body, it would take the pressure of the top away without a word.
-  const fs::path f = write("twin.toml", problem_toml(test_mesh("surface_duplicate_nodes.msh"), "square", "0.3",
-                                                     kClampBottom + kPressTop));
-  expect_input_error(f, {"surface_duplicate_nodes.msh", "group 'top'", "node 6 of one of its facets",
-                         "sits at the position of body node 4", "duplicate nodes", "AutoCoherence"});
+  // uses (as Gmsh's Geometry.AutoCoherence = 0 leaves a surface's boundary nodes). Left out as the edge of
+  // another body would be, it would take the pressure of the top away without a word; held in a Dirichlet
+  // condition, node 4 would stay free.
+  const std::string mesh = test_mesh("surface_duplicate_nodes.msh");
+  const fs::path f = write("twin.toml", problem_toml(mesh, "square", "0.3", kClampBottom + kPressTop));
+  expect_input_error(f, {"twin.toml", "body[0].pressure[0].boundary", "body 'block'", "surface_duplicate_nodes.msh",
+                         "group 'top'", "node 6 of one of its facets", "sits at the position of body node 4",
+                         "duplicate nodes", "AutoCoherence"});
+  const std::string clamp_top = "[[body.dirichlet]]\nboundary = \"top\"\nux = 0.0\n\n";
+  const fs::path held = write("twin_held.toml", problem_toml(mesh, "square", "0.3", kClampBottom + clamp_top));
+  expect_input_error(held, {"twin_held.toml", "body[0].dirichlet[1].boundary", "group 'top'", "node 6"});
+  // A group no condition names is harmless.
+  const fs::path unused = write("twin_unused.toml", problem_toml(mesh, "square", "0.3", kClampBottom));
+  const CliResult r = run("check " + shell_quote(unused.string()));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
 TEST_F(Cli, CrackWithItsFacesInSelfContactIsAllowed) {
