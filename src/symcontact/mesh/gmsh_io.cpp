@@ -364,31 +364,6 @@ double predicted_cell_count(int dim, const double extent[3], double h) {
 
 namespace {
 
-/// The body's nodes sorted by their first coordinate, to find the one at a given point.
-class CoincidentNodes {
- public:
-  explicit CoincidentNodes(const Mesh& m) : m_(m) {
-    order_.resize(m.x.cols());
-    for (Index v = 0; v < m.x.cols(); ++v) order_[v] = v;
-    std::sort(order_.begin(), order_.end(), [&](Index a, Index b) { return m.x(0, a) < m.x(0, b); });
-    const Eigen::VectorXd extent = m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff();
-    tolerance_ = 1e-10 * extent.norm();
-  }
-  /// The body node within 1e-10 × the body's size of y, or −1.
-  Index at(const Eigen::VectorXd& y) const {
-    auto it = std::lower_bound(order_.begin(), order_.end(), y[0] - tolerance_,
-                               [&](Index v, double x0) { return m_.x(0, v) < x0; });
-    for (; it != order_.end() && m_.x(0, *it) <= y[0] + tolerance_; ++it)
-      if ((m_.x.col(*it) - y).norm() <= tolerance_) return *it;
-    return -1;
-  }
-
- private:
-  const Mesh& m_;
-  std::vector<Index> order_;
-  double tolerance_ = 0.0;
-};
-
 /// Why a facet of group g is left out of the body although it lies on it, or "" where it is not: some of its
 /// nodes are the body's and the others, outside the body's cells, all sit at the position of a body node. The
 /// body's surface was then meshed with nodes of its own (duplicates: Gmsh's Geometry.AutoCoherence = 0
@@ -397,7 +372,7 @@ class CoincidentNodes {
 /// this one (a conforming interface) have their other nodes away from this body's, and facets wholly outside
 /// it (a body in contact with coincident nodes) are that body's: both give "".
 std::string duplicated_nodes(const MeshFile& file, const std::vector<Index>& local, const Mesh& m, const Index* facet,
-                             std::size_t npf, std::unique_ptr<CoincidentNodes>& nodes) {
+                             std::size_t npf, std::unique_ptr<NodeGrid>& nodes) {
   Index outside = -1, twin = -1;
   bool any_inside = false;
   for (std::size_t a = 0; a < npf; ++a) {
@@ -405,7 +380,7 @@ std::string duplicated_nodes(const MeshFile& file, const std::vector<Index>& loc
       any_inside = true;
       continue;
     }
-    if (!nodes) nodes = std::make_unique<CoincidentNodes>(m);
+    if (!nodes) nodes = std::make_unique<NodeGrid>(m);
     const Index at = nodes->at(file.x.col(facet[a]).head(m.dim));
     if (at < 0) return "";
     if (outside < 0) outside = facet[a], twin = at;
@@ -428,7 +403,7 @@ std::string duplicated_nodes(const MeshFile& file, const std::vector<Index>& loc
 /// interior_facet_groups with the reason it cannot be a contact surface or a load. A facet partly in the body
 /// through duplicate nodes puts the group in Mesh::incomplete_groups (duplicated_nodes()).
 void add_facet_group(const MeshFile& file, const MeshFile::Group& g, const std::vector<Index>& local, Mesh& m) {
-  std::unique_ptr<CoincidentNodes> coincident;
+  std::unique_ptr<NodeGrid> coincident;
   std::map<CellType, FacetGroup> by_type;
   for (const auto& b : g.blocks) {
     bool facet_of_body = false;

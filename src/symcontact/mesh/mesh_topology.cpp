@@ -59,43 +59,58 @@ Index cell_components(const Mesh& m, std::vector<Index>* component) {
   return count;
 }
 
+std::size_t NodeGrid::KeyHash::operator()(const Key& k) const {
+  std::size_t h = 1469598103934665603ull;
+  for (std::int64_t v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
+  return h;
+}
+
+NodeGrid::NodeGrid(const Mesh& m, double relative_tolerance) : m_(m) {
+  const Index n = m.num_nodes();
+  lo_ = n > 0 ? Eigen::VectorXd(m.x.rowwise().minCoeff()) : Eigen::VectorXd::Zero(m.dim);
+  const double diagonal = n > 0 ? (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).norm() : 0.0;
+  tol_ = relative_tolerance * diagonal;
+  cell_ = tol_ > 0 ? tol_ : 1.0;
+  grid_.reserve(static_cast<std::size_t>(n));
+  for (Index v = 0; v < n; ++v) grid_[key_of(m.x.col(v))].push_back(v);
+}
+
+NodeGrid::Key NodeGrid::key_of(const Eigen::VectorXd& y) const {
+  Key k{0, 0, 0};
+  for (int i = 0; i < m_.dim; ++i) k[i] = static_cast<std::int64_t>(std::floor((y[i] - lo_[i]) / cell_));
+  return k;
+}
+
+void NodeGrid::near(const Eigen::VectorXd& y, std::vector<Index>& out) const {
+  const Key k = key_of(y);
+  const int reach_z = m_.dim == 3 ? 1 : 0;
+  for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dz = -reach_z; dz <= reach_z; ++dz) {
+        const auto it = grid_.find(Key{k[0] + dx, k[1] + dy, k[2] + dz});
+        if (it == grid_.end()) continue;
+        for (Index b : it->second)
+          if ((m_.x.col(b) - y).norm() <= tol_) out.push_back(b);
+      }
+}
+
+Index NodeGrid::at(const Eigen::VectorXd& y) const {
+  std::vector<Index> found;
+  near(y, found);
+  return found.empty() ? -1 : *std::min_element(found.begin(), found.end());
+}
+
 std::vector<std::pair<Index, Index>> coincident_nodes(const Mesh& m, double relative_tolerance) {
   std::vector<std::pair<Index, Index>> pairs;
   const Index n = m.num_nodes();
   if (n < 2) return pairs;
-  const double diagonal = (m.x.rowwise().maxCoeff() - m.x.rowwise().minCoeff()).norm();
-  const double tol = relative_tolerance * diagonal;
-  // A hash grid of cells of size tol over the bounding box: twins lie in the same or neighbouring cells.
-  // O(n), whatever the layout (a sweep along one axis would be quadratic on structured meshes).
-  const double cell = tol > 0 ? tol : 1.0;
-  const Eigen::VectorXd lo = m.x.rowwise().minCoeff();
-  using Key = std::array<std::int64_t, 3>;
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      std::size_t h = 1469598103934665603ull;
-      for (std::int64_t v : k) h = (h ^ static_cast<std::size_t>(v)) * 1099511628211ull;
-      return h;
-    }
-  };
-  auto key_of = [&](Index v) {
-    Key k{0, 0, 0};
-    for (int i = 0; i < m.dim; ++i) k[i] = static_cast<std::int64_t>(std::floor((m.x(i, v) - lo[i]) / cell));
-    return k;
-  };
-  std::unordered_map<Key, std::vector<Index>, KeyHash> grid;
-  grid.reserve(static_cast<std::size_t>(n));
-  for (Index v = 0; v < n; ++v) grid[key_of(v)].push_back(v);
-  const int reach_z = m.dim == 3 ? 1 : 0;
+  const NodeGrid grid(m, relative_tolerance);
+  std::vector<Index> found;
   for (Index a = 0; a < n; ++a) {
-    const Key k = key_of(a);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -reach_z; dz <= reach_z; ++dz) {
-          const auto it = grid.find(Key{k[0] + dx, k[1] + dy, k[2] + dz});
-          if (it == grid.end()) continue;
-          for (Index b : it->second)
-            if (b > a && (m.x.col(a) - m.x.col(b)).norm() <= tol) pairs.emplace_back(a, b);
-        }
+    found.clear();
+    grid.near(m.x.col(a), found);
+    for (Index b : found)
+      if (b > a) pairs.emplace_back(a, b);
   }
   if (pairs.empty()) return pairs;
   // Keep the pairs that share no cell (two coincident nodes of one cell make it degenerate, which

@@ -16,7 +16,10 @@
 ///
 /// Both use the node labels of Mesh::node_label() (the mesh file's node tags) in messages.
 
+#include <array>
+#include <cstdint>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -39,6 +42,29 @@ struct TopologyAllowances {
 /// `component` is given it gets, for each cell, the index of its component, components numbered in
 /// the order of their first cell. O(cells × nodes per cell) (union-find).
 Index cell_components(const Mesh& m, std::vector<Index>* component = nullptr);
+
+/// The nodes of a mesh in a hash grid of cells of size relative_tolerance × the bounding-box diagonal: the
+/// nodes within that distance of a point lie in its cell or the neighbouring ones. O(1) expected per query,
+/// whatever the layout (a sweep along one axis would be quadratic on structured meshes).
+class NodeGrid {
+ public:
+  explicit NodeGrid(const Mesh& m, double relative_tolerance = 1e-10);
+  /// Appends to `out` (not cleared) the nodes within the tolerance of y (m.dim entries).
+  void near(const Eigen::VectorXd& y, std::vector<Index>& out) const;
+  /// A node within the tolerance of y, or −1.
+  Index at(const Eigen::VectorXd& y) const;
+
+ private:
+  using Key = std::array<std::int64_t, 3>;
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const;
+  };
+  Key key_of(const Eigen::VectorXd& y) const;
+  const Mesh& m_;
+  double tol_, cell_;
+  Eigen::VectorXd lo_;
+  std::unordered_map<Key, std::vector<Index>, KeyHash> grid_;
+};
 
 /// Pairs (a, b), a < b, of nodes at the same position (distance ≤ relative_tolerance × bounding-box
 /// diagonal) that belong to no common cell, sorted. A hash grid of that cell size: O(n) expected.
