@@ -158,6 +158,7 @@ struct Options {
   bool check_only = false;       ///< Hertz cases: mesh and check the memory of each size, solve none
   bool frictionless = false;     ///< large-contact cases: no friction, to compare
   std::string subproblem_solver; ///< large-contact cases: [contact_solver] subproblem_solver; empty: the default
+  std::string coulomb_update;    ///< large-contact cases: [contact_solver] coulomb_update; empty: the default
   double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
@@ -256,6 +257,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     c.which = *which;
     c.friction = opt.frictionless ? LargeContactFriction::kNone : LargeContactFriction::kCoulomb;
     c.subproblem_solver = opt.subproblem_solver;
+    c.coulomb_update = opt.coulomb_update;
     c.condense = !opt.no_condense;
     run_large_contact_sweep(c, machine);
     return;
@@ -363,6 +365,10 @@ int main(int argc, char** argv) {
                  "pad-flat, pad-ball, clamped-plates and their -2d analogues: [contact_solver] subproblem_solver of "
                  "the problems, to compare (default: the problem file's default)")
       ->check(CLI::IsMember({"dual_interior_point", "dual_ipopt", "primal_ipopt", "primal_interior_point"}));
+  app.add_option("--coulomb-update", opt.coulomb_update,
+                 "pad-flat, pad-ball, clamped-plates and their -2d analogues: [contact_solver] coulomb_update of the "
+                 "problems, to compare (default: the problem file's default)")
+      ->check(CLI::IsMember({"inside_optimizer", "between_solves"}));
   app.add_flag("--frictionless", opt.frictionless,
                "pad-flat, pad-ball, clamped-plates and their -2d analogues: the same problems without friction");
   app.add_flag("--check-only", opt.check_only,

@@ -175,22 +175,21 @@ CaseFiles case_files(LargeContactCase c) {
 
 /// The problem file at element size h: [problem] with mesh_size = h, then the case's text with the friction
 /// law in its [[contact]] table.
-std::string problem_text(LargeContactCase c, const CaseFiles& f, LargeContactFriction friction, double h,
-                         const std::string& subproblem_solver, bool condense) {
+std::string problem_text(const LargeContactBenchOptions& opt, const CaseFiles& f, double h) {
   std::ostringstream law;
   law << "[[contact]]\n";
-  if (friction == LargeContactFriction::kCoulomb) law << "friction = \"coulomb\"\nmu = " << kMu << "\n";
+  if (opt.friction == LargeContactFriction::kCoulomb) law << "friction = \"coulomb\"\nmu = " << kMu << "\n";
   std::string toml = f.toml;
   const std::size_t at = toml.find("[[contact]]\n");
   if (at == std::string::npos) throw std::logic_error("problem_text: the case has no [[contact]]");
   toml.replace(at, std::string("[[contact]]\n").size(), law.str());
   std::ostringstream s;
-  s << std::setprecision(9) << "title = \"" << large_contact_name(c) << "\"\n\n[problem]\ndimension = "
-    << case_dimension(c) << "\nmesh_size = " << h << "\n\n"
-    << toml;
-  if (!subproblem_solver.empty() || !condense) s << "\n[contact_solver]\n";
-  if (!subproblem_solver.empty()) s << "subproblem_solver = \"" << subproblem_solver << "\"\n";
-  if (!condense) s << "static_condensation = false\n";
+  s << std::setprecision(9) << "title = \"" << large_contact_name(opt.which) << "\"\n\n[problem]\ndimension = "
+    << case_dimension(opt.which) << "\nmesh_size = " << h << "\n\n"
+    << toml << "\n[contact_solver]\n";
+  if (!opt.subproblem_solver.empty()) s << "subproblem_solver = \"" << opt.subproblem_solver << "\"\n";
+  if (!opt.coulomb_update.empty()) s << "coulomb_update = \"" << opt.coulomb_update << "\"\n";
+  if (!opt.condense) s << "static_condensation = false\n";
   return s.str();
 }
 
@@ -274,7 +273,7 @@ void run_large_contact_sweep(const LargeContactBenchOptions& opt, const MachineI
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
     std::unique_ptr<ProblemRun> run;
     try {
-      run = solve_problem(problem_text(opt.which, files, opt.friction, h, opt.subproblem_solver, opt.condense),
+      run = solve_problem(problem_text(opt, files, h),
                           name + ".toml", work);
       const double peak_contact = peak_rss_mib();
       const double ratio = reaction_ratio(*run, files.moved_body);

@@ -60,6 +60,8 @@ struct LargeContactBenchOptions {
   /// [contact_solver] static_condensation of the problems (--no-condense: false, the whole problem to the
   /// optimiser, its Newton systems sparse).
   bool condense = true;
+  /// [contact_solver] coulomb_update of the problems ("inside_optimizer", "between_solves"); empty: the default.
+  std::string coulomb_update;
 };
 
 /// The ladder of h of each case: by default sizes that each take at most a couple of minutes on two cores

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "symcontact/contact/closest_point.hpp"
 #include "symcontact/fem/shape_functions.hpp"
@@ -147,7 +148,12 @@ void FrictionTerm::add_gradient(const VectorXd& u, VectorXd& g) const {
 void FrictionTerm::add_hessian(const VectorXd& u, MatrixSink& sink) const {
   const int D = dim_;
   for (const Local& l : local_) {
-    if (l.wt == 0.0) continue;
+    if (l.wt == 0.0) {
+      if (!keep_zero_blocks_) continue;
+      const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(l.dofs.size(), l.dofs.size());
+      sink.add(l.dofs.data(), static_cast<int>(l.dofs.size()), zero.data());
+      continue;
+    }
     const Eigen::VectorXd s = slip(l, u);
     const double r2 = s.squaredNorm() + l.alpha2;
     const double r = std::sqrt(r2);
@@ -156,6 +162,11 @@ void FrictionTerm::add_hessian(const VectorXd& u, MatrixSink& sink) const {
     const Eigen::MatrixXd K = PB.transpose() * Hs * PB;
     sink.add(l.dofs.data(), static_cast<int>(l.dofs.size()), K.data());
   }
+}
+
+void FrictionTerm::set_thresholds(const std::vector<double>& tau) {
+  if (tau.size() != local_.size()) throw std::invalid_argument("FrictionTerm::set_thresholds: one τ per point");
+  for (std::size_t q = 0; q < local_.size(); ++q) local_[q].wt = points_[q].weight * tau[q];
 }
 
 std::vector<Eigen::Vector3d> FrictionTerm::slips(const VectorXd& u) const {

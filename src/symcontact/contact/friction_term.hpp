@@ -60,6 +60,12 @@ class FrictionTerm : public EnergyTerm {
   const std::vector<ContactPoint>& points() const { return points_; }
   /// The regularisation length α_q of every point.
   const std::vector<double>& alphas() const { return alpha_; }
+  /// New thresholds τ_q ≥ 0, one per point (α_q > 0 wherever τ_q > 0): the same points, slips and weights.
+  /// The term's DOF support (support_of(), its Hessian blocks) is unchanged when the zero blocks are kept.
+  void set_thresholds(const std::vector<double>& tau);
+  /// Whether a point with τ_q = 0 adds a zero Hessian block (its DOFs stay in the support, for thresholds
+  /// that set_thresholds() may make positive) or nothing (the default: the sparsest pattern).
+  void keep_zero_blocks(bool keep) { keep_zero_blocks_ = keep; }
 
  private:
   struct Local {
@@ -77,6 +83,7 @@ class FrictionTerm : public EnergyTerm {
   std::vector<Local> local_;
   std::vector<double> alpha_;
   int dim_;
+  bool keep_zero_blocks_ = false;
 };
 
 }  // namespace symcontact

@@ -1050,7 +1050,8 @@ class Reader {
              "\"ipopt\") or \"primal_ipopt\" (dual_solve = false)");
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "converge_past_tolerance",
-                "max_coulomb_iterations", "static_condensation", "subproblem_solver", "max_step_cuts"});
+                "max_coulomb_iterations", "coulomb_update", "static_condensation", "subproblem_solver",
+                "max_step_cuts"});
     FrictionalOptions& f = spec.contact_solver.friction;
     ContactSolveOptions& s = f.contact;
     if (const toml::node* n = t.get("geometry_tolerance")) {
@@ -1070,6 +1071,13 @@ class Reader {
       f.converge_past_tolerance = as_bool(*n, "contact_solver.converge_past_tolerance");
     if (const toml::node* n = t.get("max_coulomb_iterations")) {
       f.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
+    }
+    if (const toml::node* n = t.get("coulomb_update")) {
+      const std::string key = "contact_solver.coulomb_update";
+      const std::string v = as_string(*n, key);
+      const std::optional<CoulombUpdate> choice = parse_coulomb_update(v);
+      if (!choice) fail(key, "expected \"inside_optimizer\" or \"between_solves\", got \"" + v + "\"");
+      f.coulomb_update = *choice;
     }
     if (const toml::node* n = t.get("static_condensation"))
       s.static_condensation = as_bool(*n, "contact_solver.static_condensation");

@@ -81,6 +81,11 @@ class CondensedProblem : public ConstrainedProblem {
   VectorXd expand(const VectorXd& y) const;    ///< x with x_B = y and x_I = x_I(y) (one interior solve)
   /// x with its B entries replaced by y, the interior left as it is (no solve).
   VectorXd with_boundary(VectorXd x, const VectorXd& y) const;
+  /// The full DOF vector u with x_B = y and the interior of x_reference (no solve): right on the surfaces.
+  VectorXd surface_displacement(const VectorXd& y) const;
+  /// The bodies' force on the DOFs of B at y, ∇E = ĝ + S y there (the interior at x_I(y)), as a full DOF
+  /// vector, zero off B.
+  VectorXd surface_force(const VectorXd& y) const;
 
  private:
   const VectorXd& full_dofs(const VectorXd& y);  ///< u for the extras: x_reference with x_B = y, expanded

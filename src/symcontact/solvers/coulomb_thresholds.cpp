@@ -8,6 +8,9 @@ namespace symcontact {
 
 namespace {
 
+/// The budget of follow() in one solve (the header).
+constexpr int kMaxFollows = 60, kStall = 10;
+
 /// Nodal pressures (clamped at 0) on the friction-slave surface of pair p.
 Eigen::VectorXd friction_side_pressure(const ContactSet& cs, int p, const DofMap& dofs, const VectorXd& u,
                                        const VectorXd& force) {
@@ -76,13 +79,18 @@ void CoulombThresholds::start_cold() {
     if (contacts_.pairs[p].friction == FrictionLaw::kCoulomb) state_.nodal_tau[p].setZero();
 }
 
-std::vector<Eigen::VectorXd> CoulombThresholds::residual(const VectorXd& u, const SolveReport& solve) const {
+std::vector<Eigen::VectorXd> CoulombThresholds::law_residual(const VectorXd& u, const VectorXd& force) const {
   const int np = static_cast<int>(contacts_.pairs.size());
-  const VectorXd force = active_contact_force(solve, dofs_.dim());
   std::vector<Eigen::VectorXd> r(np);
-  for (int p = 0; p < np; ++p) {
-    if (contacts_.pairs[p].friction != FrictionLaw::kCoulomb) continue;
-    r[p] = contacts_.pairs[p].mu * friction_side_pressure(contacts_, p, dofs_, u, force) - state_.nodal_tau[p];
+  for (int p = 0; p < np; ++p)
+    if (contacts_.pairs[p].friction == FrictionLaw::kCoulomb)
+      r[p] = contacts_.pairs[p].mu * friction_side_pressure(contacts_, p, dofs_, u, force) - state_.nodal_tau[p];
+  return r;
+}
+
+std::vector<Eigen::VectorXd> CoulombThresholds::residual(const VectorXd& u, const SolveReport& solve) const {
+  const std::vector<Eigen::VectorXd> r = law_residual(u, active_contact_force(solve, dofs_.dim()));
+  for (std::size_t p = 0; p < r.size(); ++p) {
     if (log_.level() < Verbosity::kDebug || r[p].size() == 0) continue;
     Index at = 0;
     r[p].cwiseAbs().maxCoeff(&at);
@@ -98,6 +106,32 @@ std::vector<Eigen::VectorXd> CoulombThresholds::residual(const VectorXd& u, cons
 void CoulombThresholds::update(const std::vector<Eigen::VectorXd>& r, double omega) {
   for (std::size_t p = 0; p < r.size(); ++p)
     if (r[p].size() > 0) state_.nodal_tau[p] = (state_.nodal_tau[p] + omega * r[p]).cwiseMax(0.0);
+}
+
+void CoulombThresholds::follow_iterates(double tolerance) {
+  if (!any_coulomb_) return;
+  follow_tolerance_ = tolerance;
+  state_.follower = this;
+}
+
+void CoulombThresholds::start_solve() { follow_ = FollowCount{}; }
+
+bool CoulombThresholds::follow(const VectorXd& u, const VectorXd& force) {
+  if (follow_.stopped) return false;
+  const std::vector<Eigen::VectorXd> r = law_residual(u, force);
+  const double change = relative_change(r, state_.nodal_tau);
+  if (change <= follow_tolerance_) return false;
+  if (follow_.changes == 0 || change < follow_.low) {
+    follow_.low = change;
+    follow_.since_low = 0;
+  } else if (++follow_.since_low >= kStall) {
+    follow_.stopped = true;
+  }
+  if (++follow_.changes > kMaxFollows) follow_.stopped = true;
+  if (follow_.stopped) return false;
+  update(r, 1.0);
+  warm_ = true;
+  return true;
 }
 
 }  // namespace symcontact

@@ -13,6 +13,11 @@
 ///  - Residual: r_p = μ_p p_p − τ_p, p the nodal pressure (clamped at 0) recovered from the solve's contact
 ///    forces at the nodes its multipliers act on (surface_tractions.hpp), along the interface normal.
 ///  - Update: τ ← max(0, τ + ω r).
+///  - Inside a solve (follow_iterates(), CoulombUpdate::kInsideOptimizer): the optimiser hands each iterate
+///    to follow() (ThresholdFollower, friction_state.hpp), which sets τ ← max(0, μ p) from the force the bodies
+///    exert on the surfaces there, until the relative change falls below the tolerance. It stops following
+///    for the rest of a solve after kMaxFollows changes or when the change has made no new low in kStall
+///    calls (a cycle); the outer loop then goes on from where it stopped.
 
 #include <vector>
 
@@ -24,7 +29,7 @@
 
 namespace symcontact {
 
-class CoulombThresholds final : public LaggedTerm {
+class CoulombThresholds final : public LaggedTerm, public ThresholdFollower {
  public:
   /// The thresholds a step starting at u begins with: those of `previous` (the previous step's state, null for
   /// the first step) extrapolated by s_extrapolate ≥ 0 (0: not), or cold ones. The state's u_start is u.
@@ -46,13 +51,28 @@ class CoulombThresholds final : public LaggedTerm {
   std::vector<Eigen::VectorXd> residual(const VectorXd& u, const SolveReport& solve) const override;
   void update(const std::vector<Eigen::VectorXd>& r, double omega) override;
 
+  /// The thresholds follow the optimiser's iterates until they change by less than `tolerance` (relative):
+  /// state().follower is this object.
+  void follow_iterates(double tolerance);
+  void start_solve() override;
+  bool follow(const VectorXd& u, const VectorXd& force) override;
+
  private:
+  /// r_p = μ_p p_p − τ_p, p read from the contact force `force` at u.
+  std::vector<Eigen::VectorXd> law_residual(const VectorXd& u, const VectorXd& force) const;
+
   const ContactSet& contacts_;
   const DofMap& dofs_;
   const Logger& log_;
   FrictionState state_;
   bool any_friction_ = false, any_coulomb_ = false;
-  bool warm_ = false;  ///< the thresholds come from the previous step
+  bool warm_ = false;  ///< the thresholds come from the previous step, or followed an iterate
+  double follow_tolerance_ = 0.0;
+  struct FollowCount {
+    int changes = 0, since_low = 0;
+    double low = 0.0;
+    bool stopped = false;
+  } follow_;  ///< of the current solve
 };
 
 }  // namespace symcontact

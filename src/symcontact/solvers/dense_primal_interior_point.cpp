@@ -196,7 +196,7 @@ bool newton_step(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate&
 }  // namespace
 
 IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, const DensePrimalOptions& options,
-                               const VectorXd* multipliers0) {
+                               const VectorXd* multipliers0, const FollowIterate* follow) {
   if (problem.num_equalities() > 0 || problem.lower_bounds())
     throw std::invalid_argument("solve_dense_primal: equality rows and bounds are not supported");
   const Index n = problem.num_variables();
@@ -228,6 +228,8 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
     residuals(sp, it);
     for (int k = 0;; ++k) {
       r.iterations = k;
+      // Followed data set at x: a point that then passes the stopping test solves the problem of its own data.
+      if (follow && it.error() <= options.follow_below && (*follow)(it.x)) residuals(sp, it);
       const double error = it.error();
       if (!std::isfinite(error)) {
         r.status_text = "non-finite iterate";

@@ -19,10 +19,10 @@ std::vector<ContactPoint> nodal_friction_points(const ContactSet& contacts, int 
   return nodal;
 }
 
-std::vector<std::shared_ptr<const FrictionTerm>> friction_terms(const FrictionState& state, const ContactSet& contacts,
+std::vector<std::shared_ptr<FrictionTerm>> friction_terms(const FrictionState& state, const ContactSet& contacts,
                                                                 const DofMap& dofs, const VectorXd& u) {
   const int num_pairs = static_cast<int>(contacts.pairs.size());
-  std::vector<std::shared_ptr<const FrictionTerm>> terms(num_pairs);
+  std::vector<std::shared_ptr<FrictionTerm>> terms(num_pairs);
   for (int p = 0; p < num_pairs; ++p) {
     if (p >= static_cast<int>(state.nodal_tau.size()) || state.nodal_tau[p].size() == 0) continue;
     const ContactFamily& fam = contacts.families()[contacts.friction_family(p)];
@@ -38,6 +38,7 @@ std::vector<std::shared_ptr<const FrictionTerm>> friction_terms(const FrictionSt
     terms[p] = std::make_shared<FrictionTerm>("friction(" + contacts.pairs[p].name + ")", slave,
                                               fam.master >= 0 ? &contacts.surfaces[fam.master] : nullptr,
                                               std::move(nodal), tau, std::move(alpha), dofs, state.u_start);
+    terms[p]->keep_zero_blocks(state.follower != nullptr);  // the follower may raise a zero τ
   }
   return terms;
 }

@@ -5,10 +5,16 @@
 #include "symcontact/solvers/contact_solver.hpp"
 #include "symcontact/solvers/coulomb_thresholds.hpp"
 #include "symcontact/solvers/lagged_fixed_point.hpp"
+#include "symcontact/solvers/primal_subproblem.hpp"
+#include "symcontact/solvers/subproblem_solver.hpp"
 
 namespace symcontact {
 
 namespace {
+
+/// Thresholds that follow the optimiser stop moving below this fraction of the loop's tolerance, so that the
+/// loop's own test, on the answer, finds them settled.
+constexpr double kFollowTolerance = 0.1;
 
 /// s such that this step's Dirichlet increment (fixed values − u) is s times the previous step's
 /// (u − u_previous_start) on every fixed DOF, to 1e-8 of the largest; 0 when they are not proportional
@@ -47,7 +53,24 @@ struct CompleteOnExit {
   }
 };
 
+/// Whether the thresholds follow the optimiser (CoulombUpdate::kInsideOptimizer): where the dense primal
+/// interior point solves condensed subproblems (GeometrySubproblem asks the same of the follower it is given).
+bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, const FrictionalOptions& o) {
+  return o.coulomb_update == CoulombUpdate::kInsideOptimizer && energy.hessian_is_constant() &&
+         o.contact.static_condensation && primal_method(contacts, o.contact.subproblem_solver)->follows_iterates();
+}
+
 }  // namespace
+
+const char* coulomb_update_name(CoulombUpdate u) {
+  return u == CoulombUpdate::kBetweenSolves ? "between_solves" : "inside_optimizer";
+}
+
+std::optional<CoulombUpdate> parse_coulomb_update(const std::string& name) {
+  for (const CoulombUpdate u : {CoulombUpdate::kBetweenSolves, CoulombUpdate::kInsideOptimizer})
+    if (name == coulomb_update_name(u)) return u;
+  return std::nullopt;
+}
 
 SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                      const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
@@ -57,6 +80,8 @@ SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& 
                                    ? proportional_increment(fixed, u, previous->u_start)
                                    : 0.0;
   CoulombThresholds coulomb(contacts, dofs, u, previous, s_extrapolate, log);
+  const bool follows = follows_optimizer(energy, contacts, options);
+  if (follows) coulomb.follow_iterates(kFollowTolerance * options.coulomb_tolerance);
   const VectorXd u_start = u;
   if (coulomb.warm() && s_extrapolate > 0.0) {
     u += s_extrapolate * (u - previous->u_start);
@@ -65,8 +90,10 @@ SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& 
     log.detail(m.str());
   }
   // Inexact inner solves (FrictionalOptions::inner_tolerance_factor) with quadratic energies only; without a
-  // Coulomb pair the one solve is the answer, to full tolerance.
-  const bool inexact = coulomb.lags() && energy.hessian_is_constant() && options.inner_tolerance_factor > 0.0;
+  // Coulomb pair the one solve is the answer, to full tolerance. Not where the thresholds follow the
+  // optimiser: its first solve already ends near the fixed point.
+  const bool inexact =
+      coulomb.lags() && energy.hessian_is_constant() && options.inner_tolerance_factor > 0.0 && !follows;
   // Between two solves only the surfaces are read (pressures, slips, the next search): with a condensed
   // workspace each solve leaves the interior out of date (ContactSolveOptions::lazy_interior) and u is made
   // whole once, when this load step ends — also when it throws (the last iterate is kept for inspection).
@@ -80,6 +107,7 @@ SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& 
   SolveReport rep = solve_lagged(coulomb, solve, u, u_start, loop, inexact, log);
   complete_on_exit.now();
   rep.friction_state = coulomb.state();
+  rep.friction_state.follower = nullptr;  // the follower ends with this step
   return rep;
 }
 

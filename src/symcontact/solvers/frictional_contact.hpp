@@ -12,11 +12,29 @@
 /// With a condensed workspace the solves of the step leave u's interior out of date, and u is made whole once,
 /// when the step ends, also when it throws (ContactSolveOptions::lazy_interior).
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "symcontact/solvers/contact_solver.hpp"
 
 namespace symcontact {
+
+/// When the Coulomb thresholds τ = μ p are updated.
+enum class CoulombUpdate {
+  /// Between contact solves only: each solve is a regularised-Tresca problem with τ fixed (Algorithm 1).
+  kBetweenSolves,
+  /// Also inside each solve, between the iterations of the dense primal interior point where it solves the
+  /// subproblem (condensed, independent rows: subproblem_solver.hpp), from the pressure of its iterate, so that
+  /// one solve gives a nearly consistent τ (coulomb_thresholds.hpp). The fixed point, its test and the outer
+  /// loop are those of kBetweenSolves: only the number of solves and iterations changes.
+  kInsideOptimizer,
+};
+
+/// The problem file's names of the choices ([contact_solver] coulomb_update): "between_solves",
+/// "inside_optimizer"; nullopt for any other string.
+const char* coulomb_update_name(CoulombUpdate u);
+std::optional<CoulombUpdate> parse_coulomb_update(const std::string& name);
 
 struct FrictionalOptions {
   /// The Tresca solves' options. Their lazy_interior is on here: the solves of a load step leave u's interior
@@ -40,6 +58,7 @@ struct FrictionalOptions {
   /// (solve_frictional_contact). Off: stop at the first change below the tolerance.
   bool converge_past_tolerance = true;
   int max_coulomb_iterations = 50;
+  CoulombUpdate coulomb_update = CoulombUpdate::kInsideOptimizer;
   /// Inexact inner solves: while τ still moves, solving each Tresca problem to the geometry tolerance is
   /// wasted, so each solve's geometry fixed point stops at max(geometry_tolerance, factor × c), c the
   /// relative threshold change ‖r_k‖∞ / ‖τ_k‖∞ that set its τ (1 for the first solve of a step); such an

@@ -1,5 +1,6 @@
 #include "symcontact/solvers/geometry_subproblem.hpp"
 
+#include "symcontact/contact/surface_tractions.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 #include "symcontact/solvers/condensation_cache.hpp"
 
@@ -12,10 +13,12 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       log_(log), friction_(friction), total_(energy), problem_(total_, fixed, dofs.num_dofs()),
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       dual_(dual_method(contacts, options.subproblem_solver)),
-      primal_(primal_method(contacts, options.subproblem_solver)) {}
+      primal_(primal_method(contacts, options.subproblem_solver)),
+      follows_(friction && friction->follower && condense_ && primal_->follows_iterates()) {}
 
 /// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out
-/// of it, so that the problem stays quadratic, and kept for the slips it reports.
+/// of it, so that the problem stays quadratic, and kept for the slips it reports — unless the thresholds follow
+/// the iterates, which may make them positive.
 ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, const VectorXd& u_it,
                                               const VectorXd& x, PhaseTimes& times) {
   {
@@ -30,7 +33,8 @@ ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, c
     if (friction_) {
       friction_terms_ = symcontact::friction_terms(*friction_, contacts_, dofs_, u_it);
       for (std::size_t p = 0; p < friction_terms_.size(); ++p)
-        if (friction_terms_[p] && friction_->nodal_tau[p].maxCoeff() > 0.0) total_.extra[p] = friction_terms_[p];
+        if (friction_terms_[p] && (follows_ || friction_->nodal_tau[p].maxCoeff() > 0.0))
+          total_.extra[p] = friction_terms_[p];
     }
   }
   condensed_.reset();
@@ -80,6 +84,18 @@ bool GeometrySubproblem::unchanged(const ContactLinearization& lin, const Vector
   return true;
 }
 
+std::function<bool(const VectorXd&)> GeometrySubproblem::follow_hook(const CondensedProblem& condensed) {
+  return [this, &condensed](const VectorXd& y) {
+    if (!friction_->follower->follow(condensed.surface_displacement(y), condensed.surface_force(y))) return false;
+    for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
+      if (!friction_terms_[p]) continue;
+      const ContactSurface& slave = contacts_.surfaces[contacts_.families()[contacts_.friction_family(p)].slave];
+      friction_terms_[p]->set_thresholds(interpolate_at_points(slave, friction_terms_[p]->points(), friction_->nodal_tau[p]));
+    }
+    return true;
+  };
+}
+
 ConstrainedProblem& GeometrySubproblem::target() {
   if (condensed_) return *condensed_;
   return problem_;
@@ -97,13 +113,17 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
   }
   const VectorXd start = condensed ? condensed->restrict(x) : x;
   const SubproblemWarmStart warm{warm_multipliers};
-  Subproblem p{target, condensed, schur, start, geometry_iteration, ipopt, close_active_set, {}};
+  Subproblem p{target, condensed, schur, start, geometry_iteration, ipopt, close_active_set, {}, {}};
   if (schur) {
     SubproblemSolution s = dual_->solve(p, warm, log_, rep.times);
     ++rep.dual_solves;
     if (s.result.success) return {std::move(s), true};
     log_.detail("  IPOPT failed on the dual (" + s.result.status_text + "); the primal is solved instead");
     rep.ipopt_iterations += s.failed_iterations + s.result.iterations;
+  }
+  if (condensed && follows_) {
+    friction_->follower->start_solve();
+    p.follow = follow_hook(*condensed);
   }
   if (friction_)
     p.restart = [this, condensed] {

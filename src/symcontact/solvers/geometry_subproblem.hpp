@@ -45,7 +45,9 @@ class GeometrySubproblem {
   /// The condensed problem of the last build(); null when it was not condensed.
   const CondensedProblem* condensed() const { return condensed_.get(); }
   /// The friction term of each pair at the last build() (null for a frictionless pair), for the reported slips.
-  const std::vector<std::shared_ptr<const FrictionTerm>>& friction_terms() const { return friction_terms_; }
+  std::vector<std::shared_ptr<const FrictionTerm>> friction_terms() const {
+    return {friction_terms_.begin(), friction_terms_.end()};
+  }
 
   /// What solve() returns: the method's solution and whether the dual gave it.
   struct Outcome {
@@ -75,8 +77,15 @@ class GeometrySubproblem {
   std::unique_ptr<DualIpopt> dual_;                       ///< null: the dual is not used
   std::unique_ptr<PrimalIpopt> primal_;
   std::unique_ptr<CondensedProblem> condensed_;
-  std::vector<std::shared_ptr<const FrictionTerm>> friction_terms_;
+  std::vector<std::shared_ptr<FrictionTerm>> friction_terms_;
   ContactLinearization last_;  ///< the rows of the last build()
+  /// The thresholds follow the optimiser's iterates (FrictionState::follower, the dense primal interior point
+  /// on a condensed problem): every friction term is kept, zero thresholds too.
+  bool follows_ = false;
+
+  /// The optimiser's hook (Subproblem::follow) on `condensed`: the follower sets the nodal thresholds, and the
+  /// friction terms take them at their points.
+  std::function<bool(const VectorXd&)> follow_hook(const CondensedProblem& condensed);
 };
 
 }  // namespace symcontact

@@ -22,17 +22,6 @@ void tighten(ContactSolveOptions& o) {
   o.geometry_tolerance *= 0.1;
 }
 
-/// c = max_p ‖r_p‖∞ / max_p ‖d_p‖∞ over the parts that lag something (1 when d = 0 and r is not).
-double relative_change(const std::vector<Eigen::VectorXd>& r, const std::vector<Eigen::VectorXd>& d) {
-  double num = 0.0, den = 0.0;
-  for (std::size_t p = 0; p < r.size(); ++p) {
-    if (r[p].size() == 0) continue;
-    num = std::max(num, r[p].lpNorm<Eigen::Infinity>());
-    den = std::max(den, d[p].lpNorm<Eigen::Infinity>());
-  }
-  return den > 0 ? num / den : (num > 0 ? 1.0 : 0.0);
-}
-
 /// Aitken's ω_k of the file comment, all parts as one vector (1 without a previous residual).
 double aitken_relaxation(const std::vector<Eigen::VectorXd>& r, const std::vector<Eigen::VectorXd>& r_prev,
                          double omega) {
@@ -210,6 +199,16 @@ SolveReport LaggedFixedPoint::run(VectorXd& u, const VectorXd& u_cold) {
 }
 
 }  // namespace
+
+double relative_change(const std::vector<Eigen::VectorXd>& r, const std::vector<Eigen::VectorXd>& d) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t p = 0; p < r.size(); ++p) {
+    if (r[p].size() == 0) continue;
+    num = std::max(num, r[p].lpNorm<Eigen::Infinity>());
+    den = std::max(den, d[p].lpNorm<Eigen::Infinity>());
+  }
+  return den > 0 ? num / den : (num > 0 ? 1.0 : 0.0);
+}
 
 SolveReport solve_lagged(LaggedTerm& term, const LaggedSolve& solve, VectorXd& u, const VectorXd& u_cold,
                          const FrictionalOptions& options, bool inexact, const Logger& log) {

@@ -64,6 +64,9 @@ class LaggedTerm {
   virtual void update(const std::vector<Eigen::VectorXd>& r, double omega) = 0;
 };
 
+/// c = max_p ‖r_p‖∞ / max_p ‖d_p‖∞ over the parts that lag something (1 when d = 0 and r is not).
+double relative_change(const std::vector<Eigen::VectorXd>& r, const std::vector<Eigen::VectorXd>& d);
+
 /// One contact solve with the term's current data, under the options the loop chose (tightened, inexact).
 using LaggedSolve = std::function<SolveReport(const ContactSolveOptions&)>;
 

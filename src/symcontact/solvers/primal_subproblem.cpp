@@ -36,7 +36,7 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     const auto tol = p.ipopt.numeric_options.find("tol");
     o.tolerance = tol != p.ipopt.numeric_options.end() ? tol->second : p.ipopt.tolerance;
     SubproblemSolution s;
-    s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers);
+    s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers, p.follow ? &p.follow : nullptr);
     s.result.status_text = "primal interior point: " + s.result.status_text;
     if (s.result.success) return s;
     log.detail("  the dense " + s.result.status_text + "; IPOPT instead");

@@ -33,6 +33,9 @@ struct Subproblem {
   bool close_active_set;               ///< close the active set exactly where the method does it itself (dual)
   /// Another start to retry from when the solve fails from `start` (the primal with friction); empty: none.
   std::function<VectorXd()> restart;
+  /// Data of the objective that follow the optimiser's iterate (Coulomb thresholds), for an optimiser that
+  /// takes them (dense_primal_interior_point.hpp, FollowIterate); empty: none.
+  std::function<bool(const VectorXd&)> follow;
 };
 
 /// The previous solution's multipliers when this iteration's constraint rows are the same rows (same
@@ -56,6 +59,8 @@ class SubproblemMethod {
   /// One subproblem, logged at `log`'s detail level when an attempt fails, timed into `times`.
   virtual SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
                                    PhaseTimes& times) = 0;
+  /// Whether the method calls Subproblem::follow between its iterations on a condensed problem.
+  virtual bool follows_iterates() const { return false; }
 };
 
 }  // namespace symcontact

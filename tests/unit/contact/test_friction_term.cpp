@@ -1,8 +1,8 @@
 // FrictionTerm, the regularised Tresca energy j = Σ_q w_q τ_q sqrt(|s_q|² + α²) (friction_term.hpp):
 // its gradient and Hessian against finite differences (the shared check_derivatives), P1 and P2, between
 // two non-matching flat blocks and against a plane obstacle, at random states, at zero slip and at
-// slips of order α; its value at the start of the step, its convexity, and the regularised law at one
-// point (tangential force −τ w s / sqrt(s² + α²)).
+// slips of order α; its value at the start of the step, its convexity, the regularised law at one
+// point (tangential force −τ w s / sqrt(s² + α²)), and new thresholds on the same points.
 //
 // Choice of the finite-difference step. η_α(s) = sqrt(s² + α²) bends on the length α: η'' = α²/r³ and
 // η''' = −3 α² s / r⁵, so |η'''| ~ 1/α² near s ~ α. A central difference of the gradient with step h
@@ -20,10 +20,12 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 
 #include "support/finite_difference.hpp"
 #include "symcontact/contact/contact_points.hpp"
 #include "symcontact/mesh/structured.hpp"
+#include "symcontact/solvers/condensed_problem.hpp"
 
 using namespace symcontact;
 using namespace symcontact::testing;
@@ -223,6 +225,34 @@ TEST_P(FrictionTermCase, ValueAtTheStartIsSumOfWeightTauAlpha) {
   const double c = 3 * kAlpha;
   EXPECT_NEAR(term.value(u0 + slave_slide(s, c)), expected * std::sqrt(c * c + kAlpha * kAlpha) / kAlpha,
               1e-12 * expected);
+}
+
+// set_thresholds: the term with new thresholds is the term built with them (value, gradient, Hessian), and
+// with the zero blocks kept its DOF support does not depend on them: a point with τ = 0 keeps its (zero)
+// Hessian block.
+TEST_P(FrictionTermCase, NewThresholdsGiveTheTermBuiltWithThemOnTheSameSupport) {
+  const Interface s = interface();
+  const Index n = s.dofs.num_dofs();
+  const VectorXd u0 = random_vector(n, 0.01, 11);
+  const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 12);
+  std::vector<double> tau = random_tau(s.points.size(), 13);
+  for (std::size_t q = 0; q < tau.size(); q += 3) tau[q] = 0.0;
+  FrictionTerm term = make_term(s, std::vector<double>(s.points.size(), 0.0), u0);
+  EXPECT_TRUE(support_of(term, u).empty()) << "no blocks of zero thresholds by default";
+  term.keep_zero_blocks(true);
+  const std::vector<Index> support = support_of(term, u);
+  EXPECT_FALSE(support.empty());
+  term.set_thresholds(tau);
+  const FrictionTerm built = make_term(s, tau, u0);
+  EXPECT_EQ(term.value(u), built.value(u));
+  VectorXd g = VectorXd::Zero(n), gb = VectorXd::Zero(n);
+  term.add_gradient(u, g);
+  built.add_gradient(u, gb);
+  EXPECT_EQ((g - gb).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((dense_hessian(term, u) - dense_hessian(built, u)).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(support_of(term, u), support);
+  EXPECT_GT(g.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_THROW(term.set_thresholds(std::vector<double>(tau.size() + 1, 1.0)), std::invalid_argument);
 }
 
 TEST_P(FrictionTermCase, HessianIsPositiveSemidefinite) {

@@ -382,6 +382,7 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_EQ(spec.contact_solver.friction.contact.max_geometry_iterations, 50);
   EXPECT_EQ(spec.contact_solver.friction.coulomb_tolerance, 1e-6);
   EXPECT_EQ(spec.contact_solver.friction.max_coulomb_iterations, 50);
+  EXPECT_EQ(spec.contact_solver.friction.coulomb_update, CoulombUpdate::kInsideOptimizer);
   EXPECT_TRUE(spec.contact_solver.friction.converge_past_tolerance);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
   EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualInteriorPoint);
@@ -488,7 +489,8 @@ TEST(ProblemReader, TrescaFriction) {
 TEST(ProblemReader, CoulombFriction) {
   const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = 2e-6\n") +
                                  "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n"
-                                 "max_step_cuts = 3\nsubproblem_solver = \"dual_ipopt\"\nconverge_past_tolerance = false\n");
+                                 "max_step_cuts = 3\nsubproblem_solver = \"dual_ipopt\"\nconverge_past_tolerance = false\n"
+                                 "coulomb_update = \"between_solves\"\n");
   const ContactSpec& c = spec.contacts.at(0);
   EXPECT_EQ(c.friction, "coulomb");
   EXPECT_EQ(c.mu, 0.3);
@@ -497,6 +499,7 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(spec.contact_solver.friction.coulomb_tolerance, 1e-8);
   EXPECT_EQ(spec.contact_solver.friction.max_coulomb_iterations, 12);
   EXPECT_FALSE(spec.contact_solver.friction.converge_past_tolerance);
+  EXPECT_EQ(spec.contact_solver.friction.coulomb_update, CoulombUpdate::kBetweenSolves);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
   EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualIpopt);
   EXPECT_EQ(spec.contact_solver.friction.contact.geometry_tolerance, 1e-6);  // the others keep their defaults
@@ -1176,7 +1179,11 @@ INSTANTIATE_TEST_SUITE_P(
         InputErrorCase{"UnknownContactSolverKey", kTwoBodies + "[contact_solver]\ntolerance = 1e-6\n",
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
-                "coulomb_tolerance, converge_past_tolerance, max_coulomb_iterations, static_condensation, subproblem_solver, max_step_cuts"},
+                "coulomb_tolerance, converge_past_tolerance, max_coulomb_iterations, coulomb_update, static_condensation, "
+                "subproblem_solver, max_step_cuts"},
+        InputErrorCase{"CoulombUpdateUnknown", kTwoBodies + "[contact_solver]\ncoulomb_update = \"always\"\n",
+                "contact_solver.coulomb_update",
+                "expected \"inside_optimizer\" or \"between_solves\", got \"always\""},
         InputErrorCase{"SubproblemSolverUnknown", kTwoBodies + "[contact_solver]\nsubproblem_solver = \"mumps\"\n",
                 "contact_solver.subproblem_solver",
                 "expected \"dual_interior_point\", \"dual_ipopt\", \"primal_ipopt\" or \"primal_interior_point\", got "

@@ -1,8 +1,9 @@
 // The dense primal interior point for min f(x) s.t. A x + b ≥ 0 (solvers/dense_primal_interior_point.hpp), on
 // random convex problems shaped like the condensed frictional subproblem: a dense positive definite quadratic
 // plus regularised |x_k| terms (the friction term's sqrt(|v|² + α²)), and sparse rows. Checked against the KKT
-// conditions and against IPOPT on the same problem, under a change of units, from a warm start, and on the
-// failures it must report as failures.
+// conditions and against IPOPT on the same problem, under a change of units, from a warm start, with the
+// weight of the |x_k| terms following the iterate (FollowIterate), and on the failures it must report as
+// failures.
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -66,6 +67,8 @@ class FrictionLikeProblem : public ConstrainedProblem {
     H.makeCompressed();
   }
   bool hessian_is_dense() const override { return true; }
+  double weight() const { return w_; }
+  void set_weight(double w) { w_ = w; }
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
@@ -121,6 +124,33 @@ TEST(DensePrimalInteriorPoint, AChangeOfUnitsChangesNeitherTheIteratesNorTheAnsw
   EXPECT_NEAR(a.iterations, b.iterations, 2);
   EXPECT_LT((b.x / 1e3 - a.x).lpNorm<Eigen::Infinity>(), 1e-8 * a.x.lpNorm<Eigen::Infinity>());
   EXPECT_LT((b.multipliers / 1e-6 - a.multipliers).lpNorm<Eigen::Infinity>(), 1e-8 * a.multipliers.lpNorm<Eigen::Infinity>());
+}
+
+// The weight w of the friction-like terms follows the iterate, w = 0.3 (1 + ½ tanh(mean x)) (as the Coulomb
+// thresholds follow the pressure): the answer is the fixed point, the solution of the problem with w fixed at
+// the value it ends with, and w is the rule's value there.
+TEST(DensePrimalInteriorPoint, DataThatFollowTheIterateEndAtTheirFixedPoint) {
+  const auto rule = [](const VectorXd& x) { return 0.3 * (1.0 + 0.5 * std::tanh(x.mean())); };
+  FrictionLikeProblem p(40, 60, 2);
+  int changes = 0;
+  const FollowIterate follow = [&](const VectorXd& x) {
+    const double w = rule(x);
+    if (std::abs(w - p.weight()) <= 1e-12 * w) return false;
+    p.set_weight(w);
+    ++changes;
+    return true;
+  };
+  const IpoptResult r = solve_dense_primal(p, VectorXd::Zero(40), DensePrimalOptions{}, nullptr, &follow);
+  ASSERT_TRUE(r.success) << r.status_text;
+  EXPECT_GE(changes, 2);
+  EXPECT_LT(std::abs(p.weight() - rule(r.x)), 1e-9 * p.weight());
+  EXPECT_GT(std::abs(p.weight() - 0.3), 1e-3) << "the rule moved w: the test exercises the hook";
+  EXPECT_LT(kkt_violation(p, r, 3.0, 1.0), 1e-8);
+  FrictionLikeProblem fixed(40, 60, 2);
+  fixed.set_weight(p.weight());
+  const IpoptResult f = solve_dense_primal(fixed, VectorXd::Zero(40), DensePrimalOptions{});
+  ASSERT_TRUE(f.success) << f.status_text;
+  EXPECT_LT((r.x - f.x).lpNorm<Eigen::Infinity>(), 1e-8 * f.x.lpNorm<Eigen::Infinity>());
 }
 
 TEST(DensePrimalInteriorPoint, AWarmStartFromTheSolutionTakesFewIterations) {
