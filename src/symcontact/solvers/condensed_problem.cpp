@@ -123,8 +123,10 @@ VectorXd CondensedProblem::with_boundary(VectorXd x, const VectorXd& y) const {
 
 VectorXd CondensedProblem::surface_displacement(const VectorXd& y) const { return bulk_.expand(with_boundary(x_ref_, y)); }
 
-VectorXd CondensedProblem::surface_force(const VectorXd& y) const {
-  const VectorXd g = load_->g_hat + sc_.schur_lower().selfadjointView<Eigen::Lower>() * y;
+VectorXd CondensedProblem::surface_force(const VectorXd& y, const VectorXd& multipliers) {
+  VectorXd g;
+  gradient(y, g);  // ĝ + S y + ∇Φ(y)
+  g = A_.transpose() * multipliers - (g - load_->g_hat - sc_.schur_lower().selfadjointView<Eigen::Lower>() * y);
   VectorXd f = VectorXd::Zero(static_cast<Index>(dof_to_b_.size()));
   for (std::size_t k = 0; k < b_dof_.size(); ++k) f[b_dof_[k]] = g[static_cast<Index>(k)];
   return f;

@@ -83,9 +83,9 @@ class CondensedProblem : public ConstrainedProblem {
   VectorXd with_boundary(VectorXd x, const VectorXd& y) const;
   /// The full DOF vector u with x_B = y and the interior of x_reference (no solve): right on the surfaces.
   VectorXd surface_displacement(const VectorXd& y) const;
-  /// The bodies' force on the DOFs of B at y, ∇E = ĝ + S y there (the interior at x_I(y)), as a full DOF
-  /// vector, zero off B.
-  VectorXd surface_force(const VectorXd& y) const;
+  /// The force on the DOFs of B that the multipliers λ balance at y, A_Bᵀλ − ∇Φ(y) (at a KKT point the bodies'
+  /// force ∇E = ĝ + S y there), as a full DOF vector, zero off B.
+  VectorXd surface_force(const VectorXd& y, const VectorXd& multipliers);
 
  private:
   const VectorXd& full_dofs(const VectorXd& y);  ///< u for the extras: x_reference with x_B = y, expanded

@@ -229,7 +229,8 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
     for (int k = 0;; ++k) {
       r.iterations = k;
       // Followed data set at x: a point that then passes the stopping test solves the problem of its own data.
-      if (follow && it.error() <= options.follow_below && (*follow)(it.x)) residuals(sp, it);
+      if (follow && it.error() <= options.follow_below && (*follow)(it.x, sp.unscaled_multipliers(it.l)))
+        residuals(sp, it);
       const double error = it.error();
       if (!std::isfinite(error)) {
         r.status_text = "non-finite iterate";

@@ -40,18 +40,18 @@ namespace symcontact {
 struct DensePrimalOptions {
   double tolerance = 1e-10;  ///< of the scaled residuals (as IPOPT's `tol`)
   int max_iterations = 200;
-  /// The scaled error below which a FollowIterate is called after each step. The Coulomb thresholds of the
-  /// pads of docs/performance.md followed from 0.1 took 10–40 % fewer iterations than from 1e-3, and the
-  /// same from 1 on the 3D pads, but one more solve on the 2D ones.
+  /// The scaled error below which a FollowIterate is called after each step. Followed from 0.1, the Coulomb
+  /// thresholds of the pads of docs/performance.md took up to 40 % fewer iterations than from 1e-3 or 1e-2
+  /// (none fewer on the 3D pad on a ball).
   double follow_below = 0.1;
 };
 
-/// Data of f that follow the iterate x (the Coulomb thresholds τ = μ p(x) of a friction term): called with x
-/// after each accepted step once the scaled error is at most `DensePrimalOptions::follow_below`, and at a
+/// Data of f that follow the iterate (the Coulomb thresholds τ = μ p of a friction term, p read from the
+/// multipliers): called with x and λ (the problem's units) after each accepted step once the scaled error is at most `DensePrimalOptions::follow_below`, and at a
 /// point that passes the stopping test. It may change f (not A, b) and returns whether it did; the method
 /// then re-evaluates the residuals at the same iterate and stops only at a point where it returned false.
 /// It must return false after finitely many calls (FollowedData).
-using FollowIterate = std::function<bool(const VectorXd& x)>;
+using FollowIterate = std::function<bool(const VectorXd& x, const VectorXd& multipliers)>;
 
 /// Solves `problem` (no equality rows, no bounds: throws std::invalid_argument otherwise) from x0; a warm start
 /// when `multipliers0` (size p, λ ≥ 0) is given. The result is in IpoptResult's form (multipliers λ with

@@ -84,13 +84,15 @@ bool GeometrySubproblem::unchanged(const ContactLinearization& lin, const Vector
   return true;
 }
 
-std::function<bool(const VectorXd&)> GeometrySubproblem::follow_hook(const CondensedProblem& condensed) {
-  return [this, &condensed](const VectorXd& y) {
-    if (!friction_->follower->follow(condensed.surface_displacement(y), condensed.surface_force(y))) return false;
+std::function<bool(const VectorXd&, const VectorXd&)> GeometrySubproblem::follow_hook(CondensedProblem& condensed) {
+  return [this, &condensed](const VectorXd& y, const VectorXd& multipliers) {
+    if (!friction_->follower->follow(condensed.surface_displacement(y), condensed.surface_force(y, multipliers)))
+      return false;
     for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
       if (!friction_terms_[p]) continue;
       const ContactSurface& slave = contacts_.surfaces[contacts_.families()[contacts_.friction_family(p)].slave];
-      friction_terms_[p]->set_thresholds(interpolate_at_points(slave, friction_terms_[p]->points(), friction_->nodal_tau[p]));
+      const std::vector<ContactPoint>& points = friction_terms_[p]->points();
+      friction_terms_[p]->set_thresholds(interpolate_at_points(slave, points, friction_->nodal_tau[p]));
     }
     return true;
   };
@@ -123,7 +125,7 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
   }
   if (condensed && follows_) {
     friction_->follower->start_solve();
-    p.follow = follow_hook(*condensed);
+    p.follow = follow_hook(*condensed_);
   }
   if (friction_)
     p.restart = [this, condensed] {

@@ -85,7 +85,7 @@ class GeometrySubproblem {
 
   /// The optimiser's hook (Subproblem::follow) on `condensed`: the follower sets the nodal thresholds, and the
   /// friction terms take them at their points.
-  std::function<bool(const VectorXd&)> follow_hook(const CondensedProblem& condensed);
+  std::function<bool(const VectorXd&, const VectorXd&)> follow_hook(CondensedProblem& condensed);
 };
 
 }  // namespace symcontact

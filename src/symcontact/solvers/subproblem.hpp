@@ -35,7 +35,7 @@ struct Subproblem {
   std::function<VectorXd()> restart;
   /// Data of the objective that follow the optimiser's iterate (Coulomb thresholds), for an optimiser that
   /// takes them (dense_primal_interior_point.hpp, FollowIterate); empty: none.
-  std::function<bool(const VectorXd&)> follow;
+  std::function<bool(const VectorXd& x, const VectorXd& multipliers)> follow;
 };
 
 /// The previous solution's multipliers when this iteration's constraint rows are the same rows (same

@@ -133,7 +133,7 @@ TEST(DensePrimalInteriorPoint, DataThatFollowTheIterateEndAtTheirFixedPoint) {
   const auto rule = [](const VectorXd& x) { return 0.3 * (1.0 + 0.5 * std::tanh(x.mean())); };
   FrictionLikeProblem p(40, 60, 2);
   int changes = 0;
-  const FollowIterate follow = [&](const VectorXd& x) {
+  const FollowIterate follow = [&](const VectorXd& x, const VectorXd&) {
     const double w = rule(x);
     if (std::abs(w - p.weight()) <= 1e-12 * w) return false;
     p.set_weight(w);
