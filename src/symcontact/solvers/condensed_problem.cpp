@@ -124,9 +124,9 @@ VectorXd CondensedProblem::with_boundary(VectorXd x, const VectorXd& y) const {
 VectorXd CondensedProblem::surface_displacement(const VectorXd& y) const { return bulk_.expand(with_boundary(x_ref_, y)); }
 
 VectorXd CondensedProblem::surface_force(const VectorXd& y, const VectorXd& multipliers) {
-  VectorXd g;
-  gradient(y, g);  // ĝ + S y + ∇Φ(y)
-  g = A_.transpose() * multipliers - (g - load_->g_hat - sc_.schur_lower().selfadjointView<Eigen::Lower>() * y);
+  VectorXd g = VectorXd::Zero(y.size());
+  add_extras_gradient(y, g);
+  g = A_.transpose() * multipliers - g;
   VectorXd f = VectorXd::Zero(static_cast<Index>(dof_to_b_.size()));
   for (std::size_t k = 0; k < b_dof_.size(); ++k) f[b_dof_[k]] = g[static_cast<Index>(k)];
   return f;
@@ -150,6 +150,10 @@ double CondensedProblem::objective(const VectorXd& y) {
 void CondensedProblem::gradient(const VectorXd& y, VectorXd& g) {
   const SparseMatrix& S = sc_.schur_lower();
   g = load_->g_hat + S.selfadjointView<Eigen::Lower>() * y;
+  add_extras_gradient(y, g);
+}
+
+void CondensedProblem::add_extras_gradient(const VectorXd& y, VectorXd& g) {
   if (extras_.empty()) return;
   const VectorXd& u = full_dofs(y);
   for (const auto& t : extras_) t->add_gradient(u, gu_);

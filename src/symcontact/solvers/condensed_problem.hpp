@@ -89,6 +89,7 @@ class CondensedProblem : public ConstrainedProblem {
 
  private:
   const VectorXd& full_dofs(const VectorXd& y);  ///< u for the extras: x_reference with x_B = y, expanded
+  void add_extras_gradient(const VectorXd& y, VectorXd& g);  ///< g += ∇Φ(y) (B order)
 
   ReducedProblem& bulk_;
   const StaticCondensation& sc_;

@@ -5,7 +5,6 @@
 #include "symcontact/solvers/contact_solver.hpp"
 #include "symcontact/solvers/coulomb_thresholds.hpp"
 #include "symcontact/solvers/lagged_fixed_point.hpp"
-#include "symcontact/solvers/primal_subproblem.hpp"
 #include "symcontact/solvers/subproblem_solver.hpp"
 
 namespace symcontact {
@@ -54,10 +53,10 @@ struct CompleteOnExit {
 };
 
 /// Whether the thresholds follow the optimiser (CoulombUpdate::kInsideOptimizer): where the dense primal
-/// interior point solves condensed subproblems (GeometrySubproblem asks the same of the follower it is given).
+/// interior point solves condensed subproblems, the only optimiser that calls Subproblem::follow.
 bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, const FrictionalOptions& o) {
   return o.coulomb_update == CoulombUpdate::kInsideOptimizer && energy.hessian_is_constant() &&
-         o.contact.static_condensation && primal_method(contacts, o.contact.subproblem_solver)->follows_iterates();
+         o.contact.static_condensation && dense_primal_first(contacts, o.contact.subproblem_solver);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       dual_(dual_method(contacts, options.subproblem_solver)),
       primal_(primal_method(contacts, options.subproblem_solver)),
-      follows_(friction && friction->follower && condense_ && primal_->follows_iterates()) {}
+      follows_(friction && friction->follower) {}
 
 /// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out
 /// of it, so that the problem stays quadratic, and kept for the slips it reports — unless the thresholds follow
@@ -89,7 +89,7 @@ std::function<bool(const VectorXd&, const VectorXd&)> GeometrySubproblem::follow
     if (!friction_->follower->follow(condensed.surface_displacement(y), condensed.surface_force(y, multipliers)))
       return false;
     for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
-      if (!friction_terms_[p]) continue;
+      if (!friction_terms_[p] || contacts_.pairs[p].friction != FrictionLaw::kCoulomb) continue;
       const ContactSurface& slave = contacts_.surfaces[contacts_.families()[contacts_.friction_family(p)].slave];
       const std::vector<ContactPoint>& points = friction_terms_[p]->points();
       friction_terms_[p]->set_thresholds(interpolate_at_points(slave, points, friction_->nodal_tau[p]));

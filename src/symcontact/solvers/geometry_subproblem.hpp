@@ -79,8 +79,8 @@ class GeometrySubproblem {
   std::unique_ptr<CondensedProblem> condensed_;
   std::vector<std::shared_ptr<FrictionTerm>> friction_terms_;
   ContactLinearization last_;  ///< the rows of the last build()
-  /// The thresholds follow the optimiser's iterates (FrictionState::follower, the dense primal interior point
-  /// on a condensed problem): every friction term is kept, zero thresholds too.
+  /// The thresholds follow the optimiser's iterates (FrictionState::follower, given only where the dense
+  /// primal interior point solves condensed subproblems): every friction term is kept, zero thresholds too.
   bool follows_ = false;
 
   /// The optimiser's hook (Subproblem::follow) on `condensed`: the follower sets the nodal thresholds, and the

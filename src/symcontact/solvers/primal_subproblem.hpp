@@ -23,7 +23,6 @@ class PrimalInteriorPoint : public PrimalIpopt {
  public:
   SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
                            PhaseTimes& times) override;
-  bool follows_iterates() const override { return true; }
 };
 
 }  // namespace symcontact

@@ -59,8 +59,6 @@ class SubproblemMethod {
   /// One subproblem, logged at `log`'s detail level when an attempt fails, timed into `times`.
   virtual SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
                                    PhaseTimes& times) = 0;
-  /// Whether the method calls Subproblem::follow between its iterations on a condensed problem.
-  virtual bool follows_iterates() const { return false; }
 };
 
 }  // namespace symcontact

@@ -44,10 +44,14 @@ std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSol
   return std::make_unique<DualIpopt>();
 }
 
-std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
+bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice) {
   const bool interior_point =
       choice == SubproblemSolver::kPrimalInteriorPoint || choice == SubproblemSolver::kDualInteriorPoint;
-  if (interior_point && independent_rows(contacts)) return std::make_unique<PrimalInteriorPoint>();
+  return interior_point && independent_rows(contacts);
+}
+
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
+  if (dense_primal_first(contacts, choice)) return std::make_unique<PrimalInteriorPoint>();
   return std::make_unique<PrimalIpopt>();
 }
 

@@ -54,6 +54,10 @@ bool independent_rows(const ContactSet& contacts);
 /// rows are independent, IPOPT on the dual for symmetric pairs and self-contact; null for the primal choices.
 std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice);
 
+/// Whether the primal subproblems of a solve under `choice` go to the dense primal interior point first (the
+/// "interior_point" choices, rows independent); primal_method() gives it then.
+bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice);
+
 /// The primal method of a solve under `choice` (primal_subproblem.hpp): with the "interior_point" choices the
 /// dense interior point first where the rows are independent (on the nearly dependent rows of a symmetric pair
 /// it took five times IPOPT's iterations and 3.6 times its time: docs/performance.md, clamped-plates), IPOPT
