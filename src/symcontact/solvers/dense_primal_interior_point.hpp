@@ -29,6 +29,7 @@
 /// a factorisation that breaks down twice, or on an f that cannot be evaluated. It never reports a point that
 /// does not pass that test as a success.
 
+#include <algorithm>
 #include <functional>
 #include <string>
 
@@ -44,6 +45,13 @@ struct DensePrimalOptions {
   /// thresholds of the pads of docs/performance.md took up to 40 % fewer iterations than from 1e-3 or 1e-2
   /// (none fewer on the 3D pad on a ball).
   double follow_below = 0.1;
+  /// follow_below for a solve whose followed data start at the fixed point of a nearby problem (a later
+  /// geometry iteration: the same thresholds, the rows moved a little). Followed from 0.1, each change of the
+  /// data re-opens r_d in proportion to the step's change of λ and the method converges linearly, μ tenfold per
+  /// iteration; followed near the end it converges first and adjusts the data once or twice (the 3D pad on a
+  /// ball of docs/performance.md: 210 → 187 iterations at 4e3 DOFs). Not closer to the tolerance than 1e-8: a
+  /// change of the data once μ has collapsed can leave the line search at the round-off floor.
+  static double follow_below_near_fixed_point(double tolerance) { return std::max(1e-8, 10.0 * tolerance); }
 };
 
 /// Data of f that follow the iterate (the Coulomb thresholds τ = μ p of a friction term, p read from the

@@ -35,6 +35,9 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     // IPOPT's tolerance, also when the problem file sets it ([ipopt] tol).
     const auto tol = p.ipopt.numeric_options.find("tol");
     o.tolerance = tol != p.ipopt.numeric_options.end() ? tol->second : p.ipopt.tolerance;
+    // A later geometry iteration starts from thresholds at the previous iteration's fixed point.
+    if (p.follow && p.geometry_iteration > 1)
+      o.follow_below = DensePrimalOptions::follow_below_near_fixed_point(o.tolerance);
     SubproblemSolution s;
     s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers, p.follow ? &p.follow : nullptr);
     s.result.status_text = "primal interior point: " + s.result.status_text;

@@ -49,16 +49,16 @@ class FrictionLikeProblem : public ConstrainedProblem {
   Index num_variables() const override { return Q_.rows(); }
   double objective(const VectorXd& x) override {
     double f = 0.5 * x.dot(Q_ * x) - q_.dot(x);
-    for (Index k = 0; k < x.size() / 2; ++k) f += w_ * std::sqrt(x[k] * x[k] + alpha_ * alpha_);
+    for (Index k = 0; k < x.size() / 2; ++k) f += w(k) * std::sqrt(x[k] * x[k] + alpha_ * alpha_);
     return f;
   }
   void gradient(const VectorXd& x, VectorXd& g) override {
     g = Q_ * x - q_;
-    for (Index k = 0; k < x.size() / 2; ++k) g[k] += w_ * x[k] / std::sqrt(x[k] * x[k] + alpha_ * alpha_);
+    for (Index k = 0; k < x.size() / 2; ++k) g[k] += w(k) * x[k] / std::sqrt(x[k] * x[k] + alpha_ * alpha_);
   }
   void hessian_lower(const VectorXd& x, SparseMatrix& H) override {
     MatrixXd D = Q_;
-    for (Index k = 0; k < x.size() / 2; ++k) D(k, k) += w_ * alpha_ * alpha_ / std::pow(x[k] * x[k] + alpha_ * alpha_, 1.5);
+    for (Index k = 0; k < x.size() / 2; ++k) D(k, k) += w(k) * alpha_ * alpha_ / std::pow(x[k] * x[k] + alpha_ * alpha_, 1.5);
     H = D.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
     // the same pattern at every call: the full lower triangle
     for (Index j = 0; j < D.cols(); ++j)
@@ -68,14 +68,20 @@ class FrictionLikeProblem : public ConstrainedProblem {
   }
   bool hessian_is_dense() const override { return true; }
   double weight() const { return w_; }
+  void shift_offset(double fraction) { b_.array() += fraction * b_.cwiseAbs().maxCoeff(); }
   void set_weight(double w) { w_ = w; }
+  /// Weights of each |x_k| term instead of the one w (empty: w for every term).
+  const VectorXd& weights() const { return wk_; }
+  void set_weights(const VectorXd& w) { wk_ = w; }
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
  private:
   MatrixXd Q_;
   VectorXd q_;
+  double w(Index k) const { return wk_.size() ? wk_[k] : w_; }
   double w_, alpha_;
+  VectorXd wk_;
   SparseMatrix A_;
   VectorXd b_;
 };
@@ -151,6 +157,50 @@ TEST(DensePrimalInteriorPoint, DataThatFollowTheIterateEndAtTheirFixedPoint) {
   const IpoptResult f = solve_dense_primal(fixed, VectorXd::Zero(40), DensePrimalOptions{});
   ASSERT_TRUE(f.success) << f.status_text;
   EXPECT_LT((r.x - f.x).lpNorm<Eigen::Infinity>(), 1e-8 * f.x.lpNorm<Eigen::Infinity>());
+}
+
+// A re-solve whose followed data start at their fixed point, the rows moved a little (a later geometry
+// iteration): following near the end (DensePrimalOptions::follow_below_near_fixed_point, as PrimalInteriorPoint
+// does there) succeeds at a tight tolerance and ends at the fixed point that following from the default 0.1
+// reaches. (Followed from 1e-9 here, it stops at the line search's round-off floor; the iterations it saves on
+// the pads on a ball are measured in docs/performance.md.)
+TEST(DensePrimalInteriorPoint, FollowingNearTheEndFromAFixedPointEndsAtTheSameFixedPoint) {
+  // w_k = 0.2 (1 + λ_k): each term's weight follows one row's multiplier, as τ = μ p follows the pressure.
+  const Index n = 40, m = 60;
+  const auto rule = [&](const VectorXd& l) { return VectorXd(0.2 * (1.0 + l.head(n / 2).array())); };
+  const auto follower = [&](FrictionLikeProblem& q) {
+    return FollowIterate([&](const VectorXd&, const VectorXd& l) {
+      const VectorXd w = rule(l);
+      if ((w - q.weights()).lpNorm<Eigen::Infinity>() <= 1e-12 * w.lpNorm<Eigen::Infinity>()) return false;
+      q.set_weights(w);
+      return true;
+    });
+  };
+  DensePrimalOptions tight;  // solutions within 1e-8 of the exact one (as in the warm start's test below)
+  tight.tolerance = 1e-12;
+  FrictionLikeProblem p(n, m, 2);
+  p.set_weights(VectorXd::Constant(n / 2, 0.2));
+  const FollowIterate follow = follower(p);
+  const IpoptResult first = solve_dense_primal(p, VectorXd::Zero(n), tight, nullptr, &follow);
+  ASSERT_TRUE(first.success) << first.status_text;
+  const auto resolve = [&](double follow_below, FrictionLikeProblem& q) {
+    q.shift_offset(1e-3);  // the rows moved by 1e-3 of b
+    q.set_weights(p.weights());
+    const FollowIterate f = follower(q);
+    DensePrimalOptions o = tight;
+    o.follow_below = follow_below;
+    return solve_dense_primal(q, first.x, o, &first.multipliers, &f);
+  };
+  FrictionLikeProblem qe(n, m, 2), ql(n, m, 2);
+  const IpoptResult early = resolve(0.1, qe);
+  const IpoptResult late = resolve(DensePrimalOptions::follow_below_near_fixed_point(tight.tolerance), ql);
+  ASSERT_TRUE(early.success && late.success) << early.status_text << " / " << late.status_text;
+  const double w_scale = ql.weights().lpNorm<Eigen::Infinity>();
+  EXPECT_GT((ql.weights() - p.weights()).lpNorm<Eigen::Infinity>(), 1e-6 * w_scale) << "the hook moved the weights";
+  EXPECT_LT((ql.weights() - rule(late.multipliers)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
+  EXPECT_LT((ql.weights() - qe.weights()).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
+  EXPECT_LT((late.x - early.x).lpNorm<Eigen::Infinity>(), 1e-8 * early.x.lpNorm<Eigen::Infinity>());
+  EXPECT_LE(late.iterations, early.iterations + 1);
 }
 
 TEST(DensePrimalInteriorPoint, AWarmStartFromTheSolutionTakesFewIterations) {
