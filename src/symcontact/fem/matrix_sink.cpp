@@ -33,4 +33,29 @@ SparseMatrix ReducedTripletSink::to_lower_matrix(Index num_free) const {
   return A;
 }
 
+void DenseLowerSink::add(const Index* dofs, int n, const double* K) {
+  for (int j = 0; j < n; ++j) {
+    const Index bj = index_[dofs[j]];
+    if (bj < 0) continue;
+    for (int i = 0; i < n; ++i) {
+      const Index bi = index_[dofs[i]];
+      if (bi < bj) continue;  // not a row (−1) or upper triangle
+      data_[bi + bj * m_] += s_ * K[i + j * n];
+    }
+  }
+}
+
+void ProductSink::add(const Index* dofs, int n, const double* K) {
+  for (int i = 0; i < n; ++i) {
+    const Index bi = index_[dofs[i]];
+    if (bi < 0) continue;
+    double sum = 0.0;
+    for (int j = 0; j < n; ++j) {
+      const Index bj = index_[dofs[j]];
+      if (bj >= 0) sum += K[i + j * n] * v_[bj];
+    }
+    out_[bi] += sum;
+  }
+}
+
 }  // namespace symcontact

@@ -27,6 +27,12 @@ class ConstrainedProblem {
   /// The lower triangle (row ≥ column) of ∇²f(x), compressed (column-major). Its sparsity pattern
   /// must be the same at every call within one solve; explicit zeros are allowed.
   virtual void hessian_lower(const VectorXd& x, SparseMatrix& H) = 0;
+  /// M += s ∇²f(x) on the lower triangle of the dense column-major n × n matrix M (the dense interior point's
+  /// normal matrix). The default adds the entries of hessian_lower(); a problem whose Hessian is nearly full
+  /// adds its terms directly, without a sparse copy (the condensed problem: S and the friction blocks).
+  virtual void add_hessian_lower(const VectorXd& x, double s, Eigen::Ref<MatrixXd> M);
+  /// out = ∇²f(x) v. The default multiplies with hessian_lower().
+  virtual void hessian_product(const VectorXd& x, const VectorXd& v, VectorXd& out);
   /// True when ∇²f does not depend on x.
   virtual bool hessian_is_constant() const { return false; }
   /// True when ∇²f is (nearly) full, so that dense factorisations beat sparse ones on it (the condensed

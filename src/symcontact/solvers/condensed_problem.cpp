@@ -176,4 +176,23 @@ void CondensedProblem::hessian_lower(const VectorXd& y, SparseMatrix& H) {
   H = S + sink.to_lower_matrix(static_cast<Index>(sc_.boundary().size()));
 }
 
+void CondensedProblem::add_hessian_lower(const VectorXd& y, double s, Eigen::Ref<MatrixXd> M) {
+  const SparseMatrix& S = sc_.schur_lower();
+  for (Index j = 0; j < S.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(S, j); it; ++it) M(it.row(), j) += s * it.value();  // S is lower
+  if (extras_.empty()) return;
+  const VectorXd& u = full_dofs(y);
+  DenseLowerSink sink(dof_to_b_, s, M.data(), M.outerStride());
+  for (const auto& t : extras_) t->add_hessian(u, sink);
+}
+
+void CondensedProblem::hessian_product(const VectorXd& y, const VectorXd& v, VectorXd& out) {
+  const SparseMatrix& S = sc_.schur_lower();
+  out = S.selfadjointView<Eigen::Lower>() * v;
+  if (extras_.empty()) return;
+  const VectorXd& u = full_dofs(y);
+  ProductSink sink(dof_to_b_, v, out);
+  for (const auto& t : extras_) t->add_hessian(u, sink);
+}
+
 }  // namespace symcontact

@@ -70,6 +70,8 @@ class CondensedProblem : public ConstrainedProblem {
   double objective(const VectorXd& y) override;
   void gradient(const VectorXd& y, VectorXd& g) override;
   void hessian_lower(const VectorXd& y, SparseMatrix& H) override;
+  void add_hessian_lower(const VectorXd& y, double s, Eigen::Ref<MatrixXd> M) override;  ///< S, then the extras
+  void hessian_product(const VectorXd& y, const VectorXd& v, VectorXd& out) override;
   bool hessian_is_constant() const override { return extras_.empty(); }
   bool hessian_is_dense() const override { return true; }  ///< S = K_BB − K_BI K_II⁻¹ K_IB is full
   const SparseMatrix& constraint_matrix() const override { return A_; }

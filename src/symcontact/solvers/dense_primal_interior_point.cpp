@@ -45,20 +45,17 @@ class ScaledProblem {
     problem_.gradient(x, g);
     return g / g_;
   }
-  /// M ← ∇²_x̃ f̃ = ∇²f ℓ / g, dense lower triangle.
-  /// Keeps ∇²f(x) for hessian_times().
+  /// M ← ∇²_x̃ f̃ = ∇²f ℓ / g, dense lower triangle. Keeps x for hessian_times().
   void hessian(const VectorXd& x, AlignedMatrix& M) {
-    problem_.hessian_lower(x, H_);
     auto m = M.map();
     m.setZero();
-    const double s = l_ / g_;
-    for (Index j = 0; j < H_.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(H_, j); it; ++it)
-        m(std::max(it.row(), j), std::min(it.row(), j)) += s * it.value();
+    problem_.add_hessian_lower(x, l_ / g_, m);
+    x_hessian_ = x;
   }
   /// ∇²f̃ v at the point of the last hessian() call.
   VectorXd hessian_times(const VectorXd& v) const {
-    VectorXd hv = H_.selfadjointView<Eigen::Lower>() * v;
+    VectorXd hv;
+    problem_.hessian_product(x_hessian_, v, hv);
     return (l_ / g_) * hv;
   }
   double length() const { return l_; }
@@ -72,7 +69,7 @@ class ScaledProblem {
   VectorXd row_;
   SparseMatrix A_;
   VectorXd b_;
-  SparseMatrix H_;  ///< ∇²f (lower triangle) at the last hessian() call
+  VectorXd x_hessian_;  ///< x at the last hessian() call
 };
 
 /// The state of one iteration and its residuals (scaled).

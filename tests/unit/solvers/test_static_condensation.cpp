@@ -133,6 +133,29 @@ class SurfaceTerm : public EnergyTerm {
   std::vector<Index> dofs_;
 };
 
+/// Φ(u) = 0.25 sqrt((u_a − 2 u_b)² + 0.01): a term whose Hessian block couples two DOFs.
+class PairTerm : public EnergyTerm {
+ public:
+  PairTerm(Index a, Index b) : a_(a), b_(b) {}
+  std::string name() const override { return "pair"; }
+  double value(const VectorXd& u) const override { return 0.25 * std::sqrt(r(u) * r(u) + 0.01); }
+  void add_gradient(const VectorXd& u, VectorXd& g) const override {
+    const double d = 0.25 * r(u) / std::sqrt(r(u) * r(u) + 0.01);
+    g[a_] += d;
+    g[b_] -= 2.0 * d;
+  }
+  void add_hessian(const VectorXd& u, MatrixSink& sink) const override {
+    const double h = 0.25 * 0.01 / std::pow(r(u) * r(u) + 0.01, 1.5);
+    const Index dofs[2] = {a_, b_};
+    const double block[4] = {h, -2.0 * h, -2.0 * h, 4.0 * h};
+    sink.add(dofs, 2, block);
+  }
+
+ private:
+  double r(const VectorXd& u) const { return u[a_] - 2.0 * u[b_]; }
+  Index a_, b_;
+};
+
 /// The condensed problem seen as an EnergyTerm of y, for the shared finite-difference check.
 class CondensedAsEnergy : public EnergyTerm {
  public:
@@ -219,6 +242,52 @@ TEST(CondensedProblem, MatchesTheFullProblemAndFiniteDifferences) {
   const symcontact::testing::FdResult fd = symcontact::testing::check_derivatives(as_energy, y);
   EXPECT_LT(fd.gradient_error, 1e-7);
   EXPECT_LT(fd.hessian_error, 1e-7);
+}
+
+// The dense interior point's access to the Hessian (add_hessian_lower, hessian_product) gives the matrix of
+// hessian_lower(), the surface terms' blocks included (one that couples two DOFs, listed in either order).
+TEST(CondensedProblem, DenseHessianAndProductAreTheSparseHessian) {
+  const SparseMatrix k = grid_laplacian(10, 0.0);
+  const Index n = k.rows();
+  QuadraticEnergy bulk_energy(k, VectorXd::LinSpaced(n, 0.5, -0.2));
+  FixedDofs fixed;
+  fixed.fix(0, 0.1);
+  ReducedProblem bulk(bulk_energy, fixed, n);
+  const Index nf = bulk.num_free();
+  std::vector<Index> b_free = some_indices(nf, 12, 5);
+  std::sort(b_free.begin(), b_free.end());
+  StaticCondensation sc;
+  SparseMatrix kff;
+  bulk.hessian_lower(VectorXd::Zero(nf), kff);
+  sc.compute(kff, b_free);
+  std::vector<Index> free_dof(nf);
+  for (Index d = 0; d < n; ++d)
+    if (bulk.free_index()[d] >= 0) free_dof[bulk.free_index()[d]] = d;
+  const std::vector<std::shared_ptr<const EnergyTerm>> extras = {
+      std::make_shared<SurfaceTerm>(std::vector<Index>{free_dof[b_free[0]], free_dof[b_free[6]]}),
+      std::make_shared<PairTerm>(free_dof[b_free[8]], free_dof[b_free[3]]),
+      std::make_shared<PairTerm>(free_dof[b_free[2]], free_dof[b_free[10]])};
+  CondensedProblem cp(bulk, sc, std::make_shared<const CondensedLoad>(condense_load(bulk, sc)), extras,
+                      SparseMatrix(0, nf), VectorXd(), VectorXd::Constant(nf, 0.2));
+  const Index m = cp.num_variables();
+  const VectorXd y = VectorXd::LinSpaced(m, -0.3, 0.5);
+  SparseMatrix h;
+  cp.hessian_lower(y, h);
+  const MatrixXd ref = MatrixXd(h).triangularView<Eigen::Lower>();
+  MatrixXd dense = MatrixXd::Constant(m, m, 1.0);  // added to, lower triangle only
+  cp.add_hessian_lower(y, 2.5, dense);
+  const MatrixXd added = (dense - MatrixXd::Constant(m, m, 1.0)).triangularView<Eigen::Lower>();
+  EXPECT_LT((added - 2.5 * ref).cwiseAbs().maxCoeff(), 1e-14 * ref.cwiseAbs().maxCoeff());
+  EXPECT_EQ((dense.triangularView<Eigen::StrictlyUpper>().toDenseMatrix() -
+             MatrixXd::Constant(m, m, 1.0).triangularView<Eigen::StrictlyUpper>().toDenseMatrix())
+                .cwiseAbs()
+                .maxCoeff(),
+            0.0);
+  const VectorXd v = VectorXd::LinSpaced(m, 1.0, -2.0);
+  VectorXd hv;
+  cp.hessian_product(y, v, hv);
+  const VectorXd hv_ref = h.selfadjointView<Eigen::Lower>() * v;
+  EXPECT_LT((hv - hv_ref).lpNorm<Eigen::Infinity>(), 1e-13 * hv_ref.lpNorm<Eigen::Infinity>());
 }
 
 TEST(CondensedProblem, ConstraintOutsideTheCondensedSetIsRejected) {
