@@ -133,6 +133,34 @@ class SurfaceTerm : public EnergyTerm {
   std::vector<Index> dofs_;
 };
 
+/// The energy of a grid Laplacian (loads 0.5 … −0.2) held by DOFs 0 and 5, its stiffness condensed onto
+/// `count` of its free DOFs; free_dof maps a free index to its DOF (surface terms live on DOFs).
+struct GridCondensation {
+  GridCondensation(int grid, int count, unsigned seed)
+      : k(grid_laplacian(grid, 0.0)), energy(k, VectorXd::LinSpaced(k.rows(), 0.5, -0.2)), bulk(energy, held(), k.rows()),
+        nf(bulk.num_free()), b_free(some_indices(nf, count, seed)), free_dof(nf) {
+    std::sort(b_free.begin(), b_free.end());
+    SparseMatrix kff;
+    bulk.hessian_lower(VectorXd::Zero(nf), kff);
+    sc.compute(kff, b_free);
+    for (Index d = 0; d < k.rows(); ++d)
+      if (bulk.free_index()[d] >= 0) free_dof[bulk.free_index()[d]] = d;
+  }
+  const FixedDofs& held() {
+    fixed.fix(0, 0.1);
+    fixed.fix(5, -0.2);
+    return fixed;
+  }
+  SparseMatrix k;
+  QuadraticEnergy energy;
+  FixedDofs fixed;
+  ReducedProblem bulk;
+  Index nf;
+  std::vector<Index> b_free;
+  std::vector<Index> free_dof;
+  StaticCondensation sc;
+};
+
 /// Φ(u) = 0.25 sqrt((u_a − 2 u_b)² + 0.01): a term whose Hessian block couples two DOFs.
 class PairTerm : public EnergyTerm {
  public:
@@ -183,26 +211,14 @@ class CondensedAsEnergy : public EnergyTerm {
 }  // namespace
 
 TEST(CondensedProblem, MatchesTheFullProblemAndFiniteDifferences) {
-  const SparseMatrix k = grid_laplacian(12, 0.0);  // held by the Dirichlet DOFs below
-  const Index n = k.rows();
-  const VectorXd f = VectorXd::LinSpaced(n, 0.5, -0.2);
-  QuadraticEnergy bulk_energy(k, f);
-  FixedDofs fixed;
-  fixed.fix(0, 0.1);
-  fixed.fix(5, -0.2);
-  ReducedProblem bulk(bulk_energy, fixed, n);
-  const Index nf = bulk.num_free();
   // B: some free DOFs; a surface term on part of them; constraints on B.
-  std::vector<Index> b_free = some_indices(nf, 17, 3);
-  std::sort(b_free.begin(), b_free.end());
-  StaticCondensation sc;
-  SparseMatrix kff;
-  bulk.hessian_lower(VectorXd::Zero(nf), kff);
-  sc.compute(kff, b_free);
-  // free index → DOF, for the surface term (which lives on global DOFs)
-  std::vector<Index> free_dof(nf);
-  for (Index d = 0; d < n; ++d)
-    if (bulk.free_index()[d] >= 0) free_dof[bulk.free_index()[d]] = d;
+  GridCondensation g(12, 17, 3);
+  const Index n = g.k.rows();
+  ReducedProblem& bulk = g.bulk;
+  const Index nf = bulk.num_free();
+  const std::vector<Index>& b_free = g.b_free;
+  const StaticCondensation& sc = g.sc;
+  const std::vector<Index>& free_dof = g.free_dof;
   auto surface = std::make_shared<SurfaceTerm>(std::vector<Index>{free_dof[b_free[1]], free_dof[b_free[4]],
                                                                     free_dof[b_free[9]]});
   std::vector<Triplet> t = {{0, static_cast<int>(b_free[2]), 1.0}, {1, static_cast<int>(b_free[7]), -2.0}};
@@ -247,28 +263,15 @@ TEST(CondensedProblem, MatchesTheFullProblemAndFiniteDifferences) {
 // The dense interior point's access to the Hessian (add_hessian_lower, hessian_product) gives the matrix of
 // hessian_lower(), the surface terms' blocks included (one that couples two DOFs, listed in either order).
 TEST(CondensedProblem, DenseHessianAndProductAreTheSparseHessian) {
-  const SparseMatrix k = grid_laplacian(10, 0.0);
-  const Index n = k.rows();
-  QuadraticEnergy bulk_energy(k, VectorXd::LinSpaced(n, 0.5, -0.2));
-  FixedDofs fixed;
-  fixed.fix(0, 0.1);
-  ReducedProblem bulk(bulk_energy, fixed, n);
-  const Index nf = bulk.num_free();
-  std::vector<Index> b_free = some_indices(nf, 12, 5);
-  std::sort(b_free.begin(), b_free.end());
-  StaticCondensation sc;
-  SparseMatrix kff;
-  bulk.hessian_lower(VectorXd::Zero(nf), kff);
-  sc.compute(kff, b_free);
-  std::vector<Index> free_dof(nf);
-  for (Index d = 0; d < n; ++d)
-    if (bulk.free_index()[d] >= 0) free_dof[bulk.free_index()[d]] = d;
+  GridCondensation g(10, 12, 5);
+  const std::vector<Index>& b_free = g.b_free;
+  const std::vector<Index>& free_dof = g.free_dof;
   const std::vector<std::shared_ptr<const EnergyTerm>> extras = {
       std::make_shared<SurfaceTerm>(std::vector<Index>{free_dof[b_free[0]], free_dof[b_free[6]]}),
       std::make_shared<PairTerm>(free_dof[b_free[8]], free_dof[b_free[3]]),
       std::make_shared<PairTerm>(free_dof[b_free[2]], free_dof[b_free[10]])};
-  CondensedProblem cp(bulk, sc, std::make_shared<const CondensedLoad>(condense_load(bulk, sc)), extras,
-                      SparseMatrix(0, nf), VectorXd(), VectorXd::Constant(nf, 0.2));
+  CondensedProblem cp(g.bulk, g.sc, std::make_shared<const CondensedLoad>(condense_load(g.bulk, g.sc)), extras,
+                      SparseMatrix(0, g.nf), VectorXd(), VectorXd::Constant(g.nf, 0.2));
   const Index m = cp.num_variables();
   const VectorXd y = VectorXd::LinSpaced(m, -0.3, 0.5);
   SparseMatrix h;
