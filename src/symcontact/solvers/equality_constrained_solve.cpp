@@ -101,14 +101,21 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     return stop;
   };
   for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
-    SparseMatrix H;
-    problem.hessian_lower(xs, H);
+    // The condensed problem's H is full: written straight into a dense matrix for the factorisations and the
+    // products below (ConstrainedProblem::add_hessian_lower), with no sparse copy.
+    const bool dense = problem.hessian_is_dense();
+    SparseMatrix H;  // the sparse path's
+    std::unique_ptr<AlignedMatrix> Hd;
+    if (dense) {
+      Hd = std::make_unique<AlignedMatrix>(xs.size(), xs.size());
+      Hd->map().setZero();
+      problem.add_hessian_lower(xs, 1.0, Hd->map());
+    } else {
+      problem.hessian_lower(xs, H);
+    }
     VectorXd g;
     problem.gradient(xs, g);
-    const double hdiag = H.diagonal().cwiseAbs().mean();
-    // The condensed problem's H is full: kept dense for the factorisations and the products below.
-    const bool dense = problem.hessian_is_dense();
-    const std::unique_ptr<AlignedMatrix> Hd = dense ? dense_lower(H) : nullptr;
+    const double hdiag = dense ? Hd->map().diagonal().cwiseAbs().mean() : H.diagonal().cwiseAbs().mean();
     if (!(hdiag > 0)) return false;
     if (reference) {
       // A later Newton step of the dense direct solve: between two steps only the friction Hessian

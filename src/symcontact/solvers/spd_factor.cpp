@@ -20,7 +20,7 @@ bool SpdFactor::compute(const SparseMatrix& h, const AlignedMatrix* dense_h, con
       return false;
     }
   }
-  n_ = static_cast<int>(h.rows());
+  n_ = static_cast<int>(dense_h->rows());
   factor_ = std::make_shared<AlignedMatrix>(n_, n_);
   auto m = factor_->map();
   m = dense_h->map();
@@ -40,16 +40,6 @@ VectorXd SpdFactor::solve(const VectorXd& b) const {
   dtrsv_("L", "N", "N", &n_, factor_->data(), &n_, x.data(), &inc);
   dtrsv_("L", "T", "N", &n_, factor_->data(), &n_, x.data(), &inc);
   return x.map();
-}
-
-std::unique_ptr<AlignedMatrix> dense_lower(const SparseMatrix& lower) {
-  auto d = std::make_unique<AlignedMatrix>(lower.rows(), lower.cols());
-  auto m = d->map();
-  m.setZero();
-  for (int j = 0; j < lower.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(lower, j); it; ++it)
-      if (it.row() >= j) m(it.row(), j) += it.value();
-  return d;
 }
 
 }  // namespace symcontact

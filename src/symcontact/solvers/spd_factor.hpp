@@ -17,8 +17,9 @@ namespace symcontact {
 class SpdFactor {
  public:
   explicit SpdFactor(bool dense) : dense_(dense) {}
-  /// Factorises M = H + ρ AtA from their lower triangles (`dense_h`: H as a dense matrix, the dense path;
-  /// `h`: H sparse, the sparse one; AtA null: M = H); false when M is not (numerically) positive definite.
+  /// Factorises M = H + ρ AtA from their lower triangles (`dense_h`: H as a dense matrix, the dense path, where
+  /// `h` is not read; `h`: H sparse, the sparse one; AtA null: M = H); false when M is not (numerically)
+  /// positive definite.
   bool compute(const SparseMatrix& h, const AlignedMatrix* dense_h, const SparseMatrix* AtA, double rho);
   /// M⁻¹ b.
   VectorXd solve(const VectorXd& b) const;
@@ -33,8 +34,5 @@ class SpdFactor {
   CholeskySolver sparse_;
   std::shared_ptr<AlignedMatrix> factor_;
 };
-
-/// The lower triangle of a compressed lower-triangular matrix as a dense matrix (zero above).
-std::unique_ptr<AlignedMatrix> dense_lower(const SparseMatrix& lower);
 
 }  // namespace symcontact
