@@ -7,46 +7,14 @@
 
 #include <gtest/gtest.h>
 
-#include <Eigen/SparseCholesky>
-
 #include <cstdio>
 #include <vector>
 
 #include "symcontact/distributed/block_system.hpp"
+#include "test_support.hpp"
 
 namespace symcontact {
 namespace {
-
-const PetscSession* g_petsc = nullptr;  ///< main()'s
-
-/// The same system solved by a sparse Cholesky factorisation of K_ff (Eigen's simplicial LLᵀ): the reference.
-VectorXd cholesky_solution(const BlockSystem& s) {
-  const Index n = s.f.size();
-  VectorXd u = VectorXd::Zero(n);
-  std::vector<Index> free_index(n, 0);
-  for (std::size_t k = 0; k < s.fixed.size(); ++k) {
-    u[s.fixed[k]] = s.fixed_values[static_cast<Index>(k)];
-    free_index[s.fixed[k]] = -1;
-  }
-  Index nf = 0;
-  for (Index& i : free_index)
-    if (i == 0) i = nf++;
-  const SparseMatrix K = SparseMatrix(s.K_lower.selfadjointView<Eigen::Lower>());
-  const VectorXd rhs_all = s.f - K * u;
-  std::vector<Triplet> t;
-  for (int j = 0; j < K.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
-      if (free_index[it.row()] >= 0 && free_index[j] >= 0) t.emplace_back(free_index[it.row()], free_index[j], it.value());
-  SparseMatrix Kff(nf, nf);
-  Kff.setFromTriplets(t.begin(), t.end());
-  VectorXd rhs(nf);
-  for (Index i = 0; i < n; ++i)
-    if (free_index[i] >= 0) rhs[free_index[i]] = rhs_all[i];
-  const VectorXd uf = Eigen::SimplicialLLT<SparseMatrix>(Kff).solve(rhs);
-  for (Index i = 0; i < n; ++i)
-    if (free_index[i] >= 0) u[i] = uf[free_index[i]];
-  return u;
-}
 
 /// The block's system solved with this rank's share of the stiffness (its cells).
 GamgResult solve(int dim, int n) {
@@ -59,7 +27,7 @@ TEST(GamgElasticity, EqualsTheCholeskySolveIn2DAnd3D) {
     const BlockSystem b = clamped_block_system(dim, n);
     const GamgResult r = solve(dim, n);
     ASSERT_TRUE(r.converged) << r.reason;
-    const VectorXd u = cholesky_solution(b);
+    const VectorXd u = cholesky_solution(b.K_lower, b.f, b.fixed, b.fixed_values);
     const double error = (r.u - u).norm() / u.norm();
     if (g_petsc->rank() == 0)
       std::printf("dim %d, %lld DOFs: %d CG iterations, %d levels, relative residual %.2e, against Cholesky %.2e\n",
@@ -105,13 +73,3 @@ TEST(GamgElasticity, IterationsStayFlatUnderRefinement) {
 
 }  // namespace
 }  // namespace symcontact
-
-int main(int argc, char** argv) {
-  ::testing::InitGoogleTest(&argc, argv);
-  const symcontact::PetscSession petsc(&argc, &argv);
-  symcontact::g_petsc = &petsc;
-  // Every rank runs every test (the solves are collective); only rank 0 reports.
-  if (petsc.rank() != 0) delete ::testing::UnitTest::GetInstance()->listeners().Release(
-      ::testing::UnitTest::GetInstance()->listeners().default_result_printer());
-  return RUN_ALL_TESTS();
-}

@@ -1,0 +1,302 @@
+#include "symcontact/distributed/contact_interior_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "symcontact/distributed/petsc_support.hpp"
+
+namespace symcontact {
+
+using petsc::check;
+using petsc::Owned;
+
+namespace {
+
+/// A search direction: Δu (distributed), Δs and Δλ (whole on every rank).
+struct Direction {
+  VectorXd ds, dl;
+};
+
+class InteriorPoint {
+ public:
+  InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
+                const VectorXd& fixed_values, const Eigen::MatrixXd& x, const NodalConstraints& c,
+                const ContactInteriorPointOptions& options);
+  ContactInteriorPointResult run();
+
+ private:
+  void assemble(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
+                const VectorXd& fixed_values, const Eigen::MatrixXd& x);
+  void create_constraint_scatter();
+  void set_scales(const VectorXd& fixed_values, double max_diagonal);
+  void create_solver();
+  VectorXd normal_components(Vec v);
+  void add_transpose(const VectorXd& w, Vec out);
+  void zero_fixed_rows(Vec v);
+  void update_newton_matrix();
+  bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
+  double largest_step(const Direction& d) const;
+  bool converged(double rd, double rp);
+
+  ContactInteriorPointOptions options_;
+  NodalConstraints c_;
+  int dim_;
+  Index m_;
+  petsc::RowRange mine_;
+  std::vector<PetscInt> fixed_owned_;
+  Owned<Mat, MatDestroy> K_, N_;
+  Owned<Vec, VecDestroy> u_, b_, rd_, rhs_, du_, gathered_;
+  Owned<VecScatter, VecScatterDestroy> to_constrained_;
+  std::unique_ptr<SubspaceCorrection> correction_;
+  Owned<KSP, KSPDestroy> ksp_;
+  VectorXd s_, lambda_;
+  double F_ = 0.0, L_ = 0.0;
+  ContactInteriorPointResult result_;
+};
+
+InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
+                             const VectorXd& fixed_values, const Eigen::MatrixXd& x, const NodalConstraints& c,
+                             const ContactInteriorPointOptions& options)
+    : options_(options), c_(c), dim_(static_cast<int>(x.rows())), m_(c.size()),
+      mine_(petsc::my_rows(static_cast<int>(x.rows()), x.cols())) {
+  const Index n = dim_ * x.cols();
+  if (K_share.rows() != n || f.size() != n || fixed_values.size() != static_cast<Index>(fixed.size()) ||
+      c.normal.rows() != dim_ || c.normal.cols() != m_ || c.lower.size() != m_ || m_ == 0)
+    throw std::invalid_argument("solve_contact_interior_point: K, f, the fixed values, the coordinates and the "
+                                "constraints do not match (or there is no constraint)");
+  std::vector<char> node_fixed(static_cast<std::size_t>(x.cols()), 0);
+  for (const Index i : fixed) node_fixed[static_cast<std::size_t>(i / dim_)] = 1;
+  for (const Index p : c.node)
+    if (node_fixed[static_cast<std::size_t>(p)])
+      throw std::invalid_argument("solve_contact_interior_point: contact node " + std::to_string(p) +
+                                  " has a fixed DOF");
+  for (const Index i : fixed)
+    if (mine_.owns(i)) fixed_owned_.push_back(static_cast<PetscInt>(i));
+  assemble(K_share, f, fixed, fixed_values, x);
+  create_constraint_scatter();
+  create_solver();
+}
+
+/// K (fixed rows and columns made identity), b, u = ū, N a copy of K's pattern with the rigid-body modes.
+void InteriorPoint::assemble(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
+                             const VectorXd& fixed_values, const Eigen::MatrixXd& x) {
+  check(MatCreate(PETSC_COMM_WORLD, &K_.object), "MatCreate");
+  petsc::assemble_symmetric(K_share, mine_, K_.object);
+  check(MatCreateVecs(K_.object, &u_.object, &b_.object), "MatCreateVecs");
+  PetscReal max_diagonal = 0.0;
+  check(MatGetDiagonal(K_.object, b_.object), "MatGetDiagonal");
+  check(VecNorm(b_.object, NORM_INFINITY, &max_diagonal), "VecNorm");
+  petsc::impose_fixed(f, fixed, fixed_values, mine_, K_.object, u_.object, b_.object);
+  check(MatDuplicate(K_.object, MAT_COPY_VALUES, &N_.object), "MatDuplicate");
+  petsc::set_rigid_body_modes(x, mine_, N_.object);
+  for (Vec* v : {&rd_.object, &rhs_.object, &du_.object}) check(VecDuplicate(b_.object, v), "VecDuplicate");
+  set_scales(fixed_values, max_diagonal);
+}
+
+/// F = ‖b‖_∞ over the free rows, L = max(‖ū‖_∞, max |l_j|); either from the other when it is 0.
+void InteriorPoint::set_scales(const VectorXd& fixed_values, double max_diagonal) {
+  check(VecCopy(b_.object, rd_.object), "VecCopy");
+  zero_fixed_rows(rd_.object);
+  check(VecNorm(rd_.object, NORM_INFINITY, &F_), "VecNorm");
+  L_ = std::max(fixed_values.size() ? fixed_values.cwiseAbs().maxCoeff() : 0.0, c_.lower.cwiseAbs().maxCoeff());
+  if (F_ == 0.0 && L_ == 0.0)
+    throw std::invalid_argument("solve_contact_interior_point: no load, no fixed value and no gap: u = 0");
+  if (F_ == 0.0) F_ = L_ * max_diagonal;
+  if (L_ == 0.0) L_ = F_ / max_diagonal;
+  result_.force_scale = F_;
+  result_.length_scale = L_;
+}
+
+/// The constrained nodes' DOFs, gathered whole on every rank: entry dim·j + comp is u_{p_j, comp}.
+void InteriorPoint::create_constraint_scatter() {
+  std::vector<PetscInt> from;
+  from.reserve(static_cast<std::size_t>(dim_ * m_));
+  for (const Index p : c_.node)
+    for (int k = 0; k < dim_; ++k) from.push_back(static_cast<PetscInt>(dim_ * p + k));
+  Owned<IS, ISDestroy> is;
+  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(from.size()), from.data(), PETSC_COPY_VALUES,
+                        &is.object),
+        "ISCreateGeneral");
+  check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(from.size()), &gathered_.object), "VecCreateSeq");
+  check(VecScatterCreate(u_.object, is.object, gathered_.object, nullptr, &to_constrained_.object),
+        "VecScatterCreate");
+}
+
+/// CG on the unpreconditioned residual, preconditioned as the options say; PETSc options with the prefix
+/// newton_ (and filter_ for the subspace solve) may change it.
+void InteriorPoint::create_solver() {
+  std::vector<PetscInt> subspace;
+  for (const Index p : c_.node)
+    if (mine_.owns_node(p))
+      for (int k = 0; k < dim_; ++k) subspace.push_back(static_cast<PetscInt>(dim_ * p + k));
+  std::sort(subspace.begin(), subspace.end());
+  correction_ = std::make_unique<SubspaceCorrection>(subspace);
+  check(KSPCreate(PETSC_COMM_WORLD, &ksp_.object), "KSPCreate");
+  check(KSPSetOptionsPrefix(ksp_.object, "newton_"), "KSPSetOptionsPrefix");
+  check(KSPSetType(ksp_.object, KSPCG), "KSPSetType");
+  check(KSPSetNormType(ksp_.object, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+  check(KSPSetOperators(ksp_.object, N_.object, N_.object), "KSPSetOperators");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp_.object, &pc), "KSPGetPC");
+  configure_newton_preconditioner(pc, options_.preconditioner, correction_.get());
+  check(KSPSetFromOptions(ksp_.object), "KSPSetFromOptions");
+}
+
+/// (A v)_j = n_jᵀ v_{p_j}, on every rank.
+VectorXd InteriorPoint::normal_components(Vec v) {
+  check(VecScatterBegin(to_constrained_.object, v, gathered_.object, INSERT_VALUES, SCATTER_FORWARD),
+        "VecScatterBegin");
+  check(VecScatterEnd(to_constrained_.object, v, gathered_.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar* g = nullptr;
+  check(VecGetArrayRead(gathered_.object, &g), "VecGetArrayRead");
+  VectorXd out(m_);
+  for (Index j = 0; j < m_; ++j) out[j] = c_.normal.col(j).dot(Eigen::Map<const VectorXd>(g + dim_ * j, dim_));
+  check(VecRestoreArrayRead(gathered_.object, &g), "VecRestoreArrayRead");
+  return out;
+}
+
+/// out += Aᵀ w: w_j n_j on node p_j's DOFs (each rank its own nodes).
+void InteriorPoint::add_transpose(const VectorXd& w, Vec out) {
+  PetscScalar* a = nullptr;
+  check(VecGetArray(out, &a), "VecGetArray");
+  for (Index j = 0; j < m_; ++j)
+    if (mine_.owns_node(c_.node[j]))
+      for (int k = 0; k < dim_; ++k) a[dim_ * c_.node[j] + k - mine_.row0()] += w[j] * c_.normal(k, j);
+  check(VecRestoreArray(out, &a), "VecRestoreArray");
+}
+
+void InteriorPoint::zero_fixed_rows(Vec v) {
+  PetscScalar* a = nullptr;
+  check(VecGetArray(v, &a), "VecGetArray");
+  for (const PetscInt i : fixed_owned_) a[i - mine_.row0()] = 0.0;
+  check(VecRestoreArray(v, &a), "VecRestoreArray");
+}
+
+/// N = K + Aᵀ Σ A, Σ = diag(λ_j / s_j): σ_j n_j n_jᵀ added to node p_j's diagonal block.
+void InteriorPoint::update_newton_matrix() {
+  check(MatCopy(K_.object, N_.object, SAME_NONZERO_PATTERN), "MatCopy");
+  std::vector<PetscInt> rows(static_cast<std::size_t>(dim_));
+  Eigen::MatrixXd block(dim_, dim_);
+  for (Index j = 0; j < m_; ++j) {
+    if (!mine_.owns_node(c_.node[j])) continue;
+    for (int k = 0; k < dim_; ++k) rows[static_cast<std::size_t>(k)] = static_cast<PetscInt>(dim_ * c_.node[j] + k);
+    block = (lambda_[j] / s_[j]) * c_.normal.col(j) * c_.normal.col(j).transpose();  // symmetric: either order
+    check(MatSetValues(N_.object, dim_, rows.data(), dim_, rows.data(), block.data(), ADD_VALUES), "MatSetValues");
+  }
+  check(MatAssemblyBegin(N_.object, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(N_.object, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(KSPSetOperators(ksp_.object, N_.object, N_.object), "KSPSetOperators");
+  check(KSPSetUp(ksp_.object), "KSPSetUp");
+  PC pc = nullptr;
+  check(KSPGetPC(ksp_.object, &pc), "KSPGetPC");
+  set_up_newton_preconditioner(pc);
+}
+
+/// The direction for the complementarity target rc (see the header); false when the Krylov solve broke down.
+bool InteriorPoint::solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d) {
+  const VectorXd sigma = lambda_.cwiseQuotient(s_);
+  check(VecCopy(rd_.object, rhs_.object), "VecCopy");
+  check(VecScale(rhs_.object, -1.0), "VecScale");
+  add_transpose(-(rc.cwiseQuotient(s_) + sigma.cwiseProduct(rp)), rhs_.object);
+  PetscReal rhs_norm = 0.0;
+  check(VecNorm(rhs_.object, NORM_2, &rhs_norm), "VecNorm");
+  const double atol = 0.1 * options_.tolerance * F_;
+  check(KSPSetTolerances(ksp_.object, std::max(eta, atol / std::max(rhs_norm, atol)), atol, PETSC_DEFAULT,
+                         options_.max_krylov_iterations),
+        "KSPSetTolerances");
+  const auto t0 = std::chrono::steady_clock::now();
+  check(KSPSolve(ksp_.object, rhs_.object, du_.object), "KSPSolve");
+  result_.krylov_seconds += petsc::seconds_since(t0);
+  PetscInt its = 0;
+  KSPConvergedReason reason;
+  check(KSPGetIterationNumber(ksp_.object, &its), "KSPGetIterationNumber");
+  check(KSPGetConvergedReason(ksp_.object, &reason), "KSPGetConvergedReason");
+  result_.krylov_iterations.push_back(static_cast<int>(its));
+  if (reason < 0 && reason != KSP_DIVERGED_ITS) {
+    result_.reason = std::string("conjugate gradients: ") + KSPConvergedReasons[reason];
+    return false;
+  }
+  zero_fixed_rows(du_.object);
+  d.ds = normal_components(du_.object) + rp;
+  d.dl = -(rc + lambda_.cwiseProduct(d.ds)).cwiseQuotient(s_);
+  return true;
+}
+
+/// The largest α ≤ 1 with s + α Δs ≥ 0 and λ + α Δλ ≥ 0.
+double InteriorPoint::largest_step(const Direction& d) const {
+  double alpha = 1.0;
+  for (Index j = 0; j < m_; ++j) {
+    if (d.ds[j] < 0.0) alpha = std::min(alpha, -s_[j] / d.ds[j]);
+    if (d.dl[j] < 0.0) alpha = std::min(alpha, -lambda_[j] / d.dl[j]);
+  }
+  return alpha;
+}
+
+bool InteriorPoint::converged(double rd, double rp) {
+  result_.dual_residual = rd / F_;
+  result_.primal_residual = rp / L_;
+  result_.complementarity = (s_ / L_).cwiseMin(lambda_ / F_).maxCoeff();
+  const double tol = options_.tolerance;
+  return result_.dual_residual <= tol && result_.primal_residual <= tol && result_.complementarity <= tol;
+}
+
+ContactInteriorPointResult InteriorPoint::run() {
+  const auto t_start = std::chrono::steady_clock::now();
+  s_ = (normal_components(u_.object) - c_.lower).cwiseMax(L_);
+  lambda_ = VectorXd::Constant(m_, F_);
+  const double mu0 = s_.dot(lambda_) / static_cast<double>(m_);
+  Direction d;
+  for (result_.iterations = 0;; ++result_.iterations) {
+    const VectorXd rp = normal_components(u_.object) - c_.lower - s_;
+    check(MatMult(K_.object, u_.object, rd_.object), "MatMult");  // r_d = K u − b − Aᵀ λ
+    check(VecAXPY(rd_.object, -1.0, b_.object), "VecAXPY");
+    add_transpose(-lambda_, rd_.object);
+    PetscReal rd = 0.0;
+    check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
+    if ((result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>()))) break;
+    if (result_.iterations == options_.max_iterations) {
+      result_.reason = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
+      break;
+    }
+    const auto t_setup = std::chrono::steady_clock::now();
+    update_newton_matrix();
+    result_.setup_seconds += petsc::seconds_since(t_setup);
+    const double mu = s_.dot(lambda_) / static_cast<double>(m_);
+    const double eta = std::min(0.01, mu / mu0);
+    // Predictor (affine scaling), then Mehrotra's centring and second-order correction.
+    if (!solve_direction(s_.cwiseProduct(lambda_), rp, eta, d)) break;
+    const double alpha_affine = largest_step(d);
+    const double mu_affine =
+        (s_ + alpha_affine * d.ds).dot(lambda_ + alpha_affine * d.dl) / static_cast<double>(m_);
+    const double centring = std::pow(mu_affine / mu, 3);
+    const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, centring * mu);
+    if (!solve_direction(rc, rp, eta, d)) break;
+    const double alpha = std::min(1.0, 0.995 * largest_step(d));
+    check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
+    s_ += alpha * d.ds;
+    lambda_ += alpha * d.dl;
+  }
+  result_.u = petsc::gather_to_all(u_.object);
+  result_.lambda = lambda_;
+  result_.total_seconds = petsc::seconds_since(t_start);
+  return result_;
+}
+
+}  // namespace
+
+ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_share, const VectorXd& f,
+                                                        const std::vector<Index>& fixed, const VectorXd& fixed_values,
+                                                        const Eigen::MatrixXd& x, const NodalConstraints& constraints,
+                                                        const ContactInteriorPointOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  InteriorPoint ip(K_share, f, fixed, fixed_values, x, constraints, options);
+  const double setup = petsc::seconds_since(t0);
+  ContactInteriorPointResult r = ip.run();
+  r.setup_seconds += setup;
+  r.total_seconds += setup;
+  return r;
+}
+
+}  // namespace symcontact

@@ -1,0 +1,82 @@
+#pragma once
+/// \file contact_interior_point.hpp
+/// Frictionless contact of a linear-elastic body with a rigid obstacle, solved across MPI ranks by a
+/// primal-dual interior point whose Newton systems are solved by conjugate gradients with algebraic
+/// multigrid (filtered_amg.hpp): the iterative path for problems whose Cholesky factor does not fit.
+///
+///     min_u ½ uᵀ K u − fᵀ u   subject to   c_j(u) = n_jᵀ u_{p_j} − l_j ≥ 0  (j = 1 … m),   u = ū on the fixed DOFs,
+///
+/// one constraint per contact node p_j: its displacement along the unit normal n_j at least l_j (the
+/// small-displacement gap to the obstacle along n_j, measured in the reference configuration). λ_j ≥ 0 is
+/// the node's contact force along n_j.
+///
+/// Method: Mehrotra's predictor-corrector on the slack form c(u) − s = 0, s ≥ 0, λ ≥ 0 (Nocedal & Wright,
+/// Numerical Optimization, 2nd ed., §16.6 and Algorithm 14.3). Each direction solves
+///
+///     (K + Aᵀ Σ A) Δu = −r_d − Aᵀ (S⁻¹ r_c + Σ r_p),   Σ = Λ S⁻¹,
+///     Δs = A Δu + r_p,   Δλ = −S⁻¹ (r_c + Λ Δs),
+///
+/// with r_d = K u − f − Aᵀ λ, r_p = c(u) − s, r_c the complementarity target, both directions of an
+/// iteration with the same matrix and preconditioner. One step length for u, s and λ: the largest that
+/// keeps 0.5 % of s and λ (fraction to the boundary 0.995).
+///
+/// Scales (every test relative to the problem's own): F = ‖b‖_∞, b the load after the fixed values moved into
+/// it, a nodal force; L = max(‖ū‖_∞, max |l_j|), a length; where one of them is 0 the other over the largest
+/// diagonal entry of K gives it. Start: u = ū (the fixed values, zero elsewhere), s = max(c(u), L),
+/// λ = F. Stop when ‖r_d‖_∞ ≤ tol F on the free DOFs, ‖r_p‖_∞ ≤ tol L and min(s_j / L, λ_j / F) ≤ tol for
+/// every j: each constraint is either active (s_j ≈ 0) or carries no force (λ_j ≈ 0) to tol — a test on the
+/// answer, where the mean sᵀλ/m would let a node near the edge of the contact zone keep a force μ/s_j. The Krylov
+/// solves stop at ‖residual‖₂ ≤ max(η ‖rhs‖₂, 0.1 tol F), η = min(0.01, μ/μ₀): loose while far from the
+/// solution, down to the stopping test at the end.
+///
+/// Distribution: as solve_elasticity_gamg() — each rank passes its share of K (the shares summing to K)
+/// and owns the rows of a contiguous range of nodes; s and λ (m values) are kept whole on every rank. The
+/// answer is gathered on every rank.
+
+#include <string>
+#include <vector>
+
+#include "symcontact/core/types.hpp"
+#include "symcontact/distributed/filtered_amg.hpp"
+
+namespace symcontact {
+
+/// c_j(u) = n_jᵀ u_{node_j} − lower_j ≥ 0; at most one constraint per node, none on a node with a fixed DOF.
+struct NodalConstraints {
+  std::vector<Index> node;
+  Eigen::MatrixXd normal;  ///< dim × m, unit columns
+  VectorXd lower;          ///< m
+  Index size() const { return static_cast<Index>(node.size()); }
+};
+
+struct ContactInteriorPointOptions {
+  double tolerance = 1e-9;
+  int max_iterations = 80;
+  int max_krylov_iterations = 2000;  ///< per Newton system
+  NewtonPreconditioner preconditioner = NewtonPreconditioner::kFilteredGamg;
+};
+
+struct ContactInteriorPointResult {
+  VectorXd u;       ///< every DOF, on every rank
+  VectorXd lambda;  ///< m contact forces along the normals
+  bool converged = false;
+  std::string reason;                  ///< why it stopped when it did not converge
+  int iterations = 0;                  ///< interior-point iterations (two Newton solves each)
+  std::vector<int> krylov_iterations;  ///< conjugate-gradient iterations of every Newton solve, in order
+  double setup_seconds = 0.0;          ///< Newton matrices and preconditioners
+  double krylov_seconds = 0.0;         ///< conjugate gradients
+  double total_seconds = 0.0;
+  double dual_residual = 0.0;    ///< ‖r_d‖_∞ / F at the end
+  double primal_residual = 0.0;  ///< ‖r_p‖_∞ / L
+  double complementarity = 0.0;  ///< max_j min(s_j / L, λ_j / F)
+  double force_scale = 0.0, length_scale = 0.0;  ///< F and L
+};
+
+/// K_share, f, fixed, fixed_values, x: as solve_elasticity_gamg() takes them. Collective over
+/// PETSC_COMM_WORLD; every rank passes the same f, fixed DOFs, coordinates and constraints.
+ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_share, const VectorXd& f,
+                                                        const std::vector<Index>& fixed, const VectorXd& fixed_values,
+                                                        const Eigen::MatrixXd& x, const NodalConstraints& constraints,
+                                                        const ContactInteriorPointOptions& options = {});
+
+}  // namespace symcontact
