@@ -1,5 +1,5 @@
 /// symcontact-bench-distributed — the distributed path on the model problems of
-/// src/symcontact/distributed/block_system.hpp, one row per size:
+/// src/symcontact/distributed/model_problems.hpp, one row per size:
 /// - `--problem elasticity`: the clamped block by CG + GAMG (gamg_elasticity.hpp): DOFs, CG iterations,
 ///   multigrid levels, times of assembly (each rank its own cells), setup and solve, rank 0's peak RSS;
 /// - `--problem contact`: the block pressed onto a rigid ball by the interior point with Krylov Newton solves
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "symcontact/distributed/block_system.hpp"
+#include "symcontact/distributed/model_problems.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"
 #include "symcontact/distributed/gamg_elasticity.hpp"
 

@@ -13,7 +13,7 @@
 #include <numeric>
 #include <vector>
 
-#include "symcontact/distributed/block_system.hpp"
+#include "symcontact/distributed/model_problems.hpp"
 #include "test_support.hpp"
 
 namespace symcontact {

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "symcontact/distributed/block_system.hpp"
+#include "symcontact/distributed/model_problems.hpp"
 #include "test_support.hpp"
 
 namespace symcontact {

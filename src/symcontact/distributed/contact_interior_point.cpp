@@ -66,12 +66,13 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
       c.normal.rows() != dim_ || c.normal.cols() != m_ || c.lower.size() != m_ || m_ == 0)
     throw std::invalid_argument("solve_contact_interior_point: K, f, the fixed values, the coordinates and the "
                                 "constraints do not match (or there is no constraint)");
-  std::vector<char> node_fixed(static_cast<std::size_t>(x.cols()), 0);
-  for (const Index i : fixed) node_fixed[static_cast<std::size_t>(i / dim_)] = 1;
-  for (const Index p : c.node)
-    if (node_fixed[static_cast<std::size_t>(p)])
-      throw std::invalid_argument("solve_contact_interior_point: contact node " + std::to_string(p) +
-                                  " has a fixed DOF");
+  std::vector<char> is_fixed(static_cast<std::size_t>(n), 0);
+  for (const Index i : fixed) is_fixed[static_cast<std::size_t>(i)] = 1;
+  for (Index j = 0; j < m_; ++j)
+    for (int k = 0; k < dim_; ++k)
+      if (is_fixed[static_cast<std::size_t>(dim_ * c.node[j] + k)] && c.normal(k, j) != 0.0)
+        throw std::invalid_argument("solve_contact_interior_point: the normal of contact node " +
+                                    std::to_string(c.node[j]) + " moves its fixed DOF " + std::to_string(k));
   for (const Index i : fixed)
     if (mine_.owns(i)) fixed_owned_.push_back(static_cast<PetscInt>(i));
   assemble(K_share, f, fixed, fixed_values, x);

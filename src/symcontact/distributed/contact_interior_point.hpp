@@ -41,7 +41,8 @@
 
 namespace symcontact {
 
-/// c_j(u) = n_jᵀ u_{node_j} − lower_j ≥ 0; at most one constraint per node, none on a node with a fixed DOF.
+/// c_j(u) = n_jᵀ u_{node_j} − lower_j ≥ 0; at most one constraint per node, its normal without a component
+/// along a fixed DOF of the node (a symmetry plane's node slides in it).
 struct NodalConstraints {
   std::vector<Index> node;
   Eigen::MatrixXd normal;  ///< dim × m, unit columns
