@@ -5,8 +5,11 @@
 /// - `--problem contact`: the block pressed onto a rigid ball by the interior point with Krylov Newton solves
 ///   (contact_interior_point.hpp): contact nodes and those in contact, interior-point iterations, CG
 ///   iterations per Newton system (smallest, largest, all), times, the largest contact force and peak RSS.
+/// - `--problem hertz`: VALIDATION.md's V2 (examples/hertz_3d/sphere_on_plane.*) at the sizes `--h`, by the
+///   same interior point: its columns, then Gmsh's meshing time and p0 and a against the closed form.
 ///   symcontact-bench-distributed --dim 3 --divisions 20 32 48 70
 ///   symcontact-bench-distributed --problem contact --dim 3 --divisions 16 24 32 [--preconditioner gamg]
+///   symcontact-bench-distributed --problem hertz --h 0.02 0.01 0.005
 ///   mpiexec -n 2 symcontact-bench-distributed --dim 3 --divisions 70
 /// A program of its own: the distributed path never shares a process with IPOPT's sequential MUMPS
 /// (src/CMakeLists.txt), so the Cholesky floor of the same block comes from `symcontact-bench --case
@@ -15,6 +18,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -29,6 +34,7 @@
 namespace {
 
 using symcontact::PetscSession;
+using symcontact::VectorXd;
 
 /// VmHWM of /proc/self/status in MiB (−1 when absent).
 double peak_rss_mib() {
@@ -45,6 +51,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 struct Settings {
   int dim = 3;
   std::vector<int> divisions{20, 32};
+  std::vector<double> h{0.02, 0.01};
   double rtol = 1e-10;
   double radius = 1.0, depth = 0.02;
   symcontact::NewtonPreconditioner preconditioner = symcontact::NewtonPreconditioner::kFilteredGamg;
@@ -70,34 +77,97 @@ void elasticity_rows(const PetscSession& petsc, const Settings& s) {
   }
 }
 
+const char* const kIpHeader = "%6s %11s %8s %10s %10s %10s";
+
+/// The interior point's columns: iterations, CG iterations per Newton system (smallest–largest) and in all,
+/// setup, Krylov and total times.
+void print_ip_columns(const symcontact::ContactInteriorPointResult& r) {
+  const auto& its = r.krylov_iterations;
+  std::printf(" %6d %5d–%-5d %8d %10.2f %10.2f %10.2f", r.iterations,
+              its.empty() ? 0 : *std::min_element(its.begin(), its.end()),
+              its.empty() ? 0 : *std::max_element(its.begin(), its.end()), std::accumulate(its.begin(), its.end(), 0),
+              r.setup_seconds, r.krylov_seconds, r.total_seconds);
+}
+
+void print_ip_header() {
+  std::printf(kIpHeader, "IP it", "CG min–max", "CG all", "setup [s]", "Krylov [s]", "total [s]");
+}
+
+void print_end(const symcontact::ContactInteriorPointResult& r) {
+  std::printf(" %12.0f%s\n", peak_rss_mib(), r.converged ? "" : ("  not converged: " + r.reason).c_str());
+}
+
+symcontact::ContactInteriorPointResult solve(const symcontact::ObstacleSystem& o, const Settings& s) {
+  symcontact::ContactInteriorPointOptions options;
+  options.tolerance = s.rtol;
+  options.preconditioner = s.preconditioner;
+  const symcontact::BlockSystem& b = o.block;
+  return symcontact::solve_contact_interior_point(b.K_lower, b.f, b.fixed, b.fixed_values, b.mesh.x, o.contact,
+                                                  options);
+}
+
+const char* preconditioner_name(const Settings& s) {
+  return s.preconditioner == symcontact::NewtonPreconditioner::kFilteredGamg ? "GAMG with filtering" : "GAMG";
+}
+
 void contact_rows(const PetscSession& petsc, const Settings& s) {
   const bool root = petsc.rank() == 0;
-  const bool filtered = s.preconditioner == symcontact::NewtonPreconditioner::kFilteredGamg;
-  if (root)
+  if (root) {
     std::printf("# ranks %d; block on a rigid ball (R %g, depth %g), interior point, CG + %s, tolerance %g\n"
-                "%9s %10s %8s %8s %6s %11s %8s %10s %10s %10s %14s %12s\n",
-                petsc.size(), s.radius, s.depth, filtered ? "GAMG with filtering" : "GAMG", s.rtol, "divisions",
-                "DOFs", "contact", "active", "IP it", "CG min–max", "CG all", "setup [s]", "Krylov [s]", "total [s]",
-                "max force", "peak RSS [MiB]");
+                "%9s %10s %8s %8s", petsc.size(), s.radius, s.depth, preconditioner_name(s), s.rtol, "divisions",
+                "DOFs", "contact", "active");
+    print_ip_header();
+    std::printf(" %14s %12s\n", "max force", "peak RSS [MiB]");
+  }
   for (const int n : s.divisions) {
-    const symcontact::ObstacleSystem o =
-        symcontact::block_on_ball_system(s.dim, n, s.radius, s.depth, petsc.rank(), petsc.size());
-    symcontact::ContactInteriorPointOptions options;
-    options.tolerance = s.rtol;
-    options.preconditioner = s.preconditioner;
-    const symcontact::BlockSystem& b = o.block;
-    const auto r = symcontact::solve_contact_interior_point(b.K_lower, b.f, b.fixed, b.fixed_values, b.mesh.x,
-                                                            o.contact, options);
-    const auto& its = r.krylov_iterations;
+    const auto o = symcontact::block_on_ball_system(s.dim, n, s.radius, s.depth, petsc.rank(), petsc.size());
+    const auto r = solve(o, s);
     const long active = std::count_if(r.lambda.begin(), r.lambda.end(),
                                       [&](double l) { return l > std::sqrt(s.rtol) * r.force_scale; });
-    if (root)
-      std::printf("%9d %10lld %8lld %8ld %6d %5d–%-5d %8d %10.2f %10.2f %10.2f %14.6e %12.0f%s\n", n,
-                  static_cast<long long>(b.f.size()), static_cast<long long>(o.contact.size()), active, r.iterations,
-                  its.empty() ? 0 : *std::min_element(its.begin(), its.end()),
-                  its.empty() ? 0 : *std::max_element(its.begin(), its.end()),
-                  std::accumulate(its.begin(), its.end(), 0), r.setup_seconds, r.krylov_seconds, r.total_seconds,
-                  r.lambda.maxCoeff(), peak_rss_mib(), r.converged ? "" : ("  not converged: " + r.reason).c_str());
+    if (!root) continue;
+    std::printf("%9d %10lld %8lld %8ld", n, static_cast<long long>(o.block.f.size()),
+                static_cast<long long>(o.contact.size()), active);
+    print_ip_columns(r);
+    std::printf(" %14.6e", r.lambda.maxCoeff());
+    print_end(r);
+  }
+}
+
+/// p0 and a of V2 (largest nodal pressure; largest distance to the axis of a node above 1e-3 p0) against the
+/// closed form at the applied load P_h, in per cent.
+std::pair<double, double> hertz_errors(const symcontact::ObstacleSystem& o, const VectorXd& lambda) {
+  const double load = 4 * symcontact::vertical_load(o.block), estar = 1.0 / (1 - 0.3 * 0.3);
+  const double a_ref = std::cbrt(3 * load / (4 * estar)), p0_ref = 3 * load / (2 * M_PI * a_ref * a_ref);
+  const VectorXd p = symcontact::nodal_pressures(o.block.mesh, "contact", o.contact, lambda);
+  double a = 0.0;
+  for (Eigen::Index j = 0; j < o.contact.size(); ++j)
+    if (p[j] > 1e-3 * p.maxCoeff())
+      a = std::max(a, std::hypot(o.block.mesh.x(0, o.contact.node[j]), o.block.mesh.x(1, o.contact.node[j])));
+  return {100 * (p.maxCoeff() / p0_ref - 1), 100 * (a / a_ref - 1)};
+}
+
+void hertz_rows(const PetscSession& petsc, const Settings& s) {
+  const bool root = petsc.rank() == 0;
+  if (root) {
+    std::printf("# ranks %d; V2 Hertz sphere on a rigid plane (quarter model), interior point, CG + %s, "
+                "tolerance %g\n%9s %10s %8s", petsc.size(), preconditioner_name(s), s.rtol, "h", "DOFs", "contact");
+    print_ip_header();
+    std::printf(" %10s %8s %8s %12s\n", "mesh [s]", "p0 [%]", "a [%]", "peak RSS [MiB]");
+  }
+  const auto dir = std::filesystem::temp_directory_path() / ("symcontact_bench_hertz_" + std::to_string(petsc.rank()));
+  std::filesystem::create_directories(dir);
+  for (const double h : s.h) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto o = symcontact::hertz_sphere_system(std::string(SYMCONTACT_BENCH_EXAMPLES) + "/hertz_3d/sphere_on_plane.geo",
+                                                   h, dir.string(), petsc.rank(), petsc.size());
+    const double meshing = seconds_since(t0);
+    const auto r = solve(o, s);
+    if (!root) continue;
+    const auto [p0_error, a_error] = hertz_errors(o, r.lambda);
+    std::printf("%9.4f %10lld %8lld", h, static_cast<long long>(o.block.f.size()), static_cast<long long>(o.contact.size()));
+    print_ip_columns(r);
+    std::printf(" %10.1f %+8.2f %+8.2f", meshing, p0_error, a_error);
+    print_end(r);
   }
 }
 
@@ -108,21 +178,25 @@ int main(int argc, char** argv) {
   CLI::App app{"symcontact-bench-distributed — the distributed path on PETSc", "symcontact-bench-distributed"};
   Settings s;
   std::string problem = "elasticity", preconditioner = "filtered";
-  app.add_option("--problem", problem, "elasticity or contact")->check(CLI::IsMember({"elasticity", "contact"}));
+  app.add_option("--problem", problem, "elasticity, contact or hertz")
+      ->check(CLI::IsMember({"elasticity", "contact", "hertz"}));
   app.add_option("--dim", s.dim, "2 or 3")->check(CLI::IsMember({2, 3}));
   app.add_option("--divisions", s.divisions, "divisions per side, one row each");
   app.add_option("--rtol", s.rtol, "relative residual of the solve (elasticity), tolerance (contact)");
+  app.add_option("--h", s.h, "hertz: mesh sizes near the contact point, one row each");
   app.add_option("--radius", s.radius, "contact: the ball's radius");
   app.add_option("--depth", s.depth, "contact: how far the block's top is moved down");
   app.add_option("--preconditioner", preconditioner, "contact: filtered (GAMG with filtering) or gamg")
       ->check(CLI::IsMember({"filtered", "gamg"}));
   app.allow_extras();  // PETSc's own options (-ksp_monitor, ...) pass through
   CLI11_PARSE(app, argc, argv);
-  if (problem == "contact" && !app.count("--rtol")) s.rtol = 1e-9;
+  if (problem != "elasticity" && !app.count("--rtol")) s.rtol = 1e-9;
   if (preconditioner == "gamg") s.preconditioner = symcontact::NewtonPreconditioner::kGamg;
   if (problem == "elasticity")
     elasticity_rows(petsc, s);
-  else
+  else if (problem == "contact")
     contact_rows(petsc, s);
+  else
+    hertz_rows(petsc, s);
   return 0;
 }
