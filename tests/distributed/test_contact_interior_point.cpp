@@ -2,7 +2,8 @@
 // (src/symcontact/distributed/contact_interior_point.hpp) on a block pressed onto a rigid ball, on one rank
 // and, registered a second time under mpirun, on two: its answer against the exact solution of the contact
 // problem (the active set's equality-constrained problem solved by sparse Cholesky, checked for contact
-// forces ≥ 0 and gaps ≥ 0), and the Krylov iterations per Newton system as the mesh is refined.
+// forces ≥ 0 and gaps ≥ 0), the Krylov iterations per Newton system as the mesh is refined, and Tresca and
+// Coulomb friction on a block sliding on a rigid plane against their closed forms.
 
 #include "symcontact/distributed/contact_interior_point.hpp"
 
@@ -119,6 +120,65 @@ TEST(ContactInteriorPoint, FilteringKeepsTheKrylovIterationsFlatUnderRefinement)
   ASSERT_FALSE(a.krylov_iterations.empty());
   EXPECT_GT(largest(a.krylov_iterations), its.back());
   EXPECT_LE((a.u - r.u).lpNorm<Eigen::Infinity>(), 1e-7 * r.u.lpNorm<Eigen::Infinity>()) << "the same answer";
+}
+
+// Regularised Tresca friction: the block pressed on a rigid plane and dragged by 0.05 along x, far past the
+// stick limit τ H / G ≈ 0.005, slides at every bottom node (slip ≫ α). The reaction of its top along x equals
+// the friction forces' sum Σ g_j s_x / √(|s|² + α²) (equilibrium and the friction law) and, in 2D, the bound
+// τ × the face's length up to α² / 2 |s|²; in 3D the bottom also slides sideways by the Poisson effect,
+// which takes 0.02–0.03 % of the force off the x axis.
+TEST(ContactInteriorPoint, TrescaFrictionOfASlidingBlockIsItsBound) {
+  const double tau = 0.002, alpha = 1e-4;
+  for (const auto& [dim, n] : {std::pair{2, 24}, std::pair{3, 8}}) {
+    const ObstacleSystem o = block_on_plane_system(dim, n, 0.01, 0.05, tau, alpha, g_petsc->rank(), g_petsc->size());
+    const ObstacleSystem whole = block_on_plane_system(dim, n, 0.01, 0.05, tau, alpha);
+    const ContactInteriorPointResult r = solve(o);
+    ASSERT_TRUE(r.converged) << r.reason;
+    const VectorXd residual = SparseMatrix(whole.block.K_lower.selfadjointView<Eigen::Lower>()) * r.u - whole.block.f;
+    double reaction = 0.0, friction = 0.0, smallest_slip = 1.0;
+    for (const Index v : whole.block.mesh.group_nodes(dim == 2 ? "top" : "zmax")) reaction += residual[dim * v];
+    for (Index j = 0; j < whole.contact.size(); ++j) {
+      const VectorXd slip = r.u.segment(dim * whole.contact.node[j], dim - 1);  // the plane's tangents
+      friction += whole.contact.friction_bound[j] * slip[0] / std::sqrt(slip.squaredNorm() + alpha * alpha);
+      smallest_slip = std::min(smallest_slip, slip[0]);
+    }
+    if (g_petsc->rank() == 0)
+      std::printf("dim %d: %d iterations, top reaction along x %.9f, friction forces %.9f, bound %.9f, smallest "
+                  "slip %.2e\n", dim, r.iterations, reaction, friction, tau, smallest_slip);
+    EXPECT_GT(smallest_slip, 100 * alpha) << "every node slides forward";
+    EXPECT_NEAR(reaction, friction, 1e-6 * tau);
+    EXPECT_LE(reaction, tau);
+    EXPECT_GE(reaction, (dim == 2 ? 1 - 1e-5 : 0.999) * tau);
+  }
+}
+
+// Coulomb friction as a fixed point of Tresca solves (VALIDATION.md, V4's gross-slip limit): the same sliding
+// block with μ = 0.2; its top's reactions satisfy R_x = μ R_n, in 2D to the regularisation and the fixed
+// point's tolerance, in 3D less the sideways share of the friction force (as above).
+TEST(ContactInteriorPoint, CoulombFrictionOfASlidingBlockIsMuTimesTheNormalForce) {
+  const double mu = 0.2, alpha = 1e-4;
+  for (const auto& [dim, n] : {std::pair{2, 24}, std::pair{3, 8}}) {
+    const ObstacleSystem o = block_on_plane_system(dim, n, 0.01, 0.05, 0.0, alpha, g_petsc->rank(), g_petsc->size());
+    const ObstacleSystem whole = block_on_plane_system(dim, n, 0.01, 0.05, 0.0, alpha);
+    const BlockSystem& b = o.block;
+    const CoulombInteriorPointResult c =
+        solve_coulomb_interior_point(b.K_lower, b.f, b.fixed, b.fixed_values, b.mesh.x, o.contact, mu);
+    ASSERT_TRUE(c.converged) << c.last.reason << ", bound change " << c.bound_change;
+    const VectorXd residual =
+        SparseMatrix(whole.block.K_lower.selfadjointView<Eigen::Lower>()) * c.last.u - whole.block.f;
+    double tangential = 0.0, normal = 0.0;
+    for (const Index v : whole.block.mesh.group_nodes(dim == 2 ? "top" : "zmax")) {
+      tangential += residual[dim * v];
+      normal -= residual[dim * v + dim - 1];
+    }
+    if (g_petsc->rank() == 0)
+      std::printf("dim %d: %d Tresca solves, %d interior-point iterations; R_x / R_n = %.9f, R_n / Σλ − 1 = %.1e\n",
+                  dim, c.coulomb_iterations, c.interior_point_iterations, tangential / normal,
+                  normal / c.last.lambda.sum() - 1);
+    EXPECT_NEAR(normal, c.last.lambda.sum(), 1e-8 * normal);
+    EXPECT_LE(tangential / normal, mu * (1 + 1e-6));
+    EXPECT_GE(tangential / normal, mu * (dim == 2 ? 1 - 1e-5 : 0.999));
+  }
 }
 
 }  // namespace

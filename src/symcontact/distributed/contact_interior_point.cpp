@@ -19,6 +19,36 @@ struct Direction {
   VectorXd ds, dl;
 };
 
+// Regularised Tresca friction at the constrained nodes, from U (dim × m: the nodes' displacements); with
+// s = P u (P = I − n nᵀ) and r = √(|s|² + α²) ≥ α: j_j = g r, ∇j_j = g s / r, ∇²j_j = g (P − s sᵀ / r²) / r
+// (P s = s). Nothing divides by the slip itself.
+
+double friction_energy(const NodalConstraints& c, const Eigen::MatrixXd& U) {
+  double e = 0.0;
+  for (Index j = 0; j < c.size(); ++j) {
+    const VectorXd s = U.col(j) - c.normal.col(j) * c.normal.col(j).dot(U.col(j));
+    e += c.friction_bound[j] * std::sqrt(s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]);
+  }
+  return e;
+}
+
+Eigen::MatrixXd friction_gradient(const NodalConstraints& c, const Eigen::MatrixXd& U) {
+  Eigen::MatrixXd G(U.rows(), U.cols());
+  for (Index j = 0; j < c.size(); ++j) {
+    const VectorXd s = U.col(j) - c.normal.col(j) * c.normal.col(j).dot(U.col(j));
+    G.col(j) = c.friction_bound[j] / std::sqrt(s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]) * s;
+  }
+  return G;
+}
+
+Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixXd& U, Index j) {
+  const Index dim = U.rows();
+  const VectorXd n = c.normal.col(j), s = U.col(j) - n * n.dot(U.col(j));
+  const double r2 = s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j], r = std::sqrt(r2);
+  const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(dim, dim) - n * n.transpose();
+  return c.friction_bound[j] / r * (P - s * s.transpose() / r2);
+}
+
 class InteriorPoint {
  public:
   InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
@@ -32,10 +62,16 @@ class InteriorPoint {
   void create_constraint_scatter();
   void set_scales(const VectorXd& fixed_values, double max_diagonal);
   void create_solver();
+  Eigen::MatrixXd nodal_components(Vec v);
   VectorXd normal_components(Vec v);
+  void add_nodal(const Eigen::MatrixXd& W, Vec out);
   void add_transpose(const VectorXd& w, Vec out);
+  VectorXd residuals(const Eigen::MatrixXd& U);
+  double merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& U,
+               const Eigen::MatrixXd& dU, const VectorXd& rp);
+  double line_search(double alpha, const Direction& d, double target, const VectorXd& rp);
   void zero_fixed_rows(Vec v);
-  void update_newton_matrix();
+  void update_newton_matrix(const Eigen::MatrixXd& U);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
@@ -47,7 +83,7 @@ class InteriorPoint {
   petsc::RowRange mine_;
   std::vector<PetscInt> fixed_owned_;
   Owned<Mat, MatDestroy> K_, N_;
-  Owned<Vec, VecDestroy> u_, b_, rd_, rhs_, du_, gathered_;
+  Owned<Vec, VecDestroy> u_, b_, rd_, rhs_, du_, Kdu_, gathered_;
   Owned<VecScatter, VecScatterDestroy> to_constrained_;
   std::unique_ptr<SubspaceCorrection> correction_;
   Owned<KSP, KSPDestroy> ksp_;
@@ -63,7 +99,9 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
       mine_(petsc::my_rows(static_cast<int>(x.rows()), x.cols())) {
   const Index n = dim_ * x.cols();
   if (K_share.rows() != n || f.size() != n || fixed_values.size() != static_cast<Index>(fixed.size()) ||
-      c.normal.rows() != dim_ || c.normal.cols() != m_ || c.lower.size() != m_ || m_ == 0)
+      c.normal.rows() != dim_ || c.normal.cols() != m_ || c.lower.size() != m_ || m_ == 0 ||
+      (c.frictional() && (c.friction_bound.size() != m_ || c.friction_alpha.size() != m_ ||
+                          c.friction_bound.minCoeff() < 0.0 || c.friction_alpha.minCoeff() <= 0.0)))
     throw std::invalid_argument("solve_contact_interior_point: K, f, the fixed values, the coordinates and the "
                                 "constraints do not match (or there is no constraint)");
   std::vector<char> is_fixed(static_cast<std::size_t>(n), 0);
@@ -92,7 +130,7 @@ void InteriorPoint::assemble(const SparseMatrix& K_share, const VectorXd& f, con
   petsc::impose_fixed(f, fixed, fixed_values, mine_, K_.object, u_.object, b_.object);
   check(MatDuplicate(K_.object, MAT_COPY_VALUES, &N_.object), "MatDuplicate");
   petsc::set_rigid_body_modes(x, mine_, N_.object);
-  for (Vec* v : {&rd_.object, &rhs_.object, &du_.object}) check(VecDuplicate(b_.object, v), "VecDuplicate");
+  for (Vec* v : {&rd_.object, &rhs_.object, &du_.object, &Kdu_.object}) check(VecDuplicate(b_.object, v), "VecDuplicate");
   set_scales(fixed_values, max_diagonal);
 }
 
@@ -145,28 +183,35 @@ void InteriorPoint::create_solver() {
   check(KSPSetFromOptions(ksp_.object), "KSPSetFromOptions");
 }
 
-/// (A v)_j = n_jᵀ v_{p_j}, on every rank.
-VectorXd InteriorPoint::normal_components(Vec v) {
+/// The constrained nodes' components of v, dim × m (column j: node p_j), on every rank.
+Eigen::MatrixXd InteriorPoint::nodal_components(Vec v) {
   check(VecScatterBegin(to_constrained_.object, v, gathered_.object, INSERT_VALUES, SCATTER_FORWARD),
         "VecScatterBegin");
   check(VecScatterEnd(to_constrained_.object, v, gathered_.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
   const PetscScalar* g = nullptr;
   check(VecGetArrayRead(gathered_.object, &g), "VecGetArrayRead");
-  VectorXd out(m_);
-  for (Index j = 0; j < m_; ++j) out[j] = c_.normal.col(j).dot(Eigen::Map<const VectorXd>(g + dim_ * j, dim_));
+  Eigen::MatrixXd out = Eigen::Map<const Eigen::MatrixXd>(g, dim_, m_);
   check(VecRestoreArrayRead(gathered_.object, &g), "VecRestoreArrayRead");
   return out;
 }
 
-/// out += Aᵀ w: w_j n_j on node p_j's DOFs (each rank its own nodes).
-void InteriorPoint::add_transpose(const VectorXd& w, Vec out) {
+/// (A v)_j = n_jᵀ v_{p_j}, on every rank.
+VectorXd InteriorPoint::normal_components(Vec v) {
+  return c_.normal.cwiseProduct(nodal_components(v)).colwise().sum().transpose();
+}
+
+/// out += column j of W on node p_j's DOFs (each rank its own nodes).
+void InteriorPoint::add_nodal(const Eigen::MatrixXd& W, Vec out) {
   PetscScalar* a = nullptr;
   check(VecGetArray(out, &a), "VecGetArray");
   for (Index j = 0; j < m_; ++j)
     if (mine_.owns_node(c_.node[j]))
-      for (int k = 0; k < dim_; ++k) a[dim_ * c_.node[j] + k - mine_.row0()] += w[j] * c_.normal(k, j);
+      for (int k = 0; k < dim_; ++k) a[dim_ * c_.node[j] + k - mine_.row0()] += W(k, j);
   check(VecRestoreArray(out, &a), "VecRestoreArray");
 }
+
+/// out += Aᵀ w: w_j n_j on node p_j's DOFs.
+void InteriorPoint::add_transpose(const VectorXd& w, Vec out) { add_nodal(c_.normal * w.asDiagonal(), out); }
 
 void InteriorPoint::zero_fixed_rows(Vec v) {
   PetscScalar* a = nullptr;
@@ -175,8 +220,9 @@ void InteriorPoint::zero_fixed_rows(Vec v) {
   check(VecRestoreArray(v, &a), "VecRestoreArray");
 }
 
-/// N = K + Aᵀ Σ A, Σ = diag(λ_j / s_j): σ_j n_j n_jᵀ added to node p_j's diagonal block.
-void InteriorPoint::update_newton_matrix() {
+/// N = K + ∇²j(u) + Aᵀ Σ A, Σ = diag(λ_j / s_j): σ_j n_j n_jᵀ (and j's block) added to node p_j's diagonal
+/// block; U the nodes' displacements.
+void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& U) {
   check(MatCopy(K_.object, N_.object, SAME_NONZERO_PATTERN), "MatCopy");
   std::vector<PetscInt> rows(static_cast<std::size_t>(dim_));
   Eigen::MatrixXd block(dim_, dim_);
@@ -184,6 +230,7 @@ void InteriorPoint::update_newton_matrix() {
     if (!mine_.owns_node(c_.node[j])) continue;
     for (int k = 0; k < dim_; ++k) rows[static_cast<std::size_t>(k)] = static_cast<PetscInt>(dim_ * c_.node[j] + k);
     block = (lambda_[j] / s_[j]) * c_.normal.col(j) * c_.normal.col(j).transpose();  // symmetric: either order
+    if (c_.frictional()) block += friction_hessian(c_, U, j);
     check(MatSetValues(N_.object, dim_, rows.data(), dim_, rows.data(), block.data(), ADD_VALUES), "MatSetValues");
   }
   check(MatAssemblyBegin(N_.object, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
@@ -243,6 +290,46 @@ bool InteriorPoint::converged(double rd, double rp) {
   return result_.dual_residual <= tol && result_.primal_residual <= tol && result_.complementarity <= tol;
 }
 
+/// r_d = K u − f + ∇j(u) − Aᵀ λ into rd_; returns r_p = c(u) − s. U: the nodes' displacements.
+VectorXd InteriorPoint::residuals(const Eigen::MatrixXd& U) {
+  check(MatMult(K_.object, u_.object, rd_.object), "MatMult");
+  check(VecAXPY(rd_.object, -1.0, b_.object), "VecAXPY");
+  add_transpose(-lambda_, rd_.object);
+  if (c_.frictional()) add_nodal(friction_gradient(c_, U), rd_.object);
+  return c_.normal.cwiseProduct(U).colwise().sum().transpose() - c_.lower - s_;
+}
+
+/// The terms of the merit function (the header's φ) beyond the elastic energy, at the step α: j(u + α Δu),
+/// the barrier of s + α Δs and ν ‖c − s‖₁ = ν (1 − α) ‖r_p‖₁ (c is linear). U, dU: the nodes' u and Δu.
+double InteriorPoint::merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& U,
+                            const Eigen::MatrixXd& dU, const VectorXd& rp) {
+  return friction_energy(c_, U + alpha * dU) - target * (s_ + alpha * d.ds).array().log().sum() +
+         nu * (1.0 - alpha) * rp.lpNorm<1>();
+}
+
+/// The step from `alpha` halved until the merit function decreases enough (Armijo); alpha itself without
+/// friction, or when the direction is not one of descent for the merit function.
+double InteriorPoint::line_search(double alpha, const Direction& d, double target, const VectorXd& rp) {
+  if (!c_.frictional()) return alpha;
+  const Eigen::MatrixXd U = nodal_components(u_.object), dU = nodal_components(du_.object);
+  const Eigen::MatrixXd grad_j = friction_gradient(c_, U);
+  PetscScalar du_rd = 0.0, du_Kdu = 0.0;
+  check(VecDot(du_.object, rd_.object, &du_rd), "VecDot");  // Δuᵀ(K u − f) = Δuᵀ r_d + (AΔu)ᵀλ − Δuᵀ∇j
+  check(MatMult(K_.object, du_.object, Kdu_.object), "MatMult");
+  check(VecDot(du_.object, Kdu_.object, &du_Kdu), "VecDot");
+  const double dj = grad_j.cwiseProduct(dU).sum();
+  const double g = du_rd + (d.ds - rp).dot(lambda_) - dj;
+  const double nu = 2.0 * std::max(lambda_.lpNorm<Eigen::Infinity>(), (lambda_ + alpha * d.dl).lpNorm<Eigen::Infinity>());
+  const double slope = g + dj - target * d.ds.cwiseQuotient(s_).sum() - nu * rp.lpNorm<1>();
+  if (slope >= 0.0) return alpha;
+  const double phi0 = merit(0.0, d, target, nu, U, dU, rp);
+  for (int k = 0; k < 40; ++k, alpha *= 0.5)
+    if (alpha * g + 0.5 * alpha * alpha * du_Kdu + merit(alpha, d, target, nu, U, dU, rp) <=
+        phi0 + 1e-4 * alpha * slope)
+      break;
+  return alpha;
+}
+
 ContactInteriorPointResult InteriorPoint::run() {
   const auto t_start = std::chrono::steady_clock::now();
   s_ = (normal_components(u_.object) - c_.lower).cwiseMax(L_);
@@ -250,10 +337,8 @@ ContactInteriorPointResult InteriorPoint::run() {
   const double mu0 = s_.dot(lambda_) / static_cast<double>(m_);
   Direction d;
   for (result_.iterations = 0;; ++result_.iterations) {
-    const VectorXd rp = normal_components(u_.object) - c_.lower - s_;
-    check(MatMult(K_.object, u_.object, rd_.object), "MatMult");  // r_d = K u − b − Aᵀ λ
-    check(VecAXPY(rd_.object, -1.0, b_.object), "VecAXPY");
-    add_transpose(-lambda_, rd_.object);
+    const Eigen::MatrixXd U = nodal_components(u_.object);
+    const VectorXd rp = residuals(U);
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     if ((result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>()))) break;
@@ -262,7 +347,7 @@ ContactInteriorPointResult InteriorPoint::run() {
       break;
     }
     const auto t_setup = std::chrono::steady_clock::now();
-    update_newton_matrix();
+    update_newton_matrix(U);
     result_.setup_seconds += petsc::seconds_since(t_setup);
     const double mu = s_.dot(lambda_) / static_cast<double>(m_);
     const double eta = std::min(0.01, mu / mu0);
@@ -271,10 +356,10 @@ ContactInteriorPointResult InteriorPoint::run() {
     const double alpha_affine = largest_step(d);
     const double mu_affine =
         (s_ + alpha_affine * d.ds).dot(lambda_ + alpha_affine * d.dl) / static_cast<double>(m_);
-    const double centring = std::pow(mu_affine / mu, 3);
-    const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, centring * mu);
+    const double target = std::pow(mu_affine / mu, 3) * mu;
+    const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
     if (!solve_direction(rc, rp, eta, d)) break;
-    const double alpha = std::min(1.0, 0.995 * largest_step(d));
+    const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp);
     check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
     s_ += alpha * d.ds;
     lambda_ += alpha * d.dl;
@@ -298,6 +383,32 @@ ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_sh
   r.setup_seconds += setup;
   r.total_seconds += setup;
   return r;
+}
+
+CoulombInteriorPointResult solve_coulomb_interior_point(const SparseMatrix& K_share, const VectorXd& f,
+                                                        const std::vector<Index>& fixed, const VectorXd& fixed_values,
+                                                        const Eigen::MatrixXd& x, NodalConstraints constraints,
+                                                        double mu, double coulomb_tolerance,
+                                                        int max_coulomb_iterations,
+                                                        const ContactInteriorPointOptions& options) {
+  const VectorXd alpha = constraints.friction_alpha;
+  constraints.friction_bound.resize(0);
+  constraints.friction_alpha.resize(0);
+  CoulombInteriorPointResult c;
+  for (;;) {
+    c.last = solve_contact_interior_point(K_share, f, fixed, fixed_values, x, constraints, options);
+    c.interior_point_iterations += c.last.iterations;
+    if (!c.last.converged) return c;
+    const VectorXd bound = mu * c.last.lambda.cwiseMax(0.0);
+    if (constraints.frictional()) {
+      c.bound_change = (bound - constraints.friction_bound).lpNorm<Eigen::Infinity>() / bound.maxCoeff();
+      if ((c.converged = c.bound_change <= coulomb_tolerance)) return c;
+    }
+    if (c.coulomb_iterations == max_coulomb_iterations) return c;
+    ++c.coulomb_iterations;
+    constraints.friction_bound = bound;
+    constraints.friction_alpha = alpha;
+  }
 }
 
 }  // namespace symcontact

@@ -4,11 +4,13 @@
 /// primal-dual interior point whose Newton systems are solved by conjugate gradients with algebraic
 /// multigrid (filtered_amg.hpp): the iterative path for problems whose Cholesky factor does not fit.
 ///
-///     min_u ½ uᵀ K u − fᵀ u   subject to   c_j(u) = n_jᵀ u_{p_j} − l_j ≥ 0  (j = 1 … m),   u = ū on the fixed DOFs,
+///     min_u ½ uᵀ K u − fᵀ u + j(u)   subject to   c_j(u) = n_jᵀ u_{p_j} − l_j ≥ 0  (j = 1 … m),   u = ū on the fixed DOFs,
 ///
 /// one constraint per contact node p_j: its displacement along the unit normal n_j at least l_j (the
 /// small-displacement gap to the obstacle along n_j, measured in the reference configuration). λ_j ≥ 0 is
 /// the node's contact force along n_j.
+///
+/// j is the optional regularised Tresca friction of NodalConstraints (convex: the problem stays convex).
 ///
 /// Method: Mehrotra's predictor-corrector on the slack form c(u) − s = 0, s ≥ 0, λ ≥ 0 (Nocedal & Wright,
 /// Numerical Optimization, 2nd ed., §16.6 and Algorithm 14.3). Each direction solves
@@ -18,7 +20,11 @@
 ///
 /// with r_d = K u − f − Aᵀ λ, r_p = c(u) − s, r_c the complementarity target, both directions of an
 /// iteration with the same matrix and preconditioner. One step length for u, s and λ: the largest that
-/// keeps 0.5 % of s and λ (fraction to the boundary 0.995).
+/// keeps 0.5 % of s and λ (fraction to the boundary 0.995). With friction, K above reads K + ∇²j(u) and r_d
+/// holds ∇j(u); the step is then also halved until the barrier merit function
+/// φ(u, s) = ½ uᵀKu − fᵀu + j(u) − μ_t Σ log s_j + ν ‖c(u) − s‖₁ (μ_t the corrector's target, ν = 2 ‖λ‖_∞ of
+/// both ends of the step) decreases by at least 10⁻⁴ of its directional derivative (Armijo; Nocedal & Wright
+/// §19.4); without friction the problem is a quadratic program and the full step is taken.
 ///
 /// Scales (every test relative to the problem's own): F = ‖b‖_∞, b the load after the fixed values moved into
 /// it, a nodal force; L = max(‖ū‖_∞, max |l_j|), a length; where one of them is 0 the other over the largest
@@ -47,7 +53,13 @@ struct NodalConstraints {
   std::vector<Index> node;
   Eigen::MatrixXd normal;  ///< dim × m, unit columns
   VectorXd lower;          ///< m
+  /// Regularised Tresca friction at the same nodes, optional (empty: frictionless; else m values each):
+  /// the energy j(u) = Σ_j g_j η_α_j(P_j u_{p_j}), η_α(v) = √(|v|² + α²), P_j = I − n_j n_jᵀ (METHOD.md,
+  /// "Friction"; talk eq. 16–18 with one point per node), g_j ≥ 0 the node's friction force bound (its
+  /// lumped area times the threshold τ), α_j > 0 its regularisation length. The slip is measured from u = 0.
+  VectorXd friction_bound, friction_alpha;
   Index size() const { return static_cast<Index>(node.size()); }
+  bool frictional() const { return friction_bound.size() > 0; }
 };
 
 struct ContactInteriorPointOptions {
@@ -78,6 +90,26 @@ struct ContactInteriorPointResult {
 ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_share, const VectorXd& f,
                                                         const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                                         const Eigen::MatrixXd& x, const NodalConstraints& constraints,
+                                                        const ContactInteriorPointOptions& options = {});
+
+/// Coulomb friction of coefficient `mu` at the constrained nodes as a fixed point of Tresca problems (METHOD.md,
+/// "Coulomb as a fixed point"): the first solve frictionless, then each with the bounds g_j = μ λ_j of the
+/// previous solve's contact forces, until max_j |Δg_j| ≤ coulomb_tolerance × max_j g_j. constraints'
+/// friction_alpha gives the regularisation lengths (its friction_bound is not read). The result is the last
+/// solve's, its `iterations` summed over the solves; `coulomb_iterations` counts the Tresca solves.
+struct CoulombInteriorPointResult {
+  ContactInteriorPointResult last;
+  int coulomb_iterations = 0;
+  int interior_point_iterations = 0;  ///< over every solve
+  double bound_change = 0.0;          ///< max_j |Δg_j| / max_j g_j of the last update
+  bool converged = false;
+};
+
+CoulombInteriorPointResult solve_coulomb_interior_point(const SparseMatrix& K_share, const VectorXd& f,
+                                                        const std::vector<Index>& fixed, const VectorXd& fixed_values,
+                                                        const Eigen::MatrixXd& x, NodalConstraints constraints,
+                                                        double mu, double coulomb_tolerance = 1e-6,
+                                                        int max_coulomb_iterations = 30,
                                                         const ContactInteriorPointOptions& options = {});
 
 }  // namespace symcontact

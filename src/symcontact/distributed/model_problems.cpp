@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <stdexcept>
 
 #include "symcontact/energy/external_load.hpp"
@@ -55,6 +56,28 @@ void fix_component(BlockSystem& s, const std::string& group, int comp, std::vect
 const char* bottom_group(int dim) { return dim == 2 ? "bottom" : "zmin"; }
 const char* top_group(int dim) { return dim == 2 ? "top" : "zmax"; }
 
+/// The block with its top moved by (shift, 0, −depth) (2D: (shift, −depth)) and one vertical constraint per
+/// bottom node, u_z ≥ obstacle(x, y) (2D: u_y ≥ obstacle(x)).
+ObstacleSystem pressed_block(int dim, int n, double depth, double shift, const std::function<double(const double*)>& obstacle,
+                             int part, int parts) {
+  ObstacleSystem o{block_share(dim, n, part, parts), {}};
+  BlockSystem& s = o.block;
+  std::vector<double> values;
+  for (const Index v : s.mesh.group_nodes(top_group(dim)))
+    for (int c = 0; c < dim; ++c) {
+      s.fixed.push_back(dim * v + c);
+      values.push_back(c == dim - 1 ? -depth : c == 0 ? shift : 0.0);
+    }
+  s.fixed_values = Eigen::Map<VectorXd>(values.data(), static_cast<Index>(values.size()));
+  o.contact.node = s.mesh.group_nodes(bottom_group(dim));
+  const Index m = o.contact.size();
+  o.contact.normal = Eigen::MatrixXd::Zero(dim, m);
+  o.contact.normal.row(dim - 1).setOnes();
+  o.contact.lower.resize(m);
+  for (Index j = 0; j < m; ++j) o.contact.lower[j] = obstacle(&s.mesh.x(0, o.contact.node[j]));
+  return o;
+}
+
 }  // namespace
 
 BlockSystem clamped_block_system(int dim, int n, int part, int parts) {
@@ -77,26 +100,22 @@ BlockSystem clamped_block_system(int dim, int n, int part, int parts) {
 ObstacleSystem block_on_ball_system(int dim, int n, double radius, double depth, int part, int parts) {
   if (radius * radius <= 0.25 * (dim - 1))
     throw std::invalid_argument("block_on_ball_system: the ball must reach under the whole bottom face");
-  ObstacleSystem o{block_share(dim, n, part, parts), {}};
-  BlockSystem& s = o.block;
-  std::vector<double> values;
-  for (const Index v : s.mesh.group_nodes(top_group(dim)))
-    for (int c = 0; c < dim; ++c) {
-      s.fixed.push_back(dim * v + c);
-      values.push_back(c == dim - 1 ? -depth : 0.0);
-    }
-  s.fixed_values = Eigen::Map<VectorXd>(values.data(), static_cast<Index>(values.size()));
-  const std::vector<Index> bottom = s.mesh.group_nodes(bottom_group(dim));
-  o.contact.node = bottom;
-  o.contact.normal = Eigen::MatrixXd::Zero(dim, static_cast<Index>(bottom.size()));
-  o.contact.lower.resize(static_cast<Index>(bottom.size()));
-  for (std::size_t j = 0; j < bottom.size(); ++j) {
-    const Index col = static_cast<Index>(j);
-    double r2 = 0.0;
-    for (int c = 0; c + 1 < dim; ++c) r2 += std::pow(s.mesh.x(c, bottom[j]) - 0.5, 2);
-    o.contact.normal(dim - 1, col) = 1.0;
-    o.contact.lower[col] = -(radius - std::sqrt(radius * radius - r2));
-  }
+  return pressed_block(dim, n, depth, 0.0,
+                       [&](const double* x) {
+                         double r2 = 0.0;
+                         for (int c = 0; c + 1 < dim; ++c) r2 += (x[c] - 0.5) * (x[c] - 0.5);
+                         return -(radius - std::sqrt(radius * radius - r2));
+                       },
+                       part, parts);
+}
+
+ObstacleSystem block_on_plane_system(int dim, int n, double depth, double shift, double tau, double alpha, int part,
+                                     int parts) {
+  ObstacleSystem o = pressed_block(dim, n, depth, shift, [](const double*) { return 0.0; }, part, parts);
+  const VectorXd area = lumped_measures(o.block.mesh, bottom_group(dim));
+  o.contact.friction_bound.resize(o.contact.size());
+  for (Index j = 0; j < o.contact.size(); ++j) o.contact.friction_bound[j] = tau * area[o.contact.node[j]];
+  o.contact.friction_alpha = VectorXd::Constant(o.contact.size(), alpha);
   return o;
 }
 
@@ -138,15 +157,28 @@ double vertical_load(const BlockSystem& s) {
   return load;
 }
 
-VectorXd nodal_pressures(const Mesh& mesh, const std::string& surface, const NodalConstraints& c,
-                         const VectorXd& lambda) {
+VectorXd lumped_measures(const Mesh& mesh, const std::string& surface) {
   VectorXd area = VectorXd::Zero(mesh.num_nodes());
   const std::vector<Index>& f = mesh.facet_groups.at(surface).facets;
+  if (mesh.x.rows() == 2) {
+    for (std::size_t k = 0; k + 1 < f.size(); k += 2) {
+      const double half = 0.5 * (mesh.x.col(f[k + 1]) - mesh.x.col(f[k])).norm();
+      area[f[k]] += half;
+      area[f[k + 1]] += half;
+    }
+    return area;
+  }
   for (std::size_t k = 0; k + 2 < f.size(); k += 3) {
     const Vec3 a = mesh.x.col(f[k]), b = mesh.x.col(f[k + 1]), d = mesh.x.col(f[k + 2]);
     const double third = (b - a).cross(d - a).norm() / 6.0;
     for (std::size_t i = 0; i < 3; ++i) area[f[k + i]] += third;
   }
+  return area;
+}
+
+VectorXd nodal_pressures(const Mesh& mesh, const std::string& surface, const NodalConstraints& c,
+                         const VectorXd& lambda) {
+  const VectorXd area = lumped_measures(mesh, surface);
   VectorXd p(c.size());
   for (Index j = 0; j < c.size(); ++j) p[j] = lambda[j] / area[c.node[j]];
   return p;

@@ -9,7 +9,11 @@
 ///   rigid ball (2D: disc) of radius R whose top touches the centre of the block's bottom face — a Hertz
 ///   contact when the contact zone is small against the block. One constraint per bottom node along the
 ///   vertical: u_z ≥ l = −(R − √(R² − r²)), r the node's distance from the centre of the bottom face (the
-///   small-displacement gap along the vertical; R must exceed the half-diagonal of the face).
+///   small-displacement gap along the vertical; R must exceed the half-diagonal of the face);
+/// - block_on_plane_system: its top moved down by `depth` and along x by `shift` (every component fixed), on
+///   the rigid plane y = 0 (3D: z = 0) that its bottom rests on, with regularised Tresca friction of
+///   threshold τ and regularisation length α at the bottom nodes (g_j = τ × the node's lumped area). Once
+///   every node slides (|slip| ≫ α), the friction force on the bottom is τ × its area, 1, along −x.
 ///
 /// And the Hertz sphere of VALIDATION.md, V2 (hertz_sphere_system), as examples/hertz_3d/sphere_on_plane.toml
 /// states it: the quarter sphere of sphere_on_plane.geo meshed at size h near the contact point, E = 1,
@@ -47,6 +51,9 @@ struct ObstacleSystem {
 ObstacleSystem block_on_ball_system(int dim, int divisions, double radius, double depth, int part = 0,
                                     int parts = 1);
 
+ObstacleSystem block_on_plane_system(int dim, int divisions, double depth, double shift, double tau, double alpha,
+                                     int part = 0, int parts = 1);
+
 /// sphere_geo: the path of examples/hertz_3d/sphere_on_plane.geo; a wrapper setting h is written into
 /// work_dir and meshed by Gmsh.
 ObstacleSystem hertz_sphere_system(const std::string& sphere_geo, double h, const std::string& work_dir,
@@ -56,8 +63,12 @@ ObstacleSystem hertz_sphere_system(const std::string& sphere_geo, double h, cons
 /// slightly inside the quarter disk).
 double vertical_load(const BlockSystem& s);
 
-/// Nodal contact pressures λ_j / A_j, A_j the lumped area of node p_j on the facets of group `surface`
-/// (a third of each triangle's area; a node on a symmetry plane has half its area and half its force).
+/// The lumped measure of every node on the facets of group `surface` (3D triangles: a third of each one's
+/// area; 2D segments: half of each one's length); zero off the surface.
+VectorXd lumped_measures(const Mesh& mesh, const std::string& surface);
+
+/// Nodal contact pressures λ_j / A_j, A_j the lumped measure of node p_j on the facets of group `surface`
+/// (a node on a symmetry plane has half its area and half its force).
 VectorXd nodal_pressures(const Mesh& mesh, const std::string& surface, const NodalConstraints& c,
                          const VectorXd& lambda);
 
