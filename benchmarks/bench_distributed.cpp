@@ -5,11 +5,15 @@
 /// - `--problem contact`: the block pressed onto a rigid ball by the interior point with Krylov Newton solves
 ///   (contact_interior_point.hpp): contact nodes and those in contact, interior-point iterations, CG
 ///   iterations per Newton system (smallest, largest, all), times, the largest contact force and peak RSS.
+/// - `--problem sliding`: the block pressed by 0.01 on a rigid plane and dragged by 0.05 (its whole bottom face
+///   sliding) with Coulomb friction `--mu` (α = 10⁻³ h) as a fixed point of Tresca solves: the Tresca solves,
+///   the interior point's columns summed over them, and R_x / R_n of the top against μ;
 /// - `--problem hertz`: VALIDATION.md's V2 (examples/hertz_3d/sphere_on_plane.*) at the sizes `--h`, by the
 ///   same interior point: its columns, then Gmsh's meshing time and p0 and a against the closed form.
 ///   symcontact-bench-distributed --dim 3 --divisions 20 32 48 70
 ///   symcontact-bench-distributed --problem contact --dim 3 --divisions 16 24 32 [--preconditioner gamg]
 ///   symcontact-bench-distributed --problem hertz --h 0.02 0.01 0.005
+///   symcontact-bench-distributed --problem sliding --dim 3 --divisions 16 24 --mu 0.2
 ///   mpiexec -n 2 symcontact-bench-distributed --dim 3 --divisions 70
 /// A program of its own: the distributed path never shares a process with IPOPT's sequential MUMPS
 /// (src/CMakeLists.txt), so the Cholesky floor of the same block comes from `symcontact-bench --case
@@ -53,7 +57,7 @@ struct Settings {
   std::vector<int> divisions{20, 32};
   std::vector<double> h{0.02, 0.01};
   double rtol = 1e-10;
-  double radius = 1.0, depth = 0.02;
+  double radius = 1.0, depth = 0.02, mu = 0.2;
   symcontact::NewtonPreconditioner preconditioner = symcontact::NewtonPreconditioner::kFilteredGamg;
 };
 
@@ -146,6 +150,46 @@ std::pair<double, double> hertz_errors(const symcontact::ObstacleSystem& o, cons
   return {100 * (p.maxCoeff() / p0_ref - 1), 100 * (a / a_ref - 1)};
 }
 
+/// R_x / R_n of the block's top (its reactions: K u − f on its nodes).
+double reaction_ratio(const symcontact::BlockSystem& whole, const VectorXd& u, int dim) {
+  const VectorXd residual = symcontact::SparseMatrix(whole.K_lower.selfadjointView<Eigen::Lower>()) * u - whole.f;
+  double tangential = 0.0, normal = 0.0;
+  for (const auto v : whole.mesh.group_nodes(dim == 2 ? "top" : "zmax")) {
+    tangential += residual[dim * v];
+    normal -= residual[dim * v + dim - 1];
+  }
+  return tangential / normal;
+}
+
+void sliding_rows(const PetscSession& petsc, const Settings& s) {
+  const bool root = petsc.rank() == 0;
+  if (root) {
+    std::printf("# ranks %d; block sliding on a rigid plane, Coulomb mu %g, interior point, CG + %s, tolerance %g\n"
+                "%9s %10s %8s %7s", petsc.size(), s.mu, preconditioner_name(s), s.rtol, "divisions", "DOFs",
+                "contact", "solves");
+    print_ip_header();
+    std::printf(" %12s %12s\n", "R_x/R_n", "peak RSS [MiB]");
+  }
+  for (const int n : s.divisions) {
+    const double alpha = 1e-3 / n;
+    const auto o = symcontact::block_on_plane_system(s.dim, n, 0.01, 0.05, 0.0, alpha, petsc.rank(), petsc.size());
+    symcontact::ContactInteriorPointOptions options;
+    options.tolerance = s.rtol;
+    options.preconditioner = s.preconditioner;
+    const symcontact::BlockSystem& b = o.block;
+    const auto c = symcontact::solve_coulomb_interior_point(b.K_lower, b.f, b.fixed, b.fixed_values, b.mesh.x,
+                                                            o.contact, s.mu, 1e-6, 30, options);
+    if (!root) continue;
+    const double ratio = reaction_ratio(symcontact::block_on_plane_system(s.dim, n, 0.01, 0.05, 0.0, alpha).block,
+                                        c.last.u, s.dim);
+    std::printf("%9d %10lld %8lld %7d", n, static_cast<long long>(b.f.size()), static_cast<long long>(o.contact.size()),
+                c.coulomb_iterations + 1);
+    print_ip_columns(c.all);
+    std::printf(" %12.9f", ratio);
+    print_end(c.last);
+  }
+}
+
 void hertz_rows(const PetscSession& petsc, const Settings& s) {
   const bool root = petsc.rank() == 0;
   if (root) {
@@ -178,8 +222,9 @@ int main(int argc, char** argv) {
   CLI::App app{"symcontact-bench-distributed — the distributed path on PETSc", "symcontact-bench-distributed"};
   Settings s;
   std::string problem = "elasticity", preconditioner = "filtered";
-  app.add_option("--problem", problem, "elasticity, contact or hertz")
-      ->check(CLI::IsMember({"elasticity", "contact", "hertz"}));
+  app.add_option("--problem", problem, "elasticity, contact, sliding or hertz")
+      ->check(CLI::IsMember({"elasticity", "contact", "sliding", "hertz"}));
+  app.add_option("--mu", s.mu, "sliding: the friction coefficient");
   app.add_option("--dim", s.dim, "2 or 3")->check(CLI::IsMember({2, 3}));
   app.add_option("--divisions", s.divisions, "divisions per side, one row each");
   app.add_option("--rtol", s.rtol, "relative residual of the solve (elasticity), tolerance (contact)");
@@ -196,6 +241,8 @@ int main(int argc, char** argv) {
     elasticity_rows(petsc, s);
   else if (problem == "contact")
     contact_rows(petsc, s);
+  else if (problem == "sliding")
+    sliding_rows(petsc, s);
   else
     hertz_rows(petsc, s);
   return 0;

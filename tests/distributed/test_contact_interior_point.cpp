@@ -173,7 +173,7 @@ TEST(ContactInteriorPoint, CoulombFrictionOfASlidingBlockIsMuTimesTheNormalForce
     }
     if (g_petsc->rank() == 0)
       std::printf("dim %d: %d Tresca solves, %d interior-point iterations; R_x / R_n = %.9f, R_n / Σλ − 1 = %.1e\n",
-                  dim, c.coulomb_iterations, c.interior_point_iterations, tangential / normal,
+                  dim, c.coulomb_iterations, c.all.iterations, tangential / normal,
                   normal / c.last.lambda.sum() - 1);
     EXPECT_NEAR(normal, c.last.lambda.sum(), 1e-8 * normal);
     EXPECT_LE(tangential / normal, mu * (1 + 1e-6));

@@ -397,7 +397,12 @@ CoulombInteriorPointResult solve_coulomb_interior_point(const SparseMatrix& K_sh
   CoulombInteriorPointResult c;
   for (;;) {
     c.last = solve_contact_interior_point(K_share, f, fixed, fixed_values, x, constraints, options);
-    c.interior_point_iterations += c.last.iterations;
+    c.all.iterations += c.last.iterations;
+    c.all.krylov_iterations.insert(c.all.krylov_iterations.end(), c.last.krylov_iterations.begin(),
+                                   c.last.krylov_iterations.end());
+    c.all.setup_seconds += c.last.setup_seconds;
+    c.all.krylov_seconds += c.last.krylov_seconds;
+    c.all.total_seconds += c.last.total_seconds;
     if (!c.last.converged) return c;
     const VectorXd bound = mu * c.last.lambda.cwiseMax(0.0);
     if (constraints.frictional()) {

@@ -95,12 +95,11 @@ ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_sh
 /// Coulomb friction of coefficient `mu` at the constrained nodes as a fixed point of Tresca problems (METHOD.md,
 /// "Coulomb as a fixed point"): the first solve frictionless, then each with the bounds g_j = μ λ_j of the
 /// previous solve's contact forces, until max_j |Δg_j| ≤ coulomb_tolerance × max_j g_j. constraints'
-/// friction_alpha gives the regularisation lengths (its friction_bound is not read). The result is the last
-/// solve's, its `iterations` summed over the solves; `coulomb_iterations` counts the Tresca solves.
+/// friction_alpha gives the regularisation lengths (its friction_bound is not read).
 struct CoulombInteriorPointResult {
-  ContactInteriorPointResult last;
-  int coulomb_iterations = 0;
-  int interior_point_iterations = 0;  ///< over every solve
+  ContactInteriorPointResult last;  ///< the last solve: the answer
+  ContactInteriorPointResult all;   ///< iterations, Krylov iterations and times over every solve
+  int coulomb_iterations = 0;       ///< Tresca solves after the frictionless one
   double bound_change = 0.0;          ///< max_j |Δg_j| / max_j g_j of the last update
   bool converged = false;
 };
