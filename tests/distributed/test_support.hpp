@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the distributed path's tests: the process's PETSc session (main.cpp) and the reference solve.
+// Shared by the distributed path's tests: the process's PetscSession (main.cpp) and the reference solve.
 
 #include <vector>
 
