@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "symcontact/distributed/model_problems.hpp"
+#include "symcontact/distributed/petsc_support.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"
 #include "symcontact/distributed/gamg_elasticity.hpp"
 
@@ -46,10 +47,6 @@ double peak_rss_mib() {
   for (std::string line; std::getline(in, line);)
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
   return -1.0;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 struct Settings {
@@ -69,7 +66,7 @@ void elasticity_rows(const PetscSession& petsc, const Settings& s) {
   for (const int n : s.divisions) {
     const auto t0 = std::chrono::steady_clock::now();
     const symcontact::BlockSystem b = symcontact::clamped_block_system(s.dim, n, petsc.rank(), petsc.size());
-    const double assembly = seconds_since(t0);
+    const double assembly = symcontact::petsc::seconds_since(t0);
     symcontact::GamgOptions options;
     options.relative_tolerance = s.rtol;
     const symcontact::GamgResult r =
@@ -204,7 +201,7 @@ void hertz_rows(const PetscSession& petsc, const Settings& s) {
     const auto t0 = std::chrono::steady_clock::now();
     const auto o = symcontact::hertz_sphere_system(std::string(SYMCONTACT_BENCH_EXAMPLES) + "/hertz_3d/sphere_on_plane.geo",
                                                    h, dir.string(), petsc.rank(), petsc.size());
-    const double meshing = seconds_since(t0);
+    const double meshing = symcontact::petsc::seconds_since(t0);
     const auto r = solve(o, s);
     if (!root) continue;
     const auto [p0_error, a_error] = hertz_errors(o, r.lambda);

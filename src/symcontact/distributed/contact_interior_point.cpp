@@ -69,7 +69,7 @@ class InteriorPoint {
   VectorXd residuals(const Eigen::MatrixXd& U);
   double merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& U,
                const Eigen::MatrixXd& dU, const VectorXd& rp);
-  double line_search(double alpha, const Direction& d, double target, const VectorXd& rp);
+  double line_search(double alpha, const Direction& d, double target, const VectorXd& rp, const Eigen::MatrixXd& U);
   void zero_fixed_rows(Vec v);
   void update_newton_matrix(const Eigen::MatrixXd& U);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
@@ -308,10 +308,11 @@ double InteriorPoint::merit(double alpha, const Direction& d, double target, dou
 }
 
 /// The step from `alpha` halved until the merit function decreases enough (Armijo); alpha itself without
-/// friction, or when the direction is not one of descent for the merit function.
-double InteriorPoint::line_search(double alpha, const Direction& d, double target, const VectorXd& rp) {
+/// friction, or when the direction is not one of descent for the merit function. U: the nodes' u.
+double InteriorPoint::line_search(double alpha, const Direction& d, double target, const VectorXd& rp,
+                                  const Eigen::MatrixXd& U) {
   if (!c_.frictional()) return alpha;
-  const Eigen::MatrixXd U = nodal_components(u_.object), dU = nodal_components(du_.object);
+  const Eigen::MatrixXd dU = nodal_components(du_.object);
   const Eigen::MatrixXd grad_j = friction_gradient(c_, U);
   PetscScalar du_rd = 0.0, du_Kdu = 0.0;
   check(VecDot(du_.object, rd_.object, &du_rd), "VecDot");  // Δuᵀ(K u − f) = Δuᵀ r_d + (AΔu)ᵀλ − Δuᵀ∇j
@@ -359,7 +360,7 @@ ContactInteriorPointResult InteriorPoint::run() {
     const double target = std::pow(mu_affine / mu, 3) * mu;
     const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
     if (!solve_direction(rc, rp, eta, d)) break;
-    const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp);
+    const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, U);
     check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
     s_ += alpha * d.ds;
     lambda_ += alpha * d.dl;

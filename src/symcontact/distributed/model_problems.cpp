@@ -47,8 +47,9 @@ BlockSystem block_share(int dim, int n, int part, int parts) {
 
 /// Every node of `group`'s DOF `comp` fixed at 0.
 void fix_component(BlockSystem& s, const std::string& group, int comp, std::vector<double>& values) {
+  const Index dim = s.mesh.x.rows();
   for (const Index v : s.mesh.group_nodes(group)) {
-    s.fixed.push_back(3 * v + comp);
+    s.fixed.push_back(dim * v + comp);
     values.push_back(0.0);
   }
 }
