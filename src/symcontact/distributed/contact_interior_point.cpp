@@ -59,17 +59,20 @@ class InteriorPoint {
  private:
   void assemble(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
                 const VectorXd& fixed_values, const Eigen::MatrixXd& x);
+  void build_rows(const std::vector<Index>& fixed, const VectorXd& fixed_values, Index n);
   void create_constraint_scatter();
   void set_scales(const VectorXd& fixed_values, double max_diagonal);
   void create_solver();
-  Eigen::MatrixXd nodal_components(Vec v);
-  VectorXd normal_components(Vec v);
+  VectorXd gather(Vec v);
+  Eigen::MatrixXd nodal(const VectorXd& g) const;
   void add_nodal(const Eigen::MatrixXd& W, Vec out);
+  void add_gathered(const VectorXd& w, Vec out);
   void add_transpose(const VectorXd& w, Vec out);
-  VectorXd residuals(const Eigen::MatrixXd& U);
+  VectorXd residuals(const VectorXd& g, const Eigen::MatrixXd& U);
   double merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& U,
                const Eigen::MatrixXd& dU, const VectorXd& rp);
   double line_search(double alpha, const Direction& d, double target, const VectorXd& rp, const Eigen::MatrixXd& U);
+  SparseMatrix newton_pattern(const SparseMatrix& K_share) const;
   void zero_fixed_rows(Vec v);
   void update_newton_matrix(const Eigen::MatrixXd& U);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
@@ -85,6 +88,11 @@ class InteriorPoint {
   Owned<Mat, MatDestroy> K_, N_;
   Owned<Vec, VecDestroy> u_, b_, rd_, rhs_, du_, Kdu_, gathered_;
   Owned<VecScatter, VecScatterDestroy> to_constrained_;
+  /// The DOFs the constraints read (A's columns and the constrained nodes' DOFs), sorted: A_ is A on them,
+  /// node_position_[dim·j + k] the position of node p_j's DOF k among them.
+  std::vector<PetscInt> gathered_dofs_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> A_;
+  std::vector<Index> node_position_;
   std::unique_ptr<SubspaceCorrection> correction_;
   Owned<KSP, KSPDestroy> ksp_;
   VectorXd s_, lambda_;
@@ -100,19 +108,21 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
   const Index n = dim_ * x.cols();
   if (K_share.rows() != n || f.size() != n || fixed_values.size() != static_cast<Index>(fixed.size()) ||
       c.normal.rows() != dim_ || c.normal.cols() != m_ || c.lower.size() != m_ || m_ == 0 ||
+      (c.rows.size() > 0 && (c.rows.rows() != m_ || c.rows.cols() != n)) ||
       (c.frictional() && (c.friction_bound.size() != m_ || c.friction_alpha.size() != m_ ||
                           c.friction_bound.minCoeff() < 0.0 || c.friction_alpha.minCoeff() <= 0.0)))
     throw std::invalid_argument("solve_contact_interior_point: K, f, the fixed values, the coordinates and the "
                                 "constraints do not match (or there is no constraint)");
   std::vector<char> is_fixed(static_cast<std::size_t>(n), 0);
   for (const Index i : fixed) is_fixed[static_cast<std::size_t>(i)] = 1;
-  for (Index j = 0; j < m_; ++j)
+  for (Index j = 0; j < m_ && c.frictional(); ++j)
     for (int k = 0; k < dim_; ++k)
       if (is_fixed[static_cast<std::size_t>(dim_ * c.node[j] + k)] && c.normal(k, j) != 0.0)
         throw std::invalid_argument("solve_contact_interior_point: the normal of contact node " +
                                     std::to_string(c.node[j]) + " moves its fixed DOF " + std::to_string(k));
   for (const Index i : fixed)
     if (mine_.owns(i)) fixed_owned_.push_back(static_cast<PetscInt>(i));
+  build_rows(fixed, fixed_values, n);
   assemble(K_share, f, fixed, fixed_values, x);
   create_constraint_scatter();
   create_solver();
@@ -122,7 +132,7 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
 void InteriorPoint::assemble(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
                              const VectorXd& fixed_values, const Eigen::MatrixXd& x) {
   check(MatCreate(PETSC_COMM_WORLD, &K_.object), "MatCreate");
-  petsc::assemble_symmetric(K_share, mine_, K_.object);
+  petsc::assemble_symmetric(newton_pattern(K_share), mine_, K_.object);
   check(MatCreateVecs(K_.object, &u_.object, &b_.object), "MatCreateVecs");
   PetscReal max_diagonal = 0.0;
   check(MatGetDiagonal(K_.object, b_.object), "MatGetDiagonal");
@@ -148,17 +158,69 @@ void InteriorPoint::set_scales(const VectorXd& fixed_values, double max_diagonal
   result_.length_scale = L_;
 }
 
-/// The constrained nodes' DOFs, gathered whole on every rank: entry dim·j + comp is u_{p_j, comp}.
-void InteriorPoint::create_constraint_scatter() {
-  std::vector<PetscInt> from;
-  from.reserve(static_cast<std::size_t>(dim_ * m_));
+/// A on the free DOFs (the fixed ones' entries times ū moved into the lower bounds), on the gathered DOFs.
+void InteriorPoint::build_rows(const std::vector<Index>& fixed, const VectorXd& fixed_values, Index n) {
+  SparseMatrix rows = c_.rows;
+  if (rows.size() == 0) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (Index j = 0; j < m_; ++j)
+      for (int k = 0; k < dim_; ++k)
+        if (c_.normal(k, j) != 0.0)
+          t.emplace_back(static_cast<int>(j), static_cast<int>(dim_ * c_.node[j] + k), c_.normal(k, j));
+    rows.resize(m_, n);
+    rows.setFromTriplets(t.begin(), t.end());
+  }
+  VectorXd ubar = VectorXd::Zero(n);
+  std::vector<char> is_fixed(static_cast<std::size_t>(n), 0);
+  for (std::size_t k = 0; k < fixed.size(); ++k) {
+    ubar[fixed[k]] = fixed_values[static_cast<Index>(k)];
+    is_fixed[static_cast<std::size_t>(fixed[k])] = 1;
+  }
+  c_.lower -= rows * ubar;
+  rows.prune([&](Index, Index col, double) { return !is_fixed[static_cast<std::size_t>(col)]; });
+  for (int col = 0; col < rows.outerSize(); ++col)
+    if (rows.col(col).nonZeros() > 0) gathered_dofs_.push_back(col);
   for (const Index p : c_.node)
-    for (int k = 0; k < dim_; ++k) from.push_back(static_cast<PetscInt>(dim_ * p + k));
+    for (int k = 0; k < dim_; ++k) gathered_dofs_.push_back(static_cast<PetscInt>(dim_ * p + k));
+  std::sort(gathered_dofs_.begin(), gathered_dofs_.end());
+  gathered_dofs_.erase(std::unique(gathered_dofs_.begin(), gathered_dofs_.end()), gathered_dofs_.end());
+  auto position = [&](Index dof) {
+    return static_cast<Index>(std::lower_bound(gathered_dofs_.begin(), gathered_dofs_.end(), dof) - gathered_dofs_.begin());
+  };
+  std::vector<Eigen::Triplet<double>> t;
+  for (int col = 0; col < rows.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(rows, col); it; ++it)
+      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(position(col)), it.value());
+  A_.resize(m_, static_cast<Index>(gathered_dofs_.size()));
+  A_.setFromTriplets(t.begin(), t.end());
+  for (const Index p : c_.node)
+    for (int k = 0; k < dim_; ++k) node_position_.push_back(position(dim_ * p + k));
+}
+
+/// K's share with explicit zeros where Aᵀ Σ A adds entries outside K's pattern (this rank's rows), so that
+/// N = K + ∇²j + Aᵀ Σ A keeps K's pattern.
+SparseMatrix InteriorPoint::newton_pattern(const SparseMatrix& K_share) const {
+  std::vector<Eigen::Triplet<double>> t;
+  for (Index j = 0; j < m_; ++j)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator a(A_, j); a; ++a)
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator b(A_, j); b; ++b) {
+        const PetscInt r = gathered_dofs_[static_cast<std::size_t>(a.col())];
+        const PetscInt c = gathered_dofs_[static_cast<std::size_t>(b.col())];
+        if (r >= c && mine_.owns(r)) t.emplace_back(static_cast<int>(r), static_cast<int>(c), 0.0);
+      }
+  SparseMatrix Z(K_share.rows(), K_share.cols());
+  Z.setFromTriplets(t.begin(), t.end());
+  return K_share + Z;
+}
+
+/// The gathered DOFs' scatter: their values whole on every rank.
+void InteriorPoint::create_constraint_scatter() {
   Owned<IS, ISDestroy> is;
-  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(from.size()), from.data(), PETSC_COPY_VALUES,
-                        &is.object),
+  check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(gathered_dofs_.size()), gathered_dofs_.data(),
+                        PETSC_COPY_VALUES, &is.object),
         "ISCreateGeneral");
-  check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(from.size()), &gathered_.object), "VecCreateSeq");
+  check(VecCreateSeq(PETSC_COMM_SELF, static_cast<PetscInt>(gathered_dofs_.size()), &gathered_.object),
+        "VecCreateSeq");
   check(VecScatterCreate(u_.object, is.object, gathered_.object, nullptr, &to_constrained_.object),
         "VecScatterCreate");
 }
@@ -166,11 +228,9 @@ void InteriorPoint::create_constraint_scatter() {
 /// CG on the unpreconditioned residual, preconditioned as the options say; PETSc options with the prefix
 /// newton_ (and filter_ for the subspace solve) may change it.
 void InteriorPoint::create_solver() {
-  std::vector<PetscInt> subspace;
-  for (const Index p : c_.node)
-    if (mine_.owns_node(p))
-      for (int k = 0; k < dim_; ++k) subspace.push_back(static_cast<PetscInt>(dim_ * p + k));
-  std::sort(subspace.begin(), subspace.end());
+  std::vector<PetscInt> subspace;  // the gathered DOFs this rank owns (sorted)
+  for (const PetscInt i : gathered_dofs_)
+    if (mine_.owns(i)) subspace.push_back(i);
   correction_ = std::make_unique<SubspaceCorrection>(subspace);
   check(KSPCreate(PETSC_COMM_WORLD, &ksp_.object), "KSPCreate");
   check(KSPSetOptionsPrefix(ksp_.object, "newton_"), "KSPSetOptionsPrefix");
@@ -183,21 +243,24 @@ void InteriorPoint::create_solver() {
   check(KSPSetFromOptions(ksp_.object), "KSPSetFromOptions");
 }
 
-/// The constrained nodes' components of v, dim × m (column j: node p_j), on every rank.
-Eigen::MatrixXd InteriorPoint::nodal_components(Vec v) {
+/// The gathered DOFs' values of v, on every rank.
+VectorXd InteriorPoint::gather(Vec v) {
   check(VecScatterBegin(to_constrained_.object, v, gathered_.object, INSERT_VALUES, SCATTER_FORWARD),
         "VecScatterBegin");
   check(VecScatterEnd(to_constrained_.object, v, gathered_.object, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
   const PetscScalar* g = nullptr;
   check(VecGetArrayRead(gathered_.object, &g), "VecGetArrayRead");
-  Eigen::MatrixXd out = Eigen::Map<const Eigen::MatrixXd>(g, dim_, m_);
+  VectorXd out = Eigen::Map<const VectorXd>(g, static_cast<Index>(gathered_dofs_.size()));
   check(VecRestoreArrayRead(gathered_.object, &g), "VecRestoreArrayRead");
   return out;
 }
 
-/// (A v)_j = n_jᵀ v_{p_j}, on every rank.
-VectorXd InteriorPoint::normal_components(Vec v) {
-  return c_.normal.cwiseProduct(nodal_components(v)).colwise().sum().transpose();
+/// The constrained nodes' components of the gathered values g, dim × m (column j: node p_j).
+Eigen::MatrixXd InteriorPoint::nodal(const VectorXd& g) const {
+  Eigen::MatrixXd U(dim_, m_);
+  for (Index j = 0; j < m_; ++j)
+    for (int k = 0; k < dim_; ++k) U(k, j) = g[node_position_[static_cast<std::size_t>(dim_ * j + k)]];
+  return U;
 }
 
 /// out += column j of W on node p_j's DOFs (each rank its own nodes).
@@ -210,8 +273,17 @@ void InteriorPoint::add_nodal(const Eigen::MatrixXd& W, Vec out) {
   check(VecRestoreArray(out, &a), "VecRestoreArray");
 }
 
-/// out += Aᵀ w: w_j n_j on node p_j's DOFs.
-void InteriorPoint::add_transpose(const VectorXd& w, Vec out) { add_nodal(c_.normal * w.asDiagonal(), out); }
+/// out += w on the gathered DOFs (each rank its own).
+void InteriorPoint::add_gathered(const VectorXd& w, Vec out) {
+  PetscScalar* a = nullptr;
+  check(VecGetArray(out, &a), "VecGetArray");
+  for (std::size_t i = 0; i < gathered_dofs_.size(); ++i)
+    if (mine_.owns(gathered_dofs_[i])) a[gathered_dofs_[i] - mine_.row0()] += w[static_cast<Index>(i)];
+  check(VecRestoreArray(out, &a), "VecRestoreArray");
+}
+
+/// out += Aᵀ w.
+void InteriorPoint::add_transpose(const VectorXd& w, Vec out) { add_gathered(A_.transpose() * w, out); }
 
 void InteriorPoint::zero_fixed_rows(Vec v) {
   PetscScalar* a = nullptr;
@@ -220,17 +292,32 @@ void InteriorPoint::zero_fixed_rows(Vec v) {
   check(VecRestoreArray(v, &a), "VecRestoreArray");
 }
 
-/// N = K + ∇²j(u) + Aᵀ Σ A, Σ = diag(λ_j / s_j): σ_j n_j n_jᵀ (and j's block) added to node p_j's diagonal
-/// block; U the nodes' displacements.
+/// N = K + ∇²j(u) + Aᵀ Σ A, Σ = diag(λ_j / s_j) (j's block on node p_j's diagonal block); U the nodes'
+/// displacements.
 void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& U) {
   check(MatCopy(K_.object, N_.object, SAME_NONZERO_PATTERN), "MatCopy");
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> B =
+      A_.transpose() * lambda_.cwiseQuotient(s_).asDiagonal() * A_;
+  std::vector<PetscInt> columns;
+  std::vector<PetscScalar> values;
+  for (Index r = 0; r < B.outerSize(); ++r) {
+    const PetscInt row = gathered_dofs_[static_cast<std::size_t>(r)];
+    if (!mine_.owns(row)) continue;
+    columns.clear();
+    values.clear();
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(B, r); it; ++it) {
+      columns.push_back(gathered_dofs_[static_cast<std::size_t>(it.col())]);
+      values.push_back(it.value());
+    }
+    check(MatSetValues(N_.object, 1, &row, static_cast<PetscInt>(columns.size()), columns.data(), values.data(),
+                       ADD_VALUES),
+          "MatSetValues");
+  }
   std::vector<PetscInt> rows(static_cast<std::size_t>(dim_));
-  Eigen::MatrixXd block(dim_, dim_);
-  for (Index j = 0; j < m_; ++j) {
+  for (Index j = 0; j < m_ && c_.frictional(); ++j) {
     if (!mine_.owns_node(c_.node[j])) continue;
     for (int k = 0; k < dim_; ++k) rows[static_cast<std::size_t>(k)] = static_cast<PetscInt>(dim_ * c_.node[j] + k);
-    block = (lambda_[j] / s_[j]) * c_.normal.col(j) * c_.normal.col(j).transpose();  // symmetric: either order
-    if (c_.frictional()) block += friction_hessian(c_, U, j);
+    const Eigen::MatrixXd block = friction_hessian(c_, U, j);  // symmetric: either storage order
     check(MatSetValues(N_.object, dim_, rows.data(), dim_, rows.data(), block.data(), ADD_VALUES), "MatSetValues");
   }
   check(MatAssemblyBegin(N_.object, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
@@ -267,7 +354,7 @@ bool InteriorPoint::solve_direction(const VectorXd& rc, const VectorXd& rp, doub
     return false;
   }
   zero_fixed_rows(du_.object);
-  d.ds = normal_components(du_.object) + rp;
+  d.ds = A_ * gather(du_.object) + rp;
   d.dl = -(rc + lambda_.cwiseProduct(d.ds)).cwiseQuotient(s_);
   return true;
 }
@@ -290,13 +377,13 @@ bool InteriorPoint::converged(double rd, double rp) {
   return result_.dual_residual <= tol && result_.primal_residual <= tol && result_.complementarity <= tol;
 }
 
-/// r_d = K u − f + ∇j(u) − Aᵀ λ into rd_; returns r_p = c(u) − s. U: the nodes' displacements.
-VectorXd InteriorPoint::residuals(const Eigen::MatrixXd& U) {
+/// r_d = K u − f + ∇j(u) − Aᵀ λ into rd_; returns r_p = c(u) − s. g: u's gathered values, U: the nodes'.
+VectorXd InteriorPoint::residuals(const VectorXd& g, const Eigen::MatrixXd& U) {
   check(MatMult(K_.object, u_.object, rd_.object), "MatMult");
   check(VecAXPY(rd_.object, -1.0, b_.object), "VecAXPY");
   add_transpose(-lambda_, rd_.object);
   if (c_.frictional()) add_nodal(friction_gradient(c_, U), rd_.object);
-  return c_.normal.cwiseProduct(U).colwise().sum().transpose() - c_.lower - s_;
+  return A_ * g - c_.lower - s_;
 }
 
 /// The terms of the merit function (the header's φ) beyond the elastic energy, at the step α: j(u + α Δu),
@@ -312,7 +399,7 @@ double InteriorPoint::merit(double alpha, const Direction& d, double target, dou
 double InteriorPoint::line_search(double alpha, const Direction& d, double target, const VectorXd& rp,
                                   const Eigen::MatrixXd& U) {
   if (!c_.frictional()) return alpha;
-  const Eigen::MatrixXd dU = nodal_components(du_.object);
+  const Eigen::MatrixXd dU = nodal(gather(du_.object));
   const Eigen::MatrixXd grad_j = friction_gradient(c_, U);
   PetscScalar du_rd = 0.0, du_Kdu = 0.0;
   check(VecDot(du_.object, rd_.object, &du_rd), "VecDot");  // Δuᵀ(K u − f) = Δuᵀ r_d + (AΔu)ᵀλ − Δuᵀ∇j
@@ -333,13 +420,14 @@ double InteriorPoint::line_search(double alpha, const Direction& d, double targe
 
 ContactInteriorPointResult InteriorPoint::run() {
   const auto t_start = std::chrono::steady_clock::now();
-  s_ = (normal_components(u_.object) - c_.lower).cwiseMax(L_);
+  s_ = (A_ * gather(u_.object) - c_.lower).cwiseMax(L_);
   lambda_ = VectorXd::Constant(m_, F_);
   const double mu0 = s_.dot(lambda_) / static_cast<double>(m_);
   Direction d;
   for (result_.iterations = 0;; ++result_.iterations) {
-    const Eigen::MatrixXd U = nodal_components(u_.object);
-    const VectorXd rp = residuals(U);
+    const VectorXd g = gather(u_.object);
+    const Eigen::MatrixXd U = nodal(g);
+    const VectorXd rp = residuals(g, U);
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     if ((result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>()))) break;

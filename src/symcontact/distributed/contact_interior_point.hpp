@@ -8,7 +8,8 @@
 ///
 /// one constraint per contact node p_j: its displacement along the unit normal n_j at least l_j (the
 /// small-displacement gap to the obstacle along n_j, measured in the reference configuration). λ_j ≥ 0 is
-/// the node's contact force along n_j.
+/// the node's contact force along n_j. Any sparse constraint rows, one per node, may replace n_jᵀ u_{p_j}
+/// (NodalConstraints::rows): below, A is the m × n matrix of the rows.
 ///
 /// j is the optional regularised Tresca friction of NodalConstraints (convex: the problem stays convex).
 ///
@@ -47,12 +48,16 @@
 
 namespace symcontact {
 
-/// c_j(u) = n_jᵀ u_{node_j} − lower_j ≥ 0; at most one constraint per node, its normal without a component
-/// along a fixed DOF of the node (a symmetry plane's node slides in it).
+/// c_j(u) = n_jᵀ u_{node_j} − lower_j ≥ 0, at most one constraint per node; or, when `rows` is given,
+/// c_j(u) = (rows u)_j − lower_j ≥ 0, row j still node_j's (its force λ_j, its friction), such as the weak
+/// gap rows of contact/gap_constraints.hpp, each divided by its support Σ w φ_j so that c_j is a length and
+/// λ_j a force. The entries of `rows` on fixed DOFs move into the constant (c is affine in the free DOFs).
+/// With friction, no normal has a component along a fixed DOF of its node (a symmetry plane's node slides in it).
 struct NodalConstraints {
   std::vector<Index> node;
   Eigen::MatrixXd normal;  ///< dim × m, unit columns
   VectorXd lower;          ///< m
+  SparseMatrix rows;       ///< m × num_dofs, or empty: the rows n_jᵀ at node_j
   /// Regularised Tresca friction at the same nodes, optional (empty: frictionless; else m values each):
   /// the energy j(u) = Σ_j g_j η_α_j(P_j u_{p_j}), η_α(v) = √(|v|² + α²), P_j = I − n_j n_jᵀ (METHOD.md,
   /// "Friction"; talk eq. 16–18 with one point per node), g_j ≥ 0 the node's friction force bound (its
