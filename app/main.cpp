@@ -3,6 +3,11 @@
 ///   symcontact check CASE.toml [--mesh-size H] [...]   (read and build the model, solve nothing)
 /// Exit codes: 0 success, 2 input error, 3 solve did not converge, 4 internal error, 130 / 143 run
 /// interrupted by SIGINT / SIGTERM (128 + the signal number, the shell's convention).
+///
+/// Started by mpirun (OpenMPI's or MPICH's environment), `symcontact` replaces itself with `symcontact-mpi`,
+/// its sibling: this file built with SYMCONTACT_DISTRIBUTED_RUN, which solves the contact steps on the
+/// distributed path (distributed/distributed_step.hpp) and never loads IPOPT (src/CMakeLists.txt). Rank 0
+/// writes the output folder and the log; every rank exits with the same code.
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <unistd.h>
 
 #include "symcontact/app/run.hpp"
 #include "symcontact/core/blas_kernels.hpp"
@@ -22,6 +28,10 @@
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/problem_reader.hpp"
 #include "symcontact/model/setup_checks.hpp"
+#ifdef SYMCONTACT_DISTRIBUTED_RUN
+#include "symcontact/distributed/distributed_step.hpp"
+#include "symcontact/distributed/gamg_elasticity.hpp"
+#endif
 
 using namespace symcontact;
 
@@ -64,10 +74,41 @@ struct MeshingFlags {
   }
 };
 
+#ifdef SYMCONTACT_DISTRIBUTED_RUN
+/// The problem file read and checked for the distributed path: [ipopt] is not asked to IPOPT (not loaded).
+ProblemSpec read_case(const std::string& file) {
+  ProblemSpec spec = parse_problem(read_problem_text(file), file, problem_folder(file));
+  check_distributed_support(spec);
+  return spec;
+}
+#else
+ProblemSpec read_case(const std::string& file) { return read_problem_file(file); }
+
+/// Under mpirun: replaced by symcontact-mpi from the same folder (returns only when that fails).
+int start_distributed_run(char** argv) {
+  if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE")) return -1;
+  const std::filesystem::path sibling = std::filesystem::read_symlink("/proc/self/exe").parent_path() / "symcontact-mpi";
+  execv(sibling.c_str(), argv);
+  std::cerr << "symcontact: started by mpirun, but " << sibling.string()
+            << " (the distributed path, built with PETSc and MPI) cannot be run: run symcontact without mpirun\n";
+  return kExitInputError;
+}
+#endif
+
 }  // namespace
 
 int main(int argc, char** argv) {
+#ifndef SYMCONTACT_DISTRIBUTED_RUN
+  if (const int code = start_distributed_run(argv); code >= 0) return code;
+#endif
   restart_with_better_blas_kernels(argv);  // OpenBLAS's fallback kernels on a CPU it does not know
+#ifdef SYMCONTACT_DISTRIBUTED_RUN
+  int petsc_argc = 1;  // PETSc reads its options from PETSC_OPTIONS, not from this command line
+  const PetscSession petsc(&petsc_argc, &argv);
+  const bool root = petsc.rank() == 0;
+#else
+  const bool root = true;
+#endif
   CLI::App app{"symcontact — symmetric frictional contact by interior point (FEM, 2D/3D)", "symcontact"};
   app.set_version_flag("--version", std::string("symcontact ") + SYMCONTACT_VERSION);
   app.require_subcommand(1);
@@ -102,7 +143,9 @@ int main(int argc, char** argv) {
     set_blas_threads(1);
   const Verbosity level = quiet ? Verbosity::kQuiet
                                 : (verbose >= 2 ? Verbosity::kDebug : (verbose == 1 ? Verbosity::kVerbose : Verbosity::kNormal));
-  const Logger log(std::cerr, level);
+  static std::ostream nowhere(nullptr);
+  std::ostream& err = root ? std::cerr : nowhere;  // messages and the log from rank 0 alone
+  const Logger log(err, level);
   if (const std::string note = blas_kernel_note(); !note.empty()) log.detail(note);
   try {
     RunOptions opt;
@@ -112,38 +155,43 @@ int main(int argc, char** argv) {
       if (const std::string problem = output_folder_problem(opt.out_dir); !problem.empty())
         throw InputError("", "--out", "the output folder '" + opt.out_dir + "' " + problem);
     }
-    const ProblemSpec spec = read_problem_file(case_file);
+    const ProblemSpec spec = read_case(case_file);
     if (*check) {
       PhaseTimes times;
       auto model = Model::build(spec, log, times, meshing.overrides());
       check_setup(*model);
-      std::cout << case_file << ": OK, " << model->bodies().size() << " bodies, " << model->dofs().num_dofs()
+      if (root) std::cout << case_file << ": OK, " << model->bodies().size() << " bodies, " << model->dofs().num_dofs()
                 << " DOFs, " << model->num_steps() << " load steps\n";
       return kExitOk;
     }
     opt.meshing = meshing.overrides();
     opt.signals = SignalHandling::kStopCleanly;
+#ifdef SYMCONTACT_DISTRIBUTED_RUN
+    if (!root) opt.files = OutputFiles::kNone;
+    const RunResult r = run_problem(spec, opt, log, distributed_step_solver(spec, ContactInteriorPointOptions{}, log));
+#else
     const RunResult r = run_problem(spec, opt, log);
+#endif
     if (r.status == RunStatus::kInterrupted) {
-      std::cerr << "symcontact: " << r.message << "\n"
+      err << "symcontact: " << r.message << "\n"
                 << "  finished steps and summary.json are in " << opt.out_dir << "\n";
       return kExitSignalBase + r.signal;
     }
     if (r.status != RunStatus::kOk) {
-      std::cerr << "symcontact: solve failed: " << r.message << "\n"
+      err << "symcontact: solve failed: " << r.message << "\n"
                 << "  finished steps and summary.json are in " << opt.out_dir << "\n";
       return kExitSolveError;
     }
     log.info("results written to " + opt.out_dir);
     return kExitOk;
   } catch (const InputError& e) {
-    std::cerr << "symcontact: input error: " << e.what() << "\n";
+    err << "symcontact: input error: " << e.what() << "\n";
     return kExitInputError;
   } catch (const SolveError& e) {
-    std::cerr << "symcontact: solve failed: " << e.what() << "\n";
+    err << "symcontact: solve failed: " << e.what() << "\n";
     return kExitSolveError;
   } catch (const std::exception& e) {
-    std::cerr << "symcontact: internal error: " << e.what() << "\n";
+    err << "symcontact: internal error: " << e.what() << "\n";
     return kExitInternalError;
   }
 }

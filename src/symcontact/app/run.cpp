@@ -15,14 +15,12 @@
 #include "symcontact/io/json_writer.hpp"
 #include "symcontact/io/pvd_writer.hpp"
 #include "symcontact/io/vtu_writer.hpp"
-#include "symcontact/model/load_step.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/setup_checks.hpp"
 #include "symcontact/post/contact_results.hpp"
 #include "symcontact/post/contact_table.hpp"
 #include "symcontact/post/step_checks.hpp"
 #include "symcontact/post/stress_recovery.hpp"
-#include "symcontact/solvers/frictional_contact.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
 namespace symcontact {
@@ -87,30 +85,6 @@ void write_contact_csv(const ContactTable& table, const std::string& path) {
     }
   });
 }
-
-/// Whether a hyperelastic body takes part in a problem with Coulomb friction.
-bool finite_strain_coulomb(const ProblemSpec& spec) {
-  bool hyperelastic = false, coulomb = false;
-  for (const BodySpec& b : spec.bodies)
-    for (const MaterialSpec& m : b.materials) hyperelastic = hyperelastic || m.model != "linear_elastic";
-  for (const ContactSpec& c : spec.contacts) coulomb = coulomb || c.friction == "coulomb";
-  return hyperelastic && coulomb;
-}
-
-}  // namespace
-
-LoadStepOptions contact_options(const ProblemSpec& spec, const Logger& log) {
-  LoadStepOptions options = spec.contact_solver;
-  ContactSolveOptions& o = options.friction.contact;
-  o.workspace = std::make_shared<ContactWorkspace>();  // one factorisation for the whole run
-  if (log.level() >= Verbosity::kDebug) o.ipopt.print_level = 5;
-  // As an [ipopt] tol of the problem file (which it does not override): IPOPT's acceptable_tol keeps
-  // following IpoptOptions::tolerance.
-  if (finite_strain_coulomb(spec)) o.ipopt.numeric_options.emplace("tol", kFiniteStrainCoulombIpoptTolerance);
-  return options;
-}
-
-namespace {
 
 /// Contact fields of one body at its nodes, summed over the pairs (zero away from contact surfaces; status −1 there,
 /// else the largest over the pairs).
@@ -365,7 +339,8 @@ SummaryOnError::~SummaryOnError() {
   }
 }
 
-RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log) {
+RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log,
+                      const StepSolver& solve_step) {
   namespace fs = std::filesystem;
   PhaseTimes times;
   const double t_start = wall_seconds();
@@ -402,7 +377,6 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   std::vector<std::vector<Eigen::VectorXd>> accumulated_slip;  ///< per pair, per side
   const int nsteps = model->num_steps();
   FrictionState previous_friction;  ///< the thresholds the last step converged to (Coulomb warm start)
-  const LoadStepOptions solver_options = contact_options(spec, log);  // its workspace serves every step
   // Ends the run at `step` (0-based) without its results: summary.json gets `status` and `message`; the
   // last iterate is written for inspection (not part of the collection) when it is finite.
   auto stop_run = [&](int step, RunStatus status, const std::string& message) {
@@ -432,7 +406,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     StepCheckFigures checks;
     try {
       if (has_contact)
-        lrep = solve_load_step(*model, step, u, previous_friction, solver_options, log);
+        lrep = solve_step(*model, step, u, previous_friction);
       else
         rep = solve_equilibrium(model->energy(), fixed, u);
       checks = check_step(*model, u, fixed, has_contact ? &lrep : nullptr);

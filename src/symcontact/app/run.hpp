@@ -32,6 +32,7 @@
 #include "symcontact/post/contact_table.hpp"
 #include "symcontact/post/stress_recovery.hpp"
 #include "symcontact/solvers/load_step.hpp"
+#include "symcontact/solvers/solve_report.hpp"
 
 namespace symcontact {
 
@@ -115,9 +116,19 @@ constexpr double kFiniteStrainCoulombIpoptTolerance = 1e-12;
 /// kept over it).
 LoadStepOptions contact_options(const ProblemSpec& spec, const Logger& log);
 
-/// Runs the problem. Input errors propagate as InputError before any file is written; a failed solve
-/// (including non-finite results) is recorded in summary.json (status "solve_failed", the message) and
-/// returned, finished steps kept; so is an interruption (status "interrupted").
+/// Solves load step `step` (0-based) of a model with contact, from u (on exit the solution), from and into
+/// the friction thresholds of the last step; throws SolveError when it fails. The serial contact solver
+/// (model/load_step.hpp) or the distributed one (distributed/distributed_step.hpp).
+using StepSolver = std::function<SolveReport(Model& model, int step, VectorXd& u, FrictionState& friction)>;
+
+/// Runs the problem, its steps with contact solved by `solve_step`. Input errors propagate as InputError
+/// before any file is written; a failed solve (including non-finite results) is recorded in summary.json
+/// (status "solve_failed", the message) and returned, finished steps kept; so is an interruption (status
+/// "interrupted").
+RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log,
+                      const StepSolver& solve_step);
+
+/// run_problem() with the serial contact solver and the settings of contact_options() (run_serial.cpp).
 RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const Logger& log);
 
 }  // namespace symcontact

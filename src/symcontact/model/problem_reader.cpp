@@ -23,7 +23,6 @@
 #include "symcontact/core/input_file.hpp"
 #include "symcontact/mesh/geo_commands.hpp"
 #include "symcontact/model/toml_parse.hpp"
-#include "symcontact/optim/ipopt_solver.hpp"
 
 namespace symcontact {
 
@@ -1133,14 +1132,6 @@ class Reader {
 
 }  // namespace
 
-void check_ipopt_section(const ProblemSpec& spec) {
-  try {
-    check_ipopt_options(spec.contact_solver.friction.contact.ipopt);
-  } catch (const IpoptOptionError& e) {
-    throw InputError(spec.file, child("ipopt", e.name()), e.what());
-  }
-}
-
 ProblemSpec parse_problem(const std::string& toml_text, const std::string& file_name, const std::string& base_dir) {
   return read_problem_table(parse_toml(toml_text, file_name), file_name, base_dir);
 }
@@ -1167,12 +1158,6 @@ std::string problem_folder(const std::string& path) {
   if (folder.empty()) folder = ".";
   const fs::path absolute = fs::absolute(folder, ec);
   return (ec ? folder : absolute).lexically_normal().string();
-}
-
-ProblemSpec read_problem_file(const std::string& path) {
-  ProblemSpec spec = parse_problem(read_problem_text(path), path, problem_folder(path));
-  check_ipopt_section(spec);
-  return spec;
 }
 
 }  // namespace symcontact

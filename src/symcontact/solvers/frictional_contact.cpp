@@ -61,16 +61,6 @@ bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, con
 
 }  // namespace
 
-const char* coulomb_update_name(CoulombUpdate u) {
-  return u == CoulombUpdate::kBetweenSolves ? "between_solves" : "inside_optimizer";
-}
-
-std::optional<CoulombUpdate> parse_coulomb_update(const std::string& name) {
-  for (const CoulombUpdate u : {CoulombUpdate::kBetweenSolves, CoulombUpdate::kInsideOptimizer})
-    if (name == coulomb_update_name(u)) return u;
-  return std::nullopt;
-}
-
 SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                      const DofMap& dofs, VectorXd& u, const FrictionalOptions& options,
                                      const Logger& log, const FrictionState* previous) {

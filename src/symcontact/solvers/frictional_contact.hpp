@@ -32,9 +32,16 @@ enum class CoulombUpdate {
 };
 
 /// The problem file's names of the choices ([contact_solver] coulomb_update): "between_solves",
-/// "inside_optimizer"; nullopt for any other string.
-const char* coulomb_update_name(CoulombUpdate u);
-std::optional<CoulombUpdate> parse_coulomb_update(const std::string& name);
+/// "inside_optimizer"; nullopt for any other string. (Inline: the problem reader calls them without linking
+/// the solver.)
+inline const char* coulomb_update_name(CoulombUpdate u) {
+  return u == CoulombUpdate::kBetweenSolves ? "between_solves" : "inside_optimizer";
+}
+inline std::optional<CoulombUpdate> parse_coulomb_update(const std::string& name) {
+  for (const CoulombUpdate u : {CoulombUpdate::kBetweenSolves, CoulombUpdate::kInsideOptimizer})
+    if (name == coulomb_update_name(u)) return u;
+  return std::nullopt;
+}
 
 struct FrictionalOptions {
   /// The Tresca solves' options. Their lazy_interior is on here: the solves of a load step leave u's interior

@@ -41,10 +41,28 @@ enum class SubproblemSolver {
 
 /// The problem file's name of a choice: "primal_ipopt", "dual_ipopt", "dual_interior_point",
 /// "primal_interior_point".
-const char* subproblem_solver_name(SubproblemSolver s);
+inline const char* subproblem_solver_name(SubproblemSolver s) {
+  switch (s) {
+    case SubproblemSolver::kPrimalIpopt:
+      return "primal_ipopt";
+    case SubproblemSolver::kDualIpopt:
+      return "dual_ipopt";
+    case SubproblemSolver::kDualInteriorPoint:
+      return "dual_interior_point";
+    case SubproblemSolver::kPrimalInteriorPoint:
+      return "primal_interior_point";
+  }
+  return "";
+}
 
-/// The choice named `name` in the problem file; nullopt for any other string.
-std::optional<SubproblemSolver> parse_subproblem_solver(const std::string& name);
+/// The choice named `name` in the problem file; nullopt for any other string. (Inline, as the name above:
+/// the problem reader calls them without linking the solver.)
+inline std::optional<SubproblemSolver> parse_subproblem_solver(const std::string& name) {
+  for (const SubproblemSolver s : {SubproblemSolver::kPrimalIpopt, SubproblemSolver::kDualIpopt,
+                                   SubproblemSolver::kDualInteriorPoint, SubproblemSolver::kPrimalInteriorPoint})
+    if (name == subproblem_solver_name(s)) return s;
+  return std::nullopt;
+}
 
 /// Whether the constraint rows of `contacts` are independent (obstacles and one-pass pairs: no symmetric pair,
 /// no self-contact), so that the multipliers are unique.

@@ -1,0 +1,168 @@
+#include "symcontact/distributed/distributed_step.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/distributed/petsc_support.hpp"
+#include "symcontact/fem/matrix_sink.hpp"
+#include "symcontact/solvers/contact_forces.hpp"
+
+namespace symcontact {
+
+void check_distributed_support(const ProblemSpec& spec) {
+  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
+    for (const MaterialSpec& m : spec.bodies[b].materials)
+      if (m.model != "linear_elastic")
+        throw InputError(spec.file, m.key + ".model",
+                         "the distributed path (mpirun) solves linear-elastic bodies only, got \"" + m.model +
+                             "\": run it without mpirun");
+  for (const ContactSpec& c : spec.contacts)
+    if (c.friction != "none")
+      throw InputError(spec.file, c.key + ".friction",
+                       "the distributed path (mpirun) solves frictionless contact only, got \"" + c.friction +
+                           "\": run it without mpirun");
+}
+
+namespace {
+
+/// The stiffness and the load of a linear-elastic model at its current step: E(u) = ½ uᵀKu − fᵀu.
+struct QuadraticModel {
+  SparseMatrix K_lower;  ///< the rows this rank owns (its share), lower triangle
+  VectorXd f;
+  Eigen::MatrixXd x;     ///< dim × nodes, the DofMap's node order
+};
+
+QuadraticModel quadratic_model(const Model& model) {
+  const DofMap& dofs = model.dofs();
+  const Index n = dofs.num_dofs(), dim = dofs.dim();
+  QuadraticModel q;
+  TripletSink sink;
+  model.energy().add_hessian(VectorXd::Zero(n), sink);
+  const petsc::RowRange mine = petsc::my_rows(static_cast<int>(dim), n / dim);
+  std::vector<Triplet> own;
+  for (const Triplet& t : sink.triplets())
+    if (t.row() >= t.col() && mine.owns(t.row())) own.push_back(t);
+  q.K_lower.resize(n, n);
+  q.K_lower.setFromTriplets(own.begin(), own.end());
+  q.f = VectorXd::Zero(n);
+  model.energy().add_gradient(VectorXd::Zero(n), q.f);
+  q.f = -q.f;
+  q.x.resize(dim, n / dim);
+  for (int b = 0; b < dofs.num_bodies(); ++b)
+    q.x.middleCols(dofs.offset(b) / dim, model.bodies()[b]->mesh.x.cols()) = model.bodies()[b]->mesh.x;
+  return q;
+}
+
+/// The rows of `lin` divided by their supports, for the interior point; the normal of row j: its entries on
+/// its own node's DOFs, made unit (read by the interior point with friction only).
+NodalConstraints scaled_rows(const ContactLinearization& lin, const DofMap& dofs, const ContactSet& contacts) {
+  const Index m = lin.A.rows(), dim = dofs.dim();
+  NodalConstraints c;
+  c.lower.resize(m);
+  c.normal = Eigen::MatrixXd::Zero(dim, m);
+  VectorXd inverse_support(m);
+  for (Index j = 0; j < m; ++j) {
+    inverse_support[j] = 1.0 / lin.row_support[static_cast<std::size_t>(j)];
+    c.lower[j] = -lin.b[j] * inverse_support[j];
+  }
+  c.rows = inverse_support.asDiagonal() * lin.A;
+  for (Index j = 0; j < m; ++j) {
+    const ContactFamily& family = contacts.families()[static_cast<std::size_t>(lin.row_family[static_cast<std::size_t>(j)])];
+    const ContactSurface& s = contacts.surfaces[static_cast<std::size_t>(family.slave)];
+    const Index body_node = s.nodes[static_cast<std::size_t>(lin.row_node[static_cast<std::size_t>(j)])];
+    c.node.push_back(dofs.dof(s.body, body_node, 0) / dim);
+  }
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> rows = c.rows;
+  for (Index j = 0; j < m; ++j) {
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(rows, j); it; ++it)
+      if (it.col() / dim == c.node[j]) c.normal(it.col() % dim, j) = it.value();
+    const double norm = c.normal.col(j).norm();
+    if (norm > 0.0)
+      c.normal.col(j) /= norm;
+    else
+      c.normal(dim - 1, j) = 1.0;
+  }
+  return c;
+}
+
+bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
+  return a.A.rows() == b.A.rows() && a.A.nonZeros() == b.A.nonZeros() && a.b == b.b &&
+         (a.A - b.A).norm() == 0.0;
+}
+
+class DistributedStep {
+ public:
+  DistributedStep(const ProblemSpec& spec, const ContactInteriorPointOptions& options, const Logger& log)
+      : geometry_tolerance_(spec.contact_solver.friction.contact.geometry_tolerance),
+        max_geometry_iterations_(spec.contact_solver.friction.contact.max_geometry_iterations),
+        options_(options), log_(log) {}
+
+  SolveReport operator()(Model& model, int step, VectorXd& u, FrictionState&) const {
+    SolveReport r;
+    const auto t0 = std::chrono::steady_clock::now();
+    const QuadraticModel q = quadratic_model(model);
+    const FixedDofs fixed = model.fixed_dofs(step);
+    const VectorXd fixed_values = Eigen::Map<const VectorXd>(fixed.values.data(), static_cast<Index>(fixed.values.size()));
+    r.times.add("assembly", petsc::seconds_since(t0));
+    ContactLinearization lin;
+    ContactInteriorPointResult solve;
+    for (r.geometry_iterations = 1;; ++r.geometry_iterations) {
+      const auto t_search = std::chrono::steady_clock::now();
+      ContactLinearization next = model.contacts().linearize(model.dofs(), u);
+      r.times.add("search", petsc::seconds_since(t_search));
+      if (r.geometry_iterations > 1 && same_rows(lin, next)) break;
+      lin = std::move(next);
+      if (lin.A.rows() == 0) throw SolveError("no contact point within the search distance of any pair");
+      const NodalConstraints rows = scaled_rows(lin, model.dofs(), model.contacts());
+      solve = solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x, rows, options_);
+      r.times.add("optimizer", solve.total_seconds);
+      r.ipopt_iterations += solve.iterations;
+      r.ipopt_per_iteration.push_back(solve.iterations);
+      if (!solve.converged)
+        throw SolveError("geometry iteration " + std::to_string(r.geometry_iterations) +
+                         ": the distributed interior point stopped: " + solve.reason);
+      const double change = (solve.u - u).lpNorm<Eigen::Infinity>() / solve.u.lpNorm<Eigen::Infinity>();
+      r.change_history.push_back(change);
+      u = solve.u;
+      log_.detail("geometry iteration " + std::to_string(r.geometry_iterations) + ": " +
+                  std::to_string(lin.A.rows()) + " rows, " + std::to_string(solve.iterations) +
+                  " interior-point iterations, change " + std::to_string(change));
+      if (change <= geometry_tolerance_) break;
+      if (r.geometry_iterations == max_geometry_iterations_)
+        throw SolveError("the geometry fixed point did not converge in " + std::to_string(max_geometry_iterations_) +
+                         " iterations (last change " + std::to_string(change) + ")");
+    }
+    VectorXd mu(lin.A.rows());
+    for (Index j = 0; j < mu.size(); ++j) mu[j] = solve.lambda[j] / lin.row_support[static_cast<std::size_t>(j)];
+    ContactForces forces = recover_contact_forces(model.energy(), fixed, model.contacts(), model.dofs(), u, lin.A, mu,
+                                                  {}, CondensedResidual{});
+    r.contact_force = std::move(forces.contact_force);
+    r.multiplier_force = std::move(forces.multiplier_force);
+    r.force_defect = std::move(forces.force_defect);
+    r.multipliers = std::move(mu);
+    r.friction.assign(model.contacts().pairs.size(), nullptr);
+    r.num_constraints = lin.A.rows();
+    r.num_free = model.dofs().num_dofs() - static_cast<Index>(fixed.dofs.size());
+    r.linearization = std::move(lin);
+    r.converged = true;
+    r.ipopt_status = "distributed interior point: converged";
+    r.substeps = {1.0};
+    return r;
+  }
+
+ private:
+  double geometry_tolerance_;
+  int max_geometry_iterations_;
+  ContactInteriorPointOptions options_;
+  const Logger& log_;
+};
+
+}  // namespace
+
+StepSolver distributed_step_solver(const ProblemSpec& spec, const ContactInteriorPointOptions& options,
+                                   const Logger& log) {
+  return DistributedStep(spec, options, log);
+}
+
+}  // namespace symcontact

@@ -1,0 +1,34 @@
+#pragma once
+/// \file distributed_step.hpp
+/// The contact solver of `symcontact run` on the distributed path (`mpirun -np N symcontact run CASE.toml`):
+/// a load step of a model with linear-elastic bodies and frictionless contact, solved by the interior point
+/// of contact_interior_point.hpp on the same constraints as the serial solver, so that both give the same
+/// answer to their tolerances.
+///
+/// Each step is a geometry fixed point, as the serial one (solvers/geometry_fixed_point.hpp): the contact
+/// set is linearised at u (ContactSet::linearize: the weak gap rows A u + b ≥ 0 of every pair, obstacles and
+/// elastic pairs alike), the quadratic program min ½ uᵀKu − fᵀu subject to those rows solved, and the
+/// linearisation taken again at the answer, until ‖u_{k+1} − u_k‖∞ ≤ geometry_tolerance ‖u_{k+1}‖∞ or the
+/// rows come out the same (a plane obstacle: one solve). Row j is passed divided by its support Σ w φ_j (a gap
+/// in length units, its force in force units: the interior point's scales); its multiplier is then
+/// μ_j = λ_j / support_j, the serial solver's. The contact forces are recovered as the serial solver does
+/// (solvers/contact_forces.hpp).
+///
+/// What the path does not solve yet is an input error before any work (check_distributed_support): finite
+/// strain, friction. The meshes are whole on every rank; each rank assembles the stiffness rows it owns.
+
+#include "symcontact/app/run.hpp"
+#include "symcontact/distributed/contact_interior_point.hpp"
+
+namespace symcontact {
+
+/// Throws InputError naming the key of the first thing in `spec` the distributed path does not solve.
+void check_distributed_support(const ProblemSpec& spec);
+
+/// The step solver for run_problem(): the geometry fixed point above with the problem's geometry_tolerance
+/// and max_geometry_iterations ([contact_solver]), each solve with `options`. Collective: every rank runs
+/// the same steps. Logs a line per geometry iteration at the verbose level.
+StepSolver distributed_step_solver(const ProblemSpec& spec, const ContactInteriorPointOptions& options,
+                                   const Logger& log);
+
+}  // namespace symcontact
