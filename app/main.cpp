@@ -19,6 +19,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "symcontact/app/linear_solver_choice.hpp"
 #include "symcontact/app/run.hpp"
 #include "symcontact/core/blas_kernels.hpp"
 #include "symcontact/core/blas_threads.hpp"
@@ -81,17 +82,54 @@ ProblemSpec read_case(const std::string& file) {
   check_distributed_support(spec);
   return spec;
 }
+
+RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, bool root, char**) {
+  if (!root) opt.files = OutputFiles::kNone;
+  return run_problem(spec, opt, log, distributed_step_solver(spec, ContactInteriorPointOptions{}, log));
+}
 #else
 ProblemSpec read_case(const std::string& file) { return read_problem_file(file); }
 
-/// Under mpirun: replaced by symcontact-mpi from the same folder (returns only when that fails).
+/// The distributed program, symcontact-mpi, beside this one.
+std::filesystem::path distributed_program() {
+  return std::filesystem::read_symlink("/proc/self/exe").parent_path() / "symcontact-mpi";
+}
+
+/// Under mpirun: replaced by symcontact-mpi (returns only when that fails).
 int start_distributed_run(char** argv) {
   if (!std::getenv("OMPI_COMM_WORLD_SIZE") && !std::getenv("PMI_SIZE")) return -1;
-  const std::filesystem::path sibling = std::filesystem::read_symlink("/proc/self/exe").parent_path() / "symcontact-mpi";
-  execv(sibling.c_str(), argv);
-  std::cerr << "symcontact: started by mpirun, but " << sibling.string()
+  execv(distributed_program().c_str(), argv);
+  std::cerr << "symcontact: started by mpirun, but " << distributed_program().string()
             << " (the distributed path, built with PETSc and MPI) cannot be run: run symcontact without mpirun\n";
   return kExitInputError;
+}
+
+/// Replaced by symcontact-mpi as a single process; throws InputError when that cannot be run.
+[[noreturn]] void switch_to_distributed(const ProblemSpec& spec, const std::string& why, char** argv) {
+  execv(distributed_program().c_str(), argv);
+  throw InputError(spec.file, "contact_solver.linear_solver",
+                   why + ", but " + distributed_program().string() +
+                       " (the distributed path, built with PETSc and MPI: scripts/install-deps) cannot be run");
+}
+
+/// Thrown by the run's model hook when the distributed path is to solve the problem.
+struct StartDistributed {};
+
+/// The serial run, unless [contact_solver] linear_solver (or its automatic choice, app/linear_solver_choice.hpp)
+/// gives the problem to the distributed path: then the process becomes symcontact-mpi, before any output.
+RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, bool, char** argv) {
+  if (spec.linear_solver == LinearSolverChoice::kIterative)
+    switch_to_distributed(spec, "linear_solver = \"iterative\"", argv);
+  opt.on_model = [&](const Model& model) {
+    const LinearSolverDecision d = choose_linear_solver(spec, model);
+    log.detail(d.reason);
+    if (d.iterative) throw StartDistributed{};
+  };
+  try {
+    return run_problem(spec, opt, log);
+  } catch (const StartDistributed&) {
+    switch_to_distributed(spec, "the direct solver's factors are predicted not to fit in memory", argv);
+  }
 }
 #endif
 
@@ -166,12 +204,7 @@ int main(int argc, char** argv) {
     }
     opt.meshing = meshing.overrides();
     opt.signals = SignalHandling::kStopCleanly;
-#ifdef SYMCONTACT_DISTRIBUTED_RUN
-    if (!root) opt.files = OutputFiles::kNone;
-    const RunResult r = run_problem(spec, opt, log, distributed_step_solver(spec, ContactInteriorPointOptions{}, log));
-#else
-    const RunResult r = run_problem(spec, opt, log);
-#endif
+    const RunResult r = solve_case(spec, opt, log, root, argv);
     if (r.status == RunStatus::kInterrupted) {
       err << "symcontact: " << r.message << "\n"
                 << "  finished steps and summary.json are in " << opt.out_dir << "\n";

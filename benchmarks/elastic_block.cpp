@@ -28,16 +28,6 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-double available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string key;
-  double kib = 0;
-  std::string unit;
-  while (in >> key >> kib >> unit)
-    if (key == "MemAvailable:") return kib * 1024.0;
-  return -1.0;
-}
-
 void check_factor_fits(double nnz_factor, double other_bytes) {
   const double available = available_memory_bytes();
   const double need = 8.0 * nnz_factor + other_bytes;
@@ -60,12 +50,6 @@ SparseMatrix assemble_free_stiffness(const EnergyTerm& energy, const std::vector
 }
 
 }  // namespace
-
-double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free) {
-  CholeskySolver chol;
-  chol.analyze(assemble_free_stiffness(energy, free_index, num_free));
-  return chol.factor_nonzeros();
-}
 
 Index block_dofs(int dim, int order, int divisions) {
   const Index side = static_cast<Index>(order) * divisions + 1;

@@ -18,6 +18,7 @@
 #include "symcontact/fem/dof_map.hpp"
 #include "symcontact/mesh/mesh.hpp"
 #include "symcontact/solvers/fixed_dofs.hpp"
+#include "symcontact/solvers/memory_prediction.hpp"  // available_memory_bytes, predict_factor_nonzeros
 
 namespace symcontact::bench {
 
@@ -76,17 +77,11 @@ class FactorTooLarge : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// MemAvailable of /proc/meminfo in bytes, or −1.
-double available_memory_bytes();
 
 /// Throws FactorTooLarge when a factor of `nnz_factor` entries (8 bytes each) plus `other_bytes` needs
 /// more than MemAvailable.
 void check_factor_fits(double nnz_factor, double other_bytes = 0.0);
 
-/// nnz(L) of K_ff (the energy's Hessian at 0 on the DOFs with free_index[d] ≥ 0) as CHOLMOD's analysis
-/// predicts it: assembly and analysis only, no numeric factorisation (seconds where the factorisation
-/// takes minutes), so that a size can be refused before it is run.
-double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free);
 
 CholeskyFloor measure_cholesky_floor(const ElasticBlock& block, int repeat);
 

@@ -230,9 +230,9 @@ double check_hertz_fits(const HertzRun& run) {
   double m = 0.0;
   for (const int s : {pair.surface_a, pair.surface_b})
     if (s >= 0) m += static_cast<double>(run.model->contacts().surfaces[s].num_nodes());
-  // The model of hertz.hpp (kFactorStorage, kBytesPerDof, kDenseBytesPerEntry); check_factor_fits() adds 8 · nnz(L).
+  // solvers/memory_prediction.hpp's model; check_factor_fits() adds 8 · nnz(L).
   const double dofs = static_cast<double>(run.model->dofs().num_dofs());
-  check_factor_fits(nnz, (kFactorStorage - 1.0) * 8.0 * nnz + kBytesPerDof * dofs + kDenseBytesPerEntry * m * m);
+  check_factor_fits(nnz, predicted_direct_peak_bytes(nnz, dofs, m) - 8.0 * nnz);
   return nnz;
 }
 

@@ -109,28 +109,12 @@ void solve_hertz_model(HertzRun& run, bool condense = true, const BeforeSolve& b
                        SubproblemSolver dual = SubproblemSolver::kDualInteriorPoint);
 
 /// Throws FactorTooLarge (elastic_block.hpp) when the contact solve of `run` would not fit in the memory
-/// available now, before it starts: CHOLMOD's analysis of the floor's K_ff predicts nnz(L) (assembly and
-/// symbolic analysis only, a small part of the solve's cost). The solve's peak is modelled as
-///     kFactorStorage · 8 · nnz(L) + kBytesPerDof · DOFs + kDenseBytesPerEntry · m²,
-/// the factor of the static condensation (the same matrix with B ordered last, whose nnz(L) is within a few
-/// per cent of the floor's) in CHOLMOD's supernodal storage, the mesh, model and sparse matrices, and the dense
-/// condensed problem, m taken as the number of contact-surface nodes (the condensed set on a rigid plane: one
-/// u_z per node; a lower bound with two elastic bodies). The two coefficients are fitted to the peak RSS of
-/// the 3D Hertz solve (with the dense interior point on the dual): 3,276, 8,369 and 20,406 MiB
-/// at 2.0e5, 4.1e5 and 7.8e5 DOFs (m = 3,282, 5,224 and 7,978), against 3,488, 8,800 and 20,367 predicted.
-/// The check is meant to refuse a size that cannot fit before it runs for an hour and is killed. Returns the
+/// available now, before it starts: the peak of solvers/memory_prediction.hpp (predicted_direct_peak_bytes,
+/// fitted to this solve) from CHOLMOD's analysis of the floor's K_ff, m taken as the number of contact-surface
+/// nodes (the condensed set on a rigid plane: one u_z per node; a lower bound with two elastic bodies). The
+/// check is meant to refuse a size that cannot fit before it runs for an hour and is killed. Returns the
 /// predicted nnz(L).
 double check_hertz_fits(const HertzRun& run);
-/// CHOLMOD's supernodal factor stores more than nnz(L) entries: the zeros of relaxed supernode amalgamation
-/// and the upper triangles of the diagonal blocks. L->xsize / nnz(L) on the 3D Hertz K_ff: 1.235 at
-/// 2.0e5 DOFs, 1.218 at 1.07e6 (docs/performance.md).
-inline constexpr double kFactorStorage = 1.25;
-/// Mesh, model, K and its copies, vectors: fitted (see check_hertz_fits()).
-inline constexpr double kBytesPerDof = 5632.0;
-/// The m × m dense matrices beyond that (S's lower triangle, its pivoted Cholesky factor, W = A S⁺ Aᵀ and the
-/// interior point's factor; during the condensation L_BB and S): fitted as above (25; 73–84 with IPOPT
-/// on the dual, whose MUMPS factorised the dense W as a sparse matrix).
-inline constexpr double kDenseBytesPerEntry = 25.0;
 
 /// The contact search proper at the solution run.u, timed on its own: for every contact family, the
 /// current positions of its surfaces, prepare_master() (smoothed normals, bounding volume hierarchy) and

@@ -130,6 +130,10 @@ py::dict run_study(const Problem& problem, const StudyOptions& options) {
     if (const std::string why = output_folder_problem(opt.out_dir); !why.empty())
       throw InputError("", "out_dir", "the output folder '" + opt.out_dir + "' " + why);
   }
+  if (problem.spec().linear_solver == LinearSolverChoice::kIterative)
+    throw InputError(problem.spec().file, "contact_solver.linear_solver",
+                     "the Python module runs the serial (direct) solver; \"iterative\" is for `symcontact run` "
+                     "and `mpirun symcontact run` (docs/distributed.md)");
   Gathered gathered;
   const py::object progress = options.progress;
   opt.on_model = [&](const Model& model) { gathered.start(model); };

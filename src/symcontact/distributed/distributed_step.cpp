@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "symcontact/app/linear_solver_choice.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/distributed/petsc_support.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
@@ -11,17 +12,13 @@
 namespace symcontact {
 
 void check_distributed_support(const ProblemSpec& spec) {
-  for (std::size_t b = 0; b < spec.bodies.size(); ++b)
-    for (const MaterialSpec& m : spec.bodies[b].materials)
-      if (m.model != "linear_elastic")
-        throw InputError(spec.file, m.key + ".model",
-                         "the distributed path (mpirun) solves linear-elastic bodies only, got \"" + m.model +
-                             "\": run it without mpirun");
-  for (const ContactSpec& c : spec.contacts)
-    if (c.friction != "none")
-      throw InputError(spec.file, c.key + ".friction",
-                       "the distributed path (mpirun) solves frictionless contact only, got \"" + c.friction +
-                           "\": run it without mpirun");
+  if (spec.linear_solver == LinearSolverChoice::kDirect)
+    throw InputError(spec.file, "contact_solver.linear_solver",
+                     "\"direct\" cannot run under mpirun: run symcontact without mpirun, or choose \"iterative\"");
+  const DistributedLimit limit = distributed_path_limit(spec);
+  if (!limit.none())
+    throw InputError(spec.file, limit.key,
+                     limit.message + ": solve it with the direct solver (contact_solver.linear_solver = \"direct\" or \"automatic\", without mpirun)");
 }
 
 namespace {

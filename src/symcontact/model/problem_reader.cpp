@@ -1038,6 +1038,20 @@ class Reader {
     return o;
   }
 
+  /// [contact_solver] linear_solver.
+  void read_linear_solver(const toml::table& t, ProblemSpec& spec) const {
+    const toml::node* n = t.get("linear_solver");
+    if (!n) return;
+    const std::string key = "contact_solver.linear_solver";
+    const std::string v = as_string(*n, key);
+    const std::map<std::string, LinearSolverChoice> choices = {{"automatic", LinearSolverChoice::kAutomatic},
+                                                               {"direct", LinearSolverChoice::kDirect},
+                                                               {"iterative", LinearSolverChoice::kIterative}};
+    const auto it = choices.find(v);
+    if (it == choices.end()) fail(key, "expected \"automatic\", \"direct\" or \"iterative\", got \"" + v + "\"");
+    spec.linear_solver = it->second;
+  }
+
   void read_contact_solver(const toml::table& root, ProblemSpec& spec) const {
     const toml::node* node = root.get("contact_solver");
     if (!node) return;
@@ -1050,7 +1064,8 @@ class Reader {
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "converge_past_tolerance",
                 "max_coulomb_iterations", "coulomb_update", "static_condensation", "subproblem_solver",
-                "max_step_cuts"});
+                "max_step_cuts", "linear_solver"});
+    read_linear_solver(t, spec);
     FrictionalOptions& f = spec.contact_solver.friction;
     ContactSolveOptions& s = f.contact;
     if (const toml::node* n = t.get("geometry_tolerance")) {

@@ -150,6 +150,12 @@ struct OutputSpec {
   bool summary = true;    ///< summary.json
 };
 
+/// How the contact steps' linear algebra is done ([contact_solver] linear_solver): the serial solver with sparse
+/// Cholesky factors ("direct"), the distributed path with conjugate gradients and algebraic multigrid
+/// ("iterative", docs/distributed.md), or the first unless its factor is predicted not to fit in memory
+/// ("automatic", the default; the rule: docs/distributed.md).
+enum class LinearSolverChoice { kAutomatic, kDirect, kIterative };
+
 struct ProblemSpec {
   std::string file;                 ///< path of the problem file (for messages)
   std::string title;
@@ -163,6 +169,7 @@ struct ProblemSpec {
   /// The [contact_solver] and [ipopt] tables, read straight into the solver's settings under the file's names
   /// (solvers/load_step.hpp LoadStepOptions; its `friction.contact.ipopt` holds [ipopt] by value type).
   LoadStepOptions contact_solver;
+  LinearSolverChoice linear_solver = LinearSolverChoice::kAutomatic;
   OutputSpec output;
 };
 

@@ -37,7 +37,7 @@ class CholeskySolver {
   VectorXd solve(const VectorXd& b) const;
   /// Several right-hand sides at once (columns of B).
   MatrixXd solve(const MatrixXd& B) const;
-  /// Number of nonzeros in the factor L (after factorize()).
+  /// Number of nonzeros in the factor L: predicted by analyze(), exact after factorize().
   double factor_nonzeros() const;
 
  private:

@@ -386,6 +386,7 @@ TEST(ProblemReader, NoContactIsPureElasticity) {
   EXPECT_TRUE(spec.contact_solver.friction.converge_past_tolerance);
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 0);
   EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualInteriorPoint);
+  EXPECT_EQ(spec.linear_solver, LinearSolverChoice::kAutomatic);
   EXPECT_TRUE(spec.contact_solver.friction.contact.ipopt.string_options.empty());
   EXPECT_TRUE(spec.contact_solver.friction.contact.ipopt.numeric_options.empty());
   EXPECT_TRUE(spec.contact_solver.friction.contact.ipopt.integer_options.empty());
@@ -504,6 +505,13 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualIpopt);
   EXPECT_EQ(spec.contact_solver.friction.contact.geometry_tolerance, 1e-6);  // the others keep their defaults
   EXPECT_EQ(spec.contact_solver.friction.contact.max_geometry_iterations, 50);
+}
+
+TEST(ProblemReader, LinearSolverChoices) {
+  for (const auto& [text, choice] : {std::pair{"automatic", LinearSolverChoice::kAutomatic},
+                                     std::pair{"direct", LinearSolverChoice::kDirect},
+                                     std::pair{"iterative", LinearSolverChoice::kIterative}})
+    EXPECT_EQ(parse(kTwoBodies + "[contact_solver]\nlinear_solver = \"" + text + "\"\n").linear_solver, choice) << text;
 }
 
 TEST(ProblemReader, FrictionAgainstAnObstacle) {
@@ -1180,7 +1188,9 @@ INSTANTIATE_TEST_SUITE_P(
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
                 "coulomb_tolerance, converge_past_tolerance, max_coulomb_iterations, coulomb_update, static_condensation, "
-                "subproblem_solver, max_step_cuts"},
+                "subproblem_solver, max_step_cuts, linear_solver"},
+        InputErrorCase{"LinearSolverUnknown", kTwoBodies + "[contact_solver]\nlinear_solver = \"cg\"\n",
+                "contact_solver.linear_solver", "expected \"automatic\", \"direct\" or \"iterative\", got \"cg\""},
         InputErrorCase{"CoulombUpdateUnknown", kTwoBodies + "[contact_solver]\ncoulomb_update = \"always\"\n",
                 "contact_solver.coulomb_update",
                 "expected \"inside_optimizer\" or \"between_solves\", got \"always\""},

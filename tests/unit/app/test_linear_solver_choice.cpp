@@ -1,0 +1,64 @@
+// The choice between the serial solver and the distributed path (src/symcontact/app/linear_solver_choice.hpp):
+// the problem file's word when it gives one; automatic: the serial solver unless the predicted peak of its
+// contact solve is above the memory available and the distributed path solves the problem.
+
+#include "symcontact/app/linear_solver_choice.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/model_case.hpp"
+#include "support/problem_snippet.hpp"
+#include "support/rectangle_msh.hpp"
+#include "support/temp_folder.hpp"
+
+namespace symcontact {
+namespace {
+
+/// The 2 × 1 block clamped at the bottom, its top against a rigid plane, with `contact` and `solver` added
+/// to its [[contact]] and [contact_solver] tables.
+std::unique_ptr<testing::ModelCase> block(const testing::TempFolder& folder, const std::string& contact,
+                                          const std::string& solver) {
+  testing::write_rectangle_msh(folder.path() / "block.msh", 2.0, 1.0, 4, 2);
+  return testing::build_model(testing::clamped_block("E = 1000.0, nu = 0.25") +
+                                  "[[contact]]\na = \"block.top\"\n" + contact +
+                                  "[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 1.5]\nnormal = [0.0, -1.0]\n"
+                                  "[contact_solver]\n" + solver,
+                              folder.path());
+}
+
+TEST(LinearSolverChoice, TheProblemFilesWordIsKept) {
+  const testing::TempFolder folder;
+  const auto direct = block(folder, "", "linear_solver = \"direct\"\n");
+  EXPECT_FALSE(choose_linear_solver(direct->spec, *direct->model, MemoryBudget{1.0, 0.0}).iterative);  // fits nowhere
+  const auto iterative = block(folder, "", "linear_solver = \"iterative\"\n");
+  EXPECT_TRUE(choose_linear_solver(iterative->spec, *iterative->model, MemoryBudget{1e15, 0.0}).iterative);
+}
+
+TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheFactorDoesNotFit) {
+  const testing::TempFolder folder;
+  const auto c = block(folder, "", "linear_solver = \"automatic\"\n");
+  const LinearSolverDecision fits = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 0.0});
+  EXPECT_FALSE(fits.iterative) << fits.reason;
+  EXPECT_NE(fits.reason.find("predicted peak"), std::string::npos) << fits.reason;
+  const LinearSolverDecision tight = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0});
+  EXPECT_TRUE(tight.iterative) << tight.reason;
+  // Below the size of the check, no prediction: the serial solver.
+  EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 1e9}).iterative);
+  // Unknown memory: the serial solver.
+  EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{-1.0, 0.0}).iterative);
+}
+
+TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathDoesNotSolve) {
+  const testing::TempFolder folder;
+  const auto c = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "");
+  const LinearSolverDecision d = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0});
+  EXPECT_FALSE(d.iterative);
+  EXPECT_NE(d.reason.find("contact[0].friction"), std::string::npos) << d.reason;
+  EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
+  EXPECT_TRUE(distributed_path_limit(block(folder, "", "")->spec).none());
+}
+
+}  // namespace
+}  // namespace symcontact
