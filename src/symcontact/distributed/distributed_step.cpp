@@ -2,9 +2,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <map>
+#include <optional>
 
 #include "symcontact/app/linear_solver_choice.hpp"
 #include "symcontact/core/error.hpp"
+#include "symcontact/distributed/gamg_elasticity.hpp"
 #include "symcontact/distributed/petsc_support.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/solvers/contact_forces.hpp"
@@ -95,6 +98,52 @@ class DistributedStep {
         max_geometry_iterations_(spec.contact_solver.friction.contact.max_geometry_iterations),
         options_(options), log_(log) {}
 
+  /// The quadratic program on the rows of `lin`; without rows (no contact point within any pair's search
+  /// distance) the stiffness system alone.
+  ContactInteriorPointResult solve_rows(const QuadraticModel& q, const FixedDofs& fixed, const VectorXd& fixed_values,
+                                        const ContactLinearization& lin, const Model& model) const {
+    if (lin.A.rows() > 0)
+      return solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x,
+                                          scaled_rows(lin, model.dofs(), model.contacts()), options_);
+    const GamgResult g = solve_elasticity_gamg(q.K_lower, q.f, fixed.dofs, fixed_values, q.x);
+    if (!g.converged)
+      throw SolveError("no contact point within any pair's search distance, and the stiffness system alone did not "
+                       "solve (" + g.reason + "): a body held by contact alone?");
+    ContactInteriorPointResult r;
+    r.u = g.u;
+    r.converged = true;
+    r.total_seconds = g.setup_seconds + g.solve_seconds;
+    return r;
+  }
+
+  /// The forces on the rows of `next` when u, the solve's answer on the rows of `lin`, also solves the
+  /// quadratic program on `next` to the interior point's tolerance (a plane obstacle whose search distance
+  /// now takes in a few more rows, none of them violated): each row keeps the force of the row of `lin` at
+  /// the same family and node, 0 for a new one, and the interior point's stopping test holds for them with
+  /// s the rows' gaps (contact_interior_point.hpp); nullopt otherwise.
+  std::optional<VectorXd> forces_if_still_optimal(const ContactLinearization& next, const ContactLinearization& lin,
+                                                  const ContactInteriorPointResult& solve, const Model& model,
+                                                  const FixedDofs& fixed, const VectorXd& u) const {
+    std::map<std::pair<int, Index>, double> force;
+    for (Index j = 0; j < lin.A.rows(); ++j)
+      force[{lin.row_family[static_cast<std::size_t>(j)], lin.row_node[static_cast<std::size_t>(j)]}] = solve.lambda[j];
+    const double tol = options_.tolerance, F = solve.force_scale, L = solve.length_scale;
+    const VectorXd gap = next.A * u + next.b;
+    VectorXd lambda = VectorXd::Zero(next.A.rows()), mu(next.A.rows());
+    for (Index j = 0; j < next.A.rows(); ++j) {
+      const auto it = force.find({next.row_family[static_cast<std::size_t>(j)], next.row_node[static_cast<std::size_t>(j)]});
+      if (it != force.end()) lambda[j] = it->second;
+      const double support = next.row_support[static_cast<std::size_t>(j)], g = gap[j] / support;
+      if (g < -tol * L || std::min(std::max(g, 0.0) / L, lambda[j] / F) > tol) return std::nullopt;
+      mu[j] = lambda[j] / support;
+    }
+    VectorXd residual = -(next.A.transpose() * mu);
+    model.energy().add_gradient(u, residual);
+    for (const Index d : fixed.dofs) residual[d] = 0.0;
+    if (residual.lpNorm<Eigen::Infinity>() > tol * F) return std::nullopt;
+    return lambda;
+  }
+
   SolveReport operator()(Model& model, int step, VectorXd& u, FrictionState&) const {
     SolveReport r;
     const auto t0 = std::chrono::steady_clock::now();
@@ -109,10 +158,15 @@ class DistributedStep {
       ContactLinearization next = model.contacts().linearize(model.dofs(), u);
       r.times.add("search", petsc::seconds_since(t_search));
       if (r.geometry_iterations > 1 && same_rows(lin, next)) break;
+      if (r.geometry_iterations > 1 && lin.A.rows() > 0) {
+        if (std::optional<VectorXd> forces = forces_if_still_optimal(next, lin, solve, model, fixed, u)) {
+          solve.lambda = std::move(*forces);  // the rows changed, the answer did not: no new solve
+          lin = std::move(next);
+          break;
+        }
+      }
       lin = std::move(next);
-      if (lin.A.rows() == 0) throw SolveError("no contact point within the search distance of any pair");
-      const NodalConstraints rows = scaled_rows(lin, model.dofs(), model.contacts());
-      solve = solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x, rows, options_);
+      solve = solve_rows(q, fixed, fixed_values, lin, model);
       r.times.add("optimizer", solve.total_seconds);
       r.ipopt_iterations += solve.iterations;
       r.ipopt_per_iteration.push_back(solve.iterations);
