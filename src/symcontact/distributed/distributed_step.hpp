@@ -8,8 +8,9 @@
 /// Each step is a geometry fixed point, as the serial one (solvers/geometry_fixed_point.hpp): the contact
 /// set is linearised at u (ContactSet::linearize: the weak gap rows A u + b ≥ 0 of every pair, obstacles and
 /// elastic pairs alike), the quadratic program min ½ uᵀKu − fᵀu subject to those rows solved, and the
-/// linearisation taken again at the answer, until ‖u_{k+1} − u_k‖∞ ≤ geometry_tolerance ‖u_{k+1}‖∞ or the
-/// rows come out the same (a plane obstacle: one solve). Row j is passed divided by its support Σ w φ_j (a gap
+/// linearisation taken again at the answer, until ‖u_{k+1} − u_k‖∞ ≤ geometry_tolerance ‖u_{k+1}‖∞, or the
+/// rows come out the same, or the answer already solves the new rows' program to the interior point's
+/// tolerance (a plane obstacle: one solve). Without rows the stiffness system alone is solved. Row j is passed divided by its support Σ w φ_j (a gap
 /// in length units, its force in force units: the interior point's scales); its multiplier is then
 /// μ_j = λ_j / support_j, the serial solver's. The contact forces are recovered as the serial solver does
 /// (solvers/contact_forces.hpp).
