@@ -10,9 +10,13 @@ DistributedLimit distributed_path_limit(const ProblemSpec& spec) {
     for (const MaterialSpec& m : b.materials)
       if (m.model != "linear_elastic")
         return {m.key + ".model", "the distributed path solves linear-elastic bodies only, got \"" + m.model + "\""};
-  for (const ContactSpec& c : spec.contacts)
+  for (const ContactSpec& c : spec.contacts) {
     if (c.friction != "none")
       return {c.key + ".friction", "the distributed path solves frictionless contact only, got \"" + c.friction + "\""};
+    if (!c.obstacle)  // docs/distributed.md: its Newton systems break down on examples/hertz_3d/two_spheres
+      return {c.key + ".b", "the distributed path solves contact with rigid obstacles only, not between elastic "
+                            "bodies (\"" + c.body_a + "\" and \"" + c.body_b + "\")"};
+  }
   return {};
 }
 
