@@ -33,18 +33,34 @@ struct QuadraticModel {
   Eigen::MatrixXd x;     ///< dim × nodes, the DofMap's node order
 };
 
+/// The lower-triangle entries of the rows a rank owns: each rank keeps 1/P of the stiffness's entries.
+class OwnedLowerSink : public MatrixSink {
+ public:
+  explicit OwnedLowerSink(const petsc::RowRange& mine) : mine_(mine) {}
+  void add(const Index* dofs, int n, const double* K) override {
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (dofs[i] >= dofs[j] && mine_.owns(dofs[i]))
+          triplets_.emplace_back(static_cast<int>(dofs[i]), static_cast<int>(dofs[j]), K[i + j * n]);
+  }
+  SparseMatrix matrix(Index n) const {
+    SparseMatrix A(n, n);
+    A.setFromTriplets(triplets_.begin(), triplets_.end());
+    return A;
+  }
+
+ private:
+  petsc::RowRange mine_;
+  std::vector<Triplet> triplets_;
+};
+
 QuadraticModel quadratic_model(const Model& model) {
   const DofMap& dofs = model.dofs();
   const Index n = dofs.num_dofs(), dim = dofs.dim();
   QuadraticModel q;
-  TripletSink sink;
+  OwnedLowerSink sink(petsc::my_rows(static_cast<int>(dim), n / dim));
   model.energy().add_hessian(VectorXd::Zero(n), sink);
-  const petsc::RowRange mine = petsc::my_rows(static_cast<int>(dim), n / dim);
-  std::vector<Triplet> own;
-  for (const Triplet& t : sink.triplets())
-    if (t.row() >= t.col() && mine.owns(t.row())) own.push_back(t);
-  q.K_lower.resize(n, n);
-  q.K_lower.setFromTriplets(own.begin(), own.end());
+  q.K_lower = sink.matrix(n);
   q.f = VectorXd::Zero(n);
   model.energy().add_gradient(VectorXd::Zero(n), q.f);
   q.f = -q.f;
