@@ -133,6 +133,20 @@ RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log,
 }
 #endif
 
+/// The exit code of a finished run; what went wrong, if anything, on `err`.
+int exit_code(const RunResult& r, const std::string& out_dir, const Logger& log, std::ostream& err) {
+  if (r.status == RunStatus::kInterrupted) {
+    err << "symcontact: " << r.message << "\n  finished steps and summary.json are in " << out_dir << "\n";
+    return kExitSignalBase + r.signal;
+  }
+  if (r.status != RunStatus::kOk) {
+    err << "symcontact: solve failed: " << r.message << "\n  finished steps and summary.json are in " << out_dir << "\n";
+    return kExitSolveError;
+  }
+  log.info("results written to " + out_dir);
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -204,19 +218,7 @@ int main(int argc, char** argv) {
     }
     opt.meshing = meshing.overrides();
     opt.signals = SignalHandling::kStopCleanly;
-    const RunResult r = solve_case(spec, opt, log, root, argv);
-    if (r.status == RunStatus::kInterrupted) {
-      err << "symcontact: " << r.message << "\n"
-                << "  finished steps and summary.json are in " << opt.out_dir << "\n";
-      return kExitSignalBase + r.signal;
-    }
-    if (r.status != RunStatus::kOk) {
-      err << "symcontact: solve failed: " << r.message << "\n"
-                << "  finished steps and summary.json are in " << opt.out_dir << "\n";
-      return kExitSolveError;
-    }
-    log.info("results written to " + opt.out_dir);
-    return kExitOk;
+    return exit_code(solve_case(spec, opt, log, root, argv), opt.out_dir, log, err);
   } catch (const InputError& e) {
     err << "symcontact: input error: " << e.what() << "\n";
     return kExitInputError;
