@@ -10,7 +10,10 @@ that a component that is zero up to round-off in one run (a force along a symmet
 the force's scale, not its own. Timings, iteration counts and the solver's name are not compared: the two
 paths solve the same problem by different methods.
 
-Usage: serial_and_mpi_agree.py SYMCONTACT MPIEXEC EXAMPLES WORK
+Then the same physical problem on two ranks in m–N–Pa and in other units (SYMCONTACT_RESCALE rewrites it),
+compared in the same way once each quantity is converted.
+
+Usage: serial_and_mpi_agree.py SYMCONTACT MPIEXEC EXAMPLES WORK SYMCONTACT_RESCALE
 """
 import csv
 import filecmp
@@ -33,12 +36,16 @@ CASES = [
 # What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
 UNSUPPORTED = [("friction_block/block.toml", "contact[0].friction"), ("hertz_3d/two_spheres.toml", "contact[0].b")]
 ITERATIVE = 'linear_solver = "iterative"\n'
+# (example, dimension, length, force, units): solved on two ranks in m–N–Pa and in the other units, on the same
+# mesh; every number must agree to REL of its quantity's scale once converted.
+UNITS = [("hertz_2d/cylinder_on_plane.toml", 2, 1e3, 1.0, "mm–N–MPa"),
+         ("hertz_3d/sphere_on_plane.toml", 3, 1e3, 1e-3, "mm–kN–GPa")]
 
 
-def compare(serial, other):
-    """The Comparison of two output folders."""
+def compare(serial, other, units=None):
+    """The Comparison of two output folders (`units`: other's units against serial's)."""
     files_a, files_b = sorted(os.listdir(serial)), sorted(os.listdir(other))
-    c = Comparison()
+    c = Comparison(units)
     if files_a != files_b:
         c.failures.append(f"files {files_a} != {files_b}")
     for f in files_a:
@@ -61,6 +68,7 @@ CSV_GROUPS = [
     ("force", re.compile(r"^(f[xyz]|fn_[xyz]|ft_[xyz])$")),
     ("displacement", re.compile(r"^(u[xyz]|slip_[xyz]|accumulated_slip|slip_tangential)$")),
 ]
+CSV_KINDS = {"position": "length", "gap": "length", "pressure": "stress", "force": "force", "displacement": "length"}
 SKIPPED_SUMMARY_KEYS = {"timings", "wall_time", "ipopt_status", "ipopt_iterations", "geometry_iterations",
                         "last_solve_ipopt_iterations_per_geometry_iteration", "last_solve_geometry_change_history",
                         "num_constraints", "problem", "output_folder", "equilibrium_residual",
@@ -92,18 +100,41 @@ def run(command):
         raise SystemExit(f"FAIL: {' '.join(command)} exited {r.returncode}")
 
 
+# The unit of each VTU array, as the quantity kinds of UnitChange.
+VTU_KINDS = {"Points": "length", "displacement": "length", "accumulated_slip": "length", "slip_increment": "length",
+             "contact_gap": "length", "contact_force": "force", "contact_pressure": "stress",
+             "contact_tangential_traction": "stress", "stress": "stress", "von_mises": "stress"}
+
+
+class UnitChange:
+    """The factor by which each kind of quantity is multiplied when every length is multiplied by `length` and
+    every force by `force` (tests/support/rescale_problem.hpp); in 2D a force is per unit thickness."""
+
+    def __init__(self, length=1.0, force=1.0, dimension=3):
+        self.exponents = {"length": (0, 1), "force": (1, dimension - 3), "stress": (1, -2)}
+        self.length, self.force = length, force
+
+    def factor(self, kind):
+        f, l = self.exponents.get(kind, (0, 0))
+        return self.force ** f * self.length ** l
+
+
 class Comparison:
-    def __init__(self):
+    """Two runs' numbers; `units`: the second run's units against the first's (None: the same)."""
+
+    def __init__(self, units=None):
         self.count = 0
         self.failures = []
+        self.units = units or UnitChange()
 
-    def numbers(self, where, a, b, scale):
+    def numbers(self, where, a, b, scale, kind=None):
+        f = self.units.factor(kind)
         for i, (x, y) in enumerate(zip(a, b)):
             self.count += 1
             if math.isnan(x) and math.isnan(y):
                 continue
-            if not abs(x - y) <= REL * scale:
-                self.failures.append(f"{where}[{i}]: {x!r} != {y!r} (scale {scale:.3g})")
+            if not abs(f * x - y) <= REL * f * scale:
+                self.failures.append(f"{where}[{i}]: {x!r} × {f:g} != {y!r} (scale {scale:.3g})")
 
     def vtu(self, where, a_path, b_path):
         arrays = lambda p: re.findall(r'<DataArray type="Float64" Name="([^"]+)"[^>]*>([^<]*)</DataArray>',
@@ -115,7 +146,7 @@ class Comparison:
         for (name, ta), (_, tb) in zip(a, b):
             va, vb = [float(v) for v in ta.split()], [float(v) for v in tb.split()]
             finite = [abs(v) for v in va if not math.isnan(v)]
-            self.numbers(f"{where} {name}", va, vb, max(finite, default=0.0) or 1.0)
+            self.numbers(f"{where} {name}", va, vb, max(finite, default=0.0) or 1.0, VTU_KINDS.get(name))
 
     def csv(self, where, a_path, b_path):
         ra, rb = list(csv.DictReader(open(a_path))), list(csv.DictReader(open(b_path)))
@@ -127,7 +158,8 @@ class Comparison:
             values = [abs(float(r[c])) for r in ra for c in columns if not math.isnan(float(r[c]))]
             scale = max(values, default=0.0) or 1.0
             for c in columns:
-                self.numbers(f"{where} {c}", [float(r[c]) for r in ra], [float(r[c]) for r in rb], scale)
+                self.numbers(f"{where} {c}", [float(r[c]) for r in ra], [float(r[c]) for r in rb], scale,
+                             CSV_KINDS[group])
         for c in ("side", "surface", "node", "status"):
             if [r[c] for r in ra] != [r[c] for r in rb]:
                 self.failures.append(f"{where}: column {c} differs")
@@ -141,14 +173,15 @@ class Comparison:
             forces = [x for r in sa["reactions"] for x in r["force"]] + sa["applied_load"]
             scale = max(abs(x) for x in forces) or 1.0
             for i, (ra, rb) in enumerate(zip(sa["reactions"], sb["reactions"])):
-                self.numbers(f"{where} step {k + 1} reaction {i}", ra["force"], rb["force"], scale)
-            self.numbers(f"{where} step {k + 1} applied load", sa["applied_load"], sb["applied_load"], scale)
+                self.numbers(f"{where} step {k + 1} reaction {i}", ra["force"], rb["force"], scale, "force")
+            self.numbers(f"{where} step {k + 1} applied load", sa["applied_load"], sb["applied_load"], scale,
+                         "force")
         if len(a["steps"]) != len(b["steps"]):
             self.failures.append(f"{where}: {len(a['steps'])} steps != {len(b['steps'])}")
 
 
 def main():
-    symcontact, mpiexec, examples, work = sys.argv[1:5]
+    symcontact, mpiexec, examples, work, rescale = sys.argv[1:6]
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     failed = False
@@ -190,6 +223,21 @@ def main():
             for line in c.failures[:20]:
                 print("  " + line)
             failed = failed or bool(c.failures)
+    for name, dimension, length, force, label in UNITS:  # two ranks in other units (rescale_problem.hpp)
+        folders = []
+        for change in (UnitChange(), UnitChange(length, force, dimension)):
+            tag = f"{name.replace('/', '_').removesuffix('.toml')}_units_{change.length:g}_{change.force:g}"
+            problem = subprocess.run([rescale, os.path.join(examples, name), os.path.join(work, tag),
+                                      "--length", str(change.length), "--force", str(change.force)],
+                                     stdout=subprocess.PIPE, text=True, check=True).stdout.strip()
+            folders.append(os.path.join(work, tag + "_out"))
+            run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", problem, "-o", folders[-1], "-q"])
+        c = compare(folders[0], folders[1], UnitChange(length, force, dimension))
+        print(f"{name}, 2 ranks in {label}: {c.count} numbers, {len(c.failures)} beyond {REL:g} of their "
+              "quantity's scale")
+        for line in c.failures[:20]:
+            print("  " + line)
+        failed = failed or bool(c.failures) or c.count == 0
     for name, key in UNSUPPORTED:
         out = os.path.join(work, "unsupported")
         r = subprocess.run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", os.path.join(examples, name),
