@@ -111,7 +111,7 @@ def test_no_folder_unless_asked_and_progress_with_the_gil_released(tmp_path, mon
     running.clear()
     thread.join()
     assert [c[:2] for c in calls] == [(k, 10) for k in range(1, 11)]
-    assert "IPOPT iterations" in calls[0][2]
+    assert "optimizer iterations" in calls[0][2]
     middle = [t for t in ticks if start + 0.2 * (end - start) < t < end - 0.2 * (end - start)]
     assert len(middle) > 5, f"{len(middle)} ticks in the middle of a {end - start:.2f} s run"
     assert list(tmp_path.iterdir()) == []  # nothing written

@@ -233,7 +233,7 @@ void add_solver_statistics(Json& js, const SolveReport* contact, const Equilibri
 std::string progress_text(const SolveReport* contact, const EquilibriumReport& newton) {
   std::ostringstream s;
   if (contact)
-    s << "geometry iterations " << contact->geometry_iterations << ", IPOPT iterations " << contact->ipopt_iterations
+    s << "geometry iterations " << contact->geometry_iterations << ", optimizer iterations " << contact->ipopt_iterations
       << (contact->coulomb_iterations ? ", Coulomb iterations " + std::to_string(contact->coulomb_iterations)
                                       : std::string())
       << (contact->cuts ? ", " + std::to_string(contact->substeps.size()) + " sub-steps" : std::string());
