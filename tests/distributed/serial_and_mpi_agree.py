@@ -28,10 +28,12 @@ import sys
 REL = 1e-8
 
 # (example, extra [contact_solver] keys, --mesh-size): VALIDATION.md's V1 and V2, elastic bodies on rigid
-# planes.
+# planes, and V1 in three load steps (the steps after the first reuse the first one's stiffness).
+THREE_STEPS = "[steps]\nload_factors = [0.3, 0.6, 1.0]\n"
 CASES = [
     ("hertz_2d/cylinder_on_plane.toml", "", None),
     ("hertz_3d/sphere_on_plane.toml", "", None),
+    ("hertz_2d/cylinder_on_plane.toml", THREE_STEPS, None),
 ]
 # What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
 UNSUPPORTED = [("friction_block/block.toml", "contact[0].friction"), ("hertz_3d/two_spheres.toml", "contact[0].b")]
@@ -84,7 +86,9 @@ def case_file(examples, work, name, extra):
     shutil.copytree(os.path.dirname(path), folder, dirs_exist_ok=True)
     copy = os.path.join(folder, os.path.basename(name))
     text = open(copy).read()
-    if "[contact_solver]" in text:
+    if extra.startswith("["):  # a table of its own
+        text += "\n" + extra
+    elif "[contact_solver]" in text:
         text = text.replace("[contact_solver]\n", "[contact_solver]\n" + extra, 1)
     else:
         text += "\n[contact_solver]\n" + extra
@@ -185,26 +189,26 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     failed = False
-    for name, extra, mesh_size in CASES:
+    for k, (name, extra, mesh_size) in enumerate(CASES):
         path = case_file(examples, work, name, extra)
-        tag = name.replace("/", "_").removesuffix(".toml")
+        tag = name.replace("/", "_").removesuffix(".toml") + ("_steps" if extra == THREE_STEPS else "")
         serial, mpi = os.path.join(work, tag + "_serial"), os.path.join(work, tag + "_mpi")
         size = ["--mesh-size", str(mesh_size)] if mesh_size else []
         run([symcontact, "run", path, "-o", serial, "-q"] + size)
         run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", path, "-o", mpi, "-q"] + size)
         runs = [("2 ranks", mpi)]
-        if name == CASES[0][0]:  # the same two ranks again: equal to the last bit
+        if k == 0:  # the same two ranks again: equal to the last bit
             again = os.path.join(work, tag + "_mpi_again")
             run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", path, "-o", again, "-q"] + size)
             differ = [f for f in sorted(os.listdir(mpi)) if not f.endswith(".json")
                       and not filecmp.cmp(os.path.join(mpi, f), os.path.join(again, f), shallow=False)]
             print(f"{name}, 2 ranks twice: files that differ: {differ}")
             failed = failed or bool(differ)
-        if name == CASES[0][0]:  # one process on the distributed path, chosen by the problem file
+        if k == 0:  # one process on the distributed path, chosen by the problem file
             single = os.path.join(work, tag + "_iterative")
             run([symcontact, "run", case_file(examples, work, name, extra + ITERATIVE), "-o", single, "-q"] + size)
             runs.append(("linear_solver = iterative", single))
-        if name == CASES[-1][0]:  # another BLAS kernel (restart_with_better_blas_kernels keeps a given one)
+        if k == 1:  # another BLAS kernel (restart_with_better_blas_kernels keeps a given one)
             baseline = os.path.join(work, tag + "_prescott")
             given = os.environ.get("OPENBLAS_CORETYPE")
             os.environ["OPENBLAS_CORETYPE"] = "Prescott"
@@ -219,7 +223,7 @@ def main():
             runs.append(("2 ranks, OPENBLAS_CORETYPE=Prescott", baseline))
         for label, folder in runs:
             c = compare(serial, folder)
-            print(f"{name}, {label}: {c.count} numbers, {len(c.failures)} beyond {REL:g} of their quantity's scale")
+            print(f"{name}{' in three steps' if extra == THREE_STEPS else ''}, {label}: {c.count} numbers, {len(c.failures)} beyond {REL:g} of their quantity's scale")
             for line in c.failures[:20]:
                 print("  " + line)
             failed = failed or bool(c.failures)

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "symcontact/app/linear_solver_choice.hpp"
@@ -54,13 +55,20 @@ class OwnedLowerSink : public MatrixSink {
   std::vector<Triplet> triplets_;
 };
 
-QuadraticModel quadratic_model(const Model& model) {
+/// The model at its current step; K from `stiffness` when it holds one, into it when the energy's Hessian is
+/// constant (then the same for every step: only the load changes).
+QuadraticModel quadratic_model(const Model& model, std::optional<SparseMatrix>& stiffness) {
   const DofMap& dofs = model.dofs();
   const Index n = dofs.num_dofs(), dim = dofs.dim();
   QuadraticModel q;
-  OwnedLowerSink sink(petsc::my_rows(static_cast<int>(dim), n / dim));
-  model.energy().add_hessian(VectorXd::Zero(n), sink);
-  q.K_lower = sink.matrix(n);
+  if (stiffness && stiffness->rows() == n) {
+    q.K_lower = *stiffness;
+  } else {
+    OwnedLowerSink sink(petsc::my_rows(static_cast<int>(dim), n / dim));
+    model.energy().add_hessian(VectorXd::Zero(n), sink);
+    q.K_lower = sink.matrix(n);
+    if (model.energy().hessian_is_constant()) stiffness = q.K_lower;
+  }
   q.f = VectorXd::Zero(n);
   model.energy().add_gradient(VectorXd::Zero(n), q.f);
   q.f = -q.f;
@@ -163,7 +171,7 @@ class DistributedStep {
   SolveReport operator()(Model& model, int step, VectorXd& u, FrictionState&) const {
     SolveReport r;
     const auto t0 = std::chrono::steady_clock::now();
-    const QuadraticModel q = quadratic_model(model);
+    const QuadraticModel q = quadratic_model(model, *stiffness_);
     const FixedDofs fixed = model.fixed_dofs(step);
     const VectorXd fixed_values = Eigen::Map<const VectorXd>(fixed.values.data(), static_cast<Index>(fixed.values.size()));
     r.times.add("assembly", petsc::seconds_since(t0));
@@ -223,6 +231,8 @@ class DistributedStep {
   int max_geometry_iterations_;
   ContactInteriorPointOptions options_;
   const Logger& log_;
+  /// K of the first step, kept for the next ones (this rank's rows); shared by the copies a StepSolver makes.
+  std::shared_ptr<std::optional<SparseMatrix>> stiffness_ = std::make_shared<std::optional<SparseMatrix>>();
 };
 
 }  // namespace
