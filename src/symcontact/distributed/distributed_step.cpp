@@ -5,9 +5,11 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "symcontact/app/linear_solver_choice.hpp"
 #include "symcontact/core/error.hpp"
+#include "symcontact/core/progress_clock.hpp"
 #include "symcontact/distributed/gamg_elasticity.hpp"
 #include "symcontact/distributed/petsc_support.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
@@ -170,6 +172,7 @@ class DistributedStep {
 
   SolveReport operator()(Model& model, int step, VectorXd& u, FrictionState&) const {
     SolveReport r;
+    const ProgressClock clock;
     const auto t0 = std::chrono::steady_clock::now();
     const QuadraticModel q = quadratic_model(model, *stiffness_);
     const FixedDofs fixed = model.fixed_dofs(step);
@@ -200,9 +203,10 @@ class DistributedStep {
       const double change = (solve.u - u).lpNorm<Eigen::Infinity>() / solve.u.lpNorm<Eigen::Infinity>();
       r.change_history.push_back(change);
       u = solve.u;
-      log_.detail("geometry iteration " + std::to_string(r.geometry_iterations) + ": " +
-                  std::to_string(lin.A.rows()) + " rows, " + std::to_string(solve.iterations) +
-                  " interior-point iterations, change " + std::to_string(change));
+      std::ostringstream m;
+      m << "  geometry iteration " << r.geometry_iterations << ": " << lin.A.rows() << " constraints, optimizer "
+        << solve.iterations << " iterations (distributed interior point: converged), change " << change;
+      log_iteration(log_, clock, m.str());
       if (change <= geometry_tolerance_) break;
       if (r.geometry_iterations == max_geometry_iterations_)
         throw SolveError("the geometry fixed point did not converge in " + std::to_string(max_geometry_iterations_) +

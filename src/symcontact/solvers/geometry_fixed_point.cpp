@@ -130,7 +130,7 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   rows_prev_node_ = lin.row_node;
   {
     std::ostringstream m;
-    m << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, IPOPT " << res.iterations << " iterations ("
+    m << "  geometry iteration " << it << ": " << lin.A.rows() << " constraints, optimizer " << res.iterations << " iterations ("
       << res.status_text << "), change " << change;
     log_iteration(log_, clock_, m.str());
   }
