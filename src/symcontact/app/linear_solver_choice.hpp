@@ -7,7 +7,7 @@
 /// The rule for "automatic": the serial solver, unless the model has at least kAutomaticCheckDofs DOFs, its
 /// serial contact solve's predicted peak (solvers/memory_prediction.hpp, from CHOLMOD's analysis of K_ff)
 /// is above kMemoryShare × MemAvailable, and the distributed path solves the problem (linear elasticity,
-/// frictionless contact with rigid obstacles). Below that size the analysis is not run: such a problem fits on any machine this runs on.
+/// contact with rigid obstacles, frictionless or with friction on order-1 elements). Below that size the analysis is not run: such a problem fits on any machine this runs on.
 
 #include <string>
 

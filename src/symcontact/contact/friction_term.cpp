@@ -169,6 +169,13 @@ void FrictionTerm::set_thresholds(const std::vector<double>& tau) {
   for (std::size_t q = 0; q < local_.size(); ++q) local_[q].wt = points_[q].weight * tau[q];
 }
 
+std::vector<double> FrictionTerm::bounds() const {
+  std::vector<double> g;
+  g.reserve(local_.size());
+  for (const Local& l : local_) g.push_back(l.wt);
+  return g;
+}
+
 std::vector<Eigen::Vector3d> FrictionTerm::slips(const VectorXd& u) const {
   std::vector<Eigen::Vector3d> out;
   out.reserve(local_.size());

@@ -60,6 +60,8 @@ class FrictionTerm : public EnergyTerm {
   const std::vector<ContactPoint>& points() const { return points_; }
   /// The regularisation length α_q of every point.
   const std::vector<double>& alphas() const { return alpha_; }
+  /// The bound w_q τ_q of every point's friction force.
+  std::vector<double> bounds() const;
   /// New thresholds τ_q ≥ 0, one per point (α_q > 0 wherever τ_q > 0): the same points, slips and weights.
   /// The term's DOF support (support_of(), its Hessian blocks) is unchanged when the zero blocks are kept.
   void set_thresholds(const std::vector<double>& tau);

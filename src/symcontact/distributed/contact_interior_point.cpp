@@ -20,22 +20,25 @@ struct Direction {
 };
 
 // Regularised Tresca friction at the constrained nodes, from U (dim × m: the nodes' displacements); with
-// s = P u (P = I − n nᵀ) and r = √(|s|² + α²) ≥ α: j_j = g r, ∇j_j = g s / r, ∇²j_j = g (P − s sᵀ / r²) / r
-// (P s = s). Nothing divides by the slip itself.
+// s = P (u − u⁰) (P = I − n nᵀ, u⁰ the slip origin) and r = √(|s|² + α²) ≥ α: j_j = g r, ∇j_j = g s / r,
+// ∇²j_j = g (P − s sᵀ / r²) / r (P s = s). Nothing divides by the slip itself.
+
+VectorXd slip(const NodalConstraints& c, const Eigen::MatrixXd& U, Index j) {
+  const VectorXd d = c.slip_origin.size() > 0 ? VectorXd(U.col(j) - c.slip_origin.col(j)) : VectorXd(U.col(j));
+  return d - c.normal.col(j) * c.normal.col(j).dot(d);
+}
 
 double friction_energy(const NodalConstraints& c, const Eigen::MatrixXd& U) {
   double e = 0.0;
-  for (Index j = 0; j < c.size(); ++j) {
-    const VectorXd s = U.col(j) - c.normal.col(j) * c.normal.col(j).dot(U.col(j));
-    e += c.friction_bound[j] * std::sqrt(s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]);
-  }
+  for (Index j = 0; j < c.size(); ++j)
+    e += c.friction_bound[j] * std::sqrt(slip(c, U, j).squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]);
   return e;
 }
 
 Eigen::MatrixXd friction_gradient(const NodalConstraints& c, const Eigen::MatrixXd& U) {
   Eigen::MatrixXd G(U.rows(), U.cols());
   for (Index j = 0; j < c.size(); ++j) {
-    const VectorXd s = U.col(j) - c.normal.col(j) * c.normal.col(j).dot(U.col(j));
+    const VectorXd s = slip(c, U, j);
     G.col(j) = c.friction_bound[j] / std::sqrt(s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]) * s;
   }
   return G;
@@ -43,7 +46,7 @@ Eigen::MatrixXd friction_gradient(const NodalConstraints& c, const Eigen::Matrix
 
 Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixXd& U, Index j) {
   const Index dim = U.rows();
-  const VectorXd n = c.normal.col(j), s = U.col(j) - n * n.dot(U.col(j));
+  const VectorXd n = c.normal.col(j), s = slip(c, U, j);
   const double r2 = s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j], r = std::sqrt(r2);
   const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(dim, dim) - n * n.transpose();
   return c.friction_bound[j] / r * (P - s * s.transpose() / r2);
@@ -53,7 +56,7 @@ class InteriorPoint {
  public:
   InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
                 const VectorXd& fixed_values, const Eigen::MatrixXd& x, const NodalConstraints& c,
-                const ContactInteriorPointOptions& options);
+                const ContactInteriorPointOptions& options, const VectorXd* start);
   ContactInteriorPointResult run();
 
  private:
@@ -76,6 +79,7 @@ class InteriorPoint {
   void zero_fixed_rows(Vec v);
   void update_newton_matrix(const Eigen::MatrixXd& U);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
+  double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
 
@@ -102,7 +106,7 @@ class InteriorPoint {
 
 InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
                              const VectorXd& fixed_values, const Eigen::MatrixXd& x, const NodalConstraints& c,
-                             const ContactInteriorPointOptions& options)
+                             const ContactInteriorPointOptions& options, const VectorXd* start)
     : options_(options), c_(c), dim_(static_cast<int>(x.rows())), m_(c.size()),
       mine_(petsc::my_rows(static_cast<int>(x.rows()), x.cols())) {
   const Index n = dim_ * x.cols();
@@ -110,7 +114,9 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
       c.normal.rows() != dim_ || c.normal.cols() != m_ || c.lower.size() != m_ || m_ == 0 ||
       (c.rows.size() > 0 && (c.rows.rows() != m_ || c.rows.cols() != n)) ||
       (c.frictional() && (c.friction_bound.size() != m_ || c.friction_alpha.size() != m_ ||
-                          c.friction_bound.minCoeff() < 0.0 || c.friction_alpha.minCoeff() <= 0.0)))
+                          c.friction_bound.minCoeff() < 0.0 || c.friction_alpha.minCoeff() <= 0.0)) ||
+      (c.slip_origin.size() > 0 && (c.slip_origin.rows() != dim_ || c.slip_origin.cols() != m_)) ||
+      (start && start->size() != n))
     throw std::invalid_argument("solve_contact_interior_point: K, f, the fixed values, the coordinates and the "
                                 "constraints do not match (or there is no constraint)");
   std::vector<char> is_fixed(static_cast<std::size_t>(n), 0);
@@ -124,6 +130,13 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
     if (mine_.owns(i)) fixed_owned_.push_back(static_cast<PetscInt>(i));
   build_rows(fixed, fixed_values, n);
   assemble(K_share, f, fixed, fixed_values, x);
+  if (start) {  // u = the start on the free DOFs, ū on the fixed ones
+    for (Index i = mine_.row0(); i < mine_.row1(); ++i)
+      if (!is_fixed[static_cast<std::size_t>(i)])
+        check(VecSetValue(u_.object, static_cast<PetscInt>(i), (*start)[i], INSERT_VALUES), "VecSetValue");
+    check(VecAssemblyBegin(u_.object), "VecAssemblyBegin");
+    check(VecAssemblyEnd(u_.object), "VecAssemblyEnd");
+  }
   create_constraint_scatter();
   create_solver();
 }
@@ -342,14 +355,31 @@ bool InteriorPoint::solve_direction(const VectorXd& rc, const VectorXd& rp, doub
                          options_.max_krylov_iterations),
         "KSPSetTolerances");
   const auto t0 = std::chrono::steady_clock::now();
-  check(KSPSolve(ksp_.object, rhs_.object, du_.object), "KSPSolve");
-  result_.krylov_seconds += petsc::seconds_since(t0);
   PetscInt its = 0;
-  KSPConvergedReason reason;
-  check(KSPGetIterationNumber(ksp_.object, &its), "KSPGetIterationNumber");
-  check(KSPGetConvergedReason(ksp_.object, &reason), "KSPGetConvergedReason");
+  KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
+  // A breakdown (pᵀNp or rᵀM⁻¹r ≤ 0 in floating point: N spans the contrasts of Σ = Λ S⁻¹ and of stuck
+  // and slipping friction nodes) loses the Krylov space, not the iterate: CG restarts from it, from its
+  // true residual, at most kRestarts times.
+  constexpr int kRestarts = 3;
+  check(KSPSetInitialGuessNonzero(ksp_.object, PETSC_FALSE), "KSPSetInitialGuessNonzero");
+  for (int restart = 0; restart <= kRestarts; ++restart) {
+    check(KSPSolve(ksp_.object, rhs_.object, du_.object), "KSPSolve");
+    PetscInt n = 0;
+    check(KSPGetIterationNumber(ksp_.object, &n), "KSPGetIterationNumber");
+    check(KSPGetConvergedReason(ksp_.object, &reason), "KSPGetConvergedReason");
+    its += n;
+    if (reason != KSP_DIVERGED_INDEFINITE_MAT && reason != KSP_DIVERGED_INDEFINITE_PC) break;
+    check(KSPSetInitialGuessNonzero(ksp_.object, PETSC_TRUE), "KSPSetInitialGuessNonzero");
+  }
+  check(KSPSetInitialGuessNonzero(ksp_.object, PETSC_FALSE), "KSPSetInitialGuessNonzero");
+  result_.krylov_seconds += petsc::seconds_since(t0);
   result_.krylov_iterations.push_back(static_cast<int>(its));
-  if (reason < 0 && reason != KSP_DIVERGED_ITS) {
+  // An inexact Newton direction is a direction still (the stopping test is on the iterate, not on it): the
+  // last iterate after the iteration limit, and after a breakdown at the round-off floor of the Krylov solve
+  // (pᵀNp or rᵀM⁻¹r ≤ 0 from round-off once the residual is far below the right-hand side, as with
+  // the stick/slip contrasts of friction) where its true residual is within the loosest forcing term, 0.01.
+  const bool breakdown = reason == KSP_DIVERGED_INDEFINITE_MAT || reason == KSP_DIVERGED_INDEFINITE_PC;
+  if (reason < 0 && reason != KSP_DIVERGED_ITS && !(breakdown && true_residual() <= 0.01 * rhs_norm)) {
     result_.reason = std::string("conjugate gradients: ") + KSPConvergedReasons[reason];
     return false;
   }
@@ -357,6 +387,15 @@ bool InteriorPoint::solve_direction(const VectorXd& rc, const VectorXd& rp, doub
   d.ds = A_ * gather(du_.object) + rp;
   d.dl = -(rc + lambda_.cwiseProduct(d.ds)).cwiseQuotient(s_);
   return true;
+}
+
+/// ‖rhs − N Δu‖₂ of the Krylov solve's last iterate.
+double InteriorPoint::true_residual() {
+  check(MatMult(N_.object, du_.object, Kdu_.object), "MatMult");
+  check(VecAYPX(Kdu_.object, -1.0, rhs_.object), "VecAYPX");
+  PetscReal norm = 0.0;
+  check(VecNorm(Kdu_.object, NORM_2, &norm), "VecNorm");
+  return norm;
 }
 
 /// The largest α ≤ 1 with s + α Δs ≥ 0 and λ + α Δλ ≥ 0.
@@ -445,7 +484,12 @@ ContactInteriorPointResult InteriorPoint::run() {
     const double alpha_affine = largest_step(d);
     const double mu_affine =
         (s_ + alpha_affine * d.ds).dot(lambda_ + alpha_affine * d.dl) / static_cast<double>(m_);
-    const double target = std::pow(mu_affine / mu, 3) * mu;
+    // Mehrotra's σμ; with friction (f not quadratic) not below a tenth of μ while the stationarity and
+    // feasibility are behind it (as solvers/dense_primal_interior_point.cpp): complementarity run ahead of
+    // them drives s_j to 1e-20 L on active rows, and Σ = λ/s past what the Newton systems can resolve.
+    double target = std::pow(mu_affine / mu, 3) * mu;
+    if (c_.frictional())
+      target = std::max(target, 0.1 * std::min(mu, L_ * F_ * std::max(rd / F_, rp.lpNorm<Eigen::Infinity>() / L_)));
     const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
     if (!solve_direction(rc, rp, eta, d)) break;
     const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, U);
@@ -464,9 +508,10 @@ ContactInteriorPointResult InteriorPoint::run() {
 ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_share, const VectorXd& f,
                                                         const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                                         const Eigen::MatrixXd& x, const NodalConstraints& constraints,
-                                                        const ContactInteriorPointOptions& options) {
+                                                        const ContactInteriorPointOptions& options,
+                                                        const VectorXd* start) {
   const auto t0 = std::chrono::steady_clock::now();
-  InteriorPoint ip(K_share, f, fixed, fixed_values, x, constraints, options);
+  InteriorPoint ip(K_share, f, fixed, fixed_values, x, constraints, options, start);
   const double setup = petsc::seconds_since(t0);
   ContactInteriorPointResult r = ip.run();
   r.setup_seconds += setup;

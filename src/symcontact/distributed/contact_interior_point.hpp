@@ -29,7 +29,7 @@
 ///
 /// Scales (every test relative to the problem's own): F = ‖b‖_∞, b the load after the fixed values moved into
 /// it, a nodal force; L = max(‖ū‖_∞, max |l_j|), a length; where one of them is 0 the other over the largest
-/// diagonal entry of K gives it. Start: u = ū (the fixed values, zero elsewhere), s = max(c(u), L),
+/// diagonal entry of K gives it. Start: u = ū on the fixed DOFs, `start` (or 0) elsewhere, s = max(c(u), L),
 /// λ = F. Stop when ‖r_d‖_∞ ≤ tol F on the free DOFs, ‖r_p‖_∞ ≤ tol L and min(s_j / L, λ_j / F) ≤ tol for
 /// every j: each constraint is either active (s_j ≈ 0) or carries no force (λ_j ≈ 0) to tol — a test on the
 /// answer, where the mean sᵀλ/m would let a node near the edge of the contact zone keep a force μ/s_j. The Krylov
@@ -59,10 +59,12 @@ struct NodalConstraints {
   VectorXd lower;          ///< m
   SparseMatrix rows;       ///< m × num_dofs, or empty: the rows n_jᵀ at node_j
   /// Regularised Tresca friction at the same nodes, optional (empty: frictionless; else m values each):
-  /// the energy j(u) = Σ_j g_j η_α_j(P_j u_{p_j}), η_α(v) = √(|v|² + α²), P_j = I − n_j n_jᵀ (METHOD.md,
+  /// the energy j(u) = Σ_j g_j η_α_j(P_j (u_{p_j} − u⁰_j)), η_α(v) = √(|v|² + α²), P_j = I − n_j n_jᵀ (METHOD.md,
   /// "Friction"; talk eq. 16–18 with one point per node), g_j ≥ 0 the node's friction force bound (its
-  /// lumped area times the threshold τ), α_j > 0 its regularisation length. The slip is measured from u = 0.
+  /// lumped area times the threshold τ), α_j > 0 its regularisation length. The slip is measured from the
+  /// node's u in slip_origin (dim × m: u at the start of the load step), from u = 0 where it is empty.
   VectorXd friction_bound, friction_alpha;
+  Eigen::MatrixXd slip_origin;
   Index size() const { return static_cast<Index>(node.size()); }
   bool frictional() const { return friction_bound.size() > 0; }
 };
@@ -91,11 +93,13 @@ struct ContactInteriorPointResult {
 };
 
 /// K_share, f, fixed, fixed_values, x: as solve_elasticity_gamg() takes them. Collective over
-/// PETSC_COMM_WORLD; every rank passes the same f, fixed DOFs, coordinates and constraints.
+/// PETSC_COMM_WORLD; every rank passes the same f, fixed DOFs, coordinates and constraints. `start`: u to
+/// start from on the free DOFs (every DOF; null: 0), the slacks and multipliers starting as above.
 ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_share, const VectorXd& f,
                                                         const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                                         const Eigen::MatrixXd& x, const NodalConstraints& constraints,
-                                                        const ContactInteriorPointOptions& options = {});
+                                                        const ContactInteriorPointOptions& options = {},
+                                                        const VectorXd* start = nullptr);
 
 /// Coulomb friction of coefficient `mu` at the constrained nodes as a fixed point of Tresca problems (METHOD.md,
 /// "Coulomb as a fixed point"): the first solve frictionless, then each with the bounds g_j = μ λ_j of the

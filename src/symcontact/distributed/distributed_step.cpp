@@ -14,6 +14,9 @@
 #include "symcontact/distributed/petsc_support.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/solvers/contact_forces.hpp"
+#include "symcontact/solvers/coulomb_thresholds.hpp"
+#include "symcontact/solvers/friction_state.hpp"
+#include "symcontact/solvers/lagged_fixed_point.hpp"
 
 namespace symcontact {
 
@@ -112,6 +115,43 @@ NodalConstraints scaled_rows(const ContactLinearization& lin, const DofMap& dofs
   return c;
 }
 
+/// The serial friction terms (solvers/friction_state.hpp: one point per slave node of a pair's friction family,
+/// P1 against obstacles: each point's slip is its node's) as the interior point's friction on the rows of c:
+/// the row of node k of family f takes the point of node k of the pair whose friction family is f, with its
+/// bound g = w τ, its α, its normal n̄ (P = I − n̄ n̄ᵀ, as the term's) and the slip origin u_start at the node,
+/// so that the interior point's j(u) is the sum of the terms'. Throws SolveError for a point with τ > 0 and no
+/// row: the interior point carries friction on its rows only.
+void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const ContactLinearization& lin,
+                  const ContactSet& contacts, const DofMap& dofs, const VectorXd& u_start, NodalConstraints& c) {
+  const Index m = c.size(), dim = dofs.dim();
+  std::map<std::pair<int, Index>, Index> row_of;
+  for (Index j = 0; j < m; ++j)
+    row_of[{lin.row_family[static_cast<std::size_t>(j)], lin.row_node[static_cast<std::size_t>(j)]}] = j;
+  c.friction_bound = VectorXd::Zero(m);
+  c.friction_alpha = VectorXd::Ones(m);  // any α > 0 where g = 0: such a row adds nothing
+  c.slip_origin.resize(dim, m);
+  for (Index j = 0; j < m; ++j) c.slip_origin.col(j) = u_start.segment(dim * c.node[j], dim);
+  for (std::size_t p = 0; p < terms.size(); ++p) {
+    if (!terms[p]) continue;
+    const int family = contacts.friction_family(static_cast<int>(p));
+    const std::vector<ContactPoint>& points = terms[p]->points();
+    const std::vector<double> bound = terms[p]->bounds();
+    for (std::size_t q = 0; q < points.size(); ++q) {
+      const auto it = row_of.find({family, points[q].slave_node});
+      if (it == row_of.end()) {
+        if (bound[q] > 0.0)
+          throw SolveError("pair " + contacts.pairs[p].name + ": surface node " + std::to_string(points[q].slave_node) +
+                           " has a friction threshold and no contact row; the distributed path carries friction at "
+                           "the nodes within the search distance only");
+        continue;
+      }
+      c.friction_bound[it->second] = bound[q];
+      c.friction_alpha[it->second] = terms[p]->alphas()[q];
+      c.normal.col(it->second) = points[q].normal.head(dim);
+    }
+  }
+}
+
 bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
   return a.A.rows() == b.A.rows() && a.A.nonZeros() == b.A.nonZeros() && a.b == b.b &&
          (a.A - b.A).norm() == 0.0;
@@ -120,17 +160,25 @@ bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
 class DistributedStep {
  public:
   DistributedStep(const ProblemSpec& spec, const ContactInteriorPointOptions& options, const Logger& log)
-      : geometry_tolerance_(spec.contact_solver.friction.contact.geometry_tolerance),
-        max_geometry_iterations_(spec.contact_solver.friction.contact.max_geometry_iterations),
-        options_(options), log_(log) {}
+      : frictional_(spec.contact_solver.friction), options_(options), log_(log) {}
 
   /// The quadratic program on the rows of `lin`; without rows (no contact point within any pair's search
   /// distance) the stiffness system alone.
+  /// With `friction` (the step's thresholds and slip origin), the friction terms at u, added to the rows
+  /// (add_friction) and kept in `terms`.
   ContactInteriorPointResult solve_rows(const QuadraticModel& q, const FixedDofs& fixed, const VectorXd& fixed_values,
-                                        const ContactLinearization& lin, const Model& model) const {
+                                        const ContactLinearization& lin, const Model& model, const VectorXd& u,
+                                        const FrictionState* friction, const ContactInteriorPointOptions& options,
+                                        std::vector<std::shared_ptr<FrictionTerm>>& terms) const {
+    NodalConstraints rows = scaled_rows(lin, model.dofs(), model.contacts());
+    terms.assign(model.contacts().pairs.size(), nullptr);
+    if (friction) {
+      terms = friction_terms(*friction, model.contacts(), model.dofs(), u);
+      add_friction(terms, lin, model.contacts(), model.dofs(), friction->u_start, rows);
+    }
     if (lin.A.rows() > 0)
-      return solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x,
-                                          scaled_rows(lin, model.dofs(), model.contacts()), options_);
+      return solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x, rows, options,
+                                          friction ? &u : nullptr);
     const GamgResult g = solve_elasticity_gamg(q.K_lower, q.f, fixed.dofs, fixed_values, q.x);
     if (!g.converged)
       throw SolveError("no contact point within any pair's search distance, and the stiffness system alone did not "
@@ -170,7 +218,29 @@ class DistributedStep {
     return lambda;
   }
 
-  SolveReport operator()(Model& model, int step, VectorXd& u, FrictionState&) const {
+  /// One load step: the geometry fixed point, within the Coulomb fixed point of the serial solver
+  /// (lagged_fixed_point.hpp, coulomb_thresholds.hpp) where a pair has friction.
+  SolveReport operator()(Model& model, int step, VectorXd& u, FrictionState& friction) const {
+    bool frictional = false;
+    for (const ContactPair& p : model.contacts().pairs) frictional = frictional || p.friction != FrictionLaw::kNone;
+    if (!frictional) return solve_geometry(model, step, u, nullptr, frictional_.contact);
+    CoulombThresholds coulomb(model.contacts(), model.dofs(), u, friction.nodal_tau.empty() ? nullptr : &friction,
+                              0.0, log_);
+    const VectorXd u_start = u;
+    const LaggedSolve solve = [&](const ContactSolveOptions& o) {
+      return solve_geometry(model, step, u, &coulomb.state(), o);
+    };
+    SolveReport r = solve_lagged(coulomb, solve, u, u_start, frictional_, false, log_);
+    r.friction_state = coulomb.state();
+    friction = r.friction_state;
+    return r;
+  }
+
+ private:
+  /// The geometry fixed point of the file comment under `o` (its geometry tolerance; its optimiser tolerance,
+  /// relative to the problem's, scales the interior point's), with the friction terms of `friction` (null: none).
+  SolveReport solve_geometry(Model& model, int step, VectorXd& u, const FrictionState* friction,
+                             const ContactSolveOptions& o) const {
     SolveReport r;
     const ProgressClock clock;
     const auto t0 = std::chrono::steady_clock::now();
@@ -178,14 +248,17 @@ class DistributedStep {
     const FixedDofs fixed = model.fixed_dofs(step);
     const VectorXd fixed_values = Eigen::Map<const VectorXd>(fixed.values.data(), static_cast<Index>(fixed.values.size()));
     r.times.add("assembly", petsc::seconds_since(t0));
+    ContactInteriorPointOptions options = options_;
+    options.tolerance *= o.ipopt.tolerance / frictional_.contact.ipopt.tolerance;
     ContactLinearization lin;
     ContactInteriorPointResult solve;
+    std::vector<std::shared_ptr<FrictionTerm>> terms;
     for (r.geometry_iterations = 1;; ++r.geometry_iterations) {
       const auto t_search = std::chrono::steady_clock::now();
       ContactLinearization next = model.contacts().linearize(model.dofs(), u);
       r.times.add("search", petsc::seconds_since(t_search));
       if (r.geometry_iterations > 1 && same_rows(lin, next)) break;
-      if (r.geometry_iterations > 1 && lin.A.rows() > 0) {
+      if (r.geometry_iterations > 1 && lin.A.rows() > 0 && !friction) {
         if (std::optional<VectorXd> forces = forces_if_still_optimal(next, lin, solve, model, fixed, u)) {
           solve.lambda = std::move(*forces);  // the rows changed, the answer did not: no new solve
           lin = std::move(next);
@@ -193,7 +266,7 @@ class DistributedStep {
         }
       }
       lin = std::move(next);
-      solve = solve_rows(q, fixed, fixed_values, lin, model);
+      solve = solve_rows(q, fixed, fixed_values, lin, model, u, friction, options, terms);
       r.times.add("optimizer", solve.total_seconds);
       r.ipopt_iterations += solve.iterations;
       r.ipopt_per_iteration.push_back(solve.iterations);
@@ -207,32 +280,39 @@ class DistributedStep {
       m << "  geometry iteration " << r.geometry_iterations << ": " << lin.A.rows() << " constraints, optimizer "
         << solve.iterations << " iterations (distributed interior point: converged), change " << change;
       log_iteration(log_, clock, m.str());
-      if (change <= geometry_tolerance_) break;
-      if (r.geometry_iterations == max_geometry_iterations_)
-        throw SolveError("the geometry fixed point did not converge in " + std::to_string(max_geometry_iterations_) +
+      if (change <= o.geometry_tolerance) break;
+      if (r.geometry_iterations == o.max_geometry_iterations)
+        throw SolveError("the geometry fixed point did not converge in " + std::to_string(o.max_geometry_iterations) +
                          " iterations (last change " + std::to_string(change) + ")");
     }
+    set_contact_state(model, fixed, u, std::move(lin), solve.lambda, terms, r);
+    return r;
+  }
+
+  /// r's contact state at the answer u on the rows of `lin` with their forces λ (the interior point's) and
+  /// the friction terms of the solve (none when empty): the forces recovered as the serial solver does.
+  static void set_contact_state(const Model& model, const FixedDofs& fixed, const VectorXd& u,
+                                ContactLinearization&& lin, const VectorXd& lambda,
+                                const std::vector<std::shared_ptr<FrictionTerm>>& terms, SolveReport& r) {
     VectorXd mu(lin.A.rows());
-    for (Index j = 0; j < mu.size(); ++j) mu[j] = solve.lambda[j] / lin.row_support[static_cast<std::size_t>(j)];
+    for (Index j = 0; j < mu.size(); ++j) mu[j] = lambda[j] / lin.row_support[static_cast<std::size_t>(j)];
+    r.friction.assign(terms.begin(), terms.end());
+    if (r.friction.empty()) r.friction.assign(model.contacts().pairs.size(), nullptr);
     ContactForces forces = recover_contact_forces(model.energy(), fixed, model.contacts(), model.dofs(), u, lin.A, mu,
-                                                  {}, CondensedResidual{});
+                                                  r.friction, CondensedResidual{});
     r.contact_force = std::move(forces.contact_force);
     r.multiplier_force = std::move(forces.multiplier_force);
     r.force_defect = std::move(forces.force_defect);
     r.multipliers = std::move(mu);
-    r.friction.assign(model.contacts().pairs.size(), nullptr);
     r.num_constraints = lin.A.rows();
     r.num_free = model.dofs().num_dofs() - static_cast<Index>(fixed.dofs.size());
     r.linearization = std::move(lin);
     r.converged = true;
     r.ipopt_status = "distributed interior point: converged";
     r.substeps = {1.0};
-    return r;
   }
 
- private:
-  double geometry_tolerance_;
-  int max_geometry_iterations_;
+  FrictionalOptions frictional_;  ///< the problem's [contact_solver] settings
   ContactInteriorPointOptions options_;
   const Logger& log_;
   /// K of the first step, kept for the next ones (this rank's rows); shared by the copies a StepSolver makes.

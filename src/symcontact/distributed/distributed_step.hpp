@@ -1,23 +1,28 @@
 #pragma once
 /// \file distributed_step.hpp
 /// The contact solver of `symcontact run` on the distributed path (`mpirun -np N symcontact run CASE.toml`):
-/// a load step of a model with linear-elastic bodies and frictionless contact, solved by the interior point
-/// of contact_interior_point.hpp on the same constraints as the serial solver, so that both give the same
-/// answer to their tolerances.
+/// a load step of a model with linear-elastic bodies in contact with rigid obstacles, frictionless or with
+/// friction, solved by the interior point of contact_interior_point.hpp on the same constraints and friction
+/// terms as the serial solver, so that both give the same answer to their tolerances.
 ///
 /// Each step is a geometry fixed point, as the serial one (solvers/geometry_fixed_point.hpp): the contact
-/// set is linearised at u (ContactSet::linearize: the weak gap rows A u + b ≥ 0 of every pair, obstacles and
-/// elastic pairs alike), the quadratic program min ½ uᵀKu − fᵀu subject to those rows solved, and the
-/// linearisation taken again at the answer, until ‖u_{k+1} − u_k‖∞ ≤ geometry_tolerance ‖u_{k+1}‖∞, or the
-/// rows come out the same, or the answer already solves the new rows' program to the interior point's
-/// tolerance (a plane obstacle: one solve). Without rows the stiffness system alone is solved. Row j is passed divided by its support Σ w φ_j (a gap
-/// in length units, its force in force units: the interior point's scales); its multiplier is then
-/// μ_j = λ_j / support_j, the serial solver's. The contact forces are recovered as the serial solver does
-/// (solvers/contact_forces.hpp).
+/// set is linearised at u (ContactSet::linearize: the weak gap rows A u + b ≥ 0 of every pair), the program
+/// min ½ uᵀKu − fᵀu + j(u) subject to those rows solved, and the linearisation taken again at the answer,
+/// until ‖u_{k+1} − u_k‖∞ ≤ geometry_tolerance ‖u_{k+1}‖∞, or the rows come out the same, or (frictionless)
+/// the answer already solves the new rows' program to the interior point's tolerance (a plane obstacle: one
+/// solve). Without rows the stiffness system alone is solved. Row j is passed divided by its support
+/// Σ w φ_j (a gap in length units, its force in force units: the interior point's scales); its multiplier
+/// is then μ_j = λ_j / support_j, the serial solver's. The contact forces are recovered as the serial solver
+/// does (solvers/contact_forces.hpp).
+///
+/// Friction: j is the sum of the serial friction terms of the step's thresholds (solvers/friction_state.hpp:
+/// one point per slave node on order-1 surfaces), handed to the interior point as its nodal friction at the
+/// rows of the same nodes; Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with
+/// CoulombThresholds) around the geometry fixed point, each solve starting from the current displacement.
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
-/// strain, friction. The meshes are whole on every rank; each rank assembles the stiffness rows it owns.
-
+/// strain, elastic pairs, friction on order-2 elements. The meshes are whole on every rank; each rank
+/// assembles the stiffness rows it owns.
 #include "symcontact/app/run.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"
 
@@ -28,7 +33,7 @@ void check_distributed_support(const ProblemSpec& spec);
 
 /// The step solver for run_problem(): the geometry fixed point above with the problem's geometry_tolerance
 /// and max_geometry_iterations ([contact_solver]), each solve with `options`. Collective: every rank runs
-/// the same steps. Logs a line per geometry iteration at the verbose level.
+/// the same steps. Logs a line per geometry iteration (at the default level once a step has run 5 s).
 StepSolver distributed_step_solver(const ProblemSpec& spec, const ContactInteriorPointOptions& options,
                                    const Logger& log);
 

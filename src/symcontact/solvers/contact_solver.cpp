@@ -5,11 +5,6 @@
 
 namespace symcontact {
 
-void tighten_optimiser(IpoptOptions& o) {
-  o.tolerance *= 1e-2;
-  if (auto it = o.numeric_options.find("tol"); it != o.numeric_options.end()) it->second *= 1e-2;
-}
-
 SolveReport solve_contact(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                  const DofMap& dofs, VectorXd& u, const ContactSolveOptions& options,
                                  const Logger& log, const FrictionState* friction) {

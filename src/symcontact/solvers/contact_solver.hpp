@@ -101,8 +101,11 @@ struct ContactSolveOptions {
 /// fixed point of frictional_contact.hpp) tightens it at most this many times, by tighten_optimiser() each.
 constexpr int kMaxTightenings = 2;
 /// IPOPT's tolerance × 1e-2 (also a `tol` given in the problem file's [ipopt] table); the dense interior point of
-/// the dual reads the same tolerance.
-void tighten_optimiser(IpoptOptions& o);
+/// the dual reads the same tolerance. Inline: the distributed program's Coulomb loop uses it without IPOPT.
+inline void tighten_optimiser(IpoptOptions& o) {
+  o.tolerance *= 1e-2;
+  if (auto it = o.numeric_options.find("tol"); it != o.numeric_options.end()) it->second *= 1e-2;
+}
 
 /// On entry u is the starting point (previous load step); on exit the solution. The report's fields of the
 /// Coulomb fixed point and of the load step are left empty. `energy` is the bodies'

@@ -52,12 +52,16 @@ TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheFactorDoesNotFit) 
 
 TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathDoesNotSolve) {
   const testing::TempFolder folder;
+  EXPECT_TRUE(distributed_path_limit(block(folder, "", "")->spec).none());
+  // Coulomb friction on order-1 elements: solved; on order-2 ones (friction points that mix nodes): not.
   const auto c = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "");
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
+  EXPECT_TRUE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0}).iterative);
+  c->spec.order = 2;
   const LinearSolverDecision d = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0});
   EXPECT_FALSE(d.iterative);
   EXPECT_NE(d.reason.find("contact[0].friction"), std::string::npos) << d.reason;
   EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
-  EXPECT_TRUE(distributed_path_limit(block(folder, "", "")->spec).none());
 }
 
 }  // namespace
