@@ -31,13 +31,16 @@ REL = 1e-8
 # planes, V1 in three load steps (the steps after the first reuse the first one's stiffness), and V4, the
 # block pressed and dragged with Coulomb friction in 11 steps. Both paths stop the Coulomb fixed point at
 # coulomb_tolerance from one fixed point, each on its own side: at the default 1e-6 they part by about 1e-7
-# of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10.
+# of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10; and in 3D, a pad
+# pressed and dragged on a plane with Coulomb friction (pad_3d/pad.toml, a path of its own: os.path.join keeps
+# it whole).
 THREE_STEPS = "[steps]\nload_factors = [0.3, 0.6, 1.0]\n"
 CASES = [
     ("hertz_2d/cylinder_on_plane.toml", "", None),
     ("hertz_3d/sphere_on_plane.toml", "", None),
     ("hertz_2d/cylinder_on_plane.toml", THREE_STEPS, None),
     ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", None),
+    (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"), "", None),
 ]
 # What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
 UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_3d/two_spheres.toml", "contact[0].b")]
