@@ -42,6 +42,10 @@ CASES = [
     ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", None),
     (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"), "", None),
 ]
+# What the distributed path cannot solve once it has searched the contact: a failed solve (exit 3) saying why.
+# V4 with the block's left side held vertically: the bottom-left node's normal is along a fixed DOF.
+FAILED_SOLVES = [("friction_block/block.toml", '[[body.dirichlet]]\nboundary = "left"\nuy = 0.0\n',
+                  "has a component along a DOF that a Dirichlet condition fixes")]
 # What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
 UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_3d/two_spheres.toml", "contact[0].b")]
 ITERATIVE = 'linear_solver = "iterative"\n'
@@ -282,6 +286,14 @@ def main():
         for line in c.failures[:20]:
             print("  " + line)
         failed = failed or bool(c.failures) or c.count == 0
+    for name, extra, reason in FAILED_SOLVES:
+        out = os.path.join(work, "failed_solve")
+        r = subprocess.run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run",
+                            case_file(examples, work, name, extra), "-o", out],
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        ok = r.returncode == 3 and reason in r.stdout
+        print(f"{name} with {extra.splitlines()[0]} under mpirun: exit {r.returncode}, {reason in r.stdout}")
+        failed = failed or not ok
     for name, key in UNSUPPORTED:
         out = os.path.join(work, "unsupported")
         r = subprocess.run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", os.path.join(examples, name),

@@ -120,10 +120,14 @@ NodalConstraints scaled_rows(const ContactLinearization& lin, const DofMap& dofs
 /// the row of node k of family f takes the point of node k of the pair whose friction family is f, with its
 /// bound g = w τ, its α, its normal n̄ (P = I − n̄ n̄ᵀ, as the term's) and the slip origin u_start at the node,
 /// so that the interior point's j(u) is the sum of the terms'. Throws SolveError for a point with τ > 0 and no
-/// row: the interior point carries friction on its rows only.
+/// row (the interior point carries friction on its rows only), and for a normal n̄ with a component along a
+/// fixed DOF of its node (the interior point's tangential projector must keep to the free DOFs).
 void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const ContactLinearization& lin,
-                  const ContactSet& contacts, const DofMap& dofs, const VectorXd& u_start, NodalConstraints& c) {
+                  const ContactSet& contacts, const DofMap& dofs, const FixedDofs& fixed, const VectorXd& u_start,
+                  NodalConstraints& c) {
   const Index m = c.size(), dim = dofs.dim();
+  std::vector<char> is_fixed(static_cast<std::size_t>(dofs.num_dofs()), 0);
+  for (const Index d : fixed.dofs) is_fixed[static_cast<std::size_t>(d)] = 1;
   std::map<std::pair<int, Index>, Index> row_of;
   for (Index j = 0; j < m; ++j)
     row_of[{lin.row_family[static_cast<std::size_t>(j)], lin.row_node[static_cast<std::size_t>(j)]}] = j;
@@ -145,9 +149,16 @@ void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const
                            "the nodes within the search distance only");
         continue;
       }
-      c.friction_bound[it->second] = bound[q];
-      c.friction_alpha[it->second] = terms[p]->alphas()[q];
-      c.normal.col(it->second) = points[q].normal.head(dim);
+      const Index j = it->second;
+      c.friction_bound[j] = bound[q];
+      c.friction_alpha[j] = terms[p]->alphas()[q];
+      c.normal.col(j) = points[q].normal.head(dim);
+      for (Index k = 0; k < dim; ++k)
+        if (is_fixed[static_cast<std::size_t>(dim * c.node[j] + k)] && c.normal(k, j) != 0.0)
+          throw SolveError("pair " + contacts.pairs[p].name + ": the normal at surface node " +
+                           std::to_string(points[q].slave_node) + " has a component along a DOF that a Dirichlet "
+                           "condition fixes; the distributed path carries friction only where the normals keep "
+                           "clear of the fixed DOFs (the direct solver does not need this)");
     }
   }
 }
@@ -174,7 +185,7 @@ class DistributedStep {
     terms.assign(model.contacts().pairs.size(), nullptr);
     if (friction) {
       terms = friction_terms(*friction, model.contacts(), model.dofs(), u);
-      add_friction(terms, lin, model.contacts(), model.dofs(), friction->u_start, rows);
+      add_friction(terms, lin, model.contacts(), model.dofs(), fixed, friction->u_start, rows);
     }
     if (lin.A.rows() > 0)
       return solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x, rows, options,
