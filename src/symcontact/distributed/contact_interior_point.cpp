@@ -57,7 +57,7 @@ class InteriorPoint {
   InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
                 const VectorXd& fixed_values, const Eigen::MatrixXd& x, const NodalConstraints& c,
                 const ContactInteriorPointOptions& options, const VectorXd* start);
-  ContactInteriorPointResult run();
+  ContactInteriorPointResult run(const FollowBounds* follow);
 
  private:
   void assemble(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
@@ -457,7 +457,7 @@ double InteriorPoint::line_search(double alpha, const Direction& d, double targe
   return alpha;
 }
 
-ContactInteriorPointResult InteriorPoint::run() {
+ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
   const auto t_start = std::chrono::steady_clock::now();
   s_ = (A_ * gather(u_.object) - c_.lower).cwiseMax(L_);
   lambda_ = VectorXd::Constant(m_, F_);
@@ -466,10 +466,21 @@ ContactInteriorPointResult InteriorPoint::run() {
   for (result_.iterations = 0;; ++result_.iterations) {
     const VectorXd g = gather(u_.object);
     const Eigen::MatrixXd U = nodal(g);
-    const VectorXd rp = residuals(g, U);
+    VectorXd rp = residuals(g, U);
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
-    if ((result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>()))) break;
+    result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
+    // Followed bounds set at u: a point that then passes the stopping test solves the problem of its own bounds.
+    if (follow && std::max({result_.dual_residual, result_.primal_residual, result_.complementarity}) <=
+                      options_.follow_below) {
+      if (std::optional<VectorXd> bound = (*follow)(petsc::gather_to_all(u_.object), lambda_)) {
+        c_.friction_bound = std::move(*bound);
+        rp = residuals(g, U);
+        check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
+        result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
+      }
+    }
+    if (result_.converged) break;
     if (result_.iterations == options_.max_iterations) {
       result_.reason = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
       break;
@@ -509,11 +520,11 @@ ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_sh
                                                         const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                                         const Eigen::MatrixXd& x, const NodalConstraints& constraints,
                                                         const ContactInteriorPointOptions& options,
-                                                        const VectorXd* start) {
+                                                        const VectorXd* start, const FollowBounds* follow) {
   const auto t0 = std::chrono::steady_clock::now();
   InteriorPoint ip(K_share, f, fixed, fixed_values, x, constraints, options, start);
   const double setup = petsc::seconds_since(t0);
-  ContactInteriorPointResult r = ip.run();
+  ContactInteriorPointResult r = ip.run(follow);
   r.setup_seconds += setup;
   r.total_seconds += setup;
   return r;

@@ -40,6 +40,8 @@
 /// and owns the rows of a contiguous range of nodes; s and λ (m values) are kept whole on every rank. The
 /// answer is gathered on every rank.
 
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -71,6 +73,9 @@ struct NodalConstraints {
 
 struct ContactInteriorPointOptions {
   double tolerance = 1e-9;
+  /// The scaled residuals (dual, primal, complementarity of the stopping test) below which FollowBounds is
+  /// called after each step (as DensePrimalOptions::follow_below).
+  double follow_below = 0.1;
   int max_iterations = 80;
   int max_krylov_iterations = 2000;  ///< per Newton system
   NewtonPreconditioner preconditioner = NewtonPreconditioner::kFilteredGamg;
@@ -92,14 +97,24 @@ struct ContactInteriorPointResult {
   double force_scale = 0.0, length_scale = 0.0;  ///< F and L
 };
 
+/// Friction bounds that follow the iterate (Coulomb's g_j = A_j μ p_j, p read from the iterate; as
+/// FollowIterate of solvers/dense_primal_interior_point.hpp): called with u (every DOF) and λ after each
+/// accepted step once the scaled residuals are at most ContactInteriorPointOptions::follow_below, and at a
+/// point that passes the stopping test. Returns the new bounds g (m values) when they changed, nullopt
+/// otherwise; the method stops only where it returned nullopt, so it must do so after finitely many calls.
+/// Collective: every rank returns the same.
+using FollowBounds = std::function<std::optional<VectorXd>(const VectorXd& u, const VectorXd& lambda)>;
+
 /// K_share, f, fixed, fixed_values, x: as solve_elasticity_gamg() takes them. Collective over
 /// PETSC_COMM_WORLD; every rank passes the same f, fixed DOFs, coordinates and constraints. `start`: u to
 /// start from on the free DOFs (every DOF; null: 0), the slacks and multipliers starting as above.
+/// `follow`: friction bounds that follow the iterate (null: fixed; constraints must be frictional).
 ContactInteriorPointResult solve_contact_interior_point(const SparseMatrix& K_share, const VectorXd& f,
                                                         const std::vector<Index>& fixed, const VectorXd& fixed_values,
                                                         const Eigen::MatrixXd& x, const NodalConstraints& constraints,
                                                         const ContactInteriorPointOptions& options = {},
-                                                        const VectorXd* start = nullptr);
+                                                        const VectorXd* start = nullptr,
+                                                        const FollowBounds* follow = nullptr);
 
 /// Coulomb friction of coefficient `mu` at the constrained nodes as a fixed point of Tresca problems (METHOD.md,
 /// "Coulomb as a fixed point"): the first solve frictionless, then each with the bounds g_j = μ λ_j of the

@@ -1,5 +1,6 @@
 #include "symcontact/distributed/distributed_step.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <map>
@@ -8,6 +9,7 @@
 #include <sstream>
 
 #include "symcontact/app/linear_solver_choice.hpp"
+#include "symcontact/contact/surface_tractions.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/progress_clock.hpp"
 #include "symcontact/distributed/gamg_elasticity.hpp"
@@ -163,6 +165,31 @@ void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const
   }
 }
 
+/// The bounds of the thresholds followed at the iterate (u, λ), for FollowBounds: the bodies' force on the
+/// surfaces there, ∇E(u) = Aᵀμ − ∇j(u) (μ = λ / support, zero on fixed DOFs), handed to the follower
+/// (friction_state.hpp); where it moved τ, the Coulomb pairs' terms take the new thresholds (as the serial
+/// GeometrySubproblem's hook) and `rows` their bounds. nullopt where τ did not move.
+std::optional<VectorXd> followed_bounds(const FrictionState& friction, std::vector<std::shared_ptr<FrictionTerm>>& terms,
+                                        const ContactLinearization& lin, const Model& model, const FixedDofs& fixed,
+                                        const VectorXd& u, const VectorXd& lambda, NodalConstraints rows) {
+  const ContactSet& contacts = model.contacts();
+  VectorXd mu(lambda.size());
+  for (Index j = 0; j < mu.size(); ++j) mu[j] = lambda[j] / lin.row_support[static_cast<std::size_t>(j)];
+  VectorXd gradient = VectorXd::Zero(u.size());
+  for (const auto& t : terms)
+    if (t) t->add_gradient(u, gradient);
+  VectorXd force = lin.A.transpose() * mu - gradient;
+  for (const Index d : fixed.dofs) force[d] = 0.0;
+  if (!friction.follower->follow(u, force)) return std::nullopt;
+  for (std::size_t p = 0; p < terms.size(); ++p) {
+    if (!terms[p] || contacts.pairs[p].friction != FrictionLaw::kCoulomb) continue;
+    const ContactSurface& slave = contacts.surfaces[contacts.families()[contacts.friction_family(static_cast<int>(p))].slave];
+    terms[p]->set_thresholds(interpolate_at_points(slave, terms[p]->points(), friction.nodal_tau[p]));
+  }
+  add_friction(terms, lin, contacts, model.dofs(), fixed, friction.u_start, rows);
+  return rows.friction_bound;
+}
+
 bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
   return a.A.rows() == b.A.rows() && a.A.nonZeros() == b.A.nonZeros() && a.b == b.b &&
          (a.A - b.A).norm() == 0.0;
@@ -187,9 +214,16 @@ class DistributedStep {
       terms = friction_terms(*friction, model.contacts(), model.dofs(), u);
       add_friction(terms, lin, model.contacts(), model.dofs(), fixed, friction->u_start, rows);
     }
+    FollowBounds follow;
+    if (friction && friction->follower) {
+      friction->follower->start_solve();
+      follow = [&](const VectorXd& u_now, const VectorXd& lambda) {
+        return followed_bounds(*friction, terms, lin, model, fixed, u_now, lambda, rows);
+      };
+    }
     if (lin.A.rows() > 0)
       return solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x, rows, options,
-                                          friction ? &u : nullptr);
+                                          friction ? &u : nullptr, follow ? &follow : nullptr);
     const GamgResult g = solve_elasticity_gamg(q.K_lower, q.f, fixed.dofs, fixed_values, q.x);
     if (!g.converged)
       throw SolveError("no contact point within any pair's search distance, and the stiffness system alone did not "
@@ -237,6 +271,10 @@ class DistributedStep {
     if (!frictional) return solve_geometry(model, step, u, nullptr, frictional_.contact);
     CoulombThresholds coulomb(model.contacts(), model.dofs(), u, friction.nodal_tau.empty() ? nullptr : &friction,
                               0.0, log_);
+    // The thresholds follow the interior point's iterates (coulomb_update = "inside_optimizer"), settling
+    // below a tenth of the loop's tolerance, as in the serial solver (frictional_contact.cpp).
+    if (frictional_.coulomb_update == CoulombUpdate::kInsideOptimizer)
+      coulomb.follow_iterates(0.1 * frictional_.coulomb_tolerance);
     const VectorXd u_start = u;
     const LaggedSolve solve = [&](const ContactSolveOptions& o) {
       return solve_geometry(model, step, u, &coulomb.state(), o);
@@ -277,6 +315,8 @@ class DistributedStep {
         }
       }
       lin = std::move(next);
+      // A later geometry iteration starts from thresholds at the previous one's fixed point: follow near the end.
+      options.follow_below = r.geometry_iterations > 1 ? std::max(1e-8, 10.0 * options.tolerance) : 0.1;
       solve = solve_rows(q, fixed, fixed_values, lin, model, u, friction, options, terms);
       r.times.add("optimizer", solve.total_seconds);
       r.ipopt_iterations += solve.iterations;

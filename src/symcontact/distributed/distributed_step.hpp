@@ -18,7 +18,8 @@
 /// Friction: j is the sum of the serial friction terms of the step's thresholds (solvers/friction_state.hpp:
 /// one point per slave node on order-1 surfaces), handed to the interior point as its nodal friction at the
 /// rows of the same nodes; Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with
-/// CoulombThresholds) around the geometry fixed point, each solve starting from the current displacement.
+/// CoulombThresholds) around the geometry fixed point, each solve starting from the current displacement,
+/// the thresholds following the interior point's iterates where coulomb_update says so (FollowBounds).
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
 /// strain, elastic pairs, friction on order-2 elements. The meshes are whole on every rank; each rank
