@@ -31,15 +31,19 @@ REL = 1e-8
 # planes, V1 in three load steps (the steps after the first reuse the first one's stiffness), and V4, the
 # block pressed and dragged with Coulomb friction in 11 steps. Both paths stop the Coulomb fixed point at
 # coulomb_tolerance from one fixed point, each on its own side: at the default 1e-6 they part by about 1e-7
-# of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10; and in 3D, a pad
+# of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10; the same block with
+# Tresca friction (TRESCA: no Coulomb loop); and in 3D, a pad
 # pressed and dragged on a plane with Coulomb friction (pad_3d/pad.toml, a path of its own: os.path.join keeps
 # it whole).
 THREE_STEPS = "[steps]\nload_factors = [0.3, 0.6, 1.0]\n"
+# V4's block with Tresca friction (τ = 0.002, below μ p = 0.003: it slides earlier) in place of Coulomb.
+TRESCA = ('friction = "coulomb"\nmu = 0.3\n', 'friction = "tresca"\ntau = 0.002\n')  # (replaced, by)
 CASES = [
     ("hertz_2d/cylinder_on_plane.toml", "", None),
     ("hertz_3d/sphere_on_plane.toml", "", None),
     ("hertz_2d/cylinder_on_plane.toml", THREE_STEPS, None),
     ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", None),
+    ("friction_block/block.toml", TRESCA, None),
     (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"), "", None),
 ]
 # What the distributed path cannot solve once it has searched the contact: a failed solve (exit 3) saying why.
@@ -100,7 +104,8 @@ SKIPPED_SUMMARY_KEYS = {"timings", "wall_time", "ipopt_status", "ipopt_iteration
 
 
 def case_file(examples, work, name, extra):
-    """The example, or a copy of its folder in `work` with `extra` added to its [contact_solver] table."""
+    """The example, or a copy of its folder in `work` with `extra` added to its [contact_solver] table (a table
+    of its own when it starts with "["; a pair (text, replacement): that text replaced)."""
     path = os.path.join(examples, name)
     if not extra:
         return path
@@ -108,7 +113,10 @@ def case_file(examples, work, name, extra):
     shutil.copytree(os.path.dirname(path), folder, dirs_exist_ok=True)
     copy = os.path.join(folder, os.path.basename(name))
     text = open(copy).read()
-    if extra.startswith("["):  # a table of its own
+    if isinstance(extra, tuple):
+        assert extra[0] in text, f"{name} has no {extra[0]!r}"
+        text = text.replace(*extra)
+    elif extra.startswith("["):  # a table of its own
         text += "\n" + extra
     elif "[contact_solver]" in text:
         text = text.replace("[contact_solver]\n", "[contact_solver]\n" + extra, 1)
@@ -235,7 +243,8 @@ def main():
     failed = False
     for k, (name, extra, mesh_size) in enumerate(CASES):
         path = case_file(examples, work, name, extra)
-        tag = name.replace("/", "_").removesuffix(".toml") + ("_steps" if extra == THREE_STEPS else "")
+        case_label = {THREE_STEPS: " in three steps", TRESCA: " with Tresca friction"}.get(extra, "")
+        tag = name.replace("/", "_").removesuffix(".toml") + case_label.replace(" ", "_")
         serial, mpi = os.path.join(work, tag + "_serial"), os.path.join(work, tag + "_mpi")
         size = ["--mesh-size", str(mesh_size)] if mesh_size else []
         run([symcontact, "run", path, "-o", serial, "-q"] + size)
@@ -267,7 +276,7 @@ def main():
             runs.append(("2 ranks, OPENBLAS_CORETYPE=Prescott", baseline))
         for label, folder in runs:
             c = compare(serial, folder)
-            print(f"{name}{' in three steps' if extra == THREE_STEPS else ''}, {label}: {c.count} numbers, {len(c.failures)} beyond {REL:g} of their quantity's scale")
+            print(f"{name}{case_label}, {label}: {c.count} numbers, {len(c.failures)} beyond {REL:g} of their quantity's scale")
             for line in c.failures[:20]:
                 print("  " + line)
             failed = failed or bool(c.failures)
