@@ -53,10 +53,12 @@ FAILED_SOLVES = [("friction_block/block.toml", '[[body.dirichlet]]\nboundary = "
 # What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
 UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_3d/two_spheres.toml", "contact[0].b")]
 ITERATIVE = 'linear_solver = "iterative"\n'
-# (example, dimension, length, force, units): solved on two ranks in m–N–Pa and in the other units, on the same
-# mesh; every number must agree to REL of its quantity's scale once converted.
-UNITS = [("hertz_2d/cylinder_on_plane.toml", 2, 1e3, 1.0, "mm–N–MPa"),
-         ("hertz_3d/sphere_on_plane.toml", 3, 1e3, 1e-3, "mm–kN–GPa")]
+# (example, extra as in CASES, dimension, length, force, units): solved on two ranks in m–N–Pa and in the other
+# units, on the same mesh; every number must agree to REL of its quantity's scale once converted. V4 with
+# lengths × 1e3 and forces × 1e6 (Coulomb, the tolerance of CASES).
+UNITS = [("hertz_2d/cylinder_on_plane.toml", "", 2, 1e3, 1.0, "mm–N–MPa"),
+         ("hertz_3d/sphere_on_plane.toml", "", 3, 1e3, 1e-3, "mm–kN–GPa"),
+         ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", 2, 1e3, 1e6, "lengths × 1e3, forces × 1e6")]
 
 
 def compare(serial, other, units=None):
@@ -280,11 +282,11 @@ def main():
             for line in c.failures[:20]:
                 print("  " + line)
             failed = failed or bool(c.failures)
-    for name, dimension, length, force, label in UNITS:  # two ranks in other units (rescale_problem.hpp)
+    for name, extra, dimension, length, force, label in UNITS:  # two ranks in other units (rescale_problem.hpp)
         folders = []
         for change in (UnitChange(), UnitChange(length, force, dimension)):
             tag = f"{name.replace('/', '_').removesuffix('.toml')}_units_{change.length:g}_{change.force:g}"
-            problem = subprocess.run([rescale, os.path.join(examples, name), os.path.join(work, tag),
+            problem = subprocess.run([rescale, case_file(examples, work, name, extra), os.path.join(work, tag),
                                       "--length", str(change.length), "--force", str(change.force)],
                                      stdout=subprocess.PIPE, text=True, check=True).stdout.strip()
             folders.append(os.path.join(work, tag + "_out"))
