@@ -168,10 +168,10 @@ void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const
 /// The bounds of the thresholds followed at the iterate (u, λ), for FollowBounds: the bodies' force on the
 /// surfaces there, ∇E(u) = Aᵀμ − ∇j(u) (μ = λ / support, zero on fixed DOFs), handed to the follower
 /// (friction_state.hpp); where it moved τ, the Coulomb pairs' terms take the new thresholds (as the serial
-/// GeometrySubproblem's hook) and `rows` their bounds. nullopt where τ did not move.
+/// GeometrySubproblem's hook) and the rows `rows` their bounds. nullopt where τ did not move.
 std::optional<VectorXd> followed_bounds(const FrictionState& friction, std::vector<std::shared_ptr<FrictionTerm>>& terms,
                                         const ContactLinearization& lin, const Model& model, const FixedDofs& fixed,
-                                        const VectorXd& u, const VectorXd& lambda, NodalConstraints rows) {
+                                        const VectorXd& u, const VectorXd& lambda, const NodalConstraints& rows) {
   const ContactSet& contacts = model.contacts();
   VectorXd mu(lambda.size());
   for (Index j = 0; j < mu.size(); ++j) mu[j] = lambda[j] / lin.row_support[static_cast<std::size_t>(j)];
@@ -186,8 +186,11 @@ std::optional<VectorXd> followed_bounds(const FrictionState& friction, std::vect
     const ContactSurface& slave = contacts.surfaces[contacts.families()[contacts.friction_family(static_cast<int>(p))].slave];
     terms[p]->set_thresholds(interpolate_at_points(slave, terms[p]->points(), friction.nodal_tau[p]));
   }
-  add_friction(terms, lin, contacts, model.dofs(), fixed, friction.u_start, rows);
-  return rows.friction_bound;
+  NodalConstraints nodes;  // the rows' nodes and normals only: add_friction() reads no more
+  nodes.node = rows.node;
+  nodes.normal = rows.normal;
+  add_friction(terms, lin, contacts, model.dofs(), fixed, friction.u_start, nodes);
+  return nodes.friction_bound;
 }
 
 bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
