@@ -74,10 +74,10 @@ TEST(ContactInteriorPoint, FindsTheExactSolutionOfTheContactProblemIn2DAnd3D) {
     const double u_error = (r.u - a.u).lpNorm<Eigen::Infinity>() / a.u.lpNorm<Eigen::Infinity>();
     const double lambda_error = (r.lambda - a.lambda).lpNorm<Eigen::Infinity>() / a.lambda.maxCoeff();
     if (g_petsc->rank() == 0)
-      std::printf("dim %d, %lld DOFs, %lld of %lld nodes in contact: %d iterations, Krylov %d–%d, against the "
-                  "active set's solution: u %.1e, λ %.1e\n",
+      std::printf("dim %d, %lld DOFs, %lld of %lld nodes in contact: %d iterations (%d polish), Krylov %d–%d, "
+                  "against the active set's solution: u %.1e, λ %.1e\n",
                   dim, static_cast<long long>(r.u.size()), static_cast<long long>(active),
-                  static_cast<long long>(whole.contact.size()), r.iterations,
+                  static_cast<long long>(whole.contact.size()), r.iterations, r.polishes,
                   *std::min_element(r.krylov_iterations.begin(), r.krylov_iterations.end()),
                   *std::max_element(r.krylov_iterations.begin(), r.krylov_iterations.end()), u_error, lambda_error);
     EXPECT_GE(active, 3);
@@ -90,6 +90,14 @@ TEST(ContactInteriorPoint, FindsTheExactSolutionOfTheContactProblemIn2DAnd3D) {
     }
     EXPECT_LE(u_error, 1e-7);
     EXPECT_LE(lambda_error, 1e-6);
+    // Where the polish on the active set ended the solve (on one rank in 2D: the interior point tells the rows
+    // apart before its own test passes), the answer is the active set's exact solution to a hundredth of the
+    // tolerance.
+    if (dim == 2 && g_petsc->size() == 1) EXPECT_EQ(r.polishes, 1);
+    if (r.polishes > 0) {
+      EXPECT_LE(u_error, 1e-9);
+      EXPECT_LE(lambda_error, 1e-9);
+    }
     for (std::size_t k = 0; k < whole.block.fixed.size(); ++k)
       EXPECT_EQ(r.u[whole.block.fixed[k]], whole.block.fixed_values[static_cast<Index>(k)]) << "exactly";
   }

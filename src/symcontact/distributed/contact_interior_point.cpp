@@ -52,6 +52,12 @@ Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixX
   return c.friction_bound[j] / r * (P - s * s.transpose() / r2);
 }
 
+/// The complementarity (max_j min(s_j / L, λ_j / F), over the tolerance) below which the polish is first tried.
+constexpr double kPolishBelow = 1e3;
+/// The polish during the iterations closes the active rows and balances the forces to this fraction of the
+/// tolerance (as the header says); the rescue before giving up, to the tolerance.
+constexpr double kEarlyAccuracy = 0.01;
+
 class InteriorPoint {
  public:
   InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
@@ -77,8 +83,14 @@ class InteriorPoint {
   double line_search(double alpha, const Direction& d, double target, const VectorXd& rp, const Eigen::MatrixXd& U);
   SparseMatrix newton_pattern(const SparseMatrix& K_share) const;
   void zero_fixed_rows(Vec v);
-  void update_newton_matrix(const Eigen::MatrixXd& U);
+  void update_newton_matrix(const Eigen::MatrixXd& U, const VectorXd& sigma);
+  bool solve_newton(double eta, double atol);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
+  bool polished(double accuracy);
+  void keep_for_rescue();
+  bool rescued();
+  bool polish(double accuracy);
+  bool polish_on(std::vector<char>& in_set, VectorXd& nu, double tol);
   double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
@@ -100,7 +112,10 @@ class InteriorPoint {
   std::unique_ptr<SubspaceCorrection> correction_;
   Owned<KSP, KSPDestroy> ksp_;
   VectorXd s_, lambda_;
-  double F_ = 0.0, L_ = 0.0;
+  /// The last iterate that met the dual and primal tests (frictionless only), polished before giving up.
+  Owned<Vec, VecDestroy> rescue_u_;
+  VectorXd rescue_s_, rescue_lambda_;
+  double F_ = 0.0, L_ = 0.0, max_diagonal_ = 0.0;
   ContactInteriorPointResult result_;
 };
 
@@ -162,6 +177,7 @@ void InteriorPoint::set_scales(const VectorXd& fixed_values, double max_diagonal
   check(VecCopy(b_.object, rd_.object), "VecCopy");
   zero_fixed_rows(rd_.object);
   check(VecNorm(rd_.object, NORM_INFINITY, &F_), "VecNorm");
+  max_diagonal_ = max_diagonal;
   L_ = std::max(fixed_values.size() ? fixed_values.cwiseAbs().maxCoeff() : 0.0, c_.lower.cwiseAbs().maxCoeff());
   if (F_ == 0.0 && L_ == 0.0)
     throw std::invalid_argument("solve_contact_interior_point: no load, no fixed value and no gap: u = 0");
@@ -305,12 +321,11 @@ void InteriorPoint::zero_fixed_rows(Vec v) {
   check(VecRestoreArray(v, &a), "VecRestoreArray");
 }
 
-/// N = K + ∇²j(u) + Aᵀ Σ A, Σ = diag(λ_j / s_j) (j's block on node p_j's diagonal block); U the nodes'
-/// displacements.
-void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& U) {
+/// N = K + ∇²j(u) + Aᵀ Σ A (j's block on node p_j's diagonal block); U the nodes' displacements, sigma Σ's
+/// diagonal (λ_j / s_j in the interior point).
+void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& U, const VectorXd& sigma) {
   check(MatCopy(K_.object, N_.object, SAME_NONZERO_PATTERN), "MatCopy");
-  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> B =
-      A_.transpose() * lambda_.cwiseQuotient(s_).asDiagonal() * A_;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> B = A_.transpose() * sigma.asDiagonal() * A_;
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> values;
   for (Index r = 0; r < B.outerSize(); ++r) {
@@ -348,9 +363,23 @@ bool InteriorPoint::solve_direction(const VectorXd& rc, const VectorXd& rp, doub
   check(VecCopy(rd_.object, rhs_.object), "VecCopy");
   check(VecScale(rhs_.object, -1.0), "VecScale");
   add_transpose(-(rc.cwiseQuotient(s_) + sigma.cwiseProduct(rp)), rhs_.object);
+  if (!solve_newton(eta, 0.1 * options_.tolerance * F_)) return false;
+  zero_fixed_rows(du_.object);
+  d.ds = A_ * gather(du_.object) + rp;
+  d.dl = -(rc + lambda_.cwiseProduct(d.ds)).cwiseQuotient(s_);
+  return true;
+}
+
+/// N Δu = rhs_ by conjugate gradients into du_, to ‖residual‖₂ ≤ max(η ‖rhs‖₂, atol); false (reason set) when
+/// the solve broke down.
+bool InteriorPoint::solve_newton(double eta, double atol) {
   PetscReal rhs_norm = 0.0;
   check(VecNorm(rhs_.object, NORM_2, &rhs_norm), "VecNorm");
-  const double atol = 0.1 * options_.tolerance * F_;
+  if (rhs_norm <= atol) {  // Δu = 0 meets the test (and PETSc takes no relative tolerance of 1)
+    check(VecSet(du_.object, 0.0), "VecSet");
+    result_.krylov_iterations.push_back(0);
+    return true;
+  }
   check(KSPSetTolerances(ksp_.object, std::max(eta, atol / std::max(rhs_norm, atol)), atol, PETSC_DEFAULT,
                          options_.max_krylov_iterations),
         "KSPSetTolerances");
@@ -383,10 +412,121 @@ bool InteriorPoint::solve_direction(const VectorXd& rc, const VectorXd& rp, doub
     result_.reason = std::string("conjugate gradients: ") + KSPConvergedReasons[reason];
     return false;
   }
-  zero_fixed_rows(du_.object);
-  d.ds = A_ * gather(du_.object) + rp;
-  d.dl = -(rc + lambda_.cwiseProduct(d.ds)).cwiseQuotient(s_);
   return true;
+}
+
+/// Without friction: the polish to `accuracy` × the tolerance, and whether its point passes the stopping test
+/// (the residuals and the figures of the result at it). False with friction, or where it was not accepted
+/// (nothing changed).
+bool InteriorPoint::polished(double accuracy) {
+  if (c_.frictional() || !polish(accuracy)) return false;
+  const VectorXd g = gather(u_.object);
+  const VectorXd rp = residuals(g, Eigen::MatrixXd());
+  PetscReal rd = 0.0;
+  check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
+  ++result_.polishes;
+  return converged(rd, rp.lpNorm<Eigen::Infinity>());
+}
+
+void InteriorPoint::keep_for_rescue() {
+  if (!rescue_u_.object) check(VecDuplicate(u_.object, &rescue_u_.object), "VecDuplicate");
+  check(VecCopy(u_.object, rescue_u_.object), "VecCopy");
+  rescue_s_ = s_;
+  rescue_lambda_ = lambda_;
+}
+
+/// Before giving up: the polish, to the tolerance, from the iterate keep_for_rescue() kept (none: false). The
+/// interior point's last iterate and reason stay where it is not accepted.
+bool InteriorPoint::rescued() {
+  if (!rescue_u_.object) return false;
+  Owned<Vec, VecDestroy> last_u;
+  check(VecDuplicate(u_.object, &last_u.object), "VecDuplicate");
+  check(VecCopy(u_.object, last_u.object), "VecCopy");
+  const VectorXd last_s = s_, last_lambda = lambda_;
+  check(VecCopy(rescue_u_.object, u_.object), "VecCopy");
+  s_ = rescue_s_;
+  lambda_ = rescue_lambda_;
+  if (polished(1.0)) return true;
+  check(VecCopy(last_u.object, u_.object), "VecCopy");
+  s_ = last_s;
+  lambda_ = last_lambda;
+  return false;
+}
+
+/// The active-set polish (see the header): S = {j : λ_j / F ≥ s_j / L}, then rounds that drop the rows of S
+/// whose multiplier comes out negative and add the rows outside S that the answer violates (the primal-dual
+/// active set update: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003; as solvers/active_set_polish.cpp).
+/// Accepted, with s = c(u)⁺ and λ = ν⁺ on S, 0 elsewhere, at a set that needs no change: a KKT point of the
+/// program to `accuracy` × the interior point's tolerance. Otherwise u, s and λ are left as they were.
+bool InteriorPoint::polish(double accuracy) {
+  constexpr int kRounds = 5;
+  const double tol = accuracy * options_.tolerance;
+  std::vector<char> in_set(static_cast<std::size_t>(m_));
+  for (Index j = 0; j < m_; ++j) in_set[static_cast<std::size_t>(j)] = lambda_[j] / F_ >= s_[j] / L_;
+  Owned<Vec, VecDestroy> u0;
+  check(VecDuplicate(u_.object, &u0.object), "VecDuplicate");
+  check(VecCopy(u_.object, u0.object), "VecCopy");
+  const VectorXd lambda0 = lambda_;
+  const std::string reason = result_.reason;
+  VectorXd nu = lambda_;
+  for (int round = 0; round < kRounds; ++round) {
+    if (!polish_on(in_set, nu, tol)) break;
+    const VectorXd c = A_ * gather(u_.object) - c_.lower;
+    bool changed = false;
+    for (Index j = 0; j < m_; ++j) {
+      char& in = in_set[static_cast<std::size_t>(j)];
+      if ((in && nu[j] < -0.1 * tol * F_) || (!in && c[j] < -0.1 * tol * L_)) {
+        in = !in;
+        nu[j] = 0.0;
+        changed = true;
+      }
+    }
+    if (changed) continue;
+    s_ = c.cwiseMax(0.0);
+    for (Index j = 0; j < m_; ++j) lambda_[j] = in_set[static_cast<std::size_t>(j)] ? std::max(nu[j], 0.0) : 0.0;
+    return true;
+  }
+  check(VecCopy(u0.object, u_.object), "VecCopy");
+  lambda_ = lambda0;
+  result_.reason = reason;
+  return false;
+}
+
+/// min ½ uᵀKu − bᵀu subject to c_j(u) = 0 for j in S, from u and the multipliers ν of S, by the method of
+/// multipliers (Hestenes 1969; Nocedal & Wright §17.3), which converges whatever the rank of A_S:
+///     (K + ρ A_Sᵀ A_S) Δu = −(K u − b − A_Sᵀ ν) − ρ A_Sᵀ c_S(u),   u ← u + Δu,   ν_S ← ν_S − ρ c_S(u),
+/// ρ = 10³ × K's largest diagonal entry (the rows are lengths of unit entries: ρ A_SᵀA_S is 10³ times as stiff
+/// as the stiffest DOF). True when ‖c_S‖∞ ≤ tol L and ‖K u − b − A_Sᵀ ν‖∞ ≤ tol F (the interior point's
+/// tests); false after kIterations steps, when ‖c_S‖∞ stops halving at each step (rows that cannot all close:
+/// the nearly dependent families of a curved symmetric pair), or when the Krylov solve broke down.
+/// Frictionless only.
+bool InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, double tol) {
+  constexpr int kIterations = 12;
+  const double rho = 1e3 * max_diagonal_;
+  VectorXd mask(m_);
+  for (Index j = 0; j < m_; ++j) mask[j] = in_set[static_cast<std::size_t>(j)] ? 1.0 : 0.0;
+  update_newton_matrix(Eigen::MatrixXd(), rho * mask);
+  double last_closing = 0.0;
+  for (int k = 0;; ++k) {
+    const VectorXd g = gather(u_.object);
+    lambda_ = nu.cwiseProduct(mask);
+    const VectorXd c_S = (A_ * g - c_.lower).cwiseProduct(mask);
+    residuals(g, Eigen::MatrixXd());
+    PetscReal rd = 0.0;
+    check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
+    const double closing = c_S.lpNorm<Eigen::Infinity>();
+    if (closing <= tol * L_ && rd <= tol * F_) return true;
+    if (k >= 2 && closing > 0.5 * last_closing) return false;  // rows that cannot all close (nearly dependent)
+    last_closing = closing;
+    if (k == kIterations) return false;
+    check(VecCopy(rd_.object, rhs_.object), "VecCopy");
+    check(VecScale(rhs_.object, -1.0), "VecScale");
+    add_transpose(-rho * c_S, rhs_.object);
+    if (!solve_newton(0.0, 0.1 * tol * F_)) return false;
+    zero_fixed_rows(du_.object);
+    check(VecAXPY(u_.object, 1.0, du_.object), "VecAXPY");
+    nu -= rho * (A_ * gather(u_.object) - c_.lower).cwiseProduct(mask);
+  }
 }
 
 /// ‖rhs − N Δu‖₂ of the Krylov solve's last iterate.
@@ -462,6 +602,7 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
   s_ = (A_ * gather(u_.object) - c_.lower).cwiseMax(L_);
   lambda_ = VectorXd::Constant(m_, F_);
   const double mu0 = s_.dot(lambda_) / static_cast<double>(m_);
+  double polish_below = kPolishBelow * options_.tolerance;
   Direction d;
   for (result_.iterations = 0;; ++result_.iterations) {
     const VectorXd g = gather(u_.object);
@@ -480,18 +621,32 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
         result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
       }
     }
+    // Without friction, the exact answer on the active rows once the interior point tells them apart, tried
+    // again each time the complementarity has fallen a hundredfold (to a hundredth of the tolerance: as
+    // accurate as the interior point's own end, whose last step overshoots its test); and, from the last
+    // iterate that met the dual and primal tests, to the tolerance itself before giving up.
+    const bool feasible = result_.dual_residual <= options_.tolerance && result_.primal_residual <= options_.tolerance;
+    if (feasible && !c_.frictional()) keep_for_rescue();
+    if (!result_.converged && feasible && result_.complementarity <= polish_below) {
+      polish_below = 0.01 * result_.complementarity;
+      result_.converged = polished(kEarlyAccuracy);
+    }
     if (result_.converged) break;
     if (result_.iterations == options_.max_iterations) {
       result_.reason = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
+      result_.converged = rescued();
       break;
     }
     const auto t_setup = std::chrono::steady_clock::now();
-    update_newton_matrix(U);
+    update_newton_matrix(U, lambda_.cwiseQuotient(s_));
     result_.setup_seconds += petsc::seconds_since(t_setup);
     const double mu = s_.dot(lambda_) / static_cast<double>(m_);
     const double eta = std::min(0.01, mu / mu0);
     // Predictor (affine scaling), then Mehrotra's centring and second-order correction.
-    if (!solve_direction(s_.cwiseProduct(lambda_), rp, eta, d)) break;
+    if (!solve_direction(s_.cwiseProduct(lambda_), rp, eta, d)) {
+      result_.converged = rescued();
+      break;
+    }
     const double alpha_affine = largest_step(d);
     const double mu_affine =
         (s_ + alpha_affine * d.ds).dot(lambda_ + alpha_affine * d.dl) / static_cast<double>(m_);
@@ -502,12 +657,16 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
     if (c_.frictional())
       target = std::max(target, 0.1 * std::min(mu, L_ * F_ * std::max(rd / F_, rp.lpNorm<Eigen::Infinity>() / L_)));
     const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
-    if (!solve_direction(rc, rp, eta, d)) break;
+    if (!solve_direction(rc, rp, eta, d)) {
+      result_.converged = rescued();
+      break;
+    }
     const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, U);
     check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
     s_ += alpha * d.ds;
     lambda_ += alpha * d.dl;
   }
+  if (result_.converged) result_.reason.clear();
   result_.u = petsc::gather_to_all(u_.object);
   result_.lambda = lambda_;
   result_.total_seconds = petsc::seconds_since(t_start);

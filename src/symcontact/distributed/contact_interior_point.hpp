@@ -36,6 +36,16 @@
 /// solves stop at ‖residual‖₂ ≤ max(η ‖rhs‖₂, 0.1 tol F), η = min(0.01, μ/μ₀): loose while far from the
 /// solution, down to the stopping test at the end.
 ///
+/// Without friction the answer is polished on its active set once the interior point has told the rows apart
+/// (dual and primal residuals within tol, min(s_j/L, λ_j/F) ≤ 10³ tol; again each time that has fallen a
+/// hundredfold, and when the Krylov solve breaks down or the iterations run out): the program with the rows
+/// S = {j : λ_j/F ≥ s_j/L} held as equalities, solved by the method of multipliers with the same conjugate
+/// gradients, rows added or dropped until the multipliers of S are ≥ 0 and no other row is violated (all to
+/// the tolerance above). Its point is then a KKT point of the program and ends the solve. At a row at the edge
+/// of the zone, degenerate (s_j/L ≈ λ_j/F ≈ 0), the interior point alone would need a barrier parameter near
+/// 10⁻²⁰ F L to pass the per-row test, with Σ spanning 10⁻²² … 10¹⁵ and conjugate gradients breaking down
+/// in round-off (two elastic bodies: examples/hertz_2d/two_cylinders).
+///
 /// Distribution: as solve_elasticity_gamg() — each rank passes its share of K (the shares summing to K)
 /// and owns the rows of a contiguous range of nodes; s and λ (m values) are kept whole on every rank. The
 /// answer is gathered on every rank.
@@ -87,6 +97,7 @@ struct ContactInteriorPointResult {
   bool converged = false;
   std::string reason;                  ///< why it stopped when it did not converge
   int iterations = 0;                  ///< interior-point iterations (two Newton solves each)
+  int polishes = 0;                    ///< accepted active-set polishes (0 or 1: the last one ends the solve)
   std::vector<int> krylov_iterations;  ///< conjugate-gradient iterations of every Newton solve, in order
   double setup_seconds = 0.0;          ///< Newton matrices and preconditioners
   double krylov_seconds = 0.0;         ///< conjugate gradients
