@@ -94,6 +94,7 @@ class InteriorPoint {
   double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
+  bool step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& U, Direction& d);
 
   ContactInteriorPointOptions options_;
   NodalConstraints c_;
@@ -597,6 +598,33 @@ double InteriorPoint::line_search(double alpha, const Direction& d, double targe
   return alpha;
 }
 
+/// One interior-point step from the current iterate (rp, rd: its primal residual and ‖r_d‖∞; U: the nodes'
+/// u): Newton matrix, predictor, Mehrotra's corrector, step length; false when a Krylov solve broke down.
+bool InteriorPoint::step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& U, Direction& d) {
+  const auto t_setup = std::chrono::steady_clock::now();
+  update_newton_matrix(U, lambda_.cwiseQuotient(s_));
+  result_.setup_seconds += petsc::seconds_since(t_setup);
+  const double mu = s_.dot(lambda_) / static_cast<double>(m_);
+  const double eta = std::min(0.01, mu / mu0);
+  // Predictor (affine scaling), then Mehrotra's centring and second-order correction.
+  if (!solve_direction(s_.cwiseProduct(lambda_), rp, eta, d)) return false;
+  const double alpha_affine = largest_step(d);
+  const double mu_affine = (s_ + alpha_affine * d.ds).dot(lambda_ + alpha_affine * d.dl) / static_cast<double>(m_);
+  // Mehrotra's σμ; with friction (f not quadratic) not below a tenth of μ while the stationarity and
+  // feasibility are behind it (as solvers/dense_primal_interior_point.cpp): complementarity run ahead of
+  // them drives s_j to 1e-20 L on active rows, and Σ = λ/s past what the Newton systems can resolve.
+  double target = std::pow(mu_affine / mu, 3) * mu;
+  if (c_.frictional())
+    target = std::max(target, 0.1 * std::min(mu, L_ * F_ * std::max(rd / F_, rp.lpNorm<Eigen::Infinity>() / L_)));
+  const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
+  if (!solve_direction(rc, rp, eta, d)) return false;
+  const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, U);
+  check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
+  s_ += alpha * d.ds;
+  lambda_ += alpha * d.dl;
+  return true;
+}
+
 ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
   const auto t_start = std::chrono::steady_clock::now();
   s_ = (A_ * gather(u_.object) - c_.lower).cwiseMax(L_);
@@ -637,34 +665,10 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
       result_.converged = rescued();
       break;
     }
-    const auto t_setup = std::chrono::steady_clock::now();
-    update_newton_matrix(U, lambda_.cwiseQuotient(s_));
-    result_.setup_seconds += petsc::seconds_since(t_setup);
-    const double mu = s_.dot(lambda_) / static_cast<double>(m_);
-    const double eta = std::min(0.01, mu / mu0);
-    // Predictor (affine scaling), then Mehrotra's centring and second-order correction.
-    if (!solve_direction(s_.cwiseProduct(lambda_), rp, eta, d)) {
+    if (!step(rp, rd, mu0, U, d)) {
       result_.converged = rescued();
       break;
     }
-    const double alpha_affine = largest_step(d);
-    const double mu_affine =
-        (s_ + alpha_affine * d.ds).dot(lambda_ + alpha_affine * d.dl) / static_cast<double>(m_);
-    // Mehrotra's σμ; with friction (f not quadratic) not below a tenth of μ while the stationarity and
-    // feasibility are behind it (as solvers/dense_primal_interior_point.cpp): complementarity run ahead of
-    // them drives s_j to 1e-20 L on active rows, and Σ = λ/s past what the Newton systems can resolve.
-    double target = std::pow(mu_affine / mu, 3) * mu;
-    if (c_.frictional())
-      target = std::max(target, 0.1 * std::min(mu, L_ * F_ * std::max(rd / F_, rp.lpNorm<Eigen::Infinity>() / L_)));
-    const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
-    if (!solve_direction(rc, rp, eta, d)) {
-      result_.converged = rescued();
-      break;
-    }
-    const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, U);
-    check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
-    s_ += alpha * d.ds;
-    lambda_ += alpha * d.dl;
   }
   if (result_.converged) result_.reason.clear();
   result_.u = petsc::gather_to_all(u_.object);
