@@ -173,7 +173,8 @@ void InteriorPoint::assemble(const SparseMatrix& K_share, const VectorXd& f, con
   set_scales(fixed_values, max_diagonal);
 }
 
-/// F = ‖b‖_∞ over the free rows, L = max(‖ū‖_∞, max |l_j|); either from the other when it is 0.
+/// F = ‖b‖_∞ over the free rows (L × K's largest diagonal entry when it is 0), L = max(‖ū‖_∞, max |l_j|,
+/// F / K's largest diagonal entry).
 void InteriorPoint::set_scales(const VectorXd& fixed_values, double max_diagonal) {
   check(VecCopy(b_.object, rd_.object), "VecCopy");
   zero_fixed_rows(rd_.object);
@@ -183,7 +184,9 @@ void InteriorPoint::set_scales(const VectorXd& fixed_values, double max_diagonal
   if (F_ == 0.0 && L_ == 0.0)
     throw std::invalid_argument("solve_contact_interior_point: no load, no fixed value and no gap: u = 0");
   if (F_ == 0.0) F_ = L_ * max_diagonal;
-  if (L_ == 0.0) L_ = F_ / max_diagonal;
+  // Not below the displacement the largest load makes at the stiffest DOF: gaps of faces that coincide up
+  // to round-off (1e-16) are no length scale.
+  L_ = std::max(L_, F_ / max_diagonal);
   result_.force_scale = F_;
   result_.length_scale = L_;
 }

@@ -28,8 +28,9 @@
 /// §19.4); without friction the problem is a quadratic program and the full step is taken.
 ///
 /// Scales (every test relative to the problem's own): F = ‖b‖_∞, b the load after the fixed values moved into
-/// it, a nodal force; L = max(‖ū‖_∞, max |l_j|), a length; where one of them is 0 the other over the largest
-/// diagonal entry of K gives it. Start: u = ū on the fixed DOFs, `start` (or 0) elsewhere, s = max(c(u), L),
+/// it, a nodal force (where it is 0: L times the largest diagonal entry k of K); L = max(‖ū‖_∞, max |l_j|,
+/// F / k), a length — not below the displacement the largest load makes at the stiffest DOF, so that gaps
+/// of faces that coincide up to round-off do not set it. Start: u = ū on the fixed DOFs, `start` (or 0) elsewhere, s = max(c(u), L),
 /// λ = F. Stop when ‖r_d‖_∞ ≤ tol F on the free DOFs, ‖r_p‖_∞ ≤ tol L and min(s_j / L, λ_j / F) ≤ tol for
 /// every j: each constraint is either active (s_j ≈ 0) or carries no force (λ_j ≈ 0) to tol — a test on the
 /// answer, where the mean sᵀλ/m would let a node near the edge of the contact zone keep a force μ/s_j. The Krylov
