@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -54,9 +55,18 @@ Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixX
 
 /// The complementarity (max_j min(s_j / L, λ_j / F), over the tolerance) below which the polish is first tried.
 constexpr double kPolishBelow = 1e3;
-/// The polish during the iterations closes the active rows and balances the forces to this fraction of the
-/// tolerance (as the header says); the rescue before giving up, to the tolerance.
-constexpr double kEarlyAccuracy = 0.01;
+/// What a polish must reach, as fractions of the tolerance: the forces balanced to `forces` tol F, the active
+/// rows closed to `gaps` tol L.
+struct PolishAccuracy {
+  double forces, gaps;
+};
+/// The polish during the iterations and at their end (as the header says): the contact forces are recovered
+/// from K u − f, which multiplies an error in u by K (on V1 its largest entry is 3·10³ F/L), hence the gaps'
+/// 10⁻⁴: V1's pressures then agree with the serial solver's to 1e-8 of their scale (at 10⁻², to 3e-8 at the
+/// edge of the zone). The method of multipliers gains about two digits a step: a step or two more.
+constexpr PolishAccuracy kEarly{1e-2, 1e-4};
+/// The rescue before giving up: the interior point's own test.
+constexpr PolishAccuracy kRescue{1.0, 1.0};
 
 class InteriorPoint {
  public:
@@ -86,11 +96,11 @@ class InteriorPoint {
   void update_newton_matrix(const Eigen::MatrixXd& U, const VectorXd& sigma);
   bool solve_newton(double eta, double atol);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
-  bool polished(double accuracy);
+  bool polished(const PolishAccuracy& accuracy);
   void keep_for_rescue();
   bool rescued();
-  bool polish(double accuracy);
-  bool polish_on(std::vector<char>& in_set, VectorXd& nu, double tol);
+  bool polish(const PolishAccuracy& accuracy);
+  bool polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy);
   double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
@@ -117,6 +127,7 @@ class InteriorPoint {
   Owned<Vec, VecDestroy> rescue_u_;
   VectorXd rescue_s_, rescue_lambda_;
   double F_ = 0.0, L_ = 0.0, max_diagonal_ = 0.0;
+  double coordinate_scale_ = 0.0;  ///< max |x|
   ContactInteriorPointResult result_;
 };
 
@@ -144,6 +155,7 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
                                     std::to_string(c.node[j]) + " moves its fixed DOF " + std::to_string(k));
   for (const Index i : fixed)
     if (mine_.owns(i)) fixed_owned_.push_back(static_cast<PetscInt>(i));
+  coordinate_scale_ = x.size() ? x.cwiseAbs().maxCoeff() : 0.0;
   build_rows(fixed, fixed_values, n);
   assemble(K_share, f, fixed, fixed_values, x);
   if (start) {  // u = the start on the free DOFs, ū on the fixed ones
@@ -419,10 +431,10 @@ bool InteriorPoint::solve_newton(double eta, double atol) {
   return true;
 }
 
-/// Without friction: the polish to `accuracy` × the tolerance, and whether its point passes the stopping test
+/// Without friction: the polish to `accuracy`, and whether its point passes the stopping test
 /// (the residuals and the figures of the result at it). False with friction, or where it was not accepted
 /// (nothing changed).
-bool InteriorPoint::polished(double accuracy) {
+bool InteriorPoint::polished(const PolishAccuracy& accuracy) {
   if (c_.frictional() || !polish(accuracy)) return false;
   const VectorXd g = gather(u_.object);
   const VectorXd rp = residuals(g, Eigen::MatrixXd());
@@ -450,7 +462,7 @@ bool InteriorPoint::rescued() {
   check(VecCopy(rescue_u_.object, u_.object), "VecCopy");
   s_ = rescue_s_;
   lambda_ = rescue_lambda_;
-  if (polished(1.0)) return true;
+  if (polished(kRescue)) return true;
   check(VecCopy(last_u.object, u_.object), "VecCopy");
   s_ = last_s;
   lambda_ = last_lambda;
@@ -461,10 +473,10 @@ bool InteriorPoint::rescued() {
 /// whose multiplier comes out negative and add the rows outside S that the answer violates (the primal-dual
 /// active set update: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003; as solvers/active_set_polish.cpp).
 /// Accepted, with s = c(u)⁺ and λ = ν⁺ on S, 0 elsewhere, at a set that needs no change: a KKT point of the
-/// program to `accuracy` × the interior point's tolerance. Otherwise u, s and λ are left as they were.
-bool InteriorPoint::polish(double accuracy) {
+/// program to `accuracy`. Otherwise u, s and λ are left as they were.
+bool InteriorPoint::polish(const PolishAccuracy& accuracy) {
   constexpr int kRounds = 5;
-  const double tol = accuracy * options_.tolerance;
+  const double tol = accuracy.forces * options_.tolerance;
   std::vector<char> in_set(static_cast<std::size_t>(m_));
   for (Index j = 0; j < m_; ++j) in_set[static_cast<std::size_t>(j)] = lambda_[j] / F_ >= s_[j] / L_;
   Owned<Vec, VecDestroy> u0;
@@ -474,7 +486,7 @@ bool InteriorPoint::polish(double accuracy) {
   const std::string reason = result_.reason;
   VectorXd nu = lambda_;
   for (int round = 0; round < kRounds; ++round) {
-    if (!polish_on(in_set, nu, tol)) break;
+    if (!polish_on(in_set, nu, accuracy)) break;
     const VectorXd c = A_ * gather(u_.object) - c_.lower;
     bool changed = false;
     for (Index j = 0; j < m_; ++j) {
@@ -499,14 +511,18 @@ bool InteriorPoint::polish(double accuracy) {
 /// min ½ uᵀKu − bᵀu subject to c_j(u) = 0 for j in S, from u and the multipliers ν of S, by the method of
 /// multipliers (Hestenes 1969; Nocedal & Wright §17.3), which converges whatever the rank of A_S:
 ///     (K + ρ A_Sᵀ A_S) Δu = −(K u − b − A_Sᵀ ν) − ρ A_Sᵀ c_S(u),   u ← u + Δu,   ν_S ← ν_S − ρ c_S(u),
-/// ρ = 10³ × K's largest diagonal entry (the rows are lengths of unit entries: ρ A_SᵀA_S is 10³ times as stiff
-/// as the stiffest DOF). True when ‖c_S‖∞ ≤ tol L and ‖K u − b − A_Sᵀ ν‖∞ ≤ tol F (the interior point's
-/// tests); false after kIterations steps, when ‖c_S‖∞ stops halving at each step (rows that cannot all close:
-/// the nearly dependent families of a curved symmetric pair), or when the Krylov solve broke down.
-/// Frictionless only.
-bool InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, double tol) {
+/// ρ = 10² × K's largest diagonal entry (the rows are lengths of unit entries: ρ A_SᵀA_S is 10² times as stiff
+/// as the stiffest DOF; at 10³ the round-off of the Newton matrix, ε ρ ‖u‖, kept ‖K u − b − A_Sᵀ ν‖∞ above
+/// 10⁻¹¹ F on a contact patch test). True when ‖c_S‖∞ ≤ accuracy.gaps tol L (at least 10 ε max |x|) and
+/// ‖K u − b − A_Sᵀ ν‖∞ ≤ accuracy.forces tol F; false after kIterations steps, when ‖c_S‖∞ stops halving at
+/// each step (rows that cannot all close: the nearly dependent families of a curved symmetric pair), or when
+/// the Krylov solve broke down. Frictionless only.
+bool InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy) {
   constexpr int kIterations = 12;
-  const double rho = 1e3 * max_diagonal_;
+  const double rho = 1e2 * max_diagonal_, force_tol = accuracy.forces * options_.tolerance * F_;
+  // Not below the round-off of gaps computed from the coordinates (the gap rows' constants): 10 ε max |x|.
+  const double gap_tol = std::max(accuracy.gaps * options_.tolerance * L_,
+                                  10.0 * std::numeric_limits<double>::epsilon() * coordinate_scale_);
   VectorXd mask(m_);
   for (Index j = 0; j < m_; ++j) mask[j] = in_set[static_cast<std::size_t>(j)] ? 1.0 : 0.0;
   update_newton_matrix(Eigen::MatrixXd(), rho * mask);
@@ -519,14 +535,14 @@ bool InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, double to
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     const double closing = c_S.lpNorm<Eigen::Infinity>();
-    if (closing <= tol * L_ && rd <= tol * F_) return true;
+    if (closing <= gap_tol && rd <= force_tol) return true;
     if (k >= 2 && closing > 0.5 * last_closing) return false;  // rows that cannot all close (nearly dependent)
     last_closing = closing;
     if (k == kIterations) return false;
     check(VecCopy(rd_.object, rhs_.object), "VecCopy");
     check(VecScale(rhs_.object, -1.0), "VecScale");
     add_transpose(-rho * c_S, rhs_.object);
-    if (!solve_newton(0.0, 0.1 * tol * F_)) return false;
+    if (!solve_newton(0.0, 0.1 * force_tol)) return false;
     zero_fixed_rows(du_.object);
     check(VecAXPY(u_.object, 1.0, du_.object), "VecAXPY");
     nu -= rho * (A_ * gather(u_.object) - c_.lower).cwiseProduct(mask);
@@ -660,8 +676,11 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
     if (feasible && !c_.frictional()) keep_for_rescue();
     if (!result_.converged && feasible && result_.complementarity <= polish_below) {
       polish_below = 0.01 * result_.complementarity;
-      result_.converged = polished(kEarlyAccuracy);
+      result_.converged = polished(kEarly);
     }
+    // At the interior point's own end, the exact answer on its active set where that closes: the same point
+    // whatever path led there (ranks, Krylov tolerances), to a hundredth of the tolerance.
+    if (result_.converged && result_.polishes == 0 && !c_.frictional()) polished(kEarly);
     if (result_.converged) break;
     if (result_.iterations == options_.max_iterations) {
       result_.reason = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";

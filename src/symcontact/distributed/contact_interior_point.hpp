@@ -41,9 +41,10 @@
 /// (dual and primal residuals within tol, min(s_j/L, λ_j/F) ≤ 10³ tol; again each time that has fallen a
 /// hundredfold): the program with the rows S = {j : λ_j/F ≥ s_j/L} held as equalities, solved by the method
 /// of multipliers with the same conjugate gradients, rows added or dropped until the multipliers of S are ≥ 0
-/// and no other row is violated. A polish that closes S and balances the forces to tol/100 ends the solve at
-/// a KKT point of the program; when the Krylov solve breaks down or the iterations run out, the polish of the
-/// last iterate that met the dual and primal tests, to tol, rescues it. At a row at the edge
+/// and no other row is violated. A polish that closes S to 10⁻⁴ tol L and balances the forces to 10⁻² tol F
+/// ends the solve at a KKT point of the program, and is tried again where the interior point's own test ends
+/// it (the same point whatever path led there); when the Krylov solve breaks down or the iterations run out,
+/// the polish of the last iterate that met the dual and primal tests, to tol, rescues it. At a row at the edge
 /// of the zone, degenerate (s_j/L ≈ λ_j/F ≈ 0), the interior point alone would need a barrier parameter near
 /// 10⁻²⁰ F L to pass the per-row test, with Σ spanning 10⁻²² … 10¹⁵ and conjugate gradients breaking down
 /// in round-off (two elastic bodies: examples/hertz_2d/two_cylinders).
