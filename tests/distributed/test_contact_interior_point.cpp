@@ -2,7 +2,8 @@
 // (src/symcontact/distributed/contact_interior_point.hpp) on a block pressed onto a rigid ball, on one rank
 // and, registered a second time under mpirun, on two: its answer against the exact solution of the contact
 // problem (the active set's equality-constrained problem solved by sparse Cholesky, checked for contact
-// forces ≥ 0 and gaps ≥ 0), the Krylov iterations per Newton system as the mesh is refined, and Tresca and
+// forces ≥ 0 and gaps ≥ 0), the same for a block loaded onto a plane it touches up to round-off, the Krylov
+// iterations per Newton system as the mesh is refined, and Tresca and
 // Coulomb friction on a block sliding on a rigid plane against their closed forms.
 
 #include "symcontact/distributed/contact_interior_point.hpp"
@@ -100,6 +101,46 @@ TEST(ContactInteriorPoint, FindsTheExactSolutionOfTheContactProblemIn2DAnd3D) {
     }
     for (std::size_t k = 0; k < whole.block.fixed.size(); ++k)
       EXPECT_EQ(r.u[whole.block.fixed[k]], whole.block.fixed_values[static_cast<Index>(k)]) << "exactly";
+  }
+}
+
+/// The block of block_on_plane_system, frictionless, its top free vertically and loaded downwards by a nodal
+/// force of 1e-3 on each of its nodes, resting on the plane with gaps of round-off size (±1e-16, alternating):
+/// no imposed displacement and no gap to set the length scale.
+ObstacleSystem loaded_block_on_plane(int dim, int n, int part, int parts) {
+  ObstacleSystem o = block_on_plane_system(dim, n, 0.0, 0.0, 0.0, 1.0, part, parts);
+  o.contact.friction_bound.resize(0);
+  o.contact.friction_alpha.resize(0);
+  BlockSystem& b = o.block;
+  std::vector<Index> fixed;
+  std::vector<double> values;
+  for (std::size_t k = 0; k < b.fixed.size(); ++k)
+    if (b.fixed[k] % dim != dim - 1) {
+      fixed.push_back(b.fixed[k]);
+      values.push_back(b.fixed_values[static_cast<Index>(k)]);
+    } else {
+      b.f[b.fixed[k]] = -1e-3;
+    }
+  b.fixed = fixed;
+  b.fixed_values = Eigen::Map<VectorXd>(values.data(), static_cast<Index>(values.size()));
+  for (Index j = 0; j < o.contact.size(); ++j) o.contact.lower[j] = j % 2 ? 1e-16 : -1e-16;
+  return o;
+}
+
+// Gaps of faces that coincide up to round-off are no length scale: the interior point takes the displacement
+// the load makes instead and finds the exact solution (every bottom node in contact).
+TEST(ContactInteriorPoint, SolvesALoadDrivenProblemWithRoundOffGaps) {
+  for (const auto& [dim, n] : {std::pair{2, 16}, std::pair{3, 6}}) {
+    const ObstacleSystem mine = loaded_block_on_plane(dim, n, g_petsc->rank(), g_petsc->size());
+    const ObstacleSystem whole = loaded_block_on_plane(dim, n, 0, 1);
+    const ContactInteriorPointResult r = solve(mine);
+    ASSERT_TRUE(r.converged) << r.reason;
+    EXPECT_GT(r.length_scale, 1e-6) << "the load's displacement, not the gaps' round-off";
+    const ActiveSetSolution a = active_set_solution(whole, r);
+    EXPECT_EQ(std::count(a.active.begin(), a.active.end(), 1), whole.contact.size());
+    EXPECT_GT(a.lambda.minCoeff(), 0.0);
+    EXPECT_LE((r.u - a.u).lpNorm<Eigen::Infinity>(), 1e-8 * a.u.lpNorm<Eigen::Infinity>());
+    EXPECT_LE((r.lambda - a.lambda).lpNorm<Eigen::Infinity>(), 1e-8 * a.lambda.maxCoeff());
   }
 }
 
