@@ -68,6 +68,14 @@ constexpr PolishAccuracy kEarly{1e-2, 1e-4};
 /// The rescue before giving up: the interior point's own test.
 constexpr PolishAccuracy kRescue{1.0, 1.0};
 
+/// An iterate (u, s, λ) with the result's figures at it: what a polish that is not accepted gives back.
+struct Iterate {
+  Owned<Vec, VecDestroy> u;
+  VectorXd s, lambda;
+  double dual_residual = 0.0, primal_residual = 0.0, complementarity = 0.0;
+  std::string reason;
+};
+
 class InteriorPoint {
  public:
   InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, const std::vector<Index>& fixed,
@@ -96,8 +104,9 @@ class InteriorPoint {
   void update_newton_matrix(const Eigen::MatrixXd& U, const VectorXd& sigma);
   bool solve_newton(double eta, double atol);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
+  void save(Iterate& to);
+  void restore(const Iterate& from);
   bool polished(const PolishAccuracy& accuracy);
-  void keep_for_rescue();
   bool rescued();
   bool polish(const PolishAccuracy& accuracy);
   bool polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy);
@@ -124,8 +133,7 @@ class InteriorPoint {
   Owned<KSP, KSPDestroy> ksp_;
   VectorXd s_, lambda_;
   /// The last iterate that met the dual and primal tests (frictionless only), polished before giving up.
-  Owned<Vec, VecDestroy> rescue_u_;
-  VectorXd rescue_s_, rescue_lambda_;
+  Iterate rescue_;
   double F_ = 0.0, L_ = 0.0, max_diagonal_ = 0.0;
   double coordinate_scale_ = 0.0;  ///< max |x|
   ContactInteriorPointResult result_;
@@ -431,41 +439,55 @@ bool InteriorPoint::solve_newton(double eta, double atol) {
   return true;
 }
 
-/// Without friction: the polish to `accuracy`, and whether its point passes the stopping test
-/// (the residuals and the figures of the result at it). False with friction, or where it was not accepted
-/// (nothing changed).
+void InteriorPoint::save(Iterate& to) {
+  if (!to.u.object) check(VecDuplicate(u_.object, &to.u.object), "VecDuplicate");
+  check(VecCopy(u_.object, to.u.object), "VecCopy");
+  to.s = s_;
+  to.lambda = lambda_;
+  to.dual_residual = result_.dual_residual;
+  to.primal_residual = result_.primal_residual;
+  to.complementarity = result_.complementarity;
+  to.reason = result_.reason;
+}
+
+void InteriorPoint::restore(const Iterate& from) {
+  check(VecCopy(from.u.object, u_.object), "VecCopy");
+  s_ = from.s;
+  lambda_ = from.lambda;
+  result_.dual_residual = from.dual_residual;
+  result_.primal_residual = from.primal_residual;
+  result_.complementarity = from.complementarity;
+  result_.reason = from.reason;
+}
+
+/// Without friction: the polish to `accuracy`, kept where its point passes the stopping test (the residuals
+/// and the result's figures at it). False with friction, or where it was not kept (the iterate as it was).
 bool InteriorPoint::polished(const PolishAccuracy& accuracy) {
-  if (c_.frictional() || !polish(accuracy)) return false;
-  const VectorXd g = gather(u_.object);
-  const VectorXd rp = residuals(g, Eigen::MatrixXd());
-  PetscReal rd = 0.0;
-  check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
-  ++result_.polishes;
-  return converged(rd, rp.lpNorm<Eigen::Infinity>());
+  if (c_.frictional()) return false;
+  Iterate before;
+  save(before);
+  if (polish(accuracy)) {
+    const VectorXd rp = residuals(gather(u_.object), Eigen::MatrixXd());
+    PetscReal rd = 0.0;
+    check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
+    if (converged(rd, rp.lpNorm<Eigen::Infinity>())) {
+      ++result_.polishes;
+      return true;
+    }
+  }
+  restore(before);
+  return false;
 }
 
-void InteriorPoint::keep_for_rescue() {
-  if (!rescue_u_.object) check(VecDuplicate(u_.object, &rescue_u_.object), "VecDuplicate");
-  check(VecCopy(u_.object, rescue_u_.object), "VecCopy");
-  rescue_s_ = s_;
-  rescue_lambda_ = lambda_;
-}
-
-/// Before giving up: the polish, to the tolerance, from the iterate keep_for_rescue() kept (none: false). The
-/// interior point's last iterate and reason stay where it is not accepted.
+/// Before giving up: the polish, to the tolerance, from the last iterate that met the dual and primal tests
+/// (rescue_, saved by run(); none: false). The interior point's last iterate stays where it is not accepted.
 bool InteriorPoint::rescued() {
-  if (!rescue_u_.object) return false;
-  Owned<Vec, VecDestroy> last_u;
-  check(VecDuplicate(u_.object, &last_u.object), "VecDuplicate");
-  check(VecCopy(u_.object, last_u.object), "VecCopy");
-  const VectorXd last_s = s_, last_lambda = lambda_;
-  check(VecCopy(rescue_u_.object, u_.object), "VecCopy");
-  s_ = rescue_s_;
-  lambda_ = rescue_lambda_;
+  if (!rescue_.u.object) return false;
+  Iterate last;
+  save(last);
+  restore(rescue_);
   if (polished(kRescue)) return true;
-  check(VecCopy(last_u.object, u_.object), "VecCopy");
-  s_ = last_s;
-  lambda_ = last_lambda;
+  restore(last);
   return false;
 }
 
@@ -473,17 +495,12 @@ bool InteriorPoint::rescued() {
 /// whose multiplier comes out negative and add the rows outside S that the answer violates (the primal-dual
 /// active set update: Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003; as solvers/active_set_polish.cpp).
 /// Accepted, with s = c(u)⁺ and λ = ν⁺ on S, 0 elsewhere, at a set that needs no change: a KKT point of the
-/// program to `accuracy`. Otherwise u, s and λ are left as they were.
+/// program to `accuracy`. Otherwise false, u and λ where the last attempt left them (polished() restores them).
 bool InteriorPoint::polish(const PolishAccuracy& accuracy) {
   constexpr int kRounds = 5;
   const double tol = accuracy.forces * options_.tolerance;
   std::vector<char> in_set(static_cast<std::size_t>(m_));
   for (Index j = 0; j < m_; ++j) in_set[static_cast<std::size_t>(j)] = lambda_[j] / F_ >= s_[j] / L_;
-  Owned<Vec, VecDestroy> u0;
-  check(VecDuplicate(u_.object, &u0.object), "VecDuplicate");
-  check(VecCopy(u_.object, u0.object), "VecCopy");
-  const VectorXd lambda0 = lambda_;
-  const std::string reason = result_.reason;
   VectorXd nu = lambda_;
   for (int round = 0; round < kRounds; ++round) {
     if (!polish_on(in_set, nu, accuracy)) break;
@@ -502,9 +519,6 @@ bool InteriorPoint::polish(const PolishAccuracy& accuracy) {
     for (Index j = 0; j < m_; ++j) lambda_[j] = in_set[static_cast<std::size_t>(j)] ? std::max(nu[j], 0.0) : 0.0;
     return true;
   }
-  check(VecCopy(u0.object, u_.object), "VecCopy");
-  lambda_ = lambda0;
-  result_.reason = reason;
   return false;
 }
 
@@ -673,7 +687,7 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
     // accurate as the interior point's own end, whose last step overshoots its test); and, from the last
     // iterate that met the dual and primal tests, to the tolerance itself before giving up.
     const bool feasible = result_.dual_residual <= options_.tolerance && result_.primal_residual <= options_.tolerance;
-    if (feasible && !c_.frictional()) keep_for_rescue();
+    if (feasible && !c_.frictional()) save(rescue_);
     if (!result_.converged && feasible && result_.complementarity <= polish_below) {
       polish_below = 0.01 * result_.complementarity;
       result_.converged = polished(kEarly);
