@@ -4,10 +4,21 @@
 /// Cholesky factors must fit in memory, or the distributed path (`symcontact-mpi`: conjugate gradients and
 /// algebraic multigrid on PETSc, docs/distributed.md), which `symcontact` starts in its place.
 ///
-/// The rule for "automatic": the serial solver, unless the model has at least kAutomaticCheckDofs DOFs, its
-/// serial contact solve's predicted peak (solvers/memory_prediction.hpp, from CHOLMOD's analysis of K_ff)
-/// is above kMemoryShare × MemAvailable, and the distributed path solves the problem (linear elasticity,
-/// contact with rigid obstacles, frictionless or with friction on order-1 elements). Below that size the analysis is not run: such a problem fits on any machine this runs on.
+/// The rule for "automatic", where the distributed path solves the problem (linear elasticity, contact with
+/// rigid obstacles, frictionless or with friction on order-1 elements): the distributed path when
+///  - the serial solver's dense work on the contact surface is predicted to cost more than the iterative
+///    solve: |B|³/3 > kIterativeFlopsPerDof × free DOFs, with B the DOFs the serial solver condenses onto
+///    (predicted_condensed_dofs) — its interior point factorises a dense |B| × |B| matrix at every iteration
+///    (solvers/condensation_cache.hpp), where the iterative path's Newton solves cost a multiple of the DOFs
+///    — for contact with rigid planes only: against a curved obstacle the iterative path took 2–3 times the
+///    serial solver's iterations and, with friction, broke down (docs/distributed.md);
+///  - or the model has at least kAutomaticCheckDofs DOFs and its serial contact solve's predicted peak
+///    (solvers/memory_prediction.hpp, from CHOLMOD's analysis of K_ff) is above kMemoryShare × MemAvailable.
+///    Below that size the analysis is not run: such a problem fits on any machine this runs on.
+/// The serial solver otherwise. kIterativeFlopsPerDof is measured (docs/distributed.md, "Choosing the
+/// path"): one process, a 3D pad dragged with Coulomb friction on a rigid plane, the ratio of the two paths'
+/// times giving the same break-even constant (1.57e6) at 2.9e4 DOFs (|B| = 4,320, the serial solver 1.4 times
+/// faster) and at 6.5e4 (|B| = 7,653, 1.7 times slower).
 
 #include <string>
 
@@ -19,6 +30,8 @@ namespace symcontact {
 
 inline constexpr double kAutomaticCheckDofs = 2e5;
 inline constexpr double kMemoryShare = 0.9;
+/// The iterative path's cost per free DOF and interior-point iteration, in flops of a dense factorisation.
+inline constexpr double kIterativeFlopsPerDof = 1.5e6;
 
 /// What the distributed path does not solve yet in `spec`: the key of the first such thing and why ("" and
 /// "" when it solves all of it).
@@ -33,12 +46,18 @@ struct LinearSolverDecision {
   std::string reason;  ///< one line for the log
 };
 
-/// The machine's side of the rule: MemAvailable (−1: unknown, the serial solver), and the size from which
-/// the prediction is made.
+/// The machine's side of the rule: MemAvailable (−1: unknown, the serial solver), the size from which the
+/// memory is predicted, and the iterative path's cost against the dense factorisation's.
 struct MemoryBudget {
   double available_bytes = available_memory_bytes();
   double min_dofs = kAutomaticCheckDofs;
+  double iterative_flops_per_dof = kIterativeFlopsPerDof;
 };
+
+/// |B| of the rule above, at the initial configuration: the free DOFs that the contact rows read (ContactSet::
+/// linearize at u = 0, within the pairs' search distances) and, where any pair has friction, every DOF of
+/// those DOFs' nodes (the friction terms' support). The condensation's margin around the zone is left out.
+Index predicted_condensed_dofs(const ProblemSpec& spec, const Model& model);
 
 /// The path for a built model (see the rule above).
 LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& model,

@@ -1,6 +1,7 @@
 // The choice between the serial solver and the distributed path (src/symcontact/app/linear_solver_choice.hpp):
-// the problem file's word when it gives one; automatic: the serial solver unless the predicted peak of its
-// contact solve is above the memory available and the distributed path solves the problem.
+// the problem file's word when it gives one; automatic: the serial solver unless the distributed path solves
+// the problem and either the serial solver's dense work on the contact surface costs more than the iterative
+// solve, or the predicted peak of its contact solve is above the memory available.
 
 #include "symcontact/app/linear_solver_choice.hpp"
 
@@ -62,6 +63,37 @@ TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathD
   EXPECT_FALSE(d.iterative);
   EXPECT_NE(d.reason.find("contact[0].friction"), std::string::npos) << d.reason;
   EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
+}
+
+TEST(LinearSolverChoice, PredictsTheCondensedDofsFromTheContactRows) {
+  const testing::TempFolder folder;
+  // The block's top: 5 nodes, free, their rows reading u_y (the plane's normal); with friction both DOFs.
+  const auto frictionless = block(folder, "", "");
+  EXPECT_EQ(predicted_condensed_dofs(frictionless->spec, *frictionless->model), 5);
+  const auto coulomb = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "");
+  EXPECT_EQ(predicted_condensed_dofs(coulomb->spec, *coulomb->model), 10);
+}
+
+TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheDenseWorkCostsMore) {
+  const testing::TempFolder folder;
+  const auto c = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "");
+  // |B| = 10 of 20 free DOFs: 333 flops of dense work against 20 × the iterative path's cost per DOF.
+  const LinearSolverDecision cheap = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 20.0});
+  EXPECT_FALSE(cheap.iterative) << cheap.reason;
+  const LinearSolverDecision dear = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 10.0});
+  EXPECT_TRUE(dear.iterative) << dear.reason;
+  EXPECT_NE(dear.reason.find("|B| = 10 condensed DOFs"), std::string::npos) << dear.reason;
+  // The measured cost: the serial solver on a problem this small.
+  EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9}).iterative);
+  // Not against a curved obstacle (the distributed path solves it, the rule keeps it serial).
+  const auto curved = block(folder, "", "");
+  curved->spec.contacts[0].obstacle->type = "circle";
+  const LinearSolverDecision d = choose_linear_solver(curved->spec, *curved->model, MemoryBudget{1e12, 1e9, 1e-3});
+  EXPECT_FALSE(d.iterative) << d.reason;
+  EXPECT_NE(d.reason.find("contact[0]"), std::string::npos) << d.reason;
+  // Not for what the distributed path does not solve.
+  c->spec.order = 2;
+  EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e-3}).iterative);
 }
 
 }  // namespace
