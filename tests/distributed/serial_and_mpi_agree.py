@@ -34,7 +34,7 @@ REL = 1e-8
 # of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10; the same block with
 # Tresca friction (TRESCA: no Coulomb loop); and in 3D, a pad
 # pressed and dragged on a plane with Coulomb friction (pad_3d/pad.toml, a path of its own: os.path.join keeps
-# it whole).
+# it whole), and on a rigid sphere (pad_3d/pad_ball.toml).
 THREE_STEPS = "[steps]\nload_factors = [0.3, 0.6, 1.0]\n"
 # V4's block with Tresca friction (τ = 0.002, below μ p = 0.003: it slides earlier) in place of Coulomb.
 TRESCA = ('friction = "coulomb"\nmu = 0.3\n', 'friction = "tresca"\ntau = 0.002\n')  # (replaced, by)
@@ -45,6 +45,7 @@ CASES = [
     ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", None),
     ("friction_block/block.toml", TRESCA, None),
     (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"), "", None),
+    (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad_ball.toml"), "", None),
 ]
 # What the distributed path cannot solve once it has searched the contact: a failed solve (exit 3) saying why.
 # V4 with the block's left side held vertically: the bottom-left node's normal is along a fixed DOF.

@@ -94,7 +94,9 @@ TEST(ContactInteriorPoint, FindsTheExactSolutionOfTheContactProblemIn2DAnd3D) {
     // Where the polish on the active set ended the solve (on one rank in 2D: the interior point tells the rows
     // apart before its own test passes), the answer is the active set's exact solution to a hundredth of the
     // tolerance.
-    if (dim == 2 && g_petsc->size() == 1) EXPECT_EQ(r.polishes, 1);
+    if (dim == 2 && g_petsc->size() == 1) {
+      EXPECT_EQ(r.polishes, 1);
+    }
     if (r.polishes > 0) {
       EXPECT_LE(u_error, 1e-9);
       EXPECT_LE(lambda_error, 1e-9);

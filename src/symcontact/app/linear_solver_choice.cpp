@@ -40,8 +40,8 @@ std::string figure(double value) {
 
 /// Where the cost part of the rule does not send a problem to the distributed path although that path solves
 /// it: contact with a curved or meshed obstacle, where its interior point took 2–3 times the serial one's
-/// iterations and, with friction, its Krylov solves broke down (a pad pressed onto a rigid sphere,
-/// docs/distributed.md). The key of the first such contact, "" when there is none.
+/// iterations (a pad pressed onto a rigid sphere and dragged, docs/distributed.md). The key of the first such
+/// contact, "" when there is none.
 std::string unmeasured_for_cost(const ProblemSpec& spec) {
   for (const ContactSpec& c : spec.contacts)
     if (c.obstacle && c.obstacle->type != "plane") return c.key;

@@ -113,10 +113,10 @@ struct ContactInteriorPointResult {
 
 /// Friction bounds that follow the iterate (Coulomb's g_j = A_j μ p_j, p read from the iterate; as
 /// FollowIterate of solvers/dense_primal_interior_point.hpp): called with u (every DOF) and λ after each
-/// accepted step once the scaled residuals are at most ContactInteriorPointOptions::follow_below, and at a
-/// point that passes the stopping test. Returns the new bounds g (m values) when they changed, nullopt
-/// otherwise; the method stops only where it returned nullopt, so it must do so after finitely many calls.
-/// Collective: every rank returns the same.
+/// accepted step once the scaled residuals are at most ContactInteriorPointOptions::follow_below, while the
+/// complementarity is above a thousandth of the tolerance. Returns the new bounds g (m values) when they changed, nullopt
+/// otherwise. The bounds at the point the method stops are not checked here: the caller's Coulomb loop checks
+/// them. Collective: every rank returns the same.
 using FollowBounds = std::function<std::optional<VectorXd>(const VectorXd& u, const VectorXd& lambda)>;
 
 /// K_share, f, fixed, fixed_values, x: as solve_elasticity_gamg() takes them. Collective over
