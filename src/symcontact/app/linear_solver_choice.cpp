@@ -39,7 +39,7 @@ std::string figure(double value) {
 }
 
 /// Where the cost part of the rule does not send a problem to the distributed path although that path solves
-/// it: contact with a curved or meshed obstacle, where its interior point took 2–3 times the serial one's
+/// it: contact with a curved or meshed obstacle, where its interior point took twice the serial one's
 /// iterations (a pad pressed onto a rigid sphere and dragged, docs/distributed.md). The key of the first such
 /// contact, "" when there is none.
 std::string unmeasured_for_cost(const ProblemSpec& spec) {

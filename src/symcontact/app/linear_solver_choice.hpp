@@ -10,7 +10,7 @@
 ///    solve: |B|³/3 > kIterativeFlopsPerDof × free DOFs, with B the DOFs the serial solver condenses onto
 ///    (predicted_condensed_dofs) — its interior point factorises a dense |B| × |B| matrix at every iteration
 ///    (solvers/condensation_cache.hpp), where the iterative path's Newton solves cost a multiple of the DOFs
-///    — for contact with rigid planes only: against a curved obstacle the iterative path took 2–3 times the
+///    — for contact with rigid planes only: against a curved obstacle the iterative path took twice the
 ///    serial solver's iterations (docs/distributed.md);
 ///  - or the model has at least kAutomaticCheckDofs DOFs and its serial contact solve's predicted peak
 ///    (solvers/memory_prediction.hpp, from CHOLMOD's analysis of K_ff) is above kMemoryShare × MemAvailable.
