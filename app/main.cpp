@@ -120,15 +120,20 @@ struct StartDistributed {};
 RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, bool, char** argv) {
   if (spec.linear_solver == LinearSolverChoice::kIterative)
     switch_to_distributed(spec, "linear_solver = \"iterative\"", argv);
+  std::string why;
   opt.on_model = [&](const Model& model) {
     const LinearSolverDecision d = choose_linear_solver(spec, model);
     log.detail(d.reason);
-    if (d.iterative) throw StartDistributed{};
+    if (!d.iterative) return;
+    why = (d.basis == DecisionBasis::kDenseWork ? "the direct solver's dense work is predicted to cost more ("
+                                               : "the direct solver's factors are predicted not to fit in memory (") +
+          d.figures + ")";
+    throw StartDistributed{};
   };
   try {
     return run_problem(spec, opt, log);
   } catch (const StartDistributed&) {
-    switch_to_distributed(spec, "the direct solver's factors are predicted not to fit in memory", argv);
+    switch_to_distributed(spec, why, argv);
   }
 }
 #endif

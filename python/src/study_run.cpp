@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "symcontact/app/linear_solver_choice.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/io/output_folder.hpp"
 
@@ -136,7 +137,15 @@ py::dict run_study(const Problem& problem, const StudyOptions& options) {
                      "and `mpirun symcontact run` (docs/distributed.md)");
   Gathered gathered;
   const py::object progress = options.progress;
-  opt.on_model = [&](const Model& model) { gathered.start(model); };
+  const Logger log(std::cerr, options.verbosity);
+  opt.on_model = [&](const Model& model) {
+    const LinearSolverDecision d = serial_only_choice(problem.spec(), model);  // InputError: it cannot
+    if (d.basis == DecisionBasis::kDenseWork)
+      log.info(d.reason);
+    else
+      log.detail(d.reason);
+    gathered.start(model);
+  };
   opt.on_step = [&](const StepRecord& r) {
     gathered.add(r);
     py::gil_scoped_acquire gil;
@@ -144,7 +153,6 @@ py::dict run_study(const Problem& problem, const StudyOptions& options) {
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
     if (!progress.is_none()) progress(r.step, r.num_steps, r.progress);
   };
-  const Logger log(std::cerr, options.verbosity);
   RunResult result;
   {
     py::gil_scoped_release release;

@@ -156,6 +156,19 @@ def test_input_errors_leave_no_folder(tmp_path):
         symcontact.Problem(INCLINED).run(mesh_size=-1)
 
 
+def test_the_linear_solver_is_chosen_by_the_command_lines_rule_and_said(capfd):
+    """The module runs the direct solver only: it says so at "verbose" (the rule of
+    src/symcontact/app/linear_solver_choice.hpp, here for an elastic pair), and refuses "iterative"."""
+    symcontact.Problem(INCLINED).run(verbosity="verbose")
+    err = capfd.readouterr().err
+    assert "linear solver: direct (automatic: no cost estimate: contact[0].b" in err, err
+    problem = symcontact.Problem(INCLINED)
+    problem["contact_solver.linear_solver"] = "iterative"
+    with pytest.raises(symcontact.InputError) as e:
+        problem.run()
+    assert e.value.key == "contact_solver.linear_solver" and "direct" in str(e.value)
+
+
 def test_ctrl_c_during_a_solve_ends_the_run_after_its_step():
     import os
     import signal

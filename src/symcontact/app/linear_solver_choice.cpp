@@ -93,12 +93,14 @@ Index predicted_condensed_dofs(const ProblemSpec& spec, const Model& model) {
 }
 
 LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& model, const MemoryBudget& budget) {
-  if (spec.linear_solver == LinearSolverChoice::kDirect) return {false, "linear solver: direct (as the problem file says)"};
+  if (spec.linear_solver == LinearSolverChoice::kDirect)
+    return {false, DecisionBasis::kProblemFile, "linear solver: direct (as the problem file says)", {}};
   if (spec.linear_solver == LinearSolverChoice::kIterative)
-    return {true, "linear solver: iterative (as the problem file says)"};
+    return {true, DecisionBasis::kProblemFile, "linear solver: iterative (as the problem file says)", {}};
   const double dofs = static_cast<double>(model.dofs().num_dofs());
   const std::string size = std::to_string(model.dofs().num_dofs()) + " DOFs";
-  if (model.contacts().empty()) return {false, "linear solver: direct (automatic: no contact)"};
+  if (model.contacts().empty())
+    return {false, DecisionBasis::kDefault, "linear solver: direct (automatic: no contact)", {}};
   const DistributedLimit limit = distributed_path_limit(spec);
   std::vector<Index> free_index;
   const Index num_free = model.fixed_dofs(0).free_numbering(model.dofs().num_dofs(), free_index);
@@ -107,10 +109,13 @@ LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& 
                                    : "no cost estimate: " + unmeasured + "'s obstacle is not a plane";
   if (limit.none() && unmeasured.empty()) {
     const DenseWork work = dense_work(spec, model, budget, num_free);
-    if (work.dearer) return {true, "linear solver: iterative (automatic: " + work.figures + ")"};
+    if (work.dearer)
+      return {true, DecisionBasis::kDenseWork, "linear solver: iterative (automatic: " + work.figures + ")",
+              work.figures};
     cost = work.figures;
   }
-  if (dofs < budget.min_dofs) return {false, "linear solver: direct (automatic: " + cost + "; " + size + ")"};
+  if (dofs < budget.min_dofs)
+    return {false, DecisionBasis::kDefault, "linear solver: direct (automatic: " + cost + "; " + size + ")", {}};
   const double nnz = predict_factor_nonzeros(model.energy(), free_index, num_free);
   double contact_nodes = 0.0;
   for (const ContactSurface& s : model.contacts().surfaces)
@@ -118,11 +123,30 @@ LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& 
   const double need = predicted_direct_peak_bytes(nnz, dofs, contact_nodes), available = budget.available_bytes;
   const std::string figures = "predicted peak " + gib(need) + ", " + gib(available) + " available";
   if (available < 0.0 || need <= kMemoryShare * available)
-    return {false, "linear solver: direct (automatic: " + cost + "; " + figures + ")"};
+    return {false, DecisionBasis::kDefault, "linear solver: direct (automatic: " + cost + "; " + figures + ")", {}};
   if (!limit.none())
-    return {false, "linear solver: direct although it may not fit (automatic: " + figures + "; " + limit.key + ": " +
-                       limit.message + ")"};
-  return {true, "linear solver: iterative (automatic: " + figures + ")"};
+    return {false, DecisionBasis::kMemory,
+            "linear solver: direct although it may not fit (automatic: " + figures + "; " + limit.key + ": " +
+                limit.message + ")",
+            figures};
+  return {true, DecisionBasis::kMemory, "linear solver: iterative (automatic: " + figures + ")", figures};
+}
+
+LinearSolverDecision serial_only_choice(const ProblemSpec& spec, const Model& model, const MemoryBudget& budget) {
+  LinearSolverDecision d = choose_linear_solver(spec, model, budget);
+  if (!d.iterative) return d;
+  if (d.basis == DecisionBasis::kDenseWork) {
+    d.iterative = false;
+    d.reason = "linear solver: direct, the only one here, where `symcontact run` would take the iterative path (" +
+               d.figures + ")";
+    return d;
+  }
+  const std::string why = d.basis == DecisionBasis::kMemory
+                              ? "the direct solver is predicted not to fit in memory (" + d.figures + ")"
+                              : "the problem file asks for \"iterative\"";
+  throw InputError(spec.file, "contact_solver.linear_solver",
+                   why + "; this program runs the direct solver only: run the problem with `symcontact run` or "
+                         "`mpirun symcontact run`, which take the distributed path (docs/distributed.md)");
 }
 
 }  // namespace symcontact

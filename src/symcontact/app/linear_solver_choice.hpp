@@ -41,9 +41,20 @@ struct DistributedLimit {
 };
 DistributedLimit distributed_path_limit(const ProblemSpec& spec);
 
+/// What settled a LinearSolverDecision.
+enum class DecisionBasis {
+  kProblemFile,  ///< linear_solver = "direct" or "iterative"
+  kDefault,      ///< automatic, and no part of the rule moves the problem off the serial solver
+  kDenseWork,    ///< automatic: the serial solver's dense work costs more
+  kMemory,       ///< automatic: the serial solver is predicted not to fit (iterative, or direct where the
+                 ///< distributed path does not solve the problem)
+};
+
 struct LinearSolverDecision {
   bool iterative = false;
-  std::string reason;  ///< one line for the log
+  DecisionBasis basis = DecisionBasis::kDefault;
+  std::string reason;   ///< one line for the log
+  std::string figures;  ///< the figures behind kDenseWork or kMemory, as in `reason`
 };
 
 /// The machine's side of the rule: MemAvailable (−1: unknown, the serial solver), the size from which the
@@ -62,5 +73,12 @@ Index predicted_condensed_dofs(const ProblemSpec& spec, const Model& model);
 /// The path for a built model (see the rule above).
 LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& model,
                                           const MemoryBudget& budget = MemoryBudget{});
+
+/// The rule for a program that runs the serial solver only (the Python module): the serial solver, its reason
+/// saying so where `symcontact run` would take the distributed path for its cost (basis kDenseWork); an
+/// InputError on contact_solver.linear_solver where the file asks for the distributed path or the serial
+/// solver is predicted not to fit in memory (the run would be ended by the system, not by an error of ours).
+LinearSolverDecision serial_only_choice(const ProblemSpec& spec, const Model& model,
+                                        const MemoryBudget& budget = MemoryBudget{});
 
 }  // namespace symcontact

@@ -9,6 +9,8 @@
 
 #include <string>
 
+#include "symcontact/core/error.hpp"
+
 #include "support/model_case.hpp"
 #include "support/problem_snippet.hpp"
 #include "support/rectangle_msh.hpp"
@@ -94,6 +96,44 @@ TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheDenseWorkCostsMore
   // Not for what the distributed path does not solve.
   c->spec.order = 2;
   EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e-3}).iterative);
+}
+
+/// serial_only_choice(): the InputError it throws, or "" when it throws none.
+std::string serial_only_error(const testing::ModelCase& c, const MemoryBudget& budget) {
+  try {
+    serial_only_choice(c.spec, *c.model, budget);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "contact_solver.linear_solver");
+    return e.message();
+  }
+  return "";
+}
+
+TEST(LinearSolverChoice, TheSerialOnlyProgramSaysWhatTheDirectSolverCannotDo) {
+  const testing::TempFolder folder;
+  const auto c = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "linear_solver = \"automatic\"\n");
+  // Fits, and the dense work is cheap: the serial solver, as choose_linear_solver says.
+  const LinearSolverDecision fits = serial_only_choice(c->spec, *c->model, MemoryBudget{1e12, 0.0, 20.0});
+  EXPECT_FALSE(fits.iterative);
+  EXPECT_EQ(fits.reason, choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 0.0, 20.0}).reason);
+  // The dense work costs more: still the serial solver, saying that `symcontact run` would not take it.
+  const LinearSolverDecision dear = serial_only_choice(c->spec, *c->model, MemoryBudget{1e12, 0.0, 10.0});
+  EXPECT_FALSE(dear.iterative);
+  EXPECT_EQ(dear.basis, DecisionBasis::kDenseWork);
+  EXPECT_NE(dear.reason.find("`symcontact run` would take the iterative path (|B| = 10 condensed DOFs"),
+            std::string::npos) << dear.reason;
+  // Predicted not to fit: an input error with the figures, before any solve.
+  const std::string tight = serial_only_error(*c, MemoryBudget{1e3, 0.0, 20.0});
+  EXPECT_NE(tight.find("predicted not to fit in memory (predicted peak"), std::string::npos) << tight;
+  EXPECT_NE(tight.find("symcontact run"), std::string::npos) << tight;
+  // Asked for in the file: an input error.
+  const auto iterative = block(folder, "", "linear_solver = \"iterative\"\n");
+  EXPECT_NE(serial_only_error(*iterative, MemoryBudget{1e12, 0.0}).find("asks for \"iterative\""), std::string::npos);
+  // Not to fit where the distributed path does not solve the problem either: the serial solver, warned.
+  c->spec.order = 2;
+  const LinearSolverDecision order2 = serial_only_choice(c->spec, *c->model, MemoryBudget{1e3, 0.0, 20.0});
+  EXPECT_FALSE(order2.iterative);
+  EXPECT_EQ(order2.basis, DecisionBasis::kMemory);
 }
 
 }  // namespace
