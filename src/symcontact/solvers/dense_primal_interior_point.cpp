@@ -18,6 +18,13 @@ namespace {
 
 /// A line search that stalls within this factor of the tolerance ends as converged (see its use).
 constexpr double kFloor = 100.0;
+/// The complementarity target's floor while the iterate does not pass the stopping test, over the tolerance:
+/// as IPOPT's barrier parameter, which never falls below tol/10 (Wächter & Biegler, Math. Program. 106, 2006,
+/// eq. 7). Below it the complementarity is far inside its test, and Σ = Λ/S spans orders of magnitude that the
+/// Newton systems no longer resolve: with thresholds that follow the iterate, r_d lags (each change of the
+/// data re-opens it) while μ fell tenfold per iteration to 1e-19, and the line search stalled at r_d = 1.4e-10
+/// on OpenBLAS's Haswell and Zen kernels (tolerance 1e-12; the unit test FollowingNearTheEnd…).
+constexpr double kTargetFloor = 0.1;
 
 /// The problem in the dimensionless variables of the file comment: x̃ = x/ℓ, f̃ = f/(gℓ), c̃ = Ã x̃ + b̃ with
 /// Ã = R A, b̃ = R b / ℓ, R = diag(1 / max_j |A_ij|). The iterate is kept in x (the problem's units).
@@ -169,8 +176,9 @@ bool line_search(const ScaledProblem& sp, const Iterate& it, const VectorXd& dx,
 
 /// One iteration from `it` with the factor L: Mehrotra's predictor-corrector direction, or where the line
 /// search rejects it (the corrector's second-order term is not a Newton direction of the residual) the plain
-/// Newton direction to the same target σμ, which is a descent direction of its norm.
-bool newton_step(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate& it, Iterate& trial) {
+/// Newton direction to the same target σμ, which is a descent direction of its norm. The target is not below
+/// `floor` while μ is above it (kTargetFloor).
+bool newton_step(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate& it, Iterate& trial, double floor) {
   const Index p = it.s.size();
   const double mu = it.mu();
   VectorXd dx_aff, ds_aff, dl_aff, dx, ds, dl;
@@ -182,7 +190,7 @@ bool newton_step(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate&
   // non-quadratic f, complementarity run ahead of them pins the slacks to their bounds before r_d is met.
   const double behind = std::max(it.rd.lpNorm<Eigen::Infinity>(), p ? it.rp.lpNorm<Eigen::Infinity>() : 0.0);
   const double sigma = mu > 0 ? std::pow(std::clamp(mu_aff / mu, 0.0, 1.0), 3) : 0.0;
-  const double target = std::max(sigma * mu, 0.1 * std::min(mu, behind));
+  const double target = std::max({sigma * mu, 0.1 * std::min(mu, behind), std::min(mu, floor)});
   rc.array() -= target;
   direction(sp, L, it, rc + ds_aff.cwiseProduct(dl_aff), dx, ds, dl);  // corrector
   if (line_search(sp, it, dx, ds, dl, target, trial)) return true;
@@ -240,7 +248,7 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
         double e = error;
         for (int extra = 0; extra < 4 && e > 1e-4 * options.tolerance; ++extra) {
           Iterate trial;
-          if (!(factorize(sp, it, 0.0, M) || factorize(sp, it, 1e-12, M)) || !newton_step(sp, M, it, trial) ||
+          if (!(factorize(sp, it, 0.0, M) || factorize(sp, it, 1e-12, M)) || !newton_step(sp, M, it, trial, 0.0) ||
               !(trial.error() < e))
             break;
           const double e_next = trial.error();
@@ -264,7 +272,7 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
         break;
       }
       Iterate trial;
-      if (!newton_step(sp, M, it, trial)) {
+      if (!newton_step(sp, M, it, trial, kTargetFloor * options.tolerance)) {
         // Within kFloor × tolerance this is the round-off floor of the Newton systems (D = Λ/S spanning some
         // twenty orders of magnitude at a tolerance of 1e-12): the point is as converged as it gets.
         r.success = error <= kFloor * options.tolerance;

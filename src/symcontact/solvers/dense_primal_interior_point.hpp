@@ -14,7 +14,8 @@
 /// linearised, give with D = diag(λ / s) and r_c = s ∘ λ − σμ 1 (Nocedal & Wright, Numerical Optimization, 2nd
 /// ed. 2006, §19.1 and §16.6, normal equations):
 ///     (∇²f + Aᵀ D A) Δx = −r_d − Aᵀ S⁻¹ (r_c + Λ r_p),   Δs = A Δx + r_p,   Δλ = −S⁻¹ (r_c + Λ Δs).
-/// Steps: Mehrotra's predictor-corrector (σ = (μ_aff/μ)³, the corrector with Δs_aff ∘ Δλ_aff), one step length
+/// Steps: Mehrotra's predictor-corrector (σ = (μ_aff/μ)³, the corrector with Δs_aff ∘ Δλ_aff; its target σμ
+/// not below tolerance/10 before the stopping test is met, as IPOPT's barrier parameter), one step length
 /// for s and λ to the fraction τ = max(0.99, 1 − μ) of the boundary, then — f not being quadratic — a
 /// backtracking line search on the norm of the residuals (r_d, r_p, s ∘ λ − σμ) at the step's target: halved
 /// until that norm falls by 1e-4 α of itself (Armijo on ½‖F‖², whose derivative along a Newton direction is
