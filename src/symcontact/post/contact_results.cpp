@@ -25,6 +25,21 @@ Eigen::Vector3d displacement_at(const ContactSurface& surface, Index facet, cons
   return w;
 }
 
+/// Whether p, projecting past an end of the master, lies on the normal through that end up to round-off (a
+/// node where both faces end: the two ends coincide, and which side of the end the node falls on is the
+/// round-off of its displacement, which would make its gap a number in one run and NaN in another). Then cp
+/// is the projection onto the end. The slack: 1e-9 of the search distance.
+bool at_opposite_end(const MasterGeometry& mg, const Eigen::VectorXd& p, const Eigen::Vector3d& normal, double search,
+                     ContactPoint& cp) {
+  constexpr double kSlack = 1e-9;
+  ContactPoint end;
+  if (!project_to_master(mg, p, normal, search, end, true)) return false;
+  const Eigen::Vector3d off = end.x - end.xbar - end.gap * end.normal;  // p − x̄ across the normal
+  if (off.norm() > kSlack * search) return false;
+  cp = end;
+  return true;
+}
+
 /// Signed distance of every node of side `side` to the opposite side of its pair, and the interface normal
 /// there (interface_normal(), contact_points.hpp: outward for this side); nodes that project onto nothing
 /// get a NaN gap and keep their own normal. xs and the opposite side are at X + u_geometry. With
@@ -59,7 +74,8 @@ Eigen::VectorXd nodal_gaps(const ContactSet& cs, const ContactPair& pair, int si
     Eigen::Vector3d n3 = Eigen::Vector3d::Zero();
     n3.head(s.dim) = own.col(k);
     ContactPoint cp;
-    if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp, false, pair.bisector_ray() ? &n3 : nullptr)) {
+    if (project_to_master(mg, xs.col(k), n3, pair.search_distance, cp, false, pair.bisector_ray() ? &n3 : nullptr) ||
+        at_opposite_end(mg, xs.col(k), n3, pair.search_distance, cp)) {
       gap[k] = cp.gap;
       if (linearised_at)
         gap[k] += cp.row_direction().dot(node_displacement(k) -
