@@ -34,7 +34,9 @@ REL = 1e-8
 # of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10; the same block with
 # Tresca friction (TRESCA: no Coulomb loop); and in 3D, a pad
 # pressed and dragged on a plane with Coulomb friction (pad_3d/pad.toml, a path of its own: os.path.join keeps
-# it whole), and on a rigid sphere (pad_3d/pad_ball.toml).
+# it whole), and on a rigid sphere (pad_3d/pad_ball.toml). Between elastic bodies (frictionless): V6's rings
+# and V3's patch test (two blocks of quadrilaterals) with their pairs in one-pass mode, and the self-contact of
+# a block with a crack.
 THREE_STEPS = "[steps]\nload_factors = [0.3, 0.6, 1.0]\n"
 # V4's block with Tresca friction (τ = 0.002, below μ p = 0.003: it slides earlier) in place of Coulomb.
 TRESCA = ('friction = "coulomb"\nmu = 0.3\n', 'friction = "tresca"\ntau = 0.002\n')  # (replaced, by)
@@ -46,13 +48,18 @@ CASES = [
     ("friction_block/block.toml", TRESCA, None),
     (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"), "", None),
     (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad_ball.toml"), "", None),
+    ("rings_2d/rings.toml", ('b = "outer.outer_inside"\n', 'b = "outer.outer_inside"\nmode = "one-pass"\n'), None),
+    ("quad_blocks_2d/quad_blocks.toml", ('b = "upper.upper_bottom"\n', 'b = "upper.upper_bottom"\nmode = "one-pass"\n'),
+     None),
+    ("cracked_block_2d/cracked_block.toml", "", None),
 ]
 # What the distributed path cannot solve once it has searched the contact: a failed solve (exit 3) saying why.
 # V4 with the block's left side held vertically: the bottom-left node's normal is along a fixed DOF.
 FAILED_SOLVES = [("friction_block/block.toml", '[[body.dirichlet]]\nboundary = "left"\nuy = 0.0\n',
                   "has a component along a DOF that a Dirichlet condition fixes")]
 # What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
-UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_3d/two_spheres.toml", "contact[0].b")]
+UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_3d/two_spheres.toml", "contact[0].mode"),
+               ("inclined_2d/inclined.toml", "contact[0].friction")]
 ITERATIVE = 'linear_solver = "iterative"\n'
 # (example, extra as in CASES, dimension, length, force, units): solved on two ranks in m–N–Pa and in the other
 # units, on the same mesh; every number must agree to REL of its quantity's scale once converted. V4 with
@@ -247,6 +254,8 @@ def main():
     for k, (name, extra, mesh_size) in enumerate(CASES):
         path = case_file(examples, work, name, extra)
         case_label = {THREE_STEPS: " in three steps", TRESCA: " with Tresca friction"}.get(extra, "")
+        if isinstance(extra, tuple) and "one-pass" in extra[1]:
+            case_label = " in one-pass mode"
         tag = name.replace("/", "_").removesuffix(".toml") + case_label.replace(" ", "_")
         serial, mpi = os.path.join(work, tag + "_serial"), os.path.join(work, tag + "_mpi")
         size = ["--mesh-size", str(mesh_size)] if mesh_size else []

@@ -4,8 +4,9 @@
 /// Cholesky factors must fit in memory, or the distributed path (`symcontact-mpi`: conjugate gradients and
 /// algebraic multigrid on PETSc, docs/distributed.md), which `symcontact` starts in its place.
 ///
-/// The rule for "automatic", where the distributed path solves the problem (linear elasticity, contact with
-/// rigid obstacles, frictionless or with friction on order-1 elements): the distributed path when
+/// The rule for "automatic", where the distributed path solves the problem (linear elasticity; contact with
+/// rigid obstacles, frictionless or with friction on order-1 elements; frictionless contact between elastic
+/// bodies in one-pass pairs and self-contact): the distributed path when
 ///  - the serial solver's dense work on the contact surface is predicted to cost more than the iterative
 ///    solve: |B|³/3 > kIterativeFlopsPerDof × free DOFs, with B the DOFs the serial solver condenses onto
 ///    (predicted_condensed_dofs) — its interior point factorises a dense |B| × |B| matrix at every iteration

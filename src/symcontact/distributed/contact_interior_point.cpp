@@ -55,7 +55,10 @@ Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixX
 
 /// The complementarity (over the tolerance) below which the bounds stop following the iterates (run()).
 constexpr double kFollowAbove = 1e-3;
-/// The complementarity (max_j min(s_j / L, λ_j / F), over the tolerance) below which the polish is first tried.
+/// The complementarity (max_j min(s_j / L, λ_j / F)) and the scaled dual and primal residuals, over the
+/// tolerance, below which the polish is first tried. The polish balances the forces itself, so r_d need not
+/// meet the tolerance first: on two rings wholly in contact (one-pass) it lagged a step behind the others,
+/// and that step's Newton system, Σ at 1e12 F/L, broke conjugate gradients down.
 constexpr double kPolishBelow = 1e3;
 /// What a polish must reach, as fractions of the tolerance: the forces balanced to `forces` tol F, the active
 /// rows closed to `gaps` tol L.
@@ -460,6 +463,8 @@ void InteriorPoint::restore(const Iterate& from) {
   result_.primal_residual = from.primal_residual;
   result_.complementarity = from.complementarity;
   result_.reason = from.reason;
+  const VectorXd g = gather(u_.object);
+  residuals(g, nodal(g));  // r_d of the restored iterate, which the next step's right-hand side reads
 }
 
 /// Without friction: the polish to `accuracy`, kept where its point passes the stopping test (the residuals
@@ -689,13 +694,14 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
         result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
       }
     }
-    // Without friction, the exact answer on the active rows once the interior point tells them apart, tried
-    // again each time the complementarity has fallen a hundredfold (to a hundredth of the tolerance: as
-    // accurate as the interior point's own end, whose last step overshoots its test); and, from the last
-    // iterate that met the dual and primal tests, to the tolerance itself before giving up.
+    // Without friction, the exact answer on the active rows once the interior point tells them apart (see
+    // kPolishBelow), tried again each time the complementarity has fallen a hundredfold (to a hundredth of the
+    // tolerance: as accurate as the interior point's own end, whose last step overshoots its test); and, from
+    // the last iterate that met the dual and primal tests, to the tolerance itself before giving up.
     const bool feasible = result_.dual_residual <= options_.tolerance && result_.primal_residual <= options_.tolerance;
     if (feasible && !c_.frictional()) save(rescue_);
-    if (!result_.converged && feasible && result_.complementarity <= polish_below) {
+    const bool near = std::max(result_.dual_residual, result_.primal_residual) <= kPolishBelow * options_.tolerance;
+    if (!result_.converged && near && result_.complementarity <= polish_below) {
       polish_below = 0.01 * result_.complementarity;
       result_.converged = polished(kEarly);
     }

@@ -38,7 +38,7 @@
 /// solution, down to the stopping test at the end.
 ///
 /// Without friction the answer is polished on its active set once the interior point has told the rows apart
-/// (dual and primal residuals within tol, min(s_j/L, λ_j/F) ≤ 10³ tol; again each time that has fallen a
+/// (dual and primal residuals and min(s_j/L, λ_j/F) within 10³ tol; again each time the last has fallen a
 /// hundredfold): the program with the rows S = {j : λ_j/F ≥ s_j/L} held as equalities, solved by the method
 /// of multipliers with the same conjugate gradients, rows added or dropped until the multipliers of S are ≥ 0
 /// and no other row is violated. A polish that closes S to 10⁻⁴ tol L and balances the forces to 10⁻² tol F

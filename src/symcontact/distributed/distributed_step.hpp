@@ -2,8 +2,9 @@
 /// \file distributed_step.hpp
 /// The contact solver of `symcontact run` on the distributed path (`mpirun -np N symcontact run CASE.toml`):
 /// a load step of a model with linear-elastic bodies in contact with rigid obstacles, frictionless or with
-/// friction, solved by the interior point of contact_interior_point.hpp on the same constraints and friction
-/// terms as the serial solver, so that both give the same answer to their tolerances.
+/// friction, or without friction with each other (one-pass pairs) or with themselves, solved by the interior
+/// point of contact_interior_point.hpp on the same constraints and friction terms as the serial solver, so
+/// that both give the same answer to their tolerances.
 ///
 /// Each step is a geometry fixed point, as the serial one (solvers/geometry_fixed_point.hpp): the contact
 /// set is linearised at u (ContactSet::linearize: the weak gap rows A u + b ≥ 0 of every pair), the program
@@ -22,8 +23,8 @@
 /// the thresholds following the interior point's iterates where coulomb_update says so (FollowBounds).
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
-/// strain, elastic pairs, friction on order-2 elements. The meshes are whole on every rank; each rank
-/// assembles the stiffness rows it owns.
+/// strain, symmetric pairs of two surfaces, friction between elastic bodies, friction on order-2 elements.
+/// The meshes are whole on every rank; each rank assembles the stiffness rows it owns.
 #include "symcontact/app/run.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"
 

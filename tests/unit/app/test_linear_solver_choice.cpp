@@ -67,6 +67,29 @@ TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathD
   EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
 }
 
+TEST(LinearSolverChoice, TheDistributedPathSolvesFrictionlessOnePassPairsAndSelfContact) {
+  const testing::TempFolder folder;
+  const auto c = block(folder, "", "");
+  ContactSpec& pair = c->spec.contacts[0];  // the rule reads the specification only: made a pair here
+  pair.obstacle.reset();
+  pair.body_b = "other";
+  pair.boundary_b = "bottom";
+  pair.mode = "one-pass";
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
+  pair.mode = "symmetric";  // two nearly dependent families of rows
+  EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].mode");
+  pair.body_b = pair.body_a;  // a surface in contact with itself: one family
+  pair.boundary_b = pair.boundary_a;
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
+  pair.friction = "coulomb";  // friction terms slide against a fixed frame, not the opposite body
+  EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
+  // Solved, but not measured for the cost part of the rule: the serial solver unless it does not fit.
+  pair.friction = "none";
+  const LinearSolverDecision d = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e-3});
+  EXPECT_FALSE(d.iterative) << d.reason;
+  EXPECT_NE(d.reason.find("contact[0] is between elastic bodies"), std::string::npos) << d.reason;
+}
+
 TEST(LinearSolverChoice, PredictsTheCondensedDofsFromTheContactRows) {
   const testing::TempFolder folder;
   // The block's top: 5 nodes, free, their rows reading u_y (the plane's normal); with friction both DOFs.
