@@ -12,6 +12,18 @@ SubproblemSolution PrimalIpopt::solve(const Subproblem& p, const SubproblemWarmS
   IpoptOptions opt = p.ipopt;
   opt.warm_start = warm.multipliers != nullptr;
   res = solve_with_ipopt(p.target, p.start, opt, warm.multipliers);
+  if (res.status_text == "Restoration_Failed" && res.x.allFinite() && res.multipliers.allFinite()) {
+    // IPOPT gives up when its line search fails at an iterate that is already feasible: there is no
+    // feasibility to restore (coin-or/Ipopt issue 394). f was evaluated there, so it is a valid start: resumed
+    // from it with its multipliers, the step keeps its path where round-off alone derailed IPOPT, instead of
+    // a cold start that ends elsewhere within the Coulomb tolerance (the frictional ironing in m and in mm on
+    // OpenBLAS's Zen kernels: one unit system restarted a step, and the reactions parted by 2.6e-4).
+    log.detail("  IPOPT failed (" + res.status_text + "); resumed from its last iterate");
+    IpoptOptions resumed = p.ipopt;
+    resumed.warm_start = true;
+    s.failed_iterations += res.iterations;
+    res = solve_with_ipopt(p.target, res.x, resumed, &res.multipliers);
+  }
   if (!res.success && p.geometry_iteration == 1 && warm.multipliers) {
     log.detail("  IPOPT failed from the previous solve's multipliers (" + res.status_text + "); cold start");
     s.failed_iterations += res.iterations;
