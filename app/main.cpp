@@ -125,9 +125,7 @@ RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log,
     const LinearSolverDecision d = choose_linear_solver(spec, model);
     log.detail(d.reason);
     if (!d.iterative) return;
-    why = (d.basis == DecisionBasis::kDenseWork ? "the direct solver's dense work is predicted to cost more ("
-                                               : "the direct solver's factors are predicted not to fit in memory (") +
-          d.figures + ")";
+    why = off_direct_reason(d);
     throw StartDistributed{};
   };
   try {

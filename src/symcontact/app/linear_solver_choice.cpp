@@ -145,6 +145,12 @@ LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& 
   return {true, DecisionBasis::kMemory, "linear solver: iterative (automatic: " + figures + ")", figures};
 }
 
+std::string off_direct_reason(const LinearSolverDecision& d) {
+  return (d.basis == DecisionBasis::kDenseWork ? "the direct solver's dense work is predicted to cost more ("
+                                              : "the direct solver is predicted not to fit in memory (") +
+         d.figures + ")";
+}
+
 LinearSolverDecision serial_only_choice(const ProblemSpec& spec, const Model& model, const MemoryBudget& budget) {
   LinearSolverDecision d = choose_linear_solver(spec, model, budget);
   if (!d.iterative) return d;
@@ -154,9 +160,8 @@ LinearSolverDecision serial_only_choice(const ProblemSpec& spec, const Model& mo
                d.figures + ")";
     return d;
   }
-  const std::string why = d.basis == DecisionBasis::kMemory
-                              ? "the direct solver is predicted not to fit in memory (" + d.figures + ")"
-                              : "the problem file asks for \"iterative\"";
+  const std::string why =
+      d.basis == DecisionBasis::kMemory ? off_direct_reason(d) : "the problem file asks for \"iterative\"";
   throw InputError(spec.file, "contact_solver.linear_solver",
                    why + "; this program runs the direct solver only: run the problem with `symcontact run` or "
                          "`mpirun symcontact run`, which take the distributed path (docs/distributed.md)");

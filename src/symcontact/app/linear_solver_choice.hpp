@@ -75,6 +75,9 @@ Index predicted_condensed_dofs(const ProblemSpec& spec, const Model& model);
 LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& model,
                                           const MemoryBudget& budget = MemoryBudget{});
 
+/// Why `d` moved off the direct solver (basis kDenseWork or kMemory), with its figures, for a message.
+std::string off_direct_reason(const LinearSolverDecision& d);
+
 /// The rule for a program that runs the serial solver only (the Python module): the serial solver, its reason
 /// saying so where `symcontact run` would take the distributed path for its cost (basis kDenseWork); an
 /// InputError on contact_solver.linear_solver where the file asks for the distributed path or the serial
