@@ -159,6 +159,7 @@ struct Options {
   bool frictionless = false;     ///< large-contact cases: no friction, to compare
   std::string subproblem_solver; ///< large-contact cases: [contact_solver] subproblem_solver; empty: the default
   std::string coulomb_update;    ///< large-contact cases: [contact_solver] coulomb_update; empty: the default
+  std::string warm_start;        ///< large-contact cases: [contact_solver] warm_start; empty: the default
   double search_distance = 0.0;  ///< Hertz cases: > 0 overrides the example's (automatic) search distance
   std::vector<std::string> problems;  ///< --case problem
   std::string steps_csv;
@@ -258,6 +259,7 @@ void run_contact_case(const std::string& name, const Options& opt, const std::ve
     c.friction = opt.frictionless ? LargeContactFriction::kNone : LargeContactFriction::kCoulomb;
     c.subproblem_solver = opt.subproblem_solver;
     c.coulomb_update = opt.coulomb_update;
+    c.warm_start = opt.warm_start;
     c.condense = !opt.no_condense;
     run_large_contact_sweep(c, machine);
     return;
@@ -369,6 +371,10 @@ int main(int argc, char** argv) {
                  "pad-flat, pad-ball, clamped-plates and their -2d analogues: [contact_solver] coulomb_update of the "
                  "problems, to compare (default: the problem file's default)")
       ->check(CLI::IsMember({"inside_optimizer", "between_solves"}));
+  app.add_option("--warm-start", opt.warm_start,
+                 "pad-flat, pad-ball, clamped-plates and their -2d analogues: [contact_solver] warm_start of the "
+                 "problems, to compare (default: the problem file's default)")
+      ->check(CLI::IsMember({"active_set", "interior_point"}));
   app.add_flag("--frictionless", opt.frictionless,
                "pad-flat, pad-ball, clamped-plates and their -2d analogues: the same problems without friction");
   app.add_flag("--check-only", opt.check_only,

@@ -189,6 +189,7 @@ std::string problem_text(const LargeContactBenchOptions& opt, const CaseFiles& f
     << toml << "\n[contact_solver]\n";
   if (!opt.subproblem_solver.empty()) s << "subproblem_solver = \"" << opt.subproblem_solver << "\"\n";
   if (!opt.coulomb_update.empty()) s << "coulomb_update = \"" << opt.coulomb_update << "\"\n";
+  if (!opt.warm_start.empty()) s << "warm_start = \"" << opt.warm_start << "\"\n";
   if (!opt.condense) s << "static_condensation = false\n";
   return s.str();
 }

@@ -62,6 +62,8 @@ struct LargeContactBenchOptions {
   bool condense = true;
   /// [contact_solver] coulomb_update of the problems ("inside_optimizer", "between_solves"); empty: the default.
   std::string coulomb_update;
+  /// [contact_solver] warm_start of the problems ("active_set", "interior_point"); empty: the default.
+  std::string warm_start;
 };
 
 /// The ladder of h of each case: by default sizes that each take at most a couple of minutes on two cores

@@ -1052,6 +1052,19 @@ class Reader {
     spec.linear_solver = it->second;
   }
 
+  /// [contact_solver] `name`, one of the names `parse` knows (`expected` lists them for the message), into `out`.
+  template <class Choice>
+  void read_choice(const toml::table& t, const char* name, std::optional<Choice> (*parse)(const std::string&),
+                   const std::string& expected, Choice& out) const {
+    const toml::node* n = t.get(name);
+    if (!n) return;
+    const std::string key = std::string("contact_solver.") + name;
+    const std::string v = as_string(*n, key);
+    const std::optional<Choice> choice = parse(v);
+    if (!choice) fail(key, "expected " + expected + ", got \"" + v + "\"");
+    out = *choice;
+  }
+
   void read_contact_solver(const toml::table& root, ProblemSpec& spec) const {
     const toml::node* node = root.get("contact_solver");
     if (!node) return;
@@ -1063,7 +1076,7 @@ class Reader {
              "\"ipopt\") or \"primal_ipopt\" (dual_solve = false)");
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "converge_past_tolerance",
-                "max_coulomb_iterations", "coulomb_update", "static_condensation", "subproblem_solver",
+                "max_coulomb_iterations", "coulomb_update", "static_condensation", "subproblem_solver", "warm_start",
                 "max_step_cuts", "linear_solver"});
     read_linear_solver(t, spec);
     FrictionalOptions& f = spec.contact_solver.friction;
@@ -1086,24 +1099,14 @@ class Reader {
     if (const toml::node* n = t.get("max_coulomb_iterations")) {
       f.max_coulomb_iterations = as_count(*n, "contact_solver.max_coulomb_iterations");
     }
-    if (const toml::node* n = t.get("coulomb_update")) {
-      const std::string key = "contact_solver.coulomb_update";
-      const std::string v = as_string(*n, key);
-      const std::optional<CoulombUpdate> choice = parse_coulomb_update(v);
-      if (!choice) fail(key, "expected \"inside_optimizer\" or \"between_solves\", got \"" + v + "\"");
-      f.coulomb_update = *choice;
-    }
+    read_choice(t, "coulomb_update", parse_coulomb_update, "\"inside_optimizer\" or \"between_solves\"",
+                f.coulomb_update);
     if (const toml::node* n = t.get("static_condensation"))
       s.static_condensation = as_bool(*n, "contact_solver.static_condensation");
-    if (const toml::node* n = t.get("subproblem_solver")) {
-      const std::string key = "contact_solver.subproblem_solver";
-      const std::string v = as_string(*n, key);
-      const std::optional<SubproblemSolver> choice = parse_subproblem_solver(v);
-      if (!choice)
-        fail(key, "expected \"dual_interior_point\", \"dual_ipopt\", \"primal_ipopt\" or \"primal_interior_point\", "
-                  "got \"" + v + "\"");
-      s.subproblem_solver = *choice;
-    }
+    read_choice(t, "subproblem_solver", parse_subproblem_solver,
+                "\"dual_interior_point\", \"dual_ipopt\", \"primal_ipopt\" or \"primal_interior_point\"",
+                s.subproblem_solver);
+    read_choice(t, "warm_start", parse_warm_start, "\"active_set\" or \"interior_point\"", s.warm_start);
     if (const toml::node* n = t.get("max_step_cuts")) {
       const std::string key = "contact_solver.max_step_cuts";
       const std::int64_t c = as_integer(*n, key);

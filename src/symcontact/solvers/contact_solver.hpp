@@ -79,6 +79,8 @@ struct ContactSolveOptions {
   Index max_condensed_dofs = 12000;
   /// How each geometry iteration's subproblem is solved (SubproblemSolver).
   SubproblemSolver subproblem_solver = SubproblemSolver::kDualInteriorPoint;
+  /// How the dense primal interior point's warm-started subproblems start (WarmStart).
+  WarmStart warm_start = WarmStart::kActiveSet;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
   /// The caller vouches that the loads and Dirichlet values are those of the previous solve with this

@@ -200,6 +200,25 @@ bool newton_step(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate&
 
 }  // namespace
 
+ProblemScales dense_primal_scales(ConstrainedProblem& problem, const VectorXd& x0) {
+  VectorXd g0;
+  problem.gradient(x0, g0);
+  SparseMatrix H0;
+  problem.hessian_lower(x0, H0);
+  return problem_scales(x0, g0, H0);
+}
+
+double dense_primal_error(ConstrainedProblem& problem, const ProblemScales& scales, const VectorXd& x,
+                          const VectorXd& multipliers) {
+  const ScaledProblem sp(problem, scales);
+  Iterate it;
+  it.x = x;
+  it.l = sp.scaled_multipliers(multipliers);
+  it.s = sp.gap(x).cwiseMax(0.0);
+  residuals(sp, it);
+  return it.error();
+}
+
 IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, const DensePrimalOptions& options,
                                const VectorXd* multipliers0, const FollowIterate* follow) {
   if (problem.num_equalities() > 0 || problem.lower_bounds())
@@ -210,11 +229,7 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
   Iterate it;
   it.x = x0;
   try {
-    VectorXd g0;
-    problem.gradient(x0, g0);
-    SparseMatrix H0;
-    problem.hessian_lower(x0, H0);
-    r.scales = problem_scales(x0, g0, H0);
+    r.scales = dense_primal_scales(problem, x0);
   } catch (const EvaluationError& e) {
     r.status_text = std::string("f cannot be evaluated at the start: ") + e.what();
     return r;

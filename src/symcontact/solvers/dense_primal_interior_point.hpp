@@ -69,4 +69,15 @@ using FollowIterate = std::function<bool(const VectorXd& x, const VectorXd& mult
 IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, const DensePrimalOptions& options,
                                const VectorXd* multipliers0 = nullptr, const FollowIterate* follow = nullptr);
 
+/// The scales solve_dense_primal takes from its start x0 (problem_scales at x0). Throws EvaluationError where f
+/// cannot be evaluated at x0.
+ProblemScales dense_primal_scales(ConstrainedProblem& problem, const VectorXd& x0);
+
+/// The error of solve_dense_primal's stopping test, in its scaled variables (`scales`, from its start), at x
+/// with multipliers λ ≥ 0 (the problem's units) and slacks s = max(c(x), 0): max(‖r_d‖∞, ‖c̃ − s̃‖∞, max s̃ ∘ λ̃).
+/// A point found otherwise (active_set_start.hpp) whose error is within the tolerance is one the interior
+/// point would have accepted.
+double dense_primal_error(ConstrainedProblem& problem, const ProblemScales& scales, const VectorXd& x,
+                          const VectorXd& multipliers);
+
 }  // namespace symcontact

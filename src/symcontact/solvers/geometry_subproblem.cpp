@@ -13,7 +13,7 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       log_(log), friction_(friction), total_(energy), problem_(total_, fixed, dofs.num_dofs()),
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       dual_(dual_method(contacts, options.subproblem_solver)),
-      primal_(primal_method(contacts, options.subproblem_solver)),
+      primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower) {}
 
 /// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out

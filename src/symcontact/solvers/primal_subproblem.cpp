@@ -1,5 +1,6 @@
 #include "symcontact/solvers/primal_subproblem.hpp"
 
+#include "symcontact/solvers/active_set_start.hpp"
 #include "symcontact/solvers/dense_primal_interior_point.hpp"
 
 namespace symcontact {
@@ -51,11 +52,25 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     if (p.follow && p.geometry_iteration > 1)
       o.follow_below = DensePrimalOptions::follow_below_near_fixed_point(o.tolerance);
     SubproblemSolution s;
-    s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers, p.follow ? &p.follow : nullptr);
+    const FollowIterate* follow = p.follow ? &p.follow : nullptr;
+    if (warm_ == WarmStart::kActiveSet && warm.multipliers &&
+        warm.multipliers->size() == p.target.constraint_matrix().rows()) {
+      ActiveSetStartOptions a;
+      a.tolerance = o.tolerance;
+      s.result = solve_from_active_set(p.target, p.start, *warm.multipliers, a, follow);
+      if (s.result.success) {
+        s.result.status_text = "primal interior point: " + s.result.status_text;
+        return s;
+      }
+      log.detail("  active-set start: " + s.result.status_text + "; the interior point instead");
+      failed = s.result.iterations;
+    }
+    s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers, follow);
     s.result.status_text = "primal interior point: " + s.result.status_text;
+    s.failed_iterations = failed;
     if (s.result.success) return s;
     log.detail("  the dense " + s.result.status_text + "; IPOPT instead");
-    failed = s.result.iterations;
+    failed += s.result.iterations;
   }
   SubproblemSolution s = PrimalIpopt::solve(p, warm, log, times);
   s.failed_iterations += failed;

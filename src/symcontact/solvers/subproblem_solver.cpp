@@ -25,8 +25,8 @@ bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice) {
   return interior_point && independent_rows(contacts);
 }
 
-std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice) {
-  if (dense_primal_first(contacts, choice)) return std::make_unique<PrimalInteriorPoint>();
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm) {
+  if (dense_primal_first(contacts, choice)) return std::make_unique<PrimalInteriorPoint>(warm);
   return std::make_unique<PrimalIpopt>();
 }
 

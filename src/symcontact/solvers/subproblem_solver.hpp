@@ -64,6 +64,27 @@ inline std::optional<SubproblemSolver> parse_subproblem_solver(const std::string
   return std::nullopt;
 }
 
+/// How the dense primal interior point's subproblems start where the previous solution's multipliers are at
+/// hand (a later geometry iteration, Coulomb iteration or load step on the same rows).
+enum class WarmStart {
+  /// First the primal-dual active set strategy from the previous solution's active set (active_set_start.hpp),
+  /// the interior point where it fails: between load steps the set changes little, and Newton on it costs
+  /// one or a few factorisations where the interior point takes 10–25.
+  kActiveSet,
+  /// The interior point from the previous solution and its multipliers (to compare).
+  kInteriorPoint,
+};
+
+/// The problem file's name of a warm start: "active_set", "interior_point".
+inline const char* warm_start_name(WarmStart w) { return w == WarmStart::kActiveSet ? "active_set" : "interior_point"; }
+
+/// The warm start named `name` in the problem file; nullopt for any other string.
+inline std::optional<WarmStart> parse_warm_start(const std::string& name) {
+  for (const WarmStart w : {WarmStart::kActiveSet, WarmStart::kInteriorPoint})
+    if (name == warm_start_name(w)) return w;
+  return std::nullopt;
+}
+
 /// Whether the constraint rows of `contacts` are independent (obstacles and one-pass pairs: no symmetric pair,
 /// no self-contact), so that the multipliers are unique.
 bool independent_rows(const ContactSet& contacts);
@@ -80,6 +101,7 @@ bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice);
 /// dense interior point first where the rows are independent (on the nearly dependent rows of a symmetric pair
 /// it took five times IPOPT's iterations and 3.6 times its time: docs/performance.md, clamped-plates), IPOPT
 /// where it fails; IPOPT otherwise.
-std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice);
+/// `warm`: how the dense interior point starts where it has the previous solution's multipliers.
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm);
 
 }  // namespace symcontact

@@ -1,0 +1,271 @@
+#include "symcontact/solvers/active_set_start.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "symcontact/core/error.hpp"
+#include "symcontact/solvers/dense_kkt.hpp"
+#include "symcontact/solvers/spd_factor.hpp"
+
+namespace symcontact {
+
+namespace {
+
+/// A row leaves S when its multiplier is below −kDropBelow × the largest |multiplier| of S (round-off
+/// keeps closed rows at ±1e-12 of it), and joins it when its scaled value is below −kViolation × max|x|.
+constexpr double kDropBelow = 1e-8, kViolation = 1e-10;
+/// Newton on S has converged when its step is at most kStep × max|x|, or at most kRoundOff × max|x| and not a
+/// tenth of the step before (the round-off of the augmented systems, equality_constrained_solve.cpp).
+constexpr double kStep = 1e-12, kRoundOff = 1e-9;
+/// Steps up to kLocal × max|x| are taken whole (Newton's local convergence; there f's decrease is at its
+/// round-off and a line search would stall) and let followed data move.
+constexpr double kLocal = 1e-3;
+/// Followed data move with the iterate once Newton's step is at most kFollowBelow × max|x|.
+constexpr double kFollowBelow = 1e-1;
+/// Projected CG of a Newton step with the factor of an earlier one (dense_kkt.hpp): its step tolerance
+/// relative to max|x|, and the iterations after which the step refactorises instead.
+constexpr double kCgTolerance = 1e-13, kCgForcing = 1e-3;
+constexpr int kCgMaxIterations = 50;
+/// A Newton step whose projected CG took more than this many iterations makes the next step refactorise:
+/// the friction blocks have moved far from the factorised ones (an iteration costs O(m²), the factorisation
+/// O(m³/3): at m = 1e3–2e3 about 30–50 iterations).
+constexpr int kRefactorAfter = 12;
+
+/// The rows of A scaled to unit largest entry, so that multipliers and violations compare across rows.
+struct ScaledRows {
+  explicit ScaledRows(const ConstrainedProblem& problem) {
+    const SparseMatrix& A0 = problem.constraint_matrix();
+    scale = VectorXd::Zero(A0.rows());
+    for (Index j = 0; j < A0.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(A0, j); it; ++it)
+        scale[it.row()] = std::max(scale[it.row()], std::abs(it.value()));
+    for (Index i = 0; i < scale.size(); ++i)
+      if (!(scale[i] > 0.0)) scale[i] = 1.0;
+    A = scale.cwiseInverse().asDiagonal() * A0;
+    b = problem.constraint_offset().cwiseQuotient(scale);
+  }
+  VectorXd scale;  ///< max_j |A_ij|
+  SparseMatrix A;  ///< rows divided by their scale
+  VectorXd b;
+};
+
+/// The rows of S (a 0/1 flag per row) as A_S, b_S.
+void restrict_rows(const ScaledRows& rows, const std::vector<Index>& S, SparseMatrix& AS, VectorXd& bS) {
+  std::vector<Index> pos(rows.A.rows(), -1);
+  for (std::size_t k = 0; k < S.size(); ++k) pos[S[k]] = static_cast<Index>(k);
+  std::vector<Triplet> t;
+  for (Index j = 0; j < rows.A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(rows.A, j); it; ++it)
+      if (pos[it.row()] >= 0) t.emplace_back(static_cast<int>(pos[it.row()]), static_cast<int>(j), it.value());
+  AS.resize(static_cast<Index>(S.size()), rows.A.cols());
+  AS.setFromTriplets(t.begin(), t.end());
+  bS.resize(static_cast<Index>(S.size()));
+  for (std::size_t k = 0; k < S.size(); ++k) bS[k] = rows.b[S[k]];
+}
+
+/// Newton directions of  min f  subject to  A_S x + b_S = 0:  ∇²f Δ − A_Sᵀν = −∇f,  A_S Δ = −c_S,  each
+/// the range-space solve of that KKT system (dense_kkt.hpp) with a new factorisation of ∇²f + ρ A_SᵀA_S, or by
+/// projected CG preconditioned with the last one where only f's friction blocks changed since. The CG stops
+/// at an update of `cg_tolerance` (inexact Newton: the caller sets it from the step before).
+class NewtonOnSet {
+ public:
+  /// `factorisations` counts the factorisations made.
+  NewtonOnSet(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, int& factorisations)
+      : problem_(problem), AS_(AS), bS_(bS), H_(problem.num_variables(), problem.num_variables()),
+        factorisations_(factorisations) {
+    if (AS.rows() > 0) {
+      AtA_ = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
+      adiag_ = AtA_.diagonal().cwiseAbs().maxCoeff();
+    }
+  }
+
+  /// The direction dx at x, the rows' multipliers nu at x + dx, and the slope ∇f(x)ᵀdx. False when
+  /// ∇²f + ρ A_SᵀA_S cannot be factorised.
+  bool direction(const VectorXd& x, double cg_tolerance, VectorXd& dx, VectorXd& nu, double& slope) {
+    H_.map().setZero();
+    problem_.add_hessian_lower(x, 1.0, H_.map());
+    VectorXd g;
+    problem_.gradient(x, g);
+    const VectorXd cS = AS_ * x + bS_;
+    if (reference_ && cg_iterations_ <= kRefactorAfter) {
+      const auto multiply = [&](const VectorXd& v, VectorXd& out) {
+        out = VectorXd::Zero(v.size());
+        symmetric_multiply_add(H_, v, out);
+      };
+      const ProjectedCgResult cg = projected_cg(*reference_, multiply, g, cS, dx, nu, cg_tolerance, kCgMaxIterations);
+      cg_iterations_ = cg.iterations;
+      if (cg.converged) {
+        slope = g.dot(dx);
+        return true;
+      }
+    }
+    const double hdiag = H_.map().diagonal().cwiseAbs().mean();
+    const double rho = AS_.rows() > 0 ? hdiag / adiag_ : 0.0;
+    SpdFactor chol(true);
+    if (!(hdiag > 0) || !chol.compute(SparseMatrix(), &H_, AS_.rows() > 0 ? &AtA_ : nullptr, rho)) return false;
+    ++factorisations_;
+    cg_iterations_ = 0;
+    if (AS_.rows() == 0) {
+      dx = chol.solve(VectorXd(-g));
+      nu.resize(0);
+    } else {
+      reference_ = std::make_unique<DenseRangeSpace>(chol.dense_factor(), AS_, rho);
+      reference_->solve(g, cS, dx, nu);
+    }
+    slope = g.dot(dx);
+    return true;
+  }
+
+ private:
+  ConstrainedProblem& problem_;
+  const SparseMatrix& AS_;
+  const VectorXd& bS_;
+  AlignedMatrix H_;
+  SparseMatrix AtA_;
+  double adiag_ = 0.0;
+  std::unique_ptr<DenseRangeSpace> reference_;
+  int& factorisations_;
+  int cg_iterations_ = 0;  ///< of the last projected CG
+};
+
+/// The step length along dx from x: 1 where x is off the rows of S (the step lands on them: they are linear);
+/// on them, halved from 1 until f falls by 1e-4 of the slope (Armijo; f convex and dx a descent direction on
+/// the rows' null space: ∇fᵀdx = −dxᵀ∇²f dx). 0 when no length in 30 halvings does.
+double step_length(ConstrainedProblem& problem, const VectorXd& x, const VectorXd& dx, double slope, bool on_rows) {
+  if (!on_rows) return 1.0;
+  const double f0 = problem.objective(x);
+  double alpha = 1.0;
+  for (int half = 0; half < 30; ++half, alpha *= 0.5) {
+    try {
+      if (problem.objective(x + alpha * dx) <= f0 + 1e-4 * alpha * slope) return alpha;
+    } catch (const EvaluationError&) {
+    }
+  }
+  return 0.0;
+}
+
+/// S predicted from the warm start: the rows with a multiplier above 1e-6 of the largest (the polish's set,
+/// active_set_polish.hpp) and the rows violated at x0.
+std::vector<Index> predicted_set(const ScaledRows& rows, const VectorXd& x0, const VectorXd& multipliers0) {
+  const double top = multipliers0.size() ? multipliers0.maxCoeff() : 0.0;
+  const VectorXd c = rows.A * x0 + rows.b;
+  std::vector<Index> S;
+  for (Index i = 0; i < c.size(); ++i)
+    if ((top > 0.0 && multipliers0[i] > 1e-6 * top) || c[i] < 0.0) S.push_back(i);
+  return S;
+}
+
+/// The primal-dual active set update (Hintermüller, Ito & Kunisch 2003, eq. 2.4): rows of S with a negative
+/// multiplier leave it, rows outside S that x violates join it. Returns whether S changed.
+bool update_set(const ScaledRows& rows, const VectorXd& x, const VectorXd& nu, std::vector<Index>& S) {
+  const double numax = nu.size() ? nu.cwiseAbs().maxCoeff() : 0.0;
+  const double xscale = std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
+  const VectorXd c = rows.A * x + rows.b;
+  std::vector<char> in(rows.A.rows(), 0);
+  for (const Index i : S) in[i] = 1;
+  bool changed = false;
+  for (std::size_t k = 0; k < S.size(); ++k)
+    if (nu[static_cast<Index>(k)] < -kDropBelow * numax) {
+      in[S[k]] = 0;
+      changed = true;
+    }
+  for (Index i = 0; i < c.size(); ++i)
+    if (!in[i] && -c[i] > kViolation * xscale) {
+      in[i] = 1;
+      changed = true;
+    }
+  if (!changed) return false;
+  S.clear();
+  for (Index i = 0; i < c.size(); ++i)
+    if (in[i]) S.push_back(i);
+  return true;
+}
+
+IpoptResult fail(IpoptResult r, const std::string& why) {
+  r.success = false;
+  r.status_text = why;
+  return r;
+}
+
+}  // namespace
+
+IpoptResult solve_from_active_set(ConstrainedProblem& problem, const VectorXd& x0, const VectorXd& multipliers0,
+                                  const ActiveSetStartOptions& options, const FollowIterate* follow) {
+  IpoptResult r;
+  r.x = x0;
+  if (!problem.hessian_is_dense() || problem.num_equalities() > 0 || problem.lower_bounds() ||
+      multipliers0.size() != problem.constraint_matrix().rows())
+    return fail(std::move(r), "not a dense problem with inequality rows only and their multipliers");
+  const ScaledRows rows(problem);
+  std::vector<Index> S = predicted_set(rows, x0, multipliers0);
+  VectorXd x = x0, nu;
+  auto multipliers = [&] {  // μ ≥ 0 per row, in the problem's units
+    VectorXd mu = VectorXd::Zero(rows.A.rows());
+    for (std::size_t k = 0; k < S.size(); ++k)
+      mu[S[k]] = std::max(0.0, nu[static_cast<Index>(k)]) / rows.scale[S[k]];
+    return mu;
+  };
+  int follows = 0, factorisations = 0;
+  try {
+    r.scales = dense_primal_scales(problem, x0);
+    for (int set_round = 0;; ++set_round) {
+      if (set_round >= options.max_set_rounds) return fail(std::move(r), "the active set did not settle");
+      SparseMatrix AS;
+      VectorXd bS;
+      restrict_rows(rows, S, AS, bS);
+      NewtonOnSet newton(problem, AS, bS, factorisations);
+      double previous = std::numeric_limits<double>::infinity();
+      for (int k = 0;; ++k) {
+        if (k >= options.max_newton_steps) return fail(std::move(r), "Newton on the active set did not converge");
+        VectorXd dx;
+        double slope = 0.0;
+        const double xscale = std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
+        const bool on_rows = (AS * x + bS).lpNorm<Eigen::Infinity>() <= kRoundOff * xscale;
+        // Inexact Newton (Dembo, Eisenstat & Steihaug, SIAM J. Numer. Anal. 19, 1982): the CG's accuracy a
+        // fraction of the step before, down to round-off.
+        const double cg_tolerance = std::max(kCgTolerance * xscale, kCgForcing * std::min(previous, xscale));
+        if (!newton.direction(x, cg_tolerance, dx, nu, slope) || !dx.allFinite() || !nu.allFinite())
+          return fail(std::move(r), "the Newton matrix on the active set is not definite");
+        ++r.iterations;
+        const double step = dx.lpNorm<Eigen::Infinity>();
+        const bool converged = step <= kStep * xscale || (step <= kRoundOff * xscale && step > 0.1 * previous);
+        previous = step;
+        const double alpha = step <= kLocal * xscale ? 1.0 : step_length(problem, x, dx, slope, on_rows);
+        if (alpha == 0.0) return fail(std::move(r), "no step on the active set lowers f");
+        x += alpha * dx;
+        // Followed data move with the iterate once Newton is near its solution: their fixed point and
+        // Newton's converge together (the interior point's follow_below).
+        if (step <= kFollowBelow * xscale && follow && follows < options.max_follows && (*follow)(x, multipliers())) {
+          ++follows;
+          previous = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        if (converged) break;
+      }
+      if (!update_set(rows, x, nu, S)) break;
+    }
+    r.x = x;
+    r.multipliers = multipliers();
+    const double error = dense_primal_error(problem, r.scales, r.x, r.multipliers);
+    if (!(error <= options.tolerance)) {
+      std::ostringstream s;
+      s << "the solution on the active set does not pass the stopping test (scaled error " << error << ")";
+      return fail(std::move(r), s.str());
+    }
+    r.objective = problem.objective(r.x);
+  } catch (const EvaluationError& e) {
+    return fail(std::move(r), std::string("f cannot be evaluated: ") + e.what());
+  }
+  r.success = true;
+  r.status_text = "converged (active set: " + std::to_string(factorisations) +
+                  (factorisations == 1 ? " factorisation)" : " factorisations)");
+  r.constraint_values = problem.constraint_matrix() * r.x + problem.constraint_offset();
+  r.bound_multipliers = VectorXd::Zero(problem.num_variables());
+  return r;
+}
+
+}  // namespace symcontact
