@@ -30,8 +30,8 @@ namespace symcontact {
 struct ActiveSetStartOptions {
   double tolerance = 1e-10;   ///< of the stopping test (DensePrimalOptions::tolerance)
   int max_set_rounds = 8;     ///< changes of S before the attempt is given up
-  int max_newton_steps = 60;  ///< Newton steps on one S, followed data included
-  int max_follows = 30;       ///< changes of the followed data; then the point stands for the data it has
+  int max_newton_steps = 100;  ///< Newton steps on one S, followed data included
+  int max_follows = 100;       ///< changes of the followed data; then the point stands for the data it has
 };
 
 /// From x0 with the previous solution's multipliers (size p, μ ≥ 0). The result is in IpoptResult's form

@@ -99,7 +99,7 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   bool closed = s.closed;  ///< the active set was closed exactly at this iteration
   if (dual) {
     if (!s.closing_failure.empty()) polish_.closing_rejected(s.closing_failure, log_);
-    polish_.dual_iteration();
+    polish_.closed_by_method();
   }
   rep_.ipopt_iterations += s.failed_iterations + res.iterations;
   rep_.ipopt_per_iteration.push_back(res.iterations);
@@ -109,7 +109,12 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
     u = problem.expand(res.x.size() == target.num_variables() ? from_target(res.x) : x_);
     throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
   }
-  if (!dual) closed = polish_.polish_primal(target, res, log_, rep_.times);
+  // A primal method that closed the set (the active-set start: exact on its set, stationary to round-off)
+  // leaves the polish nothing to do.
+  if (!dual && s.closed)
+    polish_.closed_by_method();
+  else if (!dual)
+    closed = polish_.polish_primal(target, res, log_, rep_.times);
   if (condensed) {
     ScopedPhase t(rep_.times, "condensation");
     res.x = lazy_ ? condensed->with_boundary(x_, res.x) : condensed->expand(res.x);

@@ -61,8 +61,9 @@ class PolishStrategy {
   bool balance_deferred() const { return balance_at_end_; }
   /// That deferred force balance, of xt (target's variables) with the multipliers mu.
   void balance(ConstrainedProblem& target, VectorXd& xt, VectorXd& mu, const Logger& log, PhaseTimes& times) const;
-  /// A dual iteration: nothing deferred.
-  void dual_iteration() { balance_at_end_ = false; }
+  /// The subproblem's method closed the set itself, or handed back its dual's point: no polish of this
+  /// iteration, nothing deferred.
+  void closed_by_method() { balance_at_end_ = false; }
 
   /// The geometry change of an iteration (`history`: the changes before it), and whether its set was
   /// closed exactly: gives closing up when the fixed point stalls with the set closed.

@@ -53,13 +53,15 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
       o.follow_below = DensePrimalOptions::follow_below_near_fixed_point(o.tolerance);
     SubproblemSolution s;
     const FollowIterate* follow = p.follow ? &p.follow : nullptr;
-    if (warm_ == WarmStart::kActiveSet && warm.multipliers &&
+    // Only where the polish would close the set (PolishStrategy::closes()): the active-set start closes it.
+    if (warm_ == WarmStart::kActiveSet && p.close_active_set && warm.multipliers &&
         warm.multipliers->size() == p.target.constraint_matrix().rows()) {
       ActiveSetStartOptions a;
       a.tolerance = o.tolerance;
       s.result = solve_from_active_set(p.target, p.start, *warm.multipliers, a, follow);
       if (s.result.success) {
         s.result.status_text = "primal interior point: " + s.result.status_text;
+        s.closed = true;
         return s;
       }
       log.detail("  active-set start: " + s.result.status_text + "; the interior point instead");

@@ -48,7 +48,9 @@ struct SubproblemSolution {
   /// x in target's variables, μ ≥ 0 per row, c(x) = A x + b; `success` false when every attempt failed.
   IpoptResult result;
   int failed_iterations = 0;  ///< optimiser iterations of failed attempts before `result`
-  bool closed = false;        ///< the method closed the active set exactly (close_active_set)
+  /// The method closed the active set exactly (close_active_set): the dual's polish, or the primal's active-set
+  /// start (active_set_start.hpp), whose point is exact on its set and stationary to round-off.
+  bool closed = false;
   /// close_active_set was asked and the closing was not applied (why, for the log); empty otherwise.
   std::string closing_failure;
 };

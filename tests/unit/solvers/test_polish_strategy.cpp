@@ -131,7 +131,7 @@ TEST(PolishStrategy, ARejectedDualClosingIsGivenUpForTheSolve) {
   PolishStrategy polish(true, ws, 0);
   polish.closing_rejected("the set cycles", quiet());
   EXPECT_FALSE(polish.closes());
-  polish.dual_iteration();
+  polish.closed_by_method();
   EXPECT_FALSE(polish.balance_deferred());
 }
 
