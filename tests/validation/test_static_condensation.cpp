@@ -6,7 +6,8 @@
 // inclined interface (friction terms condensed with the bulk) and the 3D sphere on a plane. The same cases
 // solved through the dual of the condensed problem (contact_solver.subproblem_solver = "dual_interior_point",
 // the default) and through IPOPT on the condensed displacements ("primal_ipopt") agree as well, and so do
-// the dense primal interior point ("primal_interior_point") and IPOPT on the condensed displacements.
+// the dense primal interior point ("primal_interior_point") and IPOPT on the condensed displacements, and the
+// dense primal's two warm starts on the frictional block (contact_solver.warm_start).
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -27,13 +28,13 @@ namespace {
 /// measured 1e-5 at the defaults of the two-cylinder case).
 std::string prepare(const std::string& dir, const std::string& example, const std::string& geo, const std::string& size,
                     double geometry_tolerance, bool condense,
-                    const char* subproblem_solver = "dual_interior_point") {
+                    const char* subproblem_solver = "dual_interior_point", const char* warm_start = "active_set") {
   const std::string folder = std::string(SYMCONTACT_EXAMPLES) + "/" + example + "/";
   write_text(dir, "case.geo", size + "\nInclude \"" + folder + geo + "\";\n");
   std::string toml = read_text(folder + geo.substr(0, geo.size() - 4) + ".toml");
   for (std::size_t at; (at = toml.find(geo)) != std::string::npos;) toml.replace(at, geo.size(), "case.geo");
   std::string lines = std::string("static_condensation = ") + (condense ? "true" : "false") + "\n" +
-                      "subproblem_solver = \"" + subproblem_solver + "\"\n";
+                      "subproblem_solver = \"" + subproblem_solver + "\"\nwarm_start = \"" + warm_start + "\"\n";
   if (geometry_tolerance > 0.0) {
     for (const char* key : {"geometry_tolerance", "coulomb_tolerance"})
       for (std::size_t at; (at = toml.find(std::string("\n") + key)) != std::string::npos;)
@@ -159,6 +160,27 @@ TEST_P(PrimalOptimizerChangesNothing, SameDisplacementsAndContactForces) {
   expect_agreement(p, *ipm, *ipopt);
 }
 
+// The dense primal interior point's warm-started solves started by Newton on the previous active set
+// (solvers/active_set_start.hpp, the default) or by the interior point: the same answers, the active-set path
+// actually taken.
+class WarmStartChangesNothing : public ::testing::TestWithParam<Case> {};
+
+TEST_P(WarmStartChangesNothing, SameDisplacementsAndContactForces) {
+  const Case& p = GetParam();
+  const std::string dir = test_temp_dir(std::string("warm_start_") + p.example);
+  const auto solve = [&](const char* warm_start) {
+    return solve_case(
+        prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "primal_interior_point", warm_start), dir);
+  };
+  auto active_set = solve("active_set");
+  auto interior_point = solve("interior_point");
+  EXPECT_NE(active_set->report.ipopt_status.find("(active set"), std::string::npos) << active_set->report.ipopt_status;
+  EXPECT_EQ(interior_point->report.ipopt_status.find("active set"), std::string::npos)
+      << interior_point->report.ipopt_status;
+  ASSERT_EQ(active_set->history.size(), interior_point->history.size());
+  expect_agreement(p, *active_set, *interior_point);
+}
+
 const auto kCases = ::testing::Values(Case{"hertz_2d", "cylinder_on_plane.geo", "h = 0.01;", 1e-10, 1e-6},
                                            Case{"hertz_2d", "two_cylinders.geo", "h = 0.01;", 1e-10, 1e-6, true, true},
                                            // Coulomb: the fixed points cannot be tightened much below the example's 1e-6
@@ -179,6 +201,6 @@ INSTANTIATE_TEST_SUITE_P(Examples, DualSolveChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, DualOptimizerChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, PrimalOptimizerChangesNothing, kCases, case_name);
 // Coulomb friction against a rigid plane (V4's block, dragged in ten steps), the example's own tolerances.
-INSTANTIATE_TEST_SUITE_P(Friction, PrimalOptimizerChangesNothing,
-                         ::testing::Values(Case{"friction_block", "block.geo", "n = 4;", 0.0, 1e-4, false, false}),
-                         case_name);
+const auto kFrictionBlock = ::testing::Values(Case{"friction_block", "block.geo", "n = 4;", 0.0, 1e-4, false, false});
+INSTANTIATE_TEST_SUITE_P(Friction, PrimalOptimizerChangesNothing, kFrictionBlock, case_name);
+INSTANTIATE_TEST_SUITE_P(Friction, WarmStartChangesNothing, kFrictionBlock, case_name);
