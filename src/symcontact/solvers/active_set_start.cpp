@@ -193,6 +193,59 @@ IpoptResult fail(IpoptResult r, const std::string& why) {
   return r;
 }
 
+/// The iterate of the attempt: x, the multipliers ν of the rows of S (scaled rows), and what it has cost.
+struct SetIterate {
+  VectorXd x, nu;
+  std::vector<Index> S;
+  int newton_steps = 0, factorisations = 0, follows = 0;
+  /// μ ≥ 0 per row, in the problem's units.
+  VectorXd multipliers(const ScaledRows& rows) const {
+    VectorXd mu = VectorXd::Zero(rows.A.rows());
+    for (std::size_t k = 0; k < S.size(); ++k)
+      mu[S[k]] = std::max(0.0, nu[static_cast<Index>(k)]) / rows.scale[S[k]];
+    return mu;
+  }
+};
+
+/// Newton on S (the file comment's steps 2 and 3) from it.x until its step is at round-off and the followed
+/// data no longer change. Returns why it failed; empty on success.
+std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, const ActiveSetStartOptions& options,
+                          const FollowIterate* follow, SetIterate& it) {
+  SparseMatrix AS;
+  VectorXd bS;
+  restrict_rows(rows, it.S, AS, bS);
+  NewtonOnSet newton(problem, AS, bS, it.factorisations);
+  double previous = std::numeric_limits<double>::infinity();
+  for (int k = 0;; ++k) {
+    if (k >= options.max_newton_steps) return "Newton on the active set did not converge";
+    VectorXd dx;
+    double slope = 0.0;
+    const double xscale = std::max(it.x.lpNorm<Eigen::Infinity>(), 1e-300);
+    const bool on_rows = (AS * it.x + bS).lpNorm<Eigen::Infinity>() <= kRoundOff * xscale;
+    // Inexact Newton (Dembo, Eisenstat & Steihaug, SIAM J. Numer. Anal. 19, 1982): the CG's accuracy a
+    // fraction of the step before, down to round-off.
+    const double cg_tolerance = std::max(kCgTolerance * xscale, kCgForcing * std::min(previous, xscale));
+    if (!newton.direction(it.x, cg_tolerance, dx, it.nu, slope) || !dx.allFinite() || !it.nu.allFinite())
+      return "the Newton matrix on the active set is not definite";
+    ++it.newton_steps;
+    const double step = dx.lpNorm<Eigen::Infinity>();
+    const bool converged = step <= kStep * xscale || (step <= kRoundOff * xscale && step > 0.1 * previous);
+    previous = step;
+    const double alpha = step <= kLocal * xscale ? 1.0 : step_length(problem, it.x, dx, slope, on_rows);
+    if (alpha == 0.0) return "no step on the active set lowers f";
+    it.x += alpha * dx;
+    // Followed data move with the iterate once Newton is near its solution: their fixed point and Newton's
+    // converge together (the interior point's follow_below).
+    if (step <= kFollowBelow * xscale && follow && it.follows < options.max_follows &&
+        (*follow)(it.x, it.multipliers(rows))) {
+      ++it.follows;
+      previous = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    if (converged) return "";
+  }
+}
+
 }  // namespace
 
 IpoptResult solve_from_active_set(ConstrainedProblem& problem, const VectorXd& x0, const VectorXd& multipliers0,
@@ -203,55 +256,20 @@ IpoptResult solve_from_active_set(ConstrainedProblem& problem, const VectorXd& x
       multipliers0.size() != problem.constraint_matrix().rows())
     return fail(std::move(r), "not a dense problem with inequality rows only and their multipliers");
   const ScaledRows rows(problem);
-  std::vector<Index> S = predicted_set(rows, x0, multipliers0);
-  VectorXd x = x0, nu;
-  auto multipliers = [&] {  // μ ≥ 0 per row, in the problem's units
-    VectorXd mu = VectorXd::Zero(rows.A.rows());
-    for (std::size_t k = 0; k < S.size(); ++k)
-      mu[S[k]] = std::max(0.0, nu[static_cast<Index>(k)]) / rows.scale[S[k]];
-    return mu;
-  };
-  int follows = 0, factorisations = 0;
+  SetIterate it;
+  it.x = x0;
+  it.S = predicted_set(rows, x0, multipliers0);
   try {
     r.scales = dense_primal_scales(problem, x0);
     for (int set_round = 0;; ++set_round) {
       if (set_round >= options.max_set_rounds) return fail(std::move(r), "the active set did not settle");
-      SparseMatrix AS;
-      VectorXd bS;
-      restrict_rows(rows, S, AS, bS);
-      NewtonOnSet newton(problem, AS, bS, factorisations);
-      double previous = std::numeric_limits<double>::infinity();
-      for (int k = 0;; ++k) {
-        if (k >= options.max_newton_steps) return fail(std::move(r), "Newton on the active set did not converge");
-        VectorXd dx;
-        double slope = 0.0;
-        const double xscale = std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
-        const bool on_rows = (AS * x + bS).lpNorm<Eigen::Infinity>() <= kRoundOff * xscale;
-        // Inexact Newton (Dembo, Eisenstat & Steihaug, SIAM J. Numer. Anal. 19, 1982): the CG's accuracy a
-        // fraction of the step before, down to round-off.
-        const double cg_tolerance = std::max(kCgTolerance * xscale, kCgForcing * std::min(previous, xscale));
-        if (!newton.direction(x, cg_tolerance, dx, nu, slope) || !dx.allFinite() || !nu.allFinite())
-          return fail(std::move(r), "the Newton matrix on the active set is not definite");
-        ++r.iterations;
-        const double step = dx.lpNorm<Eigen::Infinity>();
-        const bool converged = step <= kStep * xscale || (step <= kRoundOff * xscale && step > 0.1 * previous);
-        previous = step;
-        const double alpha = step <= kLocal * xscale ? 1.0 : step_length(problem, x, dx, slope, on_rows);
-        if (alpha == 0.0) return fail(std::move(r), "no step on the active set lowers f");
-        x += alpha * dx;
-        // Followed data move with the iterate once Newton is near its solution: their fixed point and
-        // Newton's converge together (the interior point's follow_below).
-        if (step <= kFollowBelow * xscale && follow && follows < options.max_follows && (*follow)(x, multipliers())) {
-          ++follows;
-          previous = std::numeric_limits<double>::infinity();
-          continue;
-        }
-        if (converged) break;
-      }
-      if (!update_set(rows, x, nu, S)) break;
+      const std::string failure = newton_on_set(problem, rows, options, follow, it);
+      r.iterations = it.newton_steps;
+      if (!failure.empty()) return fail(std::move(r), failure);
+      if (!update_set(rows, it.x, it.nu, it.S)) break;
     }
-    r.x = x;
-    r.multipliers = multipliers();
+    r.x = it.x;
+    r.multipliers = it.multipliers(rows);
     const double error = dense_primal_error(problem, r.scales, r.x, r.multipliers);
     if (!(error <= options.tolerance)) {
       std::ostringstream s;
@@ -263,8 +281,8 @@ IpoptResult solve_from_active_set(ConstrainedProblem& problem, const VectorXd& x
     return fail(std::move(r), std::string("f cannot be evaluated: ") + e.what());
   }
   r.success = true;
-  r.status_text = "converged (active set: " + std::to_string(factorisations) +
-                  (factorisations == 1 ? " factorisation)" : " factorisations)");
+  r.status_text = "converged (active set: " + std::to_string(it.factorisations) +
+                  (it.factorisations == 1 ? " factorisation)" : " factorisations)");
   r.constraint_values = problem.constraint_matrix() * r.x + problem.constraint_offset();
   r.bound_multipliers = VectorXd::Zero(problem.num_variables());
   return r;
