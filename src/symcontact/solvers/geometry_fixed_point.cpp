@@ -97,10 +97,7 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   auto [s, dual] = subproblem_.solve(x_, it, same_rows ? &mu_prev_ : nullptr, ipopt_, polish_.closes(), rep_);
   IpoptResult& res = s.result;
   bool closed = s.closed;  ///< the active set was closed exactly at this iteration
-  if (dual) {
-    if (!s.closing_failure.empty()) polish_.closing_rejected(s.closing_failure, log_);
-    polish_.closed_by_method();
-  }
+  if (dual && !s.closing_failure.empty()) polish_.closing_rejected(s.closing_failure, log_);
   rep_.ipopt_iterations += s.failed_iterations + res.iterations;
   rep_.ipopt_per_iteration.push_back(res.iterations);
   rep_.ipopt_status = res.status_text;
@@ -109,11 +106,11 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
     u = problem.expand(res.x.size() == target.num_variables() ? from_target(res.x) : x_);
     throw SolveError("IPOPT failed (" + res.status_text + ") at geometry iteration " + std::to_string(it));
   }
-  // A primal method that closed the set (the active-set start: exact on its set, stationary to round-off)
-  // leaves the polish nothing to do.
-  if (!dual && s.closed)
+  // The dual's point, and a primal one its method closed (the active-set start: exact on its set, stationary
+  // to round-off), leave the polish nothing to do.
+  if (dual || s.closed)
     polish_.closed_by_method();
-  else if (!dual)
+  else
     closed = polish_.polish_primal(target, res, log_, rep_.times);
   if (condensed) {
     ScopedPhase t(rep_.times, "condensation");
