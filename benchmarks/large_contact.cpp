@@ -274,8 +274,13 @@ void run_large_contact_sweep(const LargeContactBenchOptions& opt, const MachineI
     rss_reset_ok = reset_peak_rss() && rss_reset_ok;
     std::unique_ptr<ProblemRun> run;
     try {
-      run = solve_problem(problem_text(opt, files, h),
-                          name + ".toml", work);
+      const std::string text = problem_text(opt, files, h);
+      if (opt.keep_work) {
+        std::ostringstream file;
+        file << name << "_h" << h << ".toml";
+        write_file(work + "/" + file.str(), text);  // `symcontact run` solves it from the folder as it is
+      }
+      run = solve_problem(text, name + ".toml", work);
       const double peak_contact = peak_rss_mib();
       const double ratio = reaction_ratio(*run, files.moved_body);
       const bool closed_form = files.gross_slip && opt.friction == LargeContactFriction::kCoulomb;

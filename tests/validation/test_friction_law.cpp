@@ -454,3 +454,42 @@ TEST(V4FrictionLaw, ThresholdsFollowingTheOptimizerReachTheSameFixedPointInFewer
                                       << " between solves";
   EXPECT_GT(tau0.maxCoeff(), 0.0);
 }
+
+// f. Thresholds followed inside the dense primal interior point end where the Coulomb loop reads them: a pad
+// pressed onto a rigid cylinder (the zone grows from a point, its edge moves at every step) and dragged, every
+// solve by the interior point ([contact_solver] warm_start = "interior_point"). The loop reads the pressure
+// from the bodies' force at the answer the solve returns; were the thresholds left at an iterate the answer
+// moves from (by the closing of the active set), each solve would restore them there and the loop would re-solve
+// without end, up to its budget. Each step takes its first solve, at most one more; the answer is the active-set
+// start's to the loop's tolerance.
+TEST(V4FrictionLaw, ThresholdsFollowedByTheInteriorPointAreTheLoopsFixedPoint) {
+  const std::string dir = test_temp_dir("followed_pad");
+  write_text(dir, "pad.geo",
+             "Point(1) = {-0.5, 0, 0, 0.012}; Point(2) = {0.5, 0, 0, 0.012}; Point(3) = {0.5, 0.25, 0, 0.012};\n"
+             "Point(4) = {-0.5, 0.25, 0, 0.012};\nLine(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; "
+             "Line(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
+             "Physical Surface(\"solid\") = {1};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {3};\n");
+  const auto problem = [](const char* warm_start) {
+    return std::string("[problem]\ndimension = 2\n\n[steps]\nload_factors = [0.25, 0.5, 0.75, 1.0, 1.0, 1.0]\n\n"
+                       "[contact_solver]\nwarm_start = \"") +
+           warm_start +
+           "\"\n\n[[body]]\nname = \"pad\"\nmesh = \"pad.geo\"\ngroup = \"solid\"\nmaterial = { E = 1.0, nu = 0.3 }\n"
+           "[[body.dirichlet]]\nboundary = \"top\"\nuy = -0.03\n[[body.dirichlet]]\nboundary = \"top\"\nux = 0.05\n"
+           "factors = [0.0, 0.0, 0.0, 0.0, 0.5, 1.0]\n\n[[contact]]\nname = \"interface\"\na = \"pad.bottom\"\n"
+           "friction = \"coulomb\"\nmu = 0.3\n[contact.obstacle]\ntype = \"circle\"\ncenter = [0.0, -1.0]\n"
+           "radius = 1.0\n";
+  };
+  const auto interior_point = solve_case(problem("interior_point"), dir);
+  const auto active_set = solve_case(problem("active_set"), dir);
+  std::printf("  Coulomb iterations per step, interior point:");
+  for (const int k : interior_point->coulomb_iterations) std::printf(" %d", k);
+  std::printf("\n");
+  ASSERT_EQ(interior_point->coulomb_iterations.size(), 6u);
+  for (std::size_t s = 0; s < 6; ++s) EXPECT_LE(interior_point->coulomb_iterations[s], 1) << "step " << s + 1;
+  const Eigen::VectorXd& tau = active_set->report.friction_state.nodal_tau[0];
+  EXPECT_GT(tau.maxCoeff(), 0.0);
+  const double u_size = active_set->u.lpNorm<Eigen::Infinity>();
+  EXPECT_LT((interior_point->u - active_set->u).lpNorm<Eigen::Infinity>(), 1e-6 * u_size);
+  EXPECT_LT((interior_point->report.friction_state.nodal_tau[0] - tau).lpNorm<Eigen::Infinity>(),
+            1e-6 * tau.lpNorm<Eigen::Infinity>());
+}

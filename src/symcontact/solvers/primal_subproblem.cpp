@@ -1,7 +1,6 @@
 #include "symcontact/solvers/primal_subproblem.hpp"
 
 #include "symcontact/solvers/active_set_start.hpp"
-#include "symcontact/solvers/dense_primal_interior_point.hpp"
 
 namespace symcontact {
 
@@ -39,6 +38,18 @@ SubproblemSolution PrimalIpopt::solve(const Subproblem& p, const SubproblemWarmS
   return s;
 }
 
+namespace {
+
+/// Newton on the active set of (x, μ) (active_set_start.hpp), at the interior point's tolerance.
+IpoptResult on_active_set(const Subproblem& p, const VectorXd& x, const VectorXd& multipliers, double tolerance,
+                          const FollowIterate* follow) {
+  ActiveSetStartOptions a;
+  a.tolerance = tolerance;
+  return solve_from_active_set(p.target, x, multipliers, a, follow);
+}
+
+}  // namespace
+
 SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const SubproblemWarmStart& warm,
                                               const Logger& log, PhaseTimes& times) {
   int failed = 0;
@@ -56,9 +67,7 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     // Only where the polish would close the set (PolishStrategy::closes()): the active-set start closes it.
     if (warm_ == WarmStart::kActiveSet && p.close_active_set && warm.multipliers &&
         warm.multipliers->size() == p.target.constraint_matrix().rows()) {
-      ActiveSetStartOptions a;
-      a.tolerance = o.tolerance;
-      s.result = solve_from_active_set(p.target, p.start, *warm.multipliers, a, follow);
+      s.result = on_active_set(p, p.start, *warm.multipliers, o.tolerance, follow);
       if (s.result.success) {
         s.result.status_text = "primal interior point: " + s.result.status_text;
         s.closed = true;
@@ -70,6 +79,7 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     s.result = solve_dense_primal(p.target, p.start, o, warm.multipliers, follow);
     s.result.status_text = "primal interior point: " + s.result.status_text;
     s.failed_iterations = failed;
+    if (s.result.success && follow && p.close_active_set) close_with_followed_data(p, o.tolerance, *follow, s, log);
     if (s.result.success) return s;
     log.detail("  the dense " + s.result.status_text + "; IPOPT instead");
     failed += s.result.iterations;
@@ -77,6 +87,25 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
   SubproblemSolution s = PrimalIpopt::solve(p, warm, log, times);
   s.failed_iterations += failed;
   return s;
+}
+
+/// The interior point leaves every active row open by about its barrier, and the polish would close them
+/// with the thresholds where the interior point's iterates left them: the closed answer's pressure, which the
+/// Coulomb loop reads, differs from theirs by that offset, and each new solve would follow them back to the
+/// interior point's (a cycle of the loop at a change of the offset's size, seen at the edge of a growing
+/// zone). Closed here by Newton on the set with the data following, the thresholds are those of the answer.
+void PrimalInteriorPoint::close_with_followed_data(const Subproblem& p, double tolerance, const FollowIterate& follow,
+                                                   SubproblemSolution& s, const Logger& log) const {
+  IpoptResult closed = on_active_set(p, s.result.x, s.result.multipliers, tolerance, &follow);
+  if (!closed.success) {
+    log.detail("  active-set closing: " + closed.status_text + "; the polish instead");
+    return;
+  }
+  closed.iterations += s.result.iterations;
+  // "converged (active set: N factorisations)" → "set closed (active set: …)"
+  closed.status_text = s.result.status_text + "; set closed" + closed.status_text.substr(std::string("converged").size());
+  s.result = std::move(closed);
+  s.closed = true;
 }
 
 }  // namespace symcontact

@@ -9,8 +9,11 @@
 /// PrimalInteriorPoint solves a condensed subproblem by the dense interior point first
 /// (dense_primal_interior_point.hpp), from the same start and multipliers — with WarmStart::kActiveSet and
 /// those multipliers, by the active set strategy before it (active_set_start.hpp) — and falls back to
-/// PrimalIpopt's attempts where it fails or where the subproblem is not condensed.
+/// PrimalIpopt's attempts where it fails or where the subproblem is not condensed. Where thresholds follow the
+/// iterates, the interior point's answer is closed by the same active set strategy, the thresholds following
+/// to the closed answer.
 
+#include "symcontact/solvers/dense_primal_interior_point.hpp"
 #include "symcontact/solvers/subproblem.hpp"
 #include "symcontact/solvers/subproblem_solver.hpp"
 
@@ -29,6 +32,11 @@ class PrimalInteriorPoint : public PrimalIpopt {
                            PhaseTimes& times) override;
 
  private:
+  /// After the interior point's success `s` with thresholds that follow the iterates: its active set closed
+  /// by Newton with them following (s.closed); s unchanged where that fails (the polish closes it then).
+  void close_with_followed_data(const Subproblem& p, double tolerance, const FollowIterate& follow,
+                                SubproblemSolution& s, const Logger& log) const;
+
   WarmStart warm_;
 };
 
