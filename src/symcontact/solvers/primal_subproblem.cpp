@@ -102,8 +102,11 @@ void PrimalInteriorPoint::close_with_followed_data(const Subproblem& p, double t
     return;
   }
   closed.iterations += s.result.iterations;
-  // "converged (active set: N factorisations)" → "set closed (active set: …)"
-  closed.status_text = s.result.status_text + "; set closed" + closed.status_text.substr(std::string("converged").size());
+  // "converged (active set: N factorisations)" → "…; set closed (active set: N factorisations)"
+  const std::string converged = "converged";
+  std::string how = closed.status_text;
+  if (how.compare(0, converged.size(), converged) == 0) how.erase(0, converged.size());
+  closed.status_text = s.result.status_text + "; set closed" + how;
   s.result = std::move(closed);
   s.closed = true;
 }
