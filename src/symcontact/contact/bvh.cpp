@@ -1,6 +1,8 @@
 #include "symcontact/contact/bvh.hpp"
 
 #include <algorithm>
+#include <array>
+#include <utility>
 
 namespace symcontact {
 
@@ -58,10 +60,14 @@ int BoundingVolumeHierarchy::nearest(const Eigen::Vector3d& p, double max_dist2,
   int best = -1;
   double best_d2 = max_dist2;
   if (!nodes_.empty()) {
-    std::vector<std::pair<double, int>> stack{{nodes_[0].box.squaredExteriorDistance(p), 0}};
-    while (!stack.empty()) {
-      const auto [lb, id] = stack.back();
-      stack.pop_back();
+    // Depth-first, a node's two children replacing it on the stack: it never holds more than the tree's
+    // depth + 1 entries (at most 2 + log₂ n with the median split), so a fixed array serves (no allocation
+    // in a query made for every quadrature point).
+    std::array<std::pair<double, int>, 80> stack;
+    int top = 0;
+    stack[top++] = {nodes_[0].box.squaredExteriorDistance(p), 0};
+    while (top > 0) {
+      const auto [lb, id] = stack[--top];
       if (lb > best_d2) continue;
       const Node& n = nodes_[id];
       if (n.item >= 0) {
@@ -76,11 +82,11 @@ int BoundingVolumeHierarchy::nearest(const Eigen::Vector3d& p, double max_dist2,
       const double dr = nodes_[n.right].box.squaredExteriorDistance(p);
       // Visit the nearer child first (pushed last).
       if (dl < dr) {
-        stack.emplace_back(dr, n.right);
-        stack.emplace_back(dl, n.left);
+        stack[top++] = {dr, n.right};
+        stack[top++] = {dl, n.left};
       } else {
-        stack.emplace_back(dl, n.left);
-        stack.emplace_back(dr, n.right);
+        stack[top++] = {dl, n.left};
+        stack[top++] = {dr, n.right};
       }
     }
   }

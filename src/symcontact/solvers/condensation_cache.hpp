@@ -37,8 +37,8 @@ struct ContactWorkspace {
   std::vector<Index> free_index;        ///< its DOF → free numbering
   std::unique_ptr<StaticCondensation> condensation;
   int factorisations = 0;               ///< condensations computed (for reports and tests)
-  /// The pivoted factor of the condensation's Schur complement for the dual solve, and the value of
-  /// `factorisations` it belongs to.
+  /// The null space and generalised inverse of the condensation's Schur complement for the dual solve, and
+  /// the value of `factorisations` it belongs to.
   std::unique_ptr<SemidefiniteFactor> schur_factor;
   int schur_factor_of = -1;
   /// The load part of the condensed problem (condensed_problem.hpp) of the last solve and the value of

@@ -39,7 +39,7 @@ namespace symcontact {
 class DualCondensedProblem : public ConstrainedProblem {
  public:
   /// `factor`: of S (must outlive the object); A (m × n), b: the condensed constraints; g_hat: ĝ (size n).
-  /// Forms W, d, G, e: O(n² m + n m²).
+  /// Forms W, d, G, e: O(nnz(A) (n + m)) with the factor's explicit generalised inverse.
   DualCondensedProblem(const SemidefiniteFactor& factor, const SparseMatrix& A, const VectorXd& b,
                        const VectorXd& g_hat);
 
@@ -101,8 +101,8 @@ class DualCondensedProblem : public ConstrainedProblem {
   VectorXd D_;                       ///< row scales
   SparseMatrix A_scaled_;            ///< D A
   VectorXd b_scaled_;                ///< D b
-  VectorXd t_;                       ///< L₁₁⁻¹ (P ĝ)₁..ᵣ
-  std::unique_ptr<AlignedMatrix> W_;  ///< ZᵀZ, lower triangle, Z = L₁₁⁻¹ (P Ãᵀ)₁..ᵣ (r × m; not kept)
+  VectorXd s_g_;                     ///< S⁺ ĝ
+  std::unique_ptr<AlignedMatrix> W_;  ///< Ã S⁺ Ãᵀ, lower triangle
   SparseMatrix W_lower_;             ///< the same as a (full) sparse lower triangle, for IPOPT (formed on first use)
   VectorXd d_;
   SparseMatrix G_;

@@ -24,11 +24,10 @@ MatrixXd random_psd(Index n, Index r, unsigned seed) {
 
 SparseMatrix lower(const MatrixXd& S) { return MatrixXd(S.triangularView<Eigen::Lower>()).sparseView(); }
 
-/// S⁺ R through the two halves.
+/// S⁺ R a column at a time.
 MatrixXd apply_pinv(const SemidefiniteFactor& f, const MatrixXd& R) {
-  const auto Z = f.half_solve(R);
   MatrixXd out(R.rows(), R.cols());
-  for (Index j = 0; j < R.cols(); ++j) out.col(j) = f.back_solve(Z->map().col(j));
+  for (Index j = 0; j < R.cols(); ++j) out.col(j) = f.solve(R.col(j));
   return out;
 }
 
@@ -48,7 +47,7 @@ TEST(SemidefiniteFactor, FindsTheRankAndAnOrthonormalNullBasis) {
   }
 }
 
-TEST(SemidefiniteFactor, HalvesMakeAGeneralisedInverse) {
+TEST(SemidefiniteFactor, IsAGeneralisedInverseAndItsGramMatrixOfSparseRows) {
   for (const Index rank : {20, 18}) {
     const MatrixXd S = random_psd(20, rank, 3 + static_cast<unsigned>(rank));
     const SemidefiniteFactor f(lower(S), 1e-10);
@@ -58,11 +57,17 @@ TEST(SemidefiniteFactor, HalvesMakeAGeneralisedInverse) {
     if (rank == 20) {
       EXPECT_LT((SpS - MatrixXd::Identity(20, 20)).cwiseAbs().maxCoeff(), 1e-8);
     }
-    // Rᵀ S⁺ R = Zᵀ Z.
-    const MatrixXd R = random_psd(20, 3, 99).leftCols(3);
-    const auto Z = f.half_solve(R);
-    EXPECT_LT((R.transpose() * apply_pinv(f, R) - Z->map().transpose() * Z->map()).cwiseAbs().maxCoeff(),
-              1e-9 * (R.transpose() * apply_pinv(f, R)).cwiseAbs().maxCoeff());
+    // gram(R) = Rᵀ S⁺ R in its lower triangle, for a sparse R with an empty column; the upper one untouched.
+    MatrixXd R = random_psd(20, 3, 99).leftCols(4);
+    R.col(2).setZero();
+    for (Index i = 0; i < 20; i += 3) R.row(i).setZero();
+    const MatrixXd expected = R.transpose() * apply_pinv(f, R);
+    const auto G = f.gram(SparseMatrix(R.sparseView()));
+    ASSERT_EQ(G->rows(), 4);
+    const MatrixXd lower_g = G->map().triangularView<Eigen::Lower>();
+    const MatrixXd lower_e = expected.triangularView<Eigen::Lower>();
+    EXPECT_LT((lower_g - lower_e).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff()) << "rank " << rank;
+    EXPECT_EQ(G->map().col(2).tail(2).cwiseAbs().maxCoeff(), 0.0);
   }
 }
 
