@@ -103,8 +103,12 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
   g.x = x;
   g.normals = nodal_normals(master, x);
   if (master.dim == 2) g.corner_normals = facet_end_normals(master, x);  // read at corner nodes only
+  g.facet_x.resize(master.num_facets());
   std::vector<BoundingVolumeHierarchy::Box> boxes(master.num_facets());
-  for (Index f = 0; f < master.num_facets(); ++f) boxes[f] = facet_box(master.facet_type, facet_nodes(master, x, f), 0.0);
+  for (Index f = 0; f < master.num_facets(); ++f) {
+    g.facet_x[f] = facet_nodes(master, x, f);
+    boxes[f] = facet_box(master.facet_type, g.facet_x[f], 0.0);
+  }
   g.tree.build(boxes);
   return g;
 }
@@ -265,7 +269,7 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
   double eta[2] = {cp.eta[0], cp.eta[1]};
   double theta = cp.gap;
   Eigen::Vector3d n = cp.normal;
-  const double pad = 1e-6 * facet_box(ms.facet_type, facet_nodes(ms, master.x, f), 0.0).diagonal().norm();
+  const double pad = 1e-6 * facet_box(ms.facet_type, master.facet_x[f], 0.0).diagonal().norm();
   const double reach = 2.0 * (p - cp.xbar).norm() + pad;
   for (int it = 0; it < 50; ++it) {
     Eigen::Vector3d m = n - ns;
@@ -296,7 +300,7 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
         const double start = cell_shape(ms.facet_type) == CellShape::kTensor ? 0.5 : 1.0 / 3.0;
         double e[2] = {d == 1 ? 0.5 : start, start}, t = theta;
         if (!ray_meets_facet(master, k, p, m, e, t) || !clamp_to_facet(ms.facet_type, e, 1e-10)) return;
-        if (pad3(facet_normal(ms.facet_type, facet_nodes(ms, master.x, k), e)).dot(slave_normal) >= 0) return;
+        if (pad3(facet_normal(ms.facet_type, master.facet_x[k], e)).dot(slave_normal) >= 0) return;
         if (inside && std::abs(t) >= std::abs(hit_theta)) return;
         hit = k;
         inside = true;
@@ -325,7 +329,7 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
       for (int b = 0; b < ms.nodes_per_facet(); ++b) cp.xbar.head(ms.dim) += M[b] * master.x.col(ms.facet(f)[b]);
       cp.normal = m;
       cp.gap = (p - cp.xbar).dot(m);
-      const Eigen::Vector3d nf = pad3(facet_normal(ms.facet_type, facet_nodes(ms, master.x, f), cp.eta)).normalized();
+      const Eigen::Vector3d nf = pad3(facet_normal(ms.facet_type, master.facet_x[f], cp.eta)).normalized();
       cp.gap_direction = nf / nf.dot(m);  // n_f·m > 0: the facet faces the slave point, m is near n̄
       return;
     }
@@ -341,14 +345,14 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   // The nearest FACING master facet: back-facing facets (a point's own facet in self-contact, the far
   // face of a thin master) are skipped so that the search goes on to the one that matters.
   const int mf = master.tree.nearest(p3, search * search, [&](int k) {
-    const Eigen::MatrixXd xk = facet_nodes(ms, master.x, k);
+    const Eigen::MatrixXd& xk = master.facet_x[k];
     const FacetProjection q = project_on_facet(ms.facet_type, xk, p);
     if (pad3(facet_normal(ms.facet_type, xk, q.eta)).dot(slave_normal) >= 0)
       return std::numeric_limits<double>::infinity();
     return q.distance2;
   });
   if (mf < 0) return false;
-  const FacetProjection pr = project_on_facet(ms.facet_type, facet_nodes(ms, master.x, mf), p);
+  const FacetProjection pr = project_on_facet(ms.facet_type, master.facet_x[mf], p);
   if (!allow_past_end && past_end(ms, mf, pr)) return false;
   Eigen::Vector3d nbar = Eigen::Vector3d::Zero();
   const bool at_corner = ms.dim == 2 && pr.clamped_vertex >= 0 && ms.corner[ms.facet(mf)[pr.clamped_vertex]];

@@ -74,6 +74,8 @@ struct MasterGeometry {
   /// two facets at the node: rows 0–1 of the facet that ends there, rows 2–3 of the one that starts there
   /// (facet_end_normals(), filled at every node, read at corners only; empty in 3D).
   Eigen::MatrixXd corner_normals;
+  /// The current positions of each facet's nodes (dim × nodes per facet), read by every projection.
+  std::vector<Eigen::MatrixXd> facet_x;
   BoundingVolumeHierarchy tree;
 };
 
