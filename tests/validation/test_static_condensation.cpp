@@ -183,6 +183,33 @@ TEST_P(WarmStartChangesNothing, SameDisplacementsAndContactForces) {
   expect_agreement(p, *active_set, *interior_point);
 }
 
+class DualWarmStartChangesNothing : public ::testing::TestWithParam<Case> {};
+
+// The dual's start from the previous solution's active set (warm_start = "active_set", dual_subproblem.hpp)
+// against the interior point from the previous solution, the example in three load steps (each step's first
+// solve has the previous step's rows, the zone growing): the same answer, the last step's first solve closed
+// from the previous set without an interior-point iteration, fewer of them in all.
+TEST_P(DualWarmStartChangesNothing, SameDisplacementsAndContactForces) {
+  const Case& p = GetParam();
+  const std::string dir = test_temp_dir(std::string("dual_warm_start_") + p.example);
+  const auto solve = [&](const char* warm_start) {
+    std::string toml = prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "dual_interior_point", warm_start);
+    EXPECT_EQ(toml.find("[steps]"), std::string::npos);
+    return solve_case(toml + "\n[steps]\ncount = 3\n", dir);
+  };
+  auto active_set = solve("active_set");
+  auto interior_point = solve("interior_point");
+  const std::vector<int>& closed = active_set->report.ipopt_per_iteration;
+  const std::vector<int>& optimised = interior_point->report.ipopt_per_iteration;
+  ASSERT_FALSE(closed.empty());
+  ASSERT_FALSE(optimised.empty());
+  EXPECT_EQ(closed.front(), 0);
+  EXPECT_GT(optimised.front(), 0);
+  EXPECT_LT(active_set->report.ipopt_iterations, interior_point->report.ipopt_iterations);
+  ASSERT_EQ(active_set->history.size(), interior_point->history.size());
+  expect_agreement(p, *active_set, *interior_point);
+}
+
 const auto kCases = ::testing::Values(Case{"hertz_2d", "cylinder_on_plane.geo", "h = 0.01;", 1e-10, 1e-6},
                                            Case{"hertz_2d", "two_cylinders.geo", "h = 0.01;", 1e-10, 1e-6, true, true},
                                            // Coulomb: the fixed points cannot be tightened much below the example's 1e-6
@@ -206,3 +233,8 @@ INSTANTIATE_TEST_SUITE_P(Examples, PrimalOptimizerChangesNothing, kCases, case_n
 const auto kFrictionBlock = ::testing::Values(Case{"friction_block", "block.geo", "n = 4;", 0.0, 1e-4, false, false});
 INSTANTIATE_TEST_SUITE_P(Friction, PrimalOptimizerChangesNothing, kFrictionBlock, case_name);
 INSTANTIATE_TEST_SUITE_P(Friction, WarmStartChangesNothing, kFrictionBlock, case_name);
+// Curved obstacles, so that each load step takes several geometry iterations on the same rows.
+INSTANTIATE_TEST_SUITE_P(Examples, DualWarmStartChangesNothing,
+                         ::testing::Values(Case{"hertz_2d", "cylinder_on_plane.geo", "h = 0.01;", 1e-10, 1e-6},
+                                           Case{"hertz_3d", "sphere_on_plane.geo", "h = 0.08;", 1e-10, 1e-6}),
+                         case_name);

@@ -98,8 +98,8 @@ VectorXd DualCondensedProblem::primal(const VectorXd& lambda_hat, const VectorXd
 VectorXd DualCondensedProblem::scaled_gaps(const VectorXd& y) const { return A_scaled_ * y + b_scaled_; }
 
 DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& lambda_hat,
-                                                                      VectorXd& equality_multipliers) const {
-  constexpr int kMaxRounds = 30;
+                                                                      VectorXd& equality_multipliers,
+                                                                      int max_rounds) const {
   constexpr double kTolerance = 1e-10;  // gaps, relative to ‖y‖∞ (the primal polish's kViolationTolerance)
   Closing c;
   const Index k = G_.rows();
@@ -118,7 +118,7 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
   const MatrixXd& Gd = G_dense_;
   std::set<std::vector<char>> seen;
   VectorXd lam, alpha;
-  for (int round = 0; round < kMaxRounds; ++round) {
+  for (int round = 0; round < max_rounds; ++round) {
     c.rounds = round + 1;
     if (!seen.insert(in_set).second) {
       c.reason = "the active set cycles";

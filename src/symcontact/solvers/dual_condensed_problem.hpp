@@ -93,7 +93,8 @@ class DualCondensedProblem : public ConstrainedProblem {
     Index active = 0;
     std::string reason;  ///< why it was not applied
   };
-  Closing close_contact_set(VectorXd& lambda_hat, VectorXd& equality_multipliers) const;
+  /// `max_rounds` bounds the rounds (a start far from the answer gives up early instead of cycling).
+  Closing close_contact_set(VectorXd& lambda_hat, VectorXd& equality_multipliers, int max_rounds = 30) const;
 
  private:
   const SemidefiniteFactor& factor_;

@@ -157,20 +157,26 @@ void StaticCondensation::Impl::extract_schur(const SparseMatrix& lower, const Ve
     dlauum_("U", &size, u.data(), &size, &info);
     if (info != 0) throw SolveError("static condensation: dlauum failed (info " + std::to_string(info) + ")");
   }
-  // S_ij for i ≥ j, read from the upper triangle of U Uᵀ.
-  const auto sd = [&](Index i, Index j) { return um(reversed(i), reversed(j)) - (i == j ? d[i] : 0.0); };
-  // The lower triangle of S written column by column into exactly reserved storage (no triplet list):
-  // the peak of this step is one dense |B|² array plus S's lower triangle (12 bytes an entry).
+  store_schur(u, d);
+}
+
+/// S = J (U Uᵀ) J − D from the upper triangle of U Uᵀ (extract_schur), its lower triangle written column by
+/// column into exactly reserved storage (no triplet list): the peak of this step is one dense |B|² array plus
+/// S's lower triangle (12 bytes an entry).
+void StaticCondensation::Impl::store_schur(const AlignedMatrix& u, const VectorXd& d) {
+  const Index nb = u.rows();
+  const auto um = u.map();
+  const auto sd = [&](Index i, Index j) { return um(nb - 1 - i, nb - 1 - j) - (i == j ? d[i] : 0.0); };
   Eigen::VectorXi column_nonzeros = Eigen::VectorXi::Zero(nb);
   for (Index j = 0; j < nb; ++j)
     for (Index i = j; i < nb; ++i)
       if (sd(i, j) != 0.0 || i == j) ++column_nonzeros[j];
-  m.schur.resize(nb, nb);
-  m.schur.reserve(column_nonzeros);
+  schur.resize(nb, nb);
+  schur.reserve(column_nonzeros);
   for (Index j = 0; j < nb; ++j)
     for (Index i = j; i < nb; ++i)
-      if (sd(i, j) != 0.0 || i == j) m.schur.insert(i, j) = sd(i, j);
-  m.schur.makeCompressed();
+      if (sd(i, j) != 0.0 || i == j) schur.insert(i, j) = sd(i, j);
+  schur.makeCompressed();
 }
 
 }  // namespace symcontact

@@ -10,6 +10,7 @@
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/solvers/cholmod_long.hpp"
+#include "symcontact/solvers/dense_kkt.hpp"
 #include "symcontact/solvers/static_condensation.hpp"
 
 namespace symcontact {
@@ -39,6 +40,7 @@ struct StaticCondensation::Impl {
   std::vector<Index> interior_ordering(const SparseMatrix& lower, Index ni);
   VectorXd factorise_augmented(const SparseMatrix& lower);
   void extract_schur(const SparseMatrix& lower, const VectorXd& d, Index ni);
+  void store_schur(const AlignedMatrix& u, const VectorXd& d);
   /// x ← solution of `sys` (CHOLMOD_L or CHOLMOD_Lt, no permutation) with right-hand side x.
   void triangular_solve(int sys, VectorXd& x) {
     cholmod_dense b = view_vector(x);

@@ -64,12 +64,13 @@ inline std::optional<SubproblemSolver> parse_subproblem_solver(const std::string
   return std::nullopt;
 }
 
-/// How the dense primal interior point's subproblems start where the previous solution's multipliers are at
-/// hand (a later geometry iteration, Coulomb iteration or load step on the same rows).
+/// How the dense interior points' subproblems start where the previous solution's multipliers are at hand (a
+/// later geometry iteration, Coulomb iteration or load step on the same rows).
 enum class WarmStart {
-  /// First the primal-dual active set strategy from the previous solution's active set (active_set_start.hpp),
-  /// the interior point where it fails: between load steps the set changes little, and Newton on it costs
-  /// one or a few factorisations where the interior point takes 10–25.
+  /// First the primal-dual active set strategy from the previous solution's active set (the primal:
+  /// active_set_start.hpp; the dual: its closing, dual_subproblem.hpp), the interior point where it fails:
+  /// between load steps the set changes little, and Newton on it costs one or a few factorisations where the
+  /// interior point takes 10–25.
   kActiveSet,
   /// The interior point from the previous solution and its multipliers (to compare).
   kInteriorPoint,
@@ -91,7 +92,8 @@ bool independent_rows(const ContactSet& contacts);
 
 /// The dual method of a solve under `choice` (dual_subproblem.hpp): the dense interior point only where the
 /// rows are independent, IPOPT on the dual for symmetric pairs and self-contact; null for the primal choices.
-std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice);
+/// `warm`: whether the dense interior point's subproblems first close the previous solution's active set.
+std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm);
 
 /// Whether the primal subproblems of a solve under `choice` go to the dense primal interior point first (the
 /// "interior_point" choices, rows independent); primal_method() gives it then.

@@ -83,7 +83,10 @@ TEST_F(ContactSolverTest, EveryMethodGivesTheSameAnswerOnSymmetricAndOnePassPair
       expect_same_answer(s, primal_whole, "dual");
       // The dense interior point only on independent rows (one-pass); IPOPT on the symmetric pair's dual.
       const bool interior_point = dual == SubproblemSolver::kDualInteriorPoint && mode == "one-pass";
-      EXPECT_EQ(s.report.ipopt_status.rfind("interior point", 0) == 0, interior_point) << s.report.ipopt_status;
+      // (its later solves may close the previous solution's active set instead: dual_subproblem.hpp)
+      const std::string& status = s.report.ipopt_status;
+      const bool dense = status.rfind("interior point", 0) == 0 || status.rfind("previous active set closed", 0) == 0;
+      EXPECT_EQ(dense, interior_point) << status;
     }
     // Without condensation there is no dual: the primal is solved whatever the choice.
     const Solved whole = solve(options(SubproblemSolver::kDualInteriorPoint, false));
