@@ -97,6 +97,13 @@ VectorXd DualCondensedProblem::primal(const VectorXd& lambda_hat, const VectorXd
 
 VectorXd DualCondensedProblem::scaled_gaps(const VectorXd& y) const { return A_scaled_ * y + b_scaled_; }
 
+std::vector<char> DualCondensedProblem::closing_start_set(const VectorXd& lambda_hat) {
+  const double lmax = lambda_hat.size() ? lambda_hat.maxCoeff() : 0.0;
+  std::vector<char> in_set(lambda_hat.size());
+  for (Index i = 0; i < lambda_hat.size(); ++i) in_set[i] = lambda_hat[i] > 1e-6 * lmax;
+  return in_set;
+}
+
 DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& lambda_hat,
                                                                       VectorXd& equality_multipliers,
                                                                       int max_rounds) const {
@@ -113,8 +120,7 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
     c.reason = "no contact";
     return c;
   }
-  std::vector<char> in_set(m_);
-  for (Index i = 0; i < m_; ++i) in_set[i] = lambda_hat[i] > 1e-6 * lmax;
+  std::vector<char> in_set = closing_start_set(lambda_hat);
   const MatrixXd& Gd = G_dense_;
   std::set<std::vector<char>> seen;
   VectorXd lam, alpha;

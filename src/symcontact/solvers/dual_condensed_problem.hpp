@@ -28,6 +28,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "symcontact/optim/constrained_problem.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
@@ -95,6 +96,8 @@ class DualCondensedProblem : public ConstrainedProblem {
   };
   /// `max_rounds` bounds the rounds (a start far from the answer gives up early instead of cycling).
   Closing close_contact_set(VectorXd& lambda_hat, VectorXd& equality_multipliers, int max_rounds = 30) const;
+  /// Whether row i starts in the closing's set F: λ̂_i > 1e-6 max λ̂.
+  static std::vector<char> closing_start_set(const VectorXd& lambda_hat);
 
  private:
   const SemidefiniteFactor& factor_;

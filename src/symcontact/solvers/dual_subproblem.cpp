@@ -26,8 +26,8 @@ SubproblemSolution DualIpopt::solve(const Subproblem& p, const SubproblemWarmSta
     dual = std::make_unique<DualCondensedProblem>(*p.schur, c.constraint_matrix(), c.constraint_offset(),
                                                   c.linear_term());
     const Index rows = c.constraint_matrix().rows();
-    const bool is_warm = warm.multipliers && warm.multipliers->size() == rows &&
-                         equality_prev_.size() == dual->num_rigid_modes() && solves_ > 0;
+    const bool rows_known = warm.multipliers && warm.multipliers->size() == rows;
+    const bool is_warm = rows_known && equality_prev_.size() == dual->num_rigid_modes() && solves_ > 0;
     VectorXd l0, z0;
     DualStart start;
     if (is_warm) {
@@ -35,7 +35,6 @@ SubproblemSolution DualIpopt::solve(const Subproblem& p, const SubproblemWarmSta
       z0 = dual->scaled_gaps(p.start).cwiseMax(0.0);
       start = {&l0, &z0, &equality_prev_};
     }
-    const bool rows_known = warm.multipliers && warm.multipliers->size() == rows;
     bool solved = false;
     if (p.close_active_set && closes_previous_set() && rows_known)  // (the closing finds β itself)
       solved = close_previous_set(*dual, dual->scaled_multipliers(*warm.multipliers),
@@ -104,8 +103,8 @@ bool DualIpopt::close_previous_set(const DualCondensedProblem& dual, VectorXd la
   // A round costs a Cholesky of the |F| closed rows, an interior-point iteration one of all m rows: the rounds
   // may cost up to about six iterations' worth, (m/|F|)³ rounds per iteration, between 6 and 30 rounds. A set
   // a few rows off closes in one to five; a zone grown through a load step in five to eight.
-  const double lmax = lambda_hat.size() ? lambda_hat.maxCoeff() : 0.0;
-  const double active = std::max<double>(1.0, static_cast<double>((lambda_hat.array() > 1e-6 * lmax).count()));
+  const std::vector<char> in_set = DualCondensedProblem::closing_start_set(lambda_hat);
+  const double active = std::max<double>(1.0, static_cast<double>(std::count(in_set.begin(), in_set.end(), 1)));
   const double ratio = static_cast<double>(lambda_hat.size()) / active;
   const int rounds = static_cast<int>(std::clamp(6.0 * ratio * ratio * ratio, 6.0, 30.0));
   const DualCondensedProblem::Closing cl = dual.close_contact_set(lambda_hat, equality, rounds);
