@@ -11,10 +11,10 @@
 /// (equality_constrained_solve.hpp: Newton steps on f, one for a quadratic f, each solved directly in the
 /// range space of the KKT system, with minimum-norm multipliers on dependent rows; where that leaves rows of
 /// a final set unclosed (inconsistent rows), by the method of multipliers, which converges whatever the rank
-/// of A_S: dependent rows get some split of the multiplier; A_Sᵀμ_S, the contact force, is unique). With no active
-/// constraint it is plain Newton on f (removing the optimiser's stationarity error). The polished point is accepted only if it is a KKT point of the
-/// inequality problem: μ_S ≥ 0 (up to round-off) and no other constraint violated; otherwise the IPOPT
-/// point is kept.
+/// of A_S: dependent rows get some split of the multiplier; A_Sᵀμ_S, the contact force, is unique). With no
+/// active constraint it is plain Newton on f (removing the optimiser's stationarity error). The polished point
+/// is accepted only if it is a KKT point of the inequality problem: μ_S ≥ 0 (up to round-off) and no other
+/// constraint violated; otherwise the IPOPT point is kept.
 
 #include "symcontact/optim/constrained_problem.hpp"
 

@@ -21,9 +21,10 @@
 /// With a non-quadratic energy and closing given up, the force balance moves the iterate by no more than the
 /// optimiser's tolerance, far below the geometry tolerance: it is applied once, to the iterate that ends the
 /// fixed point (balance_at_end), and not to an inexact solve's (an intermediate of the Coulomb iteration).
-/// So it is after a closing with linear-elastic bodies and friction terms: a closing by the method of multipliers
-/// (rows that the direct solve leaves unclosed), its ρ scaled by the friction term's curvature τA/α, leaves up to 1e-7 of the forces unbalanced where nodes
-/// stick, and the force balance, holding the closed values, removes that error (a direct solve). Not with
+/// So it is after a closing with linear-elastic bodies and friction terms: a closing by the method of
+/// multipliers (rows that the direct solve leaves unclosed), its ρ scaled by the friction term's curvature
+/// τA/α, leaves up to 1e-7 of the forces unbalanced where nodes stick, and the force balance, holding the
+/// closed values, removes that error (a direct solve). Not with
 /// finite-strain bodies: there each solve's last iterate steers the load path, and that extra Newton solve
 /// moved a hard step of the frictional ironing test (its geometry fixed point then cycles at a change of 3e-2).
 
