@@ -14,12 +14,13 @@ using namespace symcontact;
 
 namespace {
 
+/// min ½ |x − t|² subject to A x ≥ 0, A = I unless given (extra rows below the identity); `dense` only changes the
+/// hint hessian_is_dense(), i.e. which factorisation the polish uses.
 class Projection : public ConstrainedProblem {
  public:
-  explicit Projection(const VectorXd& t = Eigen::Vector3d(-1.0, -1.0, 1.0)) : t_(t), b_(VectorXd::Zero(3)) {
-    A_.resize(3, 3);
-    A_.setIdentity();
-  }
+  explicit Projection(const VectorXd& t = Eigen::Vector3d(-1.0, -1.0, 1.0),
+                      const MatrixXd& A = MatrixXd::Identity(3, 3), bool dense = false)
+      : t_(t), b_(VectorXd::Zero(A.rows())), A_(A.sparseView()), dense_(dense) {}
   Index num_variables() const override { return 3; }
   double objective(const VectorXd& x) override { return 0.5 * (x - t_).squaredNorm(); }
   void gradient(const VectorXd& x, VectorXd& g) override { g = x - t_; }
@@ -28,12 +29,14 @@ class Projection : public ConstrainedProblem {
     H.setIdentity();
   }
   bool hessian_is_constant() const override { return true; }
+  bool hessian_is_dense() const override { return dense_; }
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
  private:
   VectorXd t_, b_;
   SparseMatrix A_;
+  bool dense_;
 };
 
 void expect_exact_solution(const VectorXd& x, const VectorXd& mu) {
@@ -94,32 +97,14 @@ namespace {
 
 /// The projection above with a fourth row x₀ + ε x₁ ≥ 0 nearly dependent on row 0 (as the two families of a
 /// symmetric pair are), consistent: both rows are closed at the answer x = (0, 0, 1), whose force Aᵀμ =
-/// x − t = (1, 1, 0) they share in a split that only ε fixes.
-class NearlyDependentRows : public ConstrainedProblem {
- public:
-  explicit NearlyDependentRows(double eps) : t_(Eigen::Vector3d(-1.0, -1.0, 1.0)), b_(VectorXd::Zero(4)) {
-    MatrixXd A = MatrixXd::Zero(4, 3);
-    A.topRows(3).setIdentity();
-    A(3, 0) = 1.0;
-    A(3, 1) = eps;
-    A_ = A.sparseView();
-  }
-  Index num_variables() const override { return 3; }
-  double objective(const VectorXd& x) override { return 0.5 * (x - t_).squaredNorm(); }
-  void gradient(const VectorXd& x, VectorXd& g) override { g = x - t_; }
-  void hessian_lower(const VectorXd&, SparseMatrix& H) override {
-    H.resize(3, 3);
-    H.setIdentity();
-  }
-  bool hessian_is_constant() const override { return true; }
-  bool hessian_is_dense() const override { return true; }
-  const SparseMatrix& constraint_matrix() const override { return A_; }
-  const VectorXd& constraint_offset() const override { return b_; }
-
- private:
-  VectorXd t_, b_;
-  SparseMatrix A_;
-};
+/// x − t = (1, 1, 0) they share in a split that only ε fixes. Dense, as the condensed problem.
+Projection nearly_dependent_rows(double eps) {
+  MatrixXd A = MatrixXd::Zero(4, 3);
+  A.topRows(3).setIdentity();
+  A(3, 0) = 1.0;
+  A(3, 1) = eps;
+  return Projection(Eigen::Vector3d(-1.0, -1.0, 1.0), A, true);
+}
 
 }  // namespace
 
@@ -129,7 +114,7 @@ class NearlyDependentRows : public ConstrainedProblem {
 // singular value); the direct range-space solve tells row 2 to leave and closes the rest, one step per set, at
 // the exact answer.
 TEST(ActiveSetPolish, AClosingOnNearlyDependentRowsIsSolvedDirectly) {
-  NearlyDependentRows p(1e-5);
+  Projection p = nearly_dependent_rows(1e-5);
   VectorXd x(3), mu(4);
   x << 1e-9, 1e-9, 1.0;
   mu << 0.5, 1.0, 1e-3, 0.5;
