@@ -38,11 +38,23 @@ set_tests_properties("Hertz3D.TwoElasticSpheresP2" "SelfContact3D.HairpinEqualsH
 #   Release); the V3Hex patch tests run Hex8/Hex27 contact with Quad4/Quad9 facets sanitised.
 set_tests_properties("Hertz2D.CylinderExtrudedIntoHexahedraMatchesTheLineContact" "Hertz3D.SphereOnRigidPlaneHex8"
                      "Hertz3D.SphereOnRigidPlaneHex27" PROPERTIES LABELS "validation;asan_slow")
+# - FrictionExamples/Units…/oring_axisymmetric_*: the O-ring in five unit systems, 150–180 s each sanitised; the
+#   other examples' unit changes run sanitised, and Axisymmetric.NeoHookeanTube… runs the finite-strain
+#   axisymmetric contact path.
+# - ElasticityTensorCells/ManufacturedConvergence…/ of the quadratic 3D cells and the prisms (20–50 s each
+#   sanitised): refinement studies of kernels whose derivative checks (unit, EnergyDerivatives) run sanitised;
+#   the Quad, Hex8 and Pyramid5 studies run.
+# - V8/CattaneoMindlin…/SmallContact* and SmallerContact*: finer meshes of the same solve (15–45 s each);
+#   Matching and NonMatching run sanitised.
+# A regular expression may stand for several names (".*").
 foreach(prefix "Elasticity/ManufacturedConvergence.RatesMatchTheory/D3P1"
                "Elasticity/ManufacturedConvergence.RatesMatchTheory/D3P2"
                "Stacked/StackedBlocks.UniformPressureAtBothInterfacesAndOrderIndependent/3D_n3_5_4_P2_symmetric"
                "FrictionExamples/Units.RescaledProblemGivesTheSameDimensionlessAnswer/inclined_3d_inclined_toml_L3_F0"
-               "FrictionalIroning/Units.RescaledProblemGivesTheSameDimensionlessAnswer/ironing_2d_ironing_mu0_3_toml_L3_F0")
+               "FrictionalIroning/Units.RescaledProblemGivesTheSameDimensionlessAnswer/ironing_2d_ironing_mu0_3_toml_L3_F0"
+               "FrictionExamples/Units.RescaledProblemGivesTheSameDimensionlessAnswer/oring_axisymmetric_oring_toml_.*"
+               "ElasticityTensorCells/ManufacturedConvergence.RatesMatchTheory/(hex20|hex27|prism6|prism15|prism18|pyramid13|pyramid14)"
+               "V8/CattaneoMindlin.StickZoneAndTangentialForceMatchTheClosedForm/Small(er)?Contact.*")
   set(found FALSE)
   foreach(test IN LISTS symcontact_validation_tests_TESTS)
     if(test MATCHES "^${prefix}( |$)")

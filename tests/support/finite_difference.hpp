@@ -17,7 +17,13 @@ struct FdResult {
 };
 
 /// Checks `term` at state u. Gradient components are checked on all DOFs when u.size() ≤ max_dofs,
-/// else on a random subset of max_dofs; the Hessian on `directions` random unit directions.
+/// else on a random subset of max_dofs; the Hessian on `directions` random unit directions. In a sanitised
+/// build (SYMCONTACT_SANITIZED: the ASan + UBSan suite of scripts/test) max_dofs is at most
+/// kSanitisedMaxDofs: the sanitisers check the memory and arithmetic of the same code (value, gradient and
+/// Hessian of every cell), which the gradient's 2 × max_dofs evaluations of value() only repeat (a tenfold
+/// cost there: minutes per quadratic 3D cell type); the Release suite checks every component.
+constexpr int kSanitisedMaxDofs = 40;
+
 FdResult check_derivatives(const EnergyTerm& term, const VectorXd& u, double h = 1e-6, int directions = 5,
                            int max_dofs = 400, unsigned seed = 1);
 
