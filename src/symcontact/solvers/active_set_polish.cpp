@@ -111,14 +111,14 @@ SetSystem set_system(const ConstrainedProblem& problem, const VectorXd& c0, cons
 /// answer of inconsistent rows) and pulls on none, again from x by the method of multipliers, which degrades
 /// gracefully there. A set with rows that pull (negative multipliers: the least-squares multipliers tell them
 /// as well) is not solved further: those rows leave it for the next round. Directly, a set costs a few
-/// factorisations; the method of multipliers converges along nearly dependent rows at the rate 1/(1 + ρσ²), σ
+/// factorisations, the first of them (H(x), where definite: `start`) shared by every round; the method of multipliers converges along nearly dependent rows at the rate 1/(1 + ρσ²), σ
 /// their smallest singular value (thousands of dense solves on the first set of the 3D plates of
 /// docs/performance.md). False when M = H + ρ A_SᵀA_S cannot be factorised.
 bool solve_set(ConstrainedProblem& problem, const VectorXd& x, bool hold_values, SetSystem& sys, VectorXd& xs,
-               int& iterations, std::vector<char>& in_set, bool& changed) {
+               int& iterations, std::vector<char>& in_set, bool& changed, StartFactor& start) {
   const VectorXd nu_start = sys.nu;
   xs = x;
-  bool solved = solve_on_set(problem, sys.AS, sys.bS, xs, sys.nu, iterations, true) && xs.allFinite() &&
+  bool solved = solve_on_set(problem, sys.AS, sys.bS, xs, sys.nu, iterations, true, &start) && xs.allFinite() &&
                 sys.nu.allFinite();
   changed = solved && drop_pulling_rows(sys.S, sys.nu, in_set);
   if (solved && !changed && !hold_values && !closes_rows(sys.AS, sys.bS, xs)) {
@@ -198,11 +198,12 @@ PolishResult polish_on_active_set(ConstrainedProblem& problem, VectorXd& x, Vect
   constexpr int kMaxRounds = 30;
   VectorXd xs;
   SetSystem sys;
+  StartFactor start;  // every round's solve starts from x: H(x) factorised once
   for (int round = 0; round < kMaxRounds; ++round) {
     sys = set_system(problem, c0, mu, row_scale, in_set, hold_values);
     r.active = static_cast<int>(sys.S.size());
     bool changed = false;
-    if (!solve_set(problem, x, hold_values, sys, xs, r.iterations, in_set, changed)) {
+    if (!solve_set(problem, x, hold_values, sys, xs, r.iterations, in_set, changed, start)) {
       r.reason = "the Hessian (+ ρ AᵀA) is not positive definite";
       return r;
     }

@@ -80,10 +80,24 @@ bool multiplier_method(const SpdFactor& chol, const HessianTimes& hessian_times,
   return true;
 }
 
+/// start.L ← the Cholesky factor of the dense H (`Hd`) on the first call, if H is definite with pivots within
+/// 1e-6 of each other; whether there is one to use.
+bool factor_at_start(StartFactor& start, const AlignedMatrix& Hd) {
+  if (!start.tried) {
+    start.tried = true;
+    SpdFactor chol(true);
+    if (chol.compute(SparseMatrix(), &Hd, nullptr, 0.0)) {
+      const auto d = chol.dense_factor()->map().diagonal();
+      if (d.minCoeff() > 1e-6 * d.maxCoeff()) start.L = chol.dense_factor();
+    }
+  }
+  return start.L != nullptr;
+}
+
 }  // namespace
 
 bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
-                  int& iterations, bool direct) {
+                  int& iterations, bool direct, StartFactor* start) {
   const bool quadratic = problem.hessian_is_constant();
   const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
   // The factorised KKT system of the last dense direct step, which preconditions the next ones.
@@ -139,6 +153,20 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
         continue;
       }
       reference.reset();
+    }
+    if (newton == 0 && start && dense && direct && AS.rows() > 0 && AS.rows() <= kDirectLimit &&
+        factor_at_start(*start, *Hd)) {
+      // The first step from the shared start: the range-space solve on the factor of H(xs) alone, which the
+      // later Newton steps take as their preconditioner (above).
+      reference = std::make_unique<DenseRangeSpace>(start->L, AS, 0.0);
+      VectorXd dx, lambda;
+      reference->solve(g, AS * xs + bS, dx, lambda);
+      xs += dx;
+      nu = lambda;
+      ++iterations;
+      const double step = dx.lpNorm<Eigen::Infinity>();
+      if (step <= 1e-10 * xscale0 || at_round_off(step)) break;
+      continue;
     }
     if (AS.rows() > 0 && AtA.rows() == 0) {  // A_S is the same for every Newton step: formed once
       AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();

@@ -14,15 +14,30 @@
 ///    which converges whatever the rank of A_S (dependent rows get some split of the multiplier; A_Sᵀ ν, the
 ///    contact force, is unique).
 
+#include <memory>
+
 #include "symcontact/optim/constrained_problem.hpp"
+#include "symcontact/solvers/dense_kkt.hpp"
 
 namespace symcontact {
+
+/// The Cholesky factor of a dense H(x) alone (ρ = 0) at a start point that several solves on different sets
+/// share: the polish's rounds all restart from the optimiser's x and differ only in S, so the first solve
+/// factorises H(x) and the others reuse it (with ρ = 0 the factor does not depend on S; the range-space step
+/// is the same solution). Kept only where H is numerically definite with its Cholesky pivots within 1e-6 of
+/// each other (condition below about 1e12); a body held by contact alone leaves H singular, and every solve
+/// then factorises H + ρ A_SᵀA_S of its own set.
+struct StartFactor {
+  bool tried = false;                      ///< H(x) factorised (or found not definite) by an earlier solve
+  std::shared_ptr<const AlignedMatrix> L;  ///< null: H(x) not definite enough
+};
 
 /// xs: the start on entry, the solution on exit; nu: the multipliers of the rows of AS (ν ≥ 0 for a pull of
 /// the constraint), their start on entry; `iterations` counts the steps taken. `direct`: the range-space solve
 /// where S has at most a few thousand rows (else, or when M needs a large ρ to be definite, the method of
-/// multipliers). Returns false when M cannot be factorised.
+/// multipliers). `start` (optional, direct solves of a dense H): the factor of H at this xs shared with the other
+/// solves from the same xs (StartFactor). Returns false when M cannot be factorised.
 bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
-                  int& iterations, bool direct);
+                  int& iterations, bool direct, StartFactor* start = nullptr);
 
 }  // namespace symcontact
