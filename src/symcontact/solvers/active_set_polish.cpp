@@ -111,9 +111,10 @@ SetSystem set_system(const ConstrainedProblem& problem, const VectorXd& c0, cons
 /// answer of inconsistent rows) and pulls on none, again from x by the method of multipliers, which degrades
 /// gracefully there. A set with rows that pull (negative multipliers: the least-squares multipliers tell them
 /// as well) is not solved further: those rows leave it for the next round. Directly, a set costs a few
-/// factorisations, the first of them (H(x), where definite: `start`) shared by every round; the method of multipliers converges along nearly dependent rows at the rate 1/(1 + ρσ²), σ
-/// their smallest singular value (thousands of dense solves on the first set of the 3D plates of
-/// docs/performance.md). False when M = H + ρ A_SᵀA_S cannot be factorised.
+/// factorisations, the first of them (H(x), where definite: `start`) shared by every round; the method of
+/// multipliers converges along nearly dependent rows at the rate 1/(1 + ρσ²), σ their smallest singular value
+/// (thousands of dense solves on the first set of the 3D plates of docs/performance.md). False when
+/// M = H + ρ A_SᵀA_S cannot be factorised.
 bool solve_set(ConstrainedProblem& problem, const VectorXd& x, bool hold_values, SetSystem& sys, VectorXd& xs,
                int& iterations, std::vector<char>& in_set, bool& changed, StartFactor& start) {
   const VectorXd nu_start = sys.nu;
