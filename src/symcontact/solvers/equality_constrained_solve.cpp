@@ -114,6 +114,15 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
     previous_step = step;
     return stop;
   };
+  // Takes the Newton step (Δ, λ) of a dense direct or CG solve; whether the loop has converged (the step at the
+  // round-off of x).
+  auto take_step = [&](const VectorXd& dx, const VectorXd& lambda) {
+    xs += dx;
+    nu = lambda;
+    ++iterations;
+    const double step = dx.lpNorm<Eigen::Infinity>();
+    return step <= 1e-10 * xscale0 || at_round_off(step);
+  };
   for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
     // The condensed problem's H is full: written straight into a dense matrix for the factorisations and the
     // products below (ConstrainedProblem::add_hessian_lower), with no sparse copy.
@@ -145,11 +154,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       const ProjectedCgResult cg =
           projected_cg(*reference, multiply, g, cS, dx, lambda, kCgTolerance * xscale0, kCgMaxIterations);
       if (cg.converged) {
-        xs += dx;
-        nu = lambda;
-        ++iterations;
-        const double step = dx.lpNorm<Eigen::Infinity>();
-        if (step <= 1e-10 * xscale0 || at_round_off(step)) break;
+        if (take_step(dx, lambda)) break;
         continue;
       }
       reference.reset();
@@ -161,11 +166,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
       reference = std::make_unique<DenseRangeSpace>(start->L, AS, 0.0);
       VectorXd dx, lambda;
       reference->solve(g, AS * xs + bS, dx, lambda);
-      xs += dx;
-      nu = lambda;
-      ++iterations;
-      const double step = dx.lpNorm<Eigen::Infinity>();
-      if (step <= 1e-10 * xscale0 || at_round_off(step)) break;
+      if (take_step(dx, lambda)) break;
       continue;
     }
     if (AS.rows() > 0 && AtA.rows() == 0) {  // A_S is the same for every Newton step: formed once
