@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "symcontact/solvers/dense_kkt.hpp"
 #include "symcontact/solvers/spd_factor.hpp"
@@ -94,145 +95,193 @@ bool factor_at_start(StartFactor& start, const AlignedMatrix& Hd) {
   return start.L != nullptr;
 }
 
-}  // namespace
+/// What a Newton step on the set ends with.
+enum class StepEnd { kTaken, kConverged, kFailed };
 
-bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
-                  int& iterations, bool direct, StartFactor* start) {
-  const bool quadratic = problem.hessian_is_constant();
-  const double xscale0 = std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300);
-  // The factorised KKT system of the last dense direct step, which preconditions the next ones.
-  std::unique_ptr<DenseRangeSpace> reference;
-  SparseMatrix AtA;  // lower triangle of A_Sᵀ A_S
-  double adiag = 0.0;
-  // Newton's steps fall quadratically until they reach the round-off of these augmented systems (1e-10 to
-  // 3e-10 of max|x| on the inclined interface, where IPOPT's point is already there: without this test its
-  // force-balancing polish takes 12–20 steps of noise). A step at that level that is not a tenth of the
-  // one before is taken as round-off, and ends the loop.
-  double previous_step = std::numeric_limits<double>::infinity();
-  auto at_round_off = [&](double step) {
-    const bool stop = step <= kRoundOffStep * xscale0 && step > 0.1 * previous_step;
-    previous_step = step;
-    return stop;
-  };
-  // Takes the Newton step (Δ, λ) of a dense direct or CG solve; whether the loop has converged (the step at the
-  // round-off of x).
-  auto take_step = [&](const VectorXd& dx, const VectorXd& lambda) {
-    xs += dx;
-    nu = lambda;
-    ++iterations;
-    const double step = dx.lpNorm<Eigen::Infinity>();
-    return step <= 1e-10 * xscale0 || at_round_off(step);
-  };
-  for (int newton = 0; newton < (quadratic ? 1 : 20); ++newton) {
-    // The condensed problem's H is full: written straight into a dense matrix for the factorisations and the
-    // products below (ConstrainedProblem::add_hessian_lower), with no sparse copy.
-    const bool dense = problem.hessian_is_dense();
-    SparseMatrix H;  // the sparse path's
-    std::unique_ptr<AlignedMatrix> Hd;
-    if (dense) {
-      Hd = std::make_unique<AlignedMatrix>(xs.size(), xs.size());
-      Hd->map().setZero();
-      problem.add_hessian_lower(xs, 1.0, Hd->map());
-    } else {
-      problem.hessian_lower(xs, H);
+/// H(x) and ∇f(x) at one Newton step: the condensed problem's H is full and is written straight into a dense
+/// matrix for the factorisations and products (ConstrainedProblem::add_hessian_lower), with no sparse copy.
+struct HessianAt {
+  SparseMatrix H;                     // the sparse path's
+  std::unique_ptr<AlignedMatrix> Hd;  // the dense path's
+  VectorXd g;
+  double diag = 0.0;  // mean |H_ii|
+};
+
+/// Newton's loop on one set S (see solve_on_set): the state it keeps between steps.
+class NewtonOnSet {
+ public:
+  NewtonOnSet(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
+              int& iterations, bool direct, StartFactor* start)
+      : problem_(problem), AS_(AS), bS_(bS), xs_(xs), nu_(nu), iterations_(iterations), direct_(direct),
+        start_(start), xscale0_(std::max(xs.lpNorm<Eigen::Infinity>(), 1e-300)) {}
+
+  /// One Newton step (`first`: the first of the loop).
+  StepEnd step(bool first) {
+    HessianAt h = hessian();
+    if (!(h.diag > 0)) return StepEnd::kFailed;
+    if (reference_) {
+      if (const std::optional<StepEnd> end = cg_step(h)) return *end;
     }
-    VectorXd g;
-    problem.gradient(xs, g);
-    const double hdiag = dense ? Hd->map().diagonal().cwiseAbs().mean() : H.diagonal().cwiseAbs().mean();
-    if (!(hdiag > 0)) return false;
-    if (reference) {
-      // A later Newton step of the dense direct solve: between two steps only the friction Hessian
-      // changed (one small block per contact node), so the KKT system is solved by projected CG
-      // preconditioned with the last factorised one (dense_kkt.hpp) instead of a new O(|B|³)
-      // factorisation; if it does not converge fast, the step refactorises as before.
-      const VectorXd cS = AS * xs + bS;
-      auto multiply = [&](const VectorXd& v, VectorXd& out) {
-        out = VectorXd::Zero(v.size());
-        symmetric_multiply_add(*Hd, v, out);
-      };
-      VectorXd dx, lambda;
-      const ProjectedCgResult cg =
-          projected_cg(*reference, multiply, g, cS, dx, lambda, kCgTolerance * xscale0, kCgMaxIterations);
-      if (cg.converged) {
-        if (take_step(dx, lambda)) break;
-        continue;
-      }
-      reference.reset();
-    }
-    if (newton == 0 && start && dense && direct && AS.rows() > 0 && AS.rows() <= kDirectLimit &&
-        factor_at_start(*start, *Hd)) {
+    const bool dense = h.Hd != nullptr;
+    if (first && start_ && dense && direct_ && AS_.rows() > 0 && AS_.rows() <= kDirectLimit &&
+        factor_at_start(*start_, *h.Hd)) {
       // The first step from the shared start: the range-space solve on the factor of H(xs) alone, which the
-      // later Newton steps take as their preconditioner (above).
-      reference = std::make_unique<DenseRangeSpace>(start->L, AS, 0.0);
+      // later Newton steps take as their preconditioner (cg_step).
+      reference_ = std::make_unique<DenseRangeSpace>(start_->L, AS_, 0.0);
       VectorXd dx, lambda;
-      reference->solve(g, AS * xs + bS, dx, lambda);
-      if (take_step(dx, lambda)) break;
-      continue;
+      reference_->solve(h.g, AS_ * xs_ + bS_, dx, lambda);
+      return take_step(dx, lambda) ? StepEnd::kConverged : StepEnd::kTaken;
     }
-    if (AS.rows() > 0 && AtA.rows() == 0) {  // A_S is the same for every Newton step: formed once
-      AtA = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
-      adiag = AtA.diagonal().cwiseAbs().maxCoeff();
+    return factorised_step(h);
+  }
+
+ private:
+  HessianAt hessian() const {
+    HessianAt h;
+    if (problem_.hessian_is_dense()) {
+      h.Hd = std::make_unique<AlignedMatrix>(xs_.size(), xs_.size());
+      h.Hd->map().setZero();
+      problem_.add_hessian_lower(xs_, 1.0, h.Hd->map());
+      h.diag = h.Hd->map().diagonal().cwiseAbs().mean();
+    } else {
+      problem_.hessian_lower(xs_, h.H);
+      h.diag = h.H.diagonal().cwiseAbs().mean();
     }
-    if (AS.rows() > 0 && !(adiag > 0)) return false;
-    // With the direct solve ρ only has to make M definite (bodies held by contact alone): a balanced ρ
-    // keeps M well conditioned. The method of multipliers wants a large ρ: the nearly dependent rows of
-    // the two families give A_S tiny singular values, along which it converges at the rate 1/(1 + ρ σ²).
-    // If the balanced ρ does not make M definite, the large one is used (and the method of multipliers).
-    double rho = 0.0;
-    SpdFactor chol(dense);
-    bool factorised = false;
-    for (const double factor : {direct ? 1.0 : 1e6, 1e6}) {
-      rho = AS.rows() > 0 ? factor * hdiag / adiag : 0.0;
-      if (chol.compute(H, Hd.get(), AS.rows() > 0 ? &AtA : nullptr, rho)) {
-        factorised = true;
-        if (factor != 1.0) direct = false;
-        break;
+    problem_.gradient(xs_, h.g);
+    return h;
+  }
+
+  /// A later Newton step of the dense direct solve: between two steps only the friction Hessian changed (one
+  /// small block per contact node), so the KKT system is solved by projected CG preconditioned with the last
+  /// factorised one (dense_kkt.hpp) instead of a new O(|B|³) factorisation. nullopt when CG does not converge
+  /// fast: the step then refactorises.
+  std::optional<StepEnd> cg_step(const HessianAt& h) {
+    const VectorXd cS = AS_ * xs_ + bS_;
+    auto multiply = [&](const VectorXd& v, VectorXd& out) {
+      out = VectorXd::Zero(v.size());
+      symmetric_multiply_add(*h.Hd, v, out);
+    };
+    VectorXd dx, lambda;
+    const ProjectedCgResult cg =
+        projected_cg(*reference_, multiply, h.g, cS, dx, lambda, kCgTolerance * xscale0_, kCgMaxIterations);
+    if (!cg.converged) {
+      reference_.reset();
+      return std::nullopt;
+    }
+    return take_step(dx, lambda) ? StepEnd::kConverged : StepEnd::kTaken;
+  }
+
+  /// Factorises M = H + ρ A_Sᵀ A_S into `chol`; ρ on return. With the direct solve ρ only has to make M
+  /// definite (bodies held by contact alone): a balanced ρ keeps M well conditioned. The method of
+  /// multipliers wants a large ρ: the nearly dependent rows of the two families give A_S tiny singular
+  /// values, along which it converges at the rate 1/(1 + ρ σ²). If the balanced ρ does not make M definite,
+  /// the large one is used (and the method of multipliers). False when neither makes M definite.
+  bool factorise(const HessianAt& h, SpdFactor& chol, double& rho) {
+    if (AS_.rows() > 0 && AtA_.rows() == 0) {  // A_S is the same for every Newton step: formed once
+      AtA_ = SparseMatrix(AS_.transpose() * AS_).triangularView<Eigen::Lower>();
+      adiag_ = AtA_.diagonal().cwiseAbs().maxCoeff();
+    }
+    if (AS_.rows() > 0 && !(adiag_ > 0)) return false;
+    for (const double factor : {direct_ ? 1.0 : 1e6, 1e6}) {
+      rho = AS_.rows() > 0 ? factor * h.diag / adiag_ : 0.0;
+      if (chol.compute(h.H, h.Hd.get(), AS_.rows() > 0 ? &AtA_ : nullptr, rho)) {
+        if (factor != 1.0) direct_ = false;
+        return true;
       }
-      if (AS.rows() == 0) break;
+      if (AS_.rows() == 0) break;
     }
-    if (!factorised) return false;
-    const VectorXd x_start = xs;
-    bool stalled = false;
-    if (direct && AS.rows() > 0 && AS.rows() <= kDirectLimit) {
+    return false;
+  }
+
+  /// A step on a new factorisation of M: the range-space solve or the method of multipliers.
+  StepEnd factorised_step(const HessianAt& h) {
+    const bool dense = h.Hd != nullptr;
+    SpdFactor chol(dense);
+    double rho = 0.0;
+    if (!factorise(h, chol, rho)) return StepEnd::kFailed;
+    const VectorXd x_start = xs_;
+    if (direct_ && AS_.rows() > 0 && AS_.rows() <= kDirectLimit) {
       // Range-space solve of the KKT system on S, exact in one step (Nocedal & Wright §16.2):
       //   M Δ − A_Sᵀ λ = −ĝ,  A_S Δ = −c_S,  ĝ = g + ρ A_Sᵀ c_S  (the ρ term vanishes on A_S Δ = −c_S)
       //   ⇒ (A_S M⁻¹ A_Sᵀ) λ = A_S M⁻¹ ĝ − c_S, solved in the least-squares, minimum-norm sense
       //   (complete orthogonal decomposition) because dependent rows make it singular.
-      const VectorXd cS = AS * xs + bS;
-      const VectorXd ghat = g + rho * (AS.transpose() * cS);
+      const VectorXd cS = AS_ * xs_ + bS_;
+      VectorXd dx, lambda;
       if (chol.dense()) {
         // With M = L Lᵀ dense: DenseRangeSpace, one multi-column triangular solve for W = L⁻¹ A_Sᵀ instead
         // of |S| + 2 pairs of single-column solves (BLAS-3 work instead of BLAS-2). It is kept to
-        // precondition the next Newton steps (above).
-        reference = std::make_unique<DenseRangeSpace>(chol.dense_factor(), AS, rho);
-        VectorXd dx, lambda;
-        reference->solve(g, cS, dx, lambda);
-        xs += dx;
-        nu = lambda;
-        ++iterations;
+        // precondition the next Newton steps (cg_step).
+        reference_ = std::make_unique<DenseRangeSpace>(chol.dense_factor(), AS_, rho);
+        reference_->solve(h.g, cS, dx, lambda);
       } else {
-        VectorXd dx, lambda;
-        range_space_step(chol, AS, cS, ghat, dx, lambda);
-        xs += dx;
-        nu = lambda;
-        ++iterations;
+        range_space_step(chol, AS_, cS, VectorXd(h.g + rho * (AS_.transpose() * cS)), dx, lambda);
       }
+      xs_ += dx;
+      nu_ = lambda;
+      ++iterations_;
     } else {
+      VectorXd g = h.g;
       const auto hessian_times = [&](const VectorXd& dx, VectorXd& out) {
         if (dense)
-          symmetric_multiply_add(*Hd, dx, out);
+          symmetric_multiply_add(*h.Hd, dx, out);
         else
-          out += H.selfadjointView<Eigen::Lower>() * dx;
+          out += h.H.selfadjointView<Eigen::Lower>() * dx;
       };
-      stalled = !multiplier_method(chol, hessian_times, AS, bS, rho, xscale0, g, xs, nu, iterations);
+      // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
+      // steps on f cannot change that, and the caller's rounds decide what to drop.
+      if (!multiplier_method(chol, hessian_times, AS_, bS_, rho, xscale0_, g, xs_, nu_, iterations_))
+        return StepEnd::kConverged;
     }
-    // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
-    // steps on f cannot change that, and the caller's rounds decide what to drop.
-    if (stalled) break;
-    // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the
-    // augmented systems lose a few digits).
-    const double step = (xs - x_start).lpNorm<Eigen::Infinity>();
-    if (step <= 1e-10 * xscale0 || at_round_off(step)) break;
+    // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the augmented
+    // systems lose a few digits).
+    const double step = (xs_ - x_start).lpNorm<Eigen::Infinity>();
+    return step <= 1e-10 * xscale0_ || at_round_off(step) ? StepEnd::kConverged : StepEnd::kTaken;
+  }
+
+  /// Takes the Newton step (Δ, λ) of a dense direct or CG solve; whether the loop has converged (the step at
+  /// the round-off of x).
+  bool take_step(const VectorXd& dx, const VectorXd& lambda) {
+    xs_ += dx;
+    nu_ = lambda;
+    ++iterations_;
+    const double step = dx.lpNorm<Eigen::Infinity>();
+    return step <= 1e-10 * xscale0_ || at_round_off(step);
+  }
+
+  /// Newton's steps fall quadratically until they reach the round-off of these augmented systems (1e-10 to
+  /// 3e-10 of max|x| on the inclined interface, where IPOPT's point is already there: without this test its
+  /// force-balancing polish takes 12–20 steps of noise). A step at that level that is not a tenth of the one
+  /// before is taken as round-off, and ends the loop.
+  bool at_round_off(double step) {
+    const bool stop = step <= kRoundOffStep * xscale0_ && step > 0.1 * previous_step_;
+    previous_step_ = step;
+    return stop;
+  }
+
+  ConstrainedProblem& problem_;
+  const SparseMatrix& AS_;
+  const VectorXd& bS_;
+  VectorXd& xs_;
+  VectorXd& nu_;
+  int& iterations_;
+  bool direct_;
+  StartFactor* start_;
+  const double xscale0_;
+  std::unique_ptr<DenseRangeSpace> reference_;  // the last dense direct step's factorised KKT system
+  SparseMatrix AtA_;                            // lower triangle of A_Sᵀ A_S
+  double adiag_ = 0.0;
+  double previous_step_ = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace
+
+bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
+                  int& iterations, bool direct, StartFactor* start) {
+  NewtonOnSet newton(problem, AS, bS, xs, nu, iterations, direct, start);
+  for (int k = 0; k < (problem.hessian_is_constant() ? 1 : 20); ++k) {
+    const StepEnd end = newton.step(k == 0);
+    if (end == StepEnd::kFailed) return false;
+    if (end == StepEnd::kConverged) break;
   }
   return true;
 }
