@@ -54,6 +54,7 @@ struct Kinematics {
   double trH = 0.0;
   double HH = 0.0;       ///< H:H
   double trH_minus_ell = 0.0;  ///< tr H − ln J = −i₂(H) − det H + (j − log1p j), O(|H|²)
+  int dim = 3;  ///< the dimension of the problem: plane strain (2) needs the tangent's in-plane block only
 };
 
 /// From the displacement gradient H (F = I + H is formed here, for the O(1) quantities only).
@@ -90,8 +91,11 @@ struct InvariantDerivatives {
 ///   ∂I₁/∂F = 2F,  ∂I₂/∂F = 2(I₁F − FC),  ∂J/∂F = cof F,
 ///   ∂²I₁ = 2 δ_ik δ_JL,
 ///   ∂²I₂ = 2 [2 F_iJ F_kL + I₁ δ_ik δ_JL − δ_ik C_LJ − F_iL F_kJ − b_ik δ_JL]  (b = FFᵀ),
-///   ∂²J  = ε_ikm ε_JLN F_mN  (no inverse needed).
-T3 invariant_tangent(const M3& F, const InvariantDerivatives& d) {
+///   ∂²J  = ε_ikm ε_JLN F_mN  (no inverse needed): zero unless i ≠ k and J ≠ L, and then the one term with
+///          m = 3 − i − k, N = 3 − J − L.
+/// Only the entries with i, J, k, L < `dim` are formed (plane strain reads the in-plane block, dim = 2); the
+/// others are zero.
+T3 invariant_tangent(const M3& F, const InvariantDerivatives& d, int dim) {
   const M3 C = F.transpose() * F, b = F * F.transpose();
   const double I1 = C.trace();
   const M3 g1 = 2.0 * F;
@@ -100,15 +104,17 @@ T3 invariant_tangent(const M3& F, const InvariantDerivatives& d) {
   gJ.col(0) = F.col(1).cross(F.col(2));
   gJ.col(1) = F.col(2).cross(F.col(0));
   gJ.col(2) = F.col(0).cross(F.col(1));
-  T3 A;
-  for (int i = 0; i < 3; ++i)
-    for (int J = 0; J < 3; ++J)
-      for (int k = 0; k < 3; ++k)
-        for (int L = 0; L < 3; ++L) {
+  T3 A = T3::Zero();
+  for (int i = 0; i < dim; ++i)
+    for (int J = 0; J < dim; ++J)
+      for (int k = 0; k < dim; ++k)
+        for (int L = 0; L < dim; ++L) {
           const double dik = i == k ? 1.0 : 0.0, dJL = J == L ? 1.0 : 0.0;
           double d2J = 0.0;
-          for (int m = 0; m < 3; ++m)
-            for (int N = 0; N < 3; ++N) d2J += levi_civita(i, k, m) * levi_civita(J, L, N) * F(m, N);
+          if (i != k && J != L) {
+            const int m = 3 - i - k, N = 3 - J - L;
+            d2J += levi_civita(i, k, m) * levi_civita(J, L, N) * F(m, N);
+          }
           const double d2I2 =
               2.0 * (2.0 * F(i, J) * F(k, L) + I1 * dik * dJL - dik * C(L, J) - F(i, L) * F(k, J) - b(i, k) * dJL);
           const double a1 = g1(i, J), a2 = g2(i, J), aJ = gJ(i, J);
@@ -131,7 +137,7 @@ double neo_hookean_law(const Hyperelastic& m, const Kinematics& k, M3* P, T3* A)
     d.W1 = 0.5 * mu;
     d.WJ = (lambda * k.ell - mu) / k.J;
     d.WJJ = (mu + lambda - lambda * k.ell) / (k.J * k.J);
-    *A = invariant_tangent(k.F, d);
+    *A = invariant_tangent(k.F, d, k.dim);
   }
   return 0.5 * mu * k.HH + mu * k.trH_minus_ell + 0.5 * lambda * k.ell * k.ell;
 }
@@ -171,7 +177,7 @@ double mooney_rivlin_law(const Hyperelastic& m, const Kinematics& k, M3* P, T3* 
     d.W1J = -2.0 / 3.0 * c1 * Jm23 / J;
     d.W2J = -4.0 / 3.0 * c2 * Jm43 / J;
     d.WJJ = 10.0 / 9.0 * c1 * Jm23 * I1 / (J * J) + 28.0 / 9.0 * c2 * Jm43 * I2 / (J * J) + kappa;
-    *A = invariant_tangent(k.F, d);
+    *A = invariant_tangent(k.F, d, k.dim);
   }
   return c1 * I1bar_minus_3 + c2 * I2bar_minus_3 + 0.5 * kappa * k.j * k.j;
 }
@@ -223,7 +229,8 @@ double Hyperelastic::evaluate_displacement_gradient(const Eigen::Matrix<double, 
                                                     Eigen::Matrix<double, D * D, D * D>* A) const {
   M3 H3 = M3::Zero();  // plane strain: H_{i3} = H_{3i} = 0, F₃₃ = 1
   H3.template topLeftCorner<D, D>() = H;
-  const Kinematics k = kinematics(H3);
+  Kinematics k = kinematics(H3);
+  k.dim = D;
   M3 P3;
   T3 A3;
   const double psi = law == HyperelasticLaw::kNeoHookean ? neo_hookean_law(*this, k, P ? &P3 : nullptr, A ? &A3 : nullptr)
