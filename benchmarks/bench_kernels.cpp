@@ -9,7 +9,10 @@
 ///    segmentation, quadrature points, their projections): the top face of a box of n × n × 1 cubes (six
 ///    tetrahedra each) as master, the bottom face of a box of (n + 1) × (n + 1) × 1 lying on it as slave,
 ///    non-matching. items_per_second there is slave facets per second, and the counter `points` the
-///    contact points of one search.
+///    contact points of one search;
+///  - hyperelastic_tangent/<dim>: Hyperelastic::evaluate_displacement_gradient() of a Neo-Hookean point with
+///    its stress and tangent (materials/hyperelastic.hpp), the material law of every quadrature point of a
+///    finite-strain Hessian; 2: plane strain.
 /// items_per_second is elements per second.
 ///
 ///   OPENBLAS_NUM_THREADS=1 symcontact_bench_kernels --benchmark_min_time=0.5
@@ -27,6 +30,7 @@
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/fem/quadrature.hpp"
 #include "symcontact/fem/shape_functions.hpp"
+#include "symcontact/materials/hyperelastic.hpp"
 #include "symcontact/materials/linear_elastic.hpp"
 #include "symcontact/mesh/structured.hpp"
 
@@ -129,6 +133,21 @@ void mortar_search_3d(benchmark::State& state) {
   state.counters["points"] = static_cast<double>(points);
 }
 
+template <int D>
+void hyperelastic_tangent(benchmark::State& state) {
+  const auto m = symcontact::Hyperelastic::from_young_poisson(symcontact::HyperelasticLaw::kNeoHookean, 1.0, 0.3);
+  Eigen::Matrix<double, D, D> H;  // a displacement gradient of a few per cent, no entry 0
+  for (int i = 0; i < D; ++i)
+    for (int j = 0; j < D; ++j) H(i, j) = 0.05 * (i + 1) - 0.03 * j + 0.01;
+  Eigen::Matrix<double, D, D> P;
+  Eigen::Matrix<double, D * D, D * D> A;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(m.evaluate_displacement_gradient<D>(H, &P, &A));
+    benchmark::DoNotOptimize(A.data());
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -138,6 +157,8 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("scatter/" + name).c_str(), element_scatter, t);
   }
   benchmark::RegisterBenchmark("mortar3d", mortar_search_3d)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("hyperelastic_tangent/2", hyperelastic_tangent<2>);
+  benchmark::RegisterBenchmark("hyperelastic_tangent/3", hyperelastic_tangent<3>);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
