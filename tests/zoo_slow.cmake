@@ -2,7 +2,7 @@
 # them with --all (CI). Included by CTest after the discovered tests (tests/CMakeLists.txt). A parameterised
 # test's discovered name carries its parameter ("…/ironing_2d_ironing  # GetParam() = …"), so the names are
 # matched from the list gtest_discover_tests defines; a case that is not found stops CTest, loudly.
-# - the two ironing examples as shipped: 110 finite-strain load steps each (about 100 s and 270 s of CPU in
+# - the two ironing examples as shipped: 110 finite-strain load steps each (about 60 s and 240 s of CPU in
 #   Release, alone); the validation suite runs the same problems (Ironing2D.*);
 # - the crushed ring at order 2, without and with Coulomb friction: 40 finite-strain load steps on 2,592
 #   nodes, the last three with the bore closed (about 35 s and 60 s of CPU in Release);
