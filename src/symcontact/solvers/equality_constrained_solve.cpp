@@ -95,8 +95,9 @@ bool factor_at_start(StartFactor& start, const AlignedMatrix& Hd) {
   return start.L != nullptr;
 }
 
-/// What a Newton step on the set ends with.
-enum class StepEnd { kTaken, kConverged, kFailed };
+/// What a Newton step on the set ends with: taken (Newton goes on), converged, stalled (the set cannot be closed:
+/// the loop ends and the caller's rounds decide what to drop), or failed (M cannot be factorised).
+enum class StepEnd { kTaken, kConverged, kStalled, kFailed };
 
 /// H(x) and ∇f(x) at one Newton step: the condensed problem's H is full and is written straight into a dense
 /// matrix for the factorisations and products (ConstrainedProblem::add_hessian_lower), with no sparse copy.
@@ -230,7 +231,7 @@ class NewtonOnSet {
       // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
       // steps on f cannot change that, and the caller's rounds decide what to drop.
       if (!multiplier_method(chol, hessian_times, AS_, bS_, rho, xscale0_, g, xs_, nu_, iterations_))
-        return StepEnd::kConverged;
+        return StepEnd::kStalled;
     }
     // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the augmented
     // systems lose a few digits).
@@ -281,7 +282,7 @@ bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const Vec
   for (int k = 0; k < (problem.hessian_is_constant() ? 1 : 20); ++k) {
     const StepEnd end = newton.step(k == 0);
     if (end == StepEnd::kFailed) return false;
-    if (end == StepEnd::kConverged) break;
+    if (end == StepEnd::kConverged || end == StepEnd::kStalled) break;
   }
   return true;
 }
