@@ -102,8 +102,8 @@ enum class StepEnd { kTaken, kConverged, kStalled, kFailed };
 /// H(x) and ∇f(x) at one Newton step: the condensed problem's H is full and is written straight into a dense
 /// matrix for the factorisations and products (ConstrainedProblem::add_hessian_lower), with no sparse copy.
 struct HessianAt {
-  SparseMatrix H;                     // the sparse path's
-  std::unique_ptr<AlignedMatrix> Hd;  // the dense path's
+  SparseMatrix H;                    // the sparse path's
+  const AlignedMatrix* Hd = nullptr;  // the dense path's (NewtonOnSet's buffer)
   VectorXd g;
   double diag = 0.0;  // mean |H_ii|
 };
@@ -137,13 +137,16 @@ class NewtonOnSet {
   }
 
  private:
-  HessianAt hessian() const {
+  /// H and g at xs; a dense H goes into one buffer that every Newton step of the loop rewrites (|B|² doubles:
+  /// not allocated, and its pages not touched anew, at each step).
+  HessianAt hessian() {
     HessianAt h;
     if (problem_.hessian_is_dense()) {
-      h.Hd = std::make_unique<AlignedMatrix>(xs_.size(), xs_.size());
-      h.Hd->map().setZero();
-      problem_.add_hessian_lower(xs_, 1.0, h.Hd->map());
-      h.diag = h.Hd->map().diagonal().cwiseAbs().mean();
+      if (!Hd_) Hd_ = std::make_unique<AlignedMatrix>(xs_.size(), xs_.size());
+      Hd_->map().setZero();
+      problem_.add_hessian_lower(xs_, 1.0, Hd_->map());
+      h.Hd = Hd_.get();
+      h.diag = Hd_->map().diagonal().cwiseAbs().mean();
     } else {
       problem_.hessian_lower(xs_, h.H);
       h.diag = h.H.diagonal().cwiseAbs().mean();
@@ -185,7 +188,7 @@ class NewtonOnSet {
     if (AS_.rows() > 0 && !(adiag_ > 0)) return false;
     for (const double factor : {direct_ ? 1.0 : 1e6, 1e6}) {
       rho = AS_.rows() > 0 ? factor * h.diag / adiag_ : 0.0;
-      if (chol.compute(h.H, h.Hd.get(), AS_.rows() > 0 ? &AtA_ : nullptr, rho)) {
+      if (chol.compute(h.H, h.Hd, AS_.rows() > 0 ? &AtA_ : nullptr, rho)) {
         if (factor != 1.0) direct_ = false;
         return true;
       }
@@ -269,6 +272,7 @@ class NewtonOnSet {
   StartFactor* start_;
   const double xscale0_;
   std::unique_ptr<DenseRangeSpace> reference_;  // the last dense direct step's factorised KKT system
+  std::unique_ptr<AlignedMatrix> Hd_;           // the dense H of the current step (hessian())
   SparseMatrix AtA_;                            // lower triangle of A_Sᵀ A_S
   double adiag_ = 0.0;
   double previous_step_ = std::numeric_limits<double>::infinity();
