@@ -192,10 +192,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : kExitInputError;
   }
-  if (threads > 0)
-    set_blas_threads(threads);
-  else if (!std::getenv("OPENBLAS_NUM_THREADS"))
-    set_blas_threads(1);
+  apply_thread_setting(threads);
   const Verbosity level = quiet ? Verbosity::kQuiet
                                 : (verbose >= 2 ? Verbosity::kDebug : (verbose == 1 ? Verbosity::kVerbose : Verbosity::kNormal));
   static std::ostream nowhere(nullptr);

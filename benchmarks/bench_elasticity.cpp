@@ -100,6 +100,7 @@
 #include "freefem_peer.hpp"
 #include "large_contact.hpp"
 #include "symcontact/core/blas_kernels.hpp"
+#include "symcontact/core/blas_threads.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/mesh/cell_type.hpp"
 
@@ -332,6 +333,7 @@ int run_suite(const Options& opt, const MachineInfo& machine) {
 
 int main(int argc, char** argv) {
   symcontact::restart_with_better_blas_kernels(argv);  // as `symcontact` does: the kernels users get
+  symcontact::apply_thread_setting(0);                  // as `symcontact run` without --threads
   Options opt;
   CLI::App app{"symcontact-bench — assembly and sparse Cholesky times of linear elasticity, 2D and 3D, and "
                "contact solves (Hertz 2D and 3D, inclined interface with friction) against that Cholesky floor",

@@ -119,10 +119,7 @@ PYBIND11_MODULE(_symcontact, m) {
          bool allow_large_mesh, bool allow_geo_commands, bool write_vtu, const std::string& verbosity, int threads) {
         // BLAS threads as the command line sets them (--threads; default 1 unless OPENBLAS_NUM_THREADS is
         // set): the same thread count gives the same sums, so the same digits as `symcontact run`.
-        if (threads > 0)
-          set_blas_threads(threads);
-        else if (!std::getenv("OPENBLAS_NUM_THREADS"))
-          set_blas_threads(1);
+        apply_thread_setting(threads);
         StudyOptions o;
         o.files = out_dir.is_none() ? OutputFiles::kNone : OutputFiles::kWrite;
         if (!out_dir.is_none()) o.out_dir = py::str(out_dir);

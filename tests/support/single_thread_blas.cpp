@@ -5,7 +5,7 @@
 
 namespace {
 const bool kSingleThreadBlas = [] {
-  if (!std::getenv("OPENBLAS_NUM_THREADS")) symcontact::set_blas_threads(1);
+  symcontact::apply_thread_setting(0);
   return true;
 }();
 }  // namespace

@@ -4,12 +4,24 @@
 /// spins its worker threads while waiting (sched_yield), which on a busy or small machine costs more
 /// than it gains for the supernodal blocks of 2D contact problems; symcontact therefore runs it on one
 /// thread unless asked otherwise (CLI --threads, or OPENBLAS_NUM_THREADS in the environment).
-/// The OpenMP thread count (CHOLMOD) is set along. With a BLAS other than OpenBLAS these calls do nothing.
+/// The OpenMP thread count (CHOLMOD's parallel regions) is set along: on one thread they run on the calling
+/// thread (set_openmp_threads). CHOLMOD's supernodal factorisation otherwise wakes four OpenMP threads per
+/// large supernode, a futex storm on a 2-core machine: a 3D sparse interior point at 1e4 DOFs took 16.5 s of
+/// wall time (4.1 s of it in the kernel) with them and 8.2 s without. With a BLAS other than OpenBLAS the
+/// BLAS calls do nothing.
 
 namespace symcontact {
 
-/// Sets OpenBLAS's thread count when OpenBLAS is the BLAS in use; returns false otherwise.
+/// Sets OpenBLAS's thread count when OpenBLAS is the BLAS in use; returns false otherwise. OpenMP's follows.
 bool set_blas_threads(int threads);
+
+/// OpenMP's thread count; with 1, no parallel region is active (CHOLMOD's included).
+void set_openmp_threads(int threads);
+
+/// The setting of `--threads` (the command line, the Python API, the benchmarks): `threads` > 0 that many
+/// threads; 0 OpenBLAS's count from OPENBLAS_NUM_THREADS where the environment sets it, else 1; OpenMP's
+/// follows OpenBLAS's.
+void apply_thread_setting(int threads);
 
 /// The thread count OpenBLAS reports, or −1 when OpenBLAS is not the BLAS in use.
 int blas_threads();
