@@ -9,6 +9,7 @@
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
+#include "symcontact/solvers/equality_constrained_solve.hpp"
 #include "symcontact/solvers/spd_factor.hpp"
 
 namespace symcontact {
@@ -69,15 +70,21 @@ void restrict_rows(const ScaledRows& rows, const std::vector<Index>& S, SparseMa
   for (std::size_t k = 0; k < S.size(); ++k) bS[k] = rows.b[S[k]];
 }
 
-/// Newton directions of  min f  subject to  A_S x + b_S = 0:  ∇²f Δ − A_Sᵀν = −∇f,  A_S Δ = −c_S,  each
-/// the range-space solve of that KKT system (dense_kkt.hpp) with a new factorisation of ∇²f + ρ A_SᵀA_S, or by
-/// projected CG preconditioned with the last one where only f's friction blocks changed since. The CG stops
-/// at an update of `cg_tolerance` (inexact Newton: the caller sets it from the step before).
+/// Newton directions of  min f  subject to  A_S x + b_S = 0:  ∇²f Δ − A_Sᵀν = −∇f,  A_S Δ = −c_S. With a dense
+/// ∇²f (the condensed problem) each is the range-space solve of that KKT system (dense_kkt.hpp) with a new
+/// factorisation of ∇²f + ρ A_SᵀA_S, or projected CG preconditioned with the last one where only f's friction
+/// blocks changed since; the CG stops at an update of `cg_tolerance` (inexact Newton: the caller sets it from
+/// the step before). With a sparse one, CHOLMOD's factor of ∇²f + ρ A_SᵀA_S with a large ρ and the method of
+/// multipliers (equality_constrained_solve.hpp): a few solves with the factor where the range space would
+/// take one per row.
 class NewtonOnSet {
  public:
   /// `factorisations` counts the factorisations made.
   NewtonOnSet(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, int& factorisations)
-      : problem_(problem), AS_(AS), bS_(bS), H_(problem.num_variables(), problem.num_variables()),
+      : problem_(problem), AS_(AS), bS_(bS),
+        H_(problem.hessian_is_dense() ? std::make_unique<AlignedMatrix>(problem.num_variables(),
+                                                                        problem.num_variables())
+                                      : nullptr),
         factorisations_(factorisations) {
     if (AS.rows() > 0) {
       AtA_ = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
@@ -88,15 +95,17 @@ class NewtonOnSet {
   /// The direction dx at x, the rows' multipliers nu at x + dx, and the slope ∇f(x)ᵀdx. False when
   /// ∇²f + ρ A_SᵀA_S cannot be factorised.
   bool direction(const VectorXd& x, double cg_tolerance, VectorXd& dx, VectorXd& nu, double& slope) {
-    H_.map().setZero();
-    problem_.add_hessian_lower(x, 1.0, H_.map());
+    if (!H_) return sparse_direction(x, dx, nu, slope);
+    AlignedMatrix& H = *H_;
+    H.map().setZero();
+    problem_.add_hessian_lower(x, 1.0, H.map());
     VectorXd g;
     problem_.gradient(x, g);
     const VectorXd cS = AS_ * x + bS_;
     if (reference_ && cg_iterations_ <= kRefactorAfter) {
       const auto multiply = [&](const VectorXd& v, VectorXd& out) {
         out = VectorXd::Zero(v.size());
-        symmetric_multiply_add(H_, v, out);
+        symmetric_multiply_add(H, v, out);
       };
       const ProjectedCgResult cg = projected_cg(*reference_, multiply, g, cS, dx, nu, cg_tolerance, kCgMaxIterations);
       cg_iterations_ = cg.iterations;
@@ -105,10 +114,10 @@ class NewtonOnSet {
         return true;
       }
     }
-    const double hdiag = H_.map().diagonal().cwiseAbs().mean();
+    const double hdiag = H.map().diagonal().cwiseAbs().mean();
     const double rho = AS_.rows() > 0 ? hdiag / adiag_ : 0.0;
     SpdFactor chol(true);
-    if (!(hdiag > 0) || !chol.compute(SparseMatrix(), &H_, AS_.rows() > 0 ? &AtA_ : nullptr, rho)) return false;
+    if (!(hdiag > 0) || !chol.compute(SparseMatrix(), &H, AS_.rows() > 0 ? &AtA_ : nullptr, rho)) return false;
     ++factorisations_;
     cg_iterations_ = 0;
     if (AS_.rows() == 0) {
@@ -123,10 +132,36 @@ class NewtonOnSet {
   }
 
  private:
+  /// The sparse path of direction(): ρ = kSparseRho × mean|H_ii| / max (A_SᵀA_S)_ii, whose multiplier
+  /// iteration contracts by 1/(1 + ρσ²) per solve (σ the rows' singular values).
+  bool sparse_direction(const VectorXd& x, VectorXd& dx, VectorXd& nu, double& slope) {
+    constexpr double kSparseRho = 1e6;
+    SparseMatrix H;
+    problem_.hessian_lower(x, H);
+    VectorXd g;
+    problem_.gradient(x, g);
+    slope = 0.0;
+    const double hdiag = H.diagonal().cwiseAbs().mean();
+    const double rho = AS_.rows() > 0 ? kSparseRho * hdiag / adiag_ : 0.0;
+    SpdFactor chol(false);
+    if (!(hdiag > 0) || !chol.compute(H, nullptr, AS_.rows() > 0 ? &AtA_ : nullptr, rho)) return false;
+    ++factorisations_;
+    const auto hessian_times = [&H](const VectorXd& v, VectorXd& out) { out += H.selfadjointView<Eigen::Lower>() * v; };
+    VectorXd xs = x, gs = g;
+    nu = VectorXd::Zero(AS_.rows());
+    int solves = 0;
+    if (!multiplier_method(chol, hessian_times, AS_, bS_, rho, std::max(x.lpNorm<Eigen::Infinity>(), 1e-300), gs, xs,
+                           nu, solves))
+      return false;
+    dx = xs - x;
+    slope = g.dot(dx);
+    return true;
+  }
+
   ConstrainedProblem& problem_;
   const SparseMatrix& AS_;
   const VectorXd& bS_;
-  AlignedMatrix H_;
+  std::unique_ptr<AlignedMatrix> H_;  ///< the dense path's ∇²f (null on the sparse path)
   SparseMatrix AtA_;
   double adiag_ = 0.0;
   std::unique_ptr<DenseRangeSpace> reference_;
@@ -252,9 +287,8 @@ IpoptResult solve_from_active_set(ConstrainedProblem& problem, const VectorXd& x
                                   const ActiveSetStartOptions& options, const FollowIterate* follow) {
   IpoptResult r;
   r.x = x0;
-  if (!problem.hessian_is_dense() || problem.num_equalities() > 0 || problem.lower_bounds() ||
-      multipliers0.size() != problem.constraint_matrix().rows())
-    return fail(std::move(r), "not a dense problem with inequality rows only and their multipliers");
+  if (problem.num_equalities() > 0 || problem.lower_bounds() || multipliers0.size() != problem.constraint_matrix().rows())
+    return fail(std::move(r), "not a problem with inequality rows only and their multipliers");
   const ScaledRows rows(problem);
   SetIterate it;
   it.x = x0;

@@ -61,4 +61,9 @@ double CholeskySolver::factor_nonzeros() const {
   return c.lnz;
 }
 
+double CholeskySolver::factor_flops() const {
+  auto& c = const_cast<Impl::Decomposition&>(impl_->llt).cholmod();
+  return c.fl;
+}
+
 }  // namespace symcontact

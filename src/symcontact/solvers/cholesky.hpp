@@ -39,6 +39,8 @@ class CholeskySolver {
   MatrixXd solve(const MatrixXd& B) const;
   /// Number of nonzeros in the factor L: predicted by analyze(), exact after factorize().
   double factor_nonzeros() const;
+  /// Floating-point operations of the numeric factorisation, as analyze() predicts them (CHOLMOD's count).
+  double factor_flops() const;
 
  private:
   struct Impl;

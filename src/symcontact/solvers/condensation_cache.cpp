@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/cholesky.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
 #include "symcontact/solvers/reduced_problem.hpp"
 #include "symcontact/solvers/semidefinite_factor.hpp"
@@ -63,6 +65,37 @@ void add_condensation_margin(const ContactSet& contacts, const DofMap& dofs, con
   }
 }
 
+/// The cost rule of the primal path (friction terms present): whether a sparse factorisation of K_ff plus the
+/// contact terms (the uncondensed interior point, dense_primal_interior_point.hpp) costs less per iteration than
+/// the dense |B| × |B| one of the condensed problem: |B|³/3 > kDenseOverSparse × CHOLMOD's predicted flops for
+/// K_ff. K_ff's analysis is made once per model (ContactWorkspace::sparse_flops) and the choice logged then.
+bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy, const std::vector<Index>& free_index,
+                       ContactWorkspace& ws, const Logger& log) {
+  if (ws.sparse_flops_energy != &energy || ws.sparse_flops_free_index != free_index) {
+    CholeskySolver analysis;
+    try {
+      analysis.analyze(K);
+    } catch (const SolveError&) {
+      return false;
+    }
+    ws.sparse_flops = analysis.factor_flops();
+    ws.sparse_flops_energy = &energy;
+    ws.sparse_flops_free_index = free_index;
+    ws.sparse_logged_for = -1;
+  }
+  const double dense = std::pow(static_cast<double>(b), 3) / 3.0;
+  const bool sparse = dense > kDenseOverSparse * ws.sparse_flops;
+  if (ws.sparse_logged_for != b) {
+    ws.sparse_logged_for = b;
+    std::ostringstream m;
+    m << "  contact subproblems " << (sparse ? "not condensed" : "condensed") << " (|B| = " << b
+      << ": a dense factorisation of " << std::setprecision(2) << dense << " flops per interior-point iteration against "
+      << ws.sparse_flops << " for the sparse one of K_ff)";
+    log.detail(m.str());
+  }
+  return sparse;
+}
+
 }  // namespace
 
 std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const ReducedProblem& problem,
@@ -104,10 +137,12 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
     if (boundary.empty() || static_cast<Index>(boundary.size()) > limits.max_condensed_dofs ||
         2 * static_cast<Index>(boundary.size()) > n)
       return nullptr;
+    SparseMatrix K;
+    bulk.hessian_lower(VectorXd::Zero(n), K);
+    if (limits.sparse_alternative && !extras.empty() && sparse_is_cheaper(K, static_cast<Index>(boundary.size()), energy, free_index, ws, log))
+      return nullptr;
     if (!ws.condensation) ws.condensation = std::make_unique<StaticCondensation>();
     try {
-      SparseMatrix K;
-      bulk.hessian_lower(VectorXd::Zero(n), K);
       ws.condensation->compute(K, std::move(boundary));
     } catch (const SolveError& e) {
       log.detail(std::string("  static condensation not used: ") + e.what());

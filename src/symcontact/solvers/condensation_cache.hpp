@@ -55,17 +55,35 @@ struct ContactWorkspace {
   bool closing_polish_rejected = false;
   /// The last solve left u's interior out of date (ContactSolveOptions::lazy_interior): complete_interior().
   bool interior_pending = false;
+  /// CHOLMOD's predicted flops of factorising K_ff, for the energy and numbering they belong to (the cost rule
+  /// of condense_problem), and the |B| the rule's choice was last logged for.
+  double sparse_flops = 0.0;
+  const EnergyTerm* sparse_flops_energy = nullptr;
+  std::vector<Index> sparse_flops_free_index;
+  Index sparse_logged_for = -1;
 };
+
+/// The primal path's cost rule (condense_problem): the subproblems with friction terms are not condensed when
+/// |B|³/3 exceeds this many times CHOLMOD's flops of factorising K_ff. The dense flops run about ten times
+/// faster than the sparse ones, and the sparse path's iterations carry the assembly and solves besides. Measured
+/// on a 3D pad dragged on a rigid plane (docs/performance.md, "Whole faces in contact"): at flop ratios 4.1,
+/// 6.5 and 5.5 (1.0e4, 1.8e4 and 3.3e4 DOFs) the sparse path took 1.19, 0.98 and 0.82 times the CPU time of
+/// the condensed one, and 0.31, 0.29 and 0.25 times its peak memory.
+inline constexpr double kDenseOverSparse = 5.0;
 
 /// When and how far to condense (ContactSolveOptions::max_condensed_dofs, ::same_loads).
 struct CondensationLimits {
   Index max_condensed_dofs = 12000;
   bool same_loads = false;
+  /// The primal interior point solves the uncondensed problem too (linear-elastic bodies, independent rows):
+  /// the cost rule (kDenseOverSparse) applies.
+  bool sparse_alternative = false;
 };
 
 /// The condensed form of the current geometry iterate's problem, or null when condensing does not apply
-/// or pay: B empty, |B| above `limits.max_condensed_dofs` or above half the free DOFs, or a factorisation
-/// that fails. Reuses the workspace's factorisation when its B holds every DOF the constraints of `problem`
+/// or pay: B empty, |B| above `limits.max_condensed_dofs` or above half the free DOFs, with friction terms and
+/// `limits.sparse_alternative` a dense factorisation on B dearer than a sparse one of K_ff (kDenseOverSparse),
+/// or a factorisation that fails. Reuses the workspace's factorisation when its B holds every DOF the constraints of `problem`
 /// and the `friction` terms (evaluated at the full vector u) touch; otherwise refactorises with the union
 /// of the old B, the new DOFs and a margin. `load` (null on the first call of a solve) caches the load part
 /// for this solve's Dirichlet values and loads.

@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/cholesky.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
 
 extern "C" {
@@ -59,8 +62,17 @@ class ScaledProblem {
     problem_.add_hessian_lower(x, l_ / g_, m);
     x_hessian_ = x;
   }
-  /// ∇²f̃ v at the point of the last hessian() call.
+  /// ∇²_x̃ f̃, sparse lower triangle. Keeps it and x for hessian_times().
+  const SparseMatrix& hessian_sparse(const VectorXd& x) {
+    problem_.hessian_lower(x, H_);
+    H_ *= l_ / g_;
+    x_hessian_ = x;
+    sparse_hessian_ = true;
+    return H_;
+  }
+  /// ∇²f̃ v at the point of the last hessian() call (the sparse path: with the H it returned).
   VectorXd hessian_times(const VectorXd& v) const {
+    if (sparse_hessian_) return H_.selfadjointView<Eigen::Lower>() * v;
     VectorXd hv;
     problem_.hessian_product(x_hessian_, v, hv);
     return (l_ / g_) * hv;
@@ -77,6 +89,8 @@ class ScaledProblem {
   SparseMatrix A_;
   VectorXd b_;
   VectorXd x_hessian_;  ///< x at the last hessian() call
+  SparseMatrix H_;      ///< ∇²f̃ there, on the sparse path
+  bool sparse_hessian_ = false;
 };
 
 /// The state of one iteration and its residuals (scaled).
@@ -100,16 +114,82 @@ void residuals(const ScaledProblem& sp, Iterate& it) {
   it.rp = sp.gap(it.x) - it.s;
 }
 
+/// The factor of the normal matrix N = ∇²f̃(x) + ÃᵀDÃ (+ a diagonal shift), D = diag(λ̃ / s̃): dense by LAPACK
+/// (dpotrf on its lower triangle) where ∇²f is nearly full (ConstrainedProblem::hessian_is_dense(): the
+/// condensed problem), sparse by CHOLMOD otherwise, its ordering and symbolic analysis kept from one iteration
+/// to the next while the pattern of N stays (∇²f's pattern is fixed within a solve, and D > 0 keeps ÃᵀDÃ's).
+class NormalFactor {
+ public:
+  NormalFactor(bool dense, Index n) : dense_(dense ? std::make_unique<AlignedMatrix>(n, n) : nullptr) {}
+  /// False when N is not numerically definite (dpotrf or CHOLMOD's supernodal factor breaks down).
+  bool factorize(ScaledProblem& sp, const Iterate& it, double relative_shift) {
+    const SparseMatrix DA = it.l.cwiseQuotient(it.s).asDiagonal() * sp.A();
+    const SparseMatrix ADA = sp.A().transpose() * DA;
+    return dense_ ? factorize_dense(sp, it, ADA, relative_shift) : factorize_sparse(sp, it, ADA, relative_shift);
+  }
+  /// v ← N⁻¹ v.
+  void solve(VectorXd& v) const {
+    if (!dense_) {
+      v = sparse_.solve(v);
+      return;
+    }
+    AlignedMatrix b(v.size(), 1);
+    b.map() = v;
+    lower_solve(*dense_, false, b);
+    lower_solve(*dense_, true, b);
+    v = b.map();
+  }
+
+ private:
+  bool factorize_dense(ScaledProblem& sp, const Iterate& it, const SparseMatrix& ADA, double relative_shift) {
+    AlignedMatrix& M = *dense_;
+    sp.hessian(it.x, M);
+    auto m = M.map();
+    for (Index j = 0; j < ADA.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator e(ADA, j); e; ++e)
+        if (e.row() >= j) m(e.row(), j) += e.value();
+    if (relative_shift > 0.0) m.diagonal().array() += relative_shift * std::max(m.diagonal().maxCoeff(), 1.0);
+    const int ni = static_cast<int>(M.rows());
+    int info = 0;
+    dpotrf_("L", &ni, M.data(), &ni, &info);
+    return info == 0;
+  }
+  bool factorize_sparse(ScaledProblem& sp, const Iterate& it, const SparseMatrix& ADA, double relative_shift) {
+    SparseMatrix N = sp.hessian_sparse(it.x) + SparseMatrix(ADA.triangularView<Eigen::Lower>());
+    N.makeCompressed();
+    if (relative_shift > 0.0) {
+      const double shift = relative_shift * std::max(N.diagonal().maxCoeff(), 1.0);
+      for (Index j = 0; j < N.outerSize(); ++j) N.coeffRef(j, j) += shift;
+    }
+    const bool same_pattern = pattern_.size() == N.nonZeros() + N.outerSize() + 1 &&
+                              std::equal(N.outerIndexPtr(), N.outerIndexPtr() + N.outerSize() + 1, pattern_.begin()) &&
+                              std::equal(N.innerIndexPtr(), N.innerIndexPtr() + N.nonZeros(),
+                                         pattern_.begin() + N.outerSize() + 1);
+    if (!same_pattern) {
+      pattern_.assign(N.outerIndexPtr(), N.outerIndexPtr() + N.outerSize() + 1);
+      pattern_.insert(pattern_.end(), N.innerIndexPtr(), N.innerIndexPtr() + N.nonZeros());
+      sparse_.analyze(N);
+    }
+    try {
+      sparse_.factorize(N);
+    } catch (const SolveError&) {
+      return false;
+    }
+    return true;
+  }
+
+  std::unique_ptr<AlignedMatrix> dense_;  ///< the dense path's L (null on the sparse path)
+  CholeskySolver sparse_;
+  std::vector<SparseMatrix::StorageIndex> pattern_;  ///< outer then inner indices of the analysed N
+};
+
 /// The Newton direction for the target σμ, with `extra` added to s ∘ λ (the corrector's Δs_aff ∘ Δλ_aff).
 /// L is the factor of ∇²f̃ + ÃᵀDÃ.
-void reduced_solve(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate& it, const VectorXd& rd,
+void reduced_solve(const ScaledProblem& sp, const NormalFactor& L, const Iterate& it, const VectorXd& rd,
                    const VectorXd& rp, const VectorXd& rc, VectorXd& dxt, VectorXd& ds, VectorXd& dl) {
   const VectorXd w = (rc + it.l.cwiseProduct(rp)).cwiseQuotient(it.s);
-  AlignedMatrix v(it.x.size(), 1);
-  v.map() = -rd - sp.A().transpose() * w;
-  lower_solve(L, false, v);
-  lower_solve(L, true, v);
-  dxt = v.map();
+  dxt = -rd - sp.A().transpose() * w;
+  L.solve(dxt);
   ds = sp.A() * dxt + rp;
   dl = -(rc + it.l.cwiseProduct(ds)).cwiseQuotient(it.s);
 }
@@ -120,7 +200,7 @@ void reduced_solve(const ScaledProblem& sp, const AlignedMatrix& L, const Iterat
 /// solution D = Λ/S spans many orders of magnitude and the normal equations alone lose the digits that the
 /// last iterations need (a line search then stalls at a residual of 1e-10 or so, where the refined direction
 /// goes on to round-off). dx in the problem's units.
-void direction(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate& it, const VectorXd& rc, VectorXd& dx,
+void direction(const ScaledProblem& sp, const NormalFactor& L, const Iterate& it, const VectorXd& rc, VectorXd& dx,
                VectorXd& ds, VectorXd& dl) {
   VectorXd dxt, ex, es, el;
   reduced_solve(sp, L, it, it.rd, it.rp, rc, dxt, ds, dl);
@@ -135,22 +215,6 @@ void direction(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate& i
     dl += el;
   }
   dx = sp.length() * dxt;
-}
-
-/// M ← L with L Lᵀ = ∇²f̃(x) + ÃᵀDÃ + shift·max diag (lower triangle); false when dpotrf breaks down.
-bool factorize(ScaledProblem& sp, const Iterate& it, double relative_shift, AlignedMatrix& M) {
-  sp.hessian(it.x, M);
-  const SparseMatrix DA = it.l.cwiseQuotient(it.s).asDiagonal() * sp.A();
-  const SparseMatrix ADA = sp.A().transpose() * DA;
-  auto m = M.map();
-  for (Index j = 0; j < ADA.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator e(ADA, j); e; ++e)
-      if (e.row() >= j) m(e.row(), j) += e.value();
-  if (relative_shift > 0.0) m.diagonal().array() += relative_shift * std::max(m.diagonal().maxCoeff(), 1.0);
-  const int ni = static_cast<int>(M.rows());
-  int info = 0;
-  dpotrf_("L", &ni, M.data(), &ni, &info);
-  return info == 0;
 }
 
 /// Backtracking from the largest step to the fraction τ of the boundary along (dx, ds, dl): halved until the
@@ -178,7 +242,7 @@ bool line_search(const ScaledProblem& sp, const Iterate& it, const VectorXd& dx,
 /// search rejects it (the corrector's second-order term is not a Newton direction of the residual) the plain
 /// Newton direction to the same target σμ, which is a descent direction of its norm. The target is not below
 /// `floor` while μ is above it (kTargetFloor).
-bool newton_step(const ScaledProblem& sp, const AlignedMatrix& L, const Iterate& it, Iterate& trial, double floor) {
+bool newton_step(const ScaledProblem& sp, const NormalFactor& L, const Iterate& it, Iterate& trial, double floor) {
   const Index p = it.s.size();
   const double mu = it.mu();
   VectorXd dx_aff, ds_aff, dl_aff, dx, ds, dl;
@@ -243,7 +307,7 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
   const bool warm = multipliers0 && multipliers0->size() == p;
   it.s = sp.gap(x0).cwiseMax(warm ? kWarmLift : kColdLift);
   it.l = warm ? VectorXd(sp.scaled_multipliers(*multipliers0).cwiseMax(kWarmLift)) : VectorXd(VectorXd::Ones(p));
-  AlignedMatrix M(n, n);
+  NormalFactor M(problem.hessian_is_dense(), n);
   try {
     residuals(sp, it);
     for (int k = 0;; ++k) {
@@ -263,7 +327,7 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
         double e = error;
         for (int extra = 0; extra < 4 && e > 1e-4 * options.tolerance; ++extra) {
           Iterate trial;
-          if (!(factorize(sp, it, 0.0, M) || factorize(sp, it, 1e-12, M)) || !newton_step(sp, M, it, trial, 0.0) ||
+          if (!(M.factorize(sp, it, 0.0) || M.factorize(sp, it, 1e-12)) || !newton_step(sp, M, it, trial, 0.0) ||
               !(trial.error() < e))
             break;
           const double e_next = trial.error();
@@ -282,7 +346,7 @@ IpoptResult solve_dense_primal(ConstrainedProblem& problem, const VectorXd& x0, 
         r.status_text = s.str();
         break;
       }
-      if (!factorize(sp, it, 0.0, M) && !factorize(sp, it, 1e-12, M)) {
+      if (!M.factorize(sp, it, 0.0) && !M.factorize(sp, it, 1e-12)) {
         r.status_text = "the Newton matrix is not numerically definite";
         break;
       }

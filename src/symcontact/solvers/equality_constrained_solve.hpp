@@ -14,10 +14,12 @@
 ///    which converges whatever the rank of A_S (dependent rows get some split of the multiplier; A_Sᵀ ν, the
 ///    contact force, is unique).
 
+#include <functional>
 #include <memory>
 
 #include "symcontact/optim/constrained_problem.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
+#include "symcontact/solvers/spd_factor.hpp"
 
 namespace symcontact {
 
@@ -39,5 +41,16 @@ struct StartFactor {
 /// solves from the same xs (StartFactor). Returns false when M cannot be factorised.
 bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
                   int& iterations, bool direct, StartFactor* start = nullptr);
+
+/// The method of multipliers on the set S with M = H + ρ A_Sᵀ A_S factorised (`chol`), from xs with the gradient
+/// g = ∇f(xs) and the multipliers nu: xs += M⁻¹(−(g − A_Sᵀ ν) − ρ A_Sᵀ c_S), ν −= ρ c_S(xs), g kept as the
+/// gradient of f's quadratic model by g += H Δ (`hessian_times` adds H Δ to its second argument); for a
+/// quadratic f the solution of the file comment's problem, else one Newton step of it. One step when S is
+/// empty. Converged when c_S and the update are at most 1e-14 × xscale0 (max-norm). Returns false when the
+/// violation stops falling (40 iterations without a 1 % gain: the rows are inconsistent, the set must change
+/// instead). `iterations` counts the solves.
+bool multiplier_method(const SpdFactor& chol, const std::function<void(const VectorXd&, VectorXd&)>& hessian_times,
+                       const SparseMatrix& AS, const VectorXd& bS, double rho, double xscale0, VectorXd& g,
+                       VectorXd& xs, VectorXd& nu, int& iterations);
 
 }  // namespace symcontact

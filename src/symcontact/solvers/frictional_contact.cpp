@@ -52,11 +52,12 @@ struct CompleteOnExit {
   }
 };
 
-/// Whether the thresholds follow the optimiser (CoulombUpdate::kInsideOptimizer): where the dense primal
-/// interior point solves condensed subproblems, the only optimiser that calls Subproblem::follow.
+/// Whether the thresholds follow the optimiser (CoulombUpdate::kInsideOptimizer): where the primal interior
+/// point solves the subproblems of linear-elastic bodies, condensed or not, the only optimiser that calls
+/// Subproblem::follow.
 bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, const FrictionalOptions& o) {
   return o.coulomb_update == CoulombUpdate::kInsideOptimizer && energy.hessian_is_constant() &&
-         o.contact.static_condensation && dense_primal_first(contacts, o.contact.subproblem_solver);
+         dense_primal_first(contacts, o.contact.subproblem_solver);
 }
 
 }  // namespace

@@ -14,7 +14,8 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       dual_(dual_method(contacts, options.subproblem_solver, options.warm_start)),
       primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
-      follows_(friction && friction->follower) {}
+      follows_(friction && friction->follower),
+      sparse_alternative_(energy.hessian_is_constant() && dense_primal_first(contacts, options.subproblem_solver)) {}
 
 /// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out
 /// of it, so that the problem stays quadratic, and kept for the slips it reports — unless the thresholds follow
@@ -41,7 +42,8 @@ ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, c
   if (!condense_) return problem_;
   ScopedPhase t(times, "condensation");
   condensed_ = condense_problem(bulk_, problem_, contacts_, dofs_, total_.extra, u_it, x, energy_, workspace_,
-                                {options_.max_condensed_dofs, options_.same_loads}, log_, condensed_load_);
+                                {options_.max_condensed_dofs, options_.same_loads, sparse_alternative_}, log_,
+                                condensed_load_);
   if (condensed_) return *condensed_;
   return problem_;
 }
@@ -84,10 +86,27 @@ bool GeometrySubproblem::unchanged(const ContactLinearization& lin, const Vector
   return true;
 }
 
-std::function<bool(const VectorXd&, const VectorXd&)> GeometrySubproblem::follow_hook(CondensedProblem& condensed) {
-  return [this, &condensed](const VectorXd& y, const VectorXd& multipliers) {
-    if (!friction_->follower->follow(condensed.surface_displacement(y), condensed.surface_force(y, multipliers)))
-      return false;
+/// The bodies' force on the surfaces at the uncondensed iterate x with multipliers λ, as
+/// CondensedProblem::surface_force gives it: Aᵀλ − ∇(friction terms) = Aᵀλ − (∇f − ∇f_bulk) at the free DOFs,
+/// zero at the others (full-DOF vector).
+VectorXd GeometrySubproblem::surface_force(const VectorXd& x, const VectorXd& multipliers) {
+  VectorXd g, g_bulk;
+  problem_.gradient(x, g);
+  bulk_.gradient(x, g_bulk);
+  const VectorXd free_force = problem_.constraint_matrix().transpose() * multipliers - (g - g_bulk);
+  const std::vector<Index>& free_index = problem_.free_index();
+  VectorXd f = VectorXd::Zero(static_cast<Index>(free_index.size()));
+  for (std::size_t d = 0; d < free_index.size(); ++d)
+    if (free_index[d] >= 0) f[static_cast<Index>(d)] = free_force[free_index[d]];
+  return f;
+}
+
+std::function<bool(const VectorXd&, const VectorXd&)> GeometrySubproblem::follow_hook(CondensedProblem* condensed) {
+  return [this, condensed](const VectorXd& y, const VectorXd& multipliers) {
+    const bool changed =
+        condensed ? friction_->follower->follow(condensed->surface_displacement(y), condensed->surface_force(y, multipliers))
+                  : friction_->follower->follow(problem_.expand(y), surface_force(y, multipliers));
+    if (!changed) return false;
     for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
       if (!friction_terms_[p] || contacts_.pairs[p].friction != FrictionLaw::kCoulomb) continue;
       const ContactSurface& slave = contacts_.surfaces[contacts_.families()[contacts_.friction_family(p)].slave];
@@ -115,7 +134,8 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
   }
   const VectorXd start = condensed ? condensed->restrict(x) : x;
   const SubproblemWarmStart warm{warm_multipliers};
-  Subproblem p{target, condensed, schur, start, geometry_iteration, ipopt, close_active_set, {}, {}};
+  Subproblem p{target,    condensed, schur, start, geometry_iteration, ipopt, close_active_set,
+               energy_.hessian_is_constant(), {}, {}};
   if (schur) {
     SubproblemSolution s = dual_->solve(p, warm, log_, rep.times);
     ++rep.dual_solves;
@@ -123,9 +143,9 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
     log_.detail("  IPOPT failed on the dual (" + s.result.status_text + "); the primal is solved instead");
     rep.ipopt_iterations += s.failed_iterations + s.result.iterations;
   }
-  if (condensed && follows_) {
+  if (follows_) {
     friction_->follower->start_solve();
-    p.follow = follow_hook(*condensed_);
+    p.follow = follow_hook(condensed_.get());
   }
   if (friction_)
     p.restart = [this, condensed] {

@@ -79,13 +79,17 @@ class GeometrySubproblem {
   std::unique_ptr<CondensedProblem> condensed_;
   std::vector<std::shared_ptr<FrictionTerm>> friction_terms_;
   ContactLinearization last_;  ///< the rows of the last build()
-  /// The thresholds follow the optimiser's iterates (FrictionState::follower, given only where the dense
-  /// primal interior point solves condensed subproblems): every friction term is kept, zero thresholds too.
+  /// The thresholds follow the optimiser's iterates (FrictionState::follower, given only where the primal
+  /// interior point solves the subproblems): every friction term is kept, zero thresholds too.
   bool follows_ = false;
+  /// The primal interior point takes the uncondensed problem as well (CondensationLimits::sparse_alternative).
+  bool sparse_alternative_ = false;
 
-  /// The optimiser's hook (Subproblem::follow) on `condensed`: the follower sets the nodal thresholds, and the
-  /// friction terms take them at their points.
-  std::function<bool(const VectorXd&, const VectorXd&)> follow_hook(CondensedProblem& condensed);
+  /// The optimiser's hook (Subproblem::follow) on `condensed`, or on the whole reduced problem where it is null:
+  /// the follower sets the nodal thresholds, and the friction terms take them at their points.
+  std::function<bool(const VectorXd&, const VectorXd&)> follow_hook(CondensedProblem* condensed);
+  /// The bodies' force on the surfaces at the reduced problem's x (see the .cpp).
+  VectorXd surface_force(const VectorXd& x, const VectorXd& multipliers);
 };
 
 }  // namespace symcontact

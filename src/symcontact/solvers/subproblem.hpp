@@ -6,8 +6,9 @@
 /// and its multipliers μ ≥ 0 (one per row). A SubproblemMethod is one way of solving it; the geometry fixed
 /// point (geometry_subproblem.hpp) chooses one per iteration and stays unaware of how it works:
 ///  - PrimalIpopt (primal_subproblem.hpp): IPOPT on the displacements, condensed or not; any energy.
-///  - PrimalInteriorPoint (primal_subproblem.hpp): the dense primal interior point on condensed displacements
-///    (friction terms too), PrimalIpopt where it fails.
+///  - PrimalInteriorPoint (primal_subproblem.hpp): the primal interior point on condensed displacements (a dense
+///    Hessian) or on the whole displacements of linear-elastic bodies (a sparse one), friction terms too;
+///    PrimalIpopt where it fails.
 ///  - DualIpopt, DualInteriorPoint (dual_subproblem.hpp): the dual in the multipliers of a condensed
 ///    quadratic problem, by IPOPT or by the dense interior point; the displacements follow exactly.
 
@@ -31,6 +32,9 @@ struct Subproblem {
   int geometry_iteration;              ///< 1, 2, … within the solve
   const IpoptOptions& ipopt;           ///< the optimiser settings (IPOPT's; the interior point reads `tol`)
   bool close_active_set;               ///< close the active set exactly where the method does it itself (dual)
+  /// The bodies' energy is quadratic (linear elasticity; friction terms aside), so that an uncondensed target is
+  /// convex with a sparse Hessian of fixed pattern: the primal interior point takes it too, on CHOLMOD.
+  bool quadratic_bodies;
   /// Another start to retry from when the solve fails from `start` (the primal with friction); empty: none.
   std::function<VectorXd()> restart;
   /// Data of the objective that follow the optimiser's iterate (Coulomb thresholds), for an optimiser that
