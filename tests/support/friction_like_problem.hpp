@@ -62,7 +62,10 @@ class FrictionLikeProblem : public ConstrainedProblem {
         if (H.coeff(i, j) == 0.0) H.coeffRef(i, j) = 0.0;
     H.makeCompressed();
   }
-  bool hessian_is_dense() const override { return true; }
+  /// Dense by default (the condensed problem's Hessian); set_dense(false) makes the methods take their sparse
+  /// path (CHOLMOD on the same full lower triangle).
+  bool hessian_is_dense() const override { return dense_; }
+  void set_dense(bool dense) { dense_ = dense; }
   double weight() const { return w_; }
   void shift_offset(double fraction) { b_.array() += fraction * b_.cwiseAbs().maxCoeff(); }
   void set_weight(double w) { w_ = w; }
@@ -78,6 +81,7 @@ class FrictionLikeProblem : public ConstrainedProblem {
   double w(Index k) const { return wk_.size() ? wk_[k] : w_; }
   double w_, alpha_;
   VectorXd wk_;
+  bool dense_ = true;
   SparseMatrix A_;
   VectorXd b_;
 };

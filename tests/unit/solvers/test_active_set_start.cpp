@@ -61,6 +61,27 @@ TEST(ActiveSetStart, FromANearbySolutionItEndsAtTheInteriorPointsSolution) {
   }
 }
 
+// The same with a Hessian that is not dense (the uncondensed problem): each Newton direction on the set by
+// CHOLMOD's factor of ∇²f + ρ A_SᵀA_S and the method of multipliers instead of the dense range space; the same
+// solution, a KKT point.
+TEST(ActiveSetStart, TheSparsePathEndsAtTheSameSolution) {
+  for (const unsigned seed : {2u, 11u}) {
+    FrictionLikeProblem p(kN, kM, seed);
+    const IpoptResult last = solve_dense_primal(p, VectorXd::Zero(kN), tight<DensePrimalOptions>());
+    ASSERT_TRUE(last.success) << last.status_text;
+    p.shift_offset(1e-3);
+    const IpoptResult dense = solve_from_active_set(p, last.x, last.multipliers, tight<ActiveSetStartOptions>());
+    p.set_dense(false);
+    const IpoptResult sparse = solve_from_active_set(p, last.x, last.multipliers, tight<ActiveSetStartOptions>());
+    ASSERT_TRUE(dense.success) << dense.status_text;
+    ASSERT_TRUE(sparse.success) << sparse.status_text;
+    EXPECT_LT(relative(sparse.x, dense.x), 1e-9) << "seed " << seed;
+    EXPECT_LT(relative(sparse.multipliers, dense.multipliers), 1e-8) << "seed " << seed;
+    EXPECT_LT(kkt_violation(p, sparse, 3.0, 1.0), 1e-10) << "seed " << seed;
+    EXPECT_GE(factorisations(sparse), 1) << sparse.status_text;
+  }
+}
+
 // Rows moved by 5 % of b: the last solution's set is no longer the active set, and the updates of the set
 // find the new one (a quadratic f here: the primal-dual active set strategy as its authors state it).
 TEST(ActiveSetStart, AChangedActiveSetIsFoundByItsUpdates) {

@@ -39,6 +39,29 @@ TEST(DensePrimalInteriorPoint, MeetsTheKktConditionsAndAgreesWithIpopt) {
   }
 }
 
+// A problem whose Hessian is not dense (ConstrainedProblem::hessian_is_dense() false: the uncondensed contact
+// problem) is solved with CHOLMOD's factor of the normal matrix instead of LAPACK's: the same iterates up to
+// round-off, so the same answer and about the same iteration count, with the thresholds following too.
+TEST(DensePrimalInteriorPoint, TheSparsePathGivesTheDensePathsAnswer) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    FrictionLikeProblem p(40, 60, seed);
+    const VectorXd x0 = VectorXd::Zero(40);
+    DensePrimalOptions o;
+    o.tolerance = 1e-12;
+    const IpoptResult dense = solve_dense_primal(p, x0, o);
+    p.set_dense(false);
+    const IpoptResult sparse = solve_dense_primal(p, x0, o);
+    ASSERT_TRUE(dense.success) << dense.status_text;
+    ASSERT_TRUE(sparse.success) << sparse.status_text;
+    EXPECT_LT((sparse.x - dense.x).lpNorm<Eigen::Infinity>(), 1e-9 * dense.x.lpNorm<Eigen::Infinity>()) << seed;
+    EXPECT_LT((sparse.multipliers - dense.multipliers).lpNorm<Eigen::Infinity>(),
+              1e-8 * dense.multipliers.lpNorm<Eigen::Infinity>())
+        << seed;
+    EXPECT_LT(kkt_violation(p, sparse, 3.0, 1.0), 1e-8) << seed;
+    EXPECT_LE(std::abs(sparse.iterations - dense.iterations), 2) << sparse.iterations << " against " << dense.iterations;
+  }
+}
+
 TEST(DensePrimalInteriorPoint, AChangeOfUnitsChangesNeitherTheIteratesNorTheAnswer) {
   FrictionLikeProblem si(30, 45, 7);
   FrictionLikeProblem mm(30, 45, 7, 1e3, 1e-6);  // lengths × 1e3, forces × 1e-6 (say N/m → ...)
