@@ -145,7 +145,7 @@ class NewtonOnSet {
     slope = 0.0;
     const double hdiag = H.diagonal().cwiseAbs().mean();
     const double rho = AS_.rows() > 0 ? kSparseRho * hdiag / adiag_ : 0.0;
-    SpdFactor chol(false);
+    SpdFactor& chol = sparse_factor_;  // the same pattern at every step on S: CHOLMOD's analysis is kept
     if (!(hdiag > 0) || !chol.compute(H, nullptr, AS_.rows() > 0 ? &AtA_ : nullptr, rho)) return false;
     ++factorisations_;
     const auto hessian_times = [&H](const VectorXd& v, VectorXd& out) { out += H.selfadjointView<Eigen::Lower>() * v; };
@@ -164,6 +164,7 @@ class NewtonOnSet {
   const SparseMatrix& AS_;
   const VectorXd& bS_;
   std::unique_ptr<AlignedMatrix> H_;  ///< the dense path's ∇²f (null on the sparse path)
+  SpdFactor sparse_factor_{false};   ///< the sparse path's
   SparseMatrix AtA_;
   double adiag_ = 0.0;
   std::unique_ptr<DenseRangeSpace> reference_;

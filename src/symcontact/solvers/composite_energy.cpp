@@ -17,6 +17,10 @@ void CompositeEnergy::add_gradient(const VectorXd& u, VectorXd& g) const {
 
 void CompositeEnergy::add_hessian(const VectorXd& u, MatrixSink& sink) const {
   base_.add_hessian(u, sink);
+  add_extra_hessian(u, sink);
+}
+
+void CompositeEnergy::add_extra_hessian(const VectorXd& u, MatrixSink& sink) const {
   for (const auto& t : extra)
     if (t) t->add_hessian(u, sink);
 }

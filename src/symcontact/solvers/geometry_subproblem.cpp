@@ -15,7 +15,11 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       dual_(dual_method(contacts, options.subproblem_solver, options.warm_start)),
       primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
-      sparse_alternative_(energy.hessian_is_constant() && dense_primal_first(contacts, options.subproblem_solver)) {}
+      sparse_alternative_(energy.hessian_is_constant() && dense_primal_first(contacts, options.subproblem_solver)) {
+  // Linear elasticity: K_ff assembled once (bulk_ caches it), the friction terms at each call.
+  if (energy.hessian_is_constant())
+    problem_.split_hessian(bulk_, [this](const VectorXd& u, MatrixSink& sink) { total_.add_extra_hessian(u, sink); });
+}
 
 /// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out
 /// of it, so that the problem stays quadratic, and kept for the slips it reports — unless the thresholds follow

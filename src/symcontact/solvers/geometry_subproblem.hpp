@@ -26,6 +26,8 @@ class GeometrySubproblem {
   GeometrySubproblem(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts, const DofMap& dofs,
                      const ContactSolveOptions& options, ContactWorkspace& workspace, const Logger& log,
                      const FrictionState* friction);
+  GeometrySubproblem(const GeometrySubproblem&) = delete;  // problem_ calls back into this object
+  GeometrySubproblem& operator=(const GeometrySubproblem&) = delete;
 
   /// The bodies' energy with the friction terms on the free DOFs: restrict() and expand() between u and x.
   const ReducedProblem& reduced() const { return problem_; }

@@ -48,9 +48,22 @@ void ReducedProblem::gradient(const VectorXd& x, VectorXd& g) {
   g = restrict(gu);
 }
 
+void ReducedProblem::split_hessian(ReducedProblem& constant,
+                                   std::function<void(const VectorXd& u, MatrixSink& sink)> rest) {
+  constant_ = &constant;
+  rest_ = std::move(rest);
+}
+
 void ReducedProblem::hessian_lower(const VectorXd& x, SparseMatrix& H) {
   if (have_H_ && energy_.hessian_is_constant()) {
     H = H_cache_;
+    return;
+  }
+  if (constant_) {
+    constant_->hessian_lower(x, H);
+    ReducedTripletSink sink(free_index_);
+    rest_(expand(x), sink);
+    if (!sink.triplets().empty()) H += sink.to_lower_matrix(num_free_);
     return;
   }
   ReducedTripletSink sink(free_index_);

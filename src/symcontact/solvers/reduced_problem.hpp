@@ -4,6 +4,7 @@
 /// only, as a ConstrainedProblem: u = P x + u_D (P injects the free DOFs, u_D holds the fixed values),
 /// f(x) = E(P x + u_D), ∇f = Pᵀ∇E, ∇²f = Pᵀ∇²E P, and constraints (A P) x + (b + A u_D) ≥ 0.
 
+#include <functional>
 #include <vector>
 
 #include "symcontact/energy/energy_term.hpp"
@@ -27,6 +28,11 @@ class ReducedProblem : public ConstrainedProblem {
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
+  /// ∇²f as the cached Hessian of `constant` (a problem on the same DOFs whose energy's Hessian is constant: the
+  /// bodies' energy) plus what `rest` adds at u (the friction terms): hessian_lower() then assembles the rest
+  /// only. The caller keeps the energy equal to constant's plus rest's.
+  void split_hessian(ReducedProblem& constant, std::function<void(const VectorXd& u, MatrixSink& sink)> rest);
+
   VectorXd expand(const VectorXd& x) const;    ///< u = P x + u_D
   VectorXd restrict(const VectorXd& u) const;  ///< x = Pᵀ u
   Index num_free() const { return num_free_; }
@@ -42,6 +48,8 @@ class ReducedProblem : public ConstrainedProblem {
   VectorXd b_;
   SparseMatrix H_cache_;
   bool have_H_ = false;
+  ReducedProblem* constant_ = nullptr;  ///< split_hessian()'s
+  std::function<void(const VectorXd&, MatrixSink&)> rest_;
 };
 
 }  // namespace symcontact

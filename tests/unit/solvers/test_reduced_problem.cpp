@@ -8,7 +8,10 @@
 
 #include <Eigen/Dense>
 
+#include <memory>
+
 #include "support/quadratic_energy.hpp"
+#include "symcontact/energy/energy_sum.hpp"
 
 namespace symcontact {
 namespace {
@@ -102,6 +105,27 @@ TEST(ReducedProblem, ConstraintsMoveTheFixedColumnsIntoTheOffset) {
   // b + A u_D: 0.1 − 2 · 0.75 and −0.2 + 3 · (−2) − 0.25.
   EXPECT_DOUBLE_EQ(r.constraint_offset()[0], 0.1 - 1.5);
   EXPECT_DOUBLE_EQ(r.constraint_offset()[1], -0.2 - 6.0 - 0.25);
+}
+
+// split_hessian: the cached Hessian of a constant part plus the rest assembled at x is the Hessian of the whole
+// energy (the geometry subproblem's K_ff plus friction terms), at every call.
+TEST(ReducedProblem, ASplitHessianIsTheWholeOnesHessian) {
+  SmallProblem p;
+  const SparseMatrix k_rest = 0.3 * grid_laplacian(3, 1.0);
+  EnergySum whole;
+  whole.add(std::make_unique<QuadraticEnergy>(p.k, VectorXd::LinSpaced(9, 1.0, -1.0)));
+  const QuadraticEnergy* rest = whole.add(std::make_unique<QuadraticEnergy>(k_rest, VectorXd::Zero(9)));
+  ReducedProblem unsplit(whole, p.fixed, 9), split(whole, p.fixed, 9), constant(p.energy, p.fixed, 9);
+  split.split_hessian(constant, [rest](const VectorXd& u, MatrixSink& sink) { rest->add_hessian(u, sink); });
+  SparseMatrix h_unsplit, h_split;
+  for (const double s : {0.0, 1.0}) {
+    const VectorXd x = s * VectorXd::LinSpaced(6, -1.0, 1.0);
+    unsplit.hessian_lower(x, h_unsplit);
+    split.hessian_lower(x, h_split);
+    EXPECT_EQ(h_split.nonZeros(), h_unsplit.nonZeros());
+    EXPECT_LT((MatrixXd(h_split) - MatrixXd(h_unsplit)).cwiseAbs().maxCoeff(), 1e-14);
+    EXPECT_GT(MatrixXd(h_split).cwiseAbs().maxCoeff(), 0.0);
+  }
 }
 
 }  // namespace
