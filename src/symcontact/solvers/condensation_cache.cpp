@@ -67,8 +67,8 @@ void add_condensation_margin(const ContactSet& contacts, const DofMap& dofs, con
 
 /// The cost rule of the primal path (friction terms present): whether a sparse factorisation of K_ff plus the
 /// contact terms (the uncondensed interior point, dense_primal_interior_point.hpp) costs less per iteration than
-/// the dense |B| × |B| one of the condensed problem: |B|³/3 > kDenseOverSparse × CHOLMOD's predicted flops for
-/// K_ff. K_ff's analysis is made once per model (ContactWorkspace::sparse_flops) and the choice logged then.
+/// the dense |B| × |B| one of the condensed problem (kDenseOverSparse, kSparseAboveFlops). K_ff's analysis is
+/// made once per model (ContactWorkspace::sparse_flops); the choice is logged at -v for each new |B|.
 bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy, const std::vector<Index>& free_index,
                        ContactWorkspace& ws, const Logger& log) {
   if (ws.sparse_flops_energy != &energy || ws.sparse_flops_free_index != free_index) {
@@ -84,7 +84,7 @@ bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy,
     ws.sparse_logged_for = -1;
   }
   const double dense = std::pow(static_cast<double>(b), 3) / 3.0;
-  const bool sparse = dense > kDenseOverSparse * ws.sparse_flops;
+  const bool sparse = dense > kSparseAboveFlops && dense > kDenseOverSparse * ws.sparse_flops;
   if (ws.sparse_logged_for != b) {
     ws.sparse_logged_for = b;
     std::ostringstream m;

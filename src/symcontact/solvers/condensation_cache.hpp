@@ -64,12 +64,15 @@ struct ContactWorkspace {
 };
 
 /// The primal path's cost rule (condense_problem): the subproblems with friction terms are not condensed when
-/// |B|³/3 exceeds this many times CHOLMOD's flops of factorising K_ff. The dense flops run about ten times
-/// faster than the sparse ones, and the sparse path's iterations carry the assembly and solves besides. Measured
-/// on a 3D pad dragged on a rigid plane (docs/performance.md, "Whole faces in contact"): at flop ratios 4.1,
-/// 6.5 and 5.5 (1.0e4, 1.8e4 and 3.3e4 DOFs) the sparse path took 1.19, 0.98 and 0.82 times the CPU time of
-/// the condensed one, and 0.31, 0.29 and 0.25 times its peak memory.
-inline constexpr double kDenseOverSparse = 5.0;
+/// a dense factorisation on B, |B|³/3 flops, is more than kDenseOverSparse times CHOLMOD's flops of factorising
+/// K_ff and more than kSparseAboveFlops. Dense flops run about four times faster than sparse ones here (LAPACK
+/// on one block against CHOLMOD's supernodes, plus the sparse path's assembly and solves per iteration). Below
+/// 1e9 flops (|B| ≲ 1,400) the two cost about the same, and the condensed path stays. Measured on the 3D pads of
+/// docs/performance.md ("Whole faces in contact"), CPU time sparse / condensed: on a plane 1.03, 0.92, 1.16 at
+/// flop ratios 9.3, 7.5, 6.9 (2.7e7–3.5e8 flops), then 0.92, 0.65, 0.60 at 4.1, 6.5, 5.5 (1.0e4, 1.8e4, 3.3e4
+/// DOFs, 2.8e9–3.7e10 flops); on a ball 1.05, 1.03 at 7.1e3 and 1.0e4 DOFs; peak memory 0.28–0.35 times.
+inline constexpr double kDenseOverSparse = 4.0;
+inline constexpr double kSparseAboveFlops = 1e9;
 
 /// When and how far to condense (ContactSolveOptions::max_condensed_dofs, ::same_loads).
 struct CondensationLimits {
