@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "symcontact/core/error.hpp"
+#include "symcontact/solvers/condensation_cache.hpp"
 
 namespace symcontact {
 
@@ -67,8 +69,27 @@ struct DenseWork {
   std::string figures;
 };
 
+/// The serial solver's cost per interior-point iteration, in flops of a dense factorisation: |B|³/3 condensed;
+/// with friction, where the condensation's cost rule takes the uncondensed problem instead (kDenseOverSparse,
+/// solvers/condensation_cache.hpp), the sparse factorisation of K_ff at kSparseFlopInDenseFlops. The figures
+/// say which.
+std::pair<double, std::string> serial_work(const ProblemSpec& spec, const Model& model, double b,
+                                           const std::vector<Index>& free_index, Index num_free) {
+  const double dense = b * b * b / 3.0;
+  const std::string condensed = "|B| = " + std::to_string(static_cast<Index>(b)) +
+                                " condensed DOFs: a dense factorisation of " + figure(dense) + " flops";
+  const bool friction =
+      std::any_of(spec.contacts.begin(), spec.contacts.end(), [](const ContactSpec& c) { return c.friction != "none"; });
+  if (!friction || !(dense > kSparseAboveFlops)) return {dense, condensed};
+  const double flops = predict_factor(model.energy(), free_index, num_free).flops;
+  if (!(dense > kDenseOverSparse * flops)) return {dense, condensed};
+  const double sparse = kSparseFlopInDenseFlops * flops;
+  return {sparse, condensed + ", uncondensed instead: a sparse factorisation of K_ff worth " + figure(sparse)};
+}
+
 /// A search that fails here fails again in the first step, which reports it: no estimate then.
-DenseWork dense_work(const ProblemSpec& spec, const Model& model, const MemoryBudget& budget, Index num_free) {
+DenseWork dense_work(const ProblemSpec& spec, const Model& model, const MemoryBudget& budget,
+                     const std::vector<Index>& free_index, Index num_free) {
   double b = 0.0;
   try {
     b = static_cast<double>(predicted_condensed_dofs(spec, model));
@@ -77,10 +98,10 @@ DenseWork dense_work(const ProblemSpec& spec, const Model& model, const MemoryBu
   } catch (const SolveError& e) {
     return {false, std::string("no cost estimate: ") + e.what()};
   }
-  const double dense = b * b * b / 3.0, iterative = budget.iterative_flops_per_dof * static_cast<double>(num_free);
-  return {dense > iterative, "|B| = " + std::to_string(static_cast<Index>(b)) + " condensed DOFs: a dense factorisation of " +
-                                 figure(dense) + " flops per interior-point iteration against " + figure(iterative) +
-                                 " for the iterative path"};
+  const double iterative = budget.iterative_flops_per_dof * static_cast<double>(num_free);
+  const auto [serial, figures] = serial_work(spec, model, b, free_index, num_free);
+  return {serial > iterative,
+          figures + " per interior-point iteration against " + figure(iterative) + " for the iterative path"};
 }
 
 }  // namespace
@@ -121,7 +142,7 @@ LinearSolverDecision choose_linear_solver(const ProblemSpec& spec, const Model& 
   std::string cost = !limit.none() ? "no cost estimate: " + limit.key + " is not solved by the distributed path"
                                    : "no cost estimate: " + unmeasured;
   if (limit.none() && unmeasured.empty()) {
-    const DenseWork work = dense_work(spec, model, budget, num_free);
+    const DenseWork work = dense_work(spec, model, budget, free_index, num_free);
     if (work.dearer)
       return {true, DecisionBasis::kDenseWork, "linear solver: iterative (automatic: " + work.figures + ")",
               work.figures};

@@ -7,19 +7,21 @@
 /// The rule for "automatic", where the distributed path solves the problem (linear elasticity; contact with
 /// rigid obstacles, frictionless or with friction on order-1 elements; frictionless contact between elastic
 /// bodies in one-pass pairs and self-contact): the distributed path when
-///  - the serial solver's dense work on the contact surface is predicted to cost more than the iterative
-///    solve: |B|³/3 > kIterativeFlopsPerDof × free DOFs, with B the DOFs the serial solver condenses onto
-///    (predicted_condensed_dofs) — its interior point factorises a dense |B| × |B| matrix at every iteration
-///    (solvers/condensation_cache.hpp), where the iterative path's Newton solves cost a multiple of the DOFs
-///    — for contact with rigid planes only: against a curved obstacle the iterative path took twice the
-///    serial solver's iterations (docs/distributed.md);
+///  - the serial solver's work per interior-point iteration is predicted to cost more than the iterative
+///    solve's: W > kIterativeFlopsPerDof × free DOFs, with W = |B|³/3 and B the DOFs the serial solver
+///    condenses onto (predicted_condensed_dofs) — its interior point factorises a dense |B| × |B| matrix at every
+///    iteration — or, with friction where the condensation's cost rule (kDenseOverSparse,
+///    solvers/condensation_cache.hpp) takes the uncondensed problem, W = kSparseFlopInDenseFlops × the flops of
+///    K_ff's sparse factorisation; the iterative path's Newton solves cost a multiple of the DOFs. For contact with
+///    rigid planes only: against a curved obstacle the iterative path took twice the serial solver's
+///    iterations (docs/distributed.md);
 ///  - or the model has at least kAutomaticCheckDofs DOFs and its serial contact solve's predicted peak
 ///    (solvers/memory_prediction.hpp, from CHOLMOD's analysis of K_ff) is above kMemoryShare × MemAvailable.
 ///    Below that size the analysis is not run: such a problem fits on any machine this runs on.
 /// The serial solver otherwise. kIterativeFlopsPerDof is measured (docs/distributed.md, "Choosing the
 /// path"): one process, a 3D pad dragged with Coulomb friction on a rigid plane, the ratio of the two paths'
-/// times giving the same break-even constant (1.57e6) at 2.9e4 DOFs (|B| = 4,320, the serial solver 1.4 times
-/// faster) and at 6.5e4 (|B| = 7,653, 1.7 times slower).
+/// times giving the same break-even constant (1.57e6) at 2.9e4 DOFs (|B| = 4,320, the condensed serial solver
+/// 1.4 times faster) and at 6.5e4 (|B| = 7,653, 1.7 times slower).
 
 #include <string>
 
@@ -33,6 +35,13 @@ inline constexpr double kAutomaticCheckDofs = 2e5;
 inline constexpr double kMemoryShare = 0.9;
 /// The iterative path's cost per free DOF and interior-point iteration, in flops of a dense factorisation.
 inline constexpr double kIterativeFlopsPerDof = 1.5e6;
+/// The uncondensed serial solver's cost per flop of K_ff's sparse factorisation, in flops of a dense one, at
+/// the sizes where the iterative path competes: the 3D pad dragged on a rigid plane, one process, took 37 s
+/// and 151 s of CPU (81 and 85 iterations) at 2.9e4 and 6.5e4 DOFs against the iterative path's 132 s and
+/// 272 s (docs/distributed.md, "Choosing the path"), which this rate and kIterativeFlopsPerDof order alike
+/// (the condensation's own rate, kDenseOverSparse = 4, is the break-even at 1e4 DOFs, where CHOLMOD's
+/// supernodes are smaller).
+inline constexpr double kSparseFlopInDenseFlops = 2.0;
 
 /// What the distributed path does not solve yet in `spec`: the key of the first such thing and why ("" and
 /// "" when it solves all of it).

@@ -17,12 +17,16 @@ double available_memory_bytes() {
   return -1.0;
 }
 
-double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free) {
+FactorPrediction predict_factor(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free) {
   ReducedTripletSink sink(free_index);
   energy.add_hessian(VectorXd::Zero(static_cast<Index>(free_index.size())), sink);  // K does not depend on u
   CholeskySolver chol;
   chol.analyze(sink.to_lower_matrix(num_free));
-  return chol.factor_nonzeros();
+  return {chol.factor_nonzeros(), chol.factor_flops()};
+}
+
+double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free) {
+  return predict_factor(energy, free_index, num_free).nonzeros;
 }
 
 double predicted_direct_peak_bytes(double factor_nonzeros, double dofs, double contact_nodes) {

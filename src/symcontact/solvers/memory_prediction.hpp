@@ -15,8 +15,13 @@ namespace symcontact {
 /// MemAvailable of /proc/meminfo in bytes, or −1 where it cannot be read.
 double available_memory_bytes();
 
-/// nnz(L) of K_ff, the energy's Hessian at 0 on the DOFs with free_index[d] ≥ 0, as CHOLMOD's analysis
-/// predicts it.
+/// nnz(L) and the flops of factorising K_ff, the energy's Hessian at 0 on the DOFs with free_index[d] ≥ 0, as
+/// CHOLMOD's analysis predicts them.
+struct FactorPrediction {
+  double nonzeros = 0.0, flops = 0.0;
+};
+FactorPrediction predict_factor(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free);
+/// predict_factor()'s nonzeros.
 double predict_factor_nonzeros(const EnergyTerm& energy, const std::vector<Index>& free_index, Index num_free);
 
 /// CHOLMOD's supernodal factor stores more than nnz(L) entries: the zeros of relaxed supernode amalgamation

@@ -121,6 +121,27 @@ TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheDenseWorkCostsMore
   EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e-3}).iterative);
 }
 
+// With friction, where the condensation would cost more than a sparse factorisation of K_ff, the serial solver
+// takes the uncondensed problem (solvers/condensation_cache.hpp, kDenseOverSparse), and the rule weighs that
+// cost: a long 2D strip, |B| = 1,602 (the top's 801 nodes, both DOFs), 1.4e9 flops condensed against far less
+// for the strip's banded K_ff, stays serial where the iterative path is worth 3.2e7.
+TEST(LinearSolverChoice, AutomaticWeighsTheUncondensedSerialPathWithFriction) {
+  const testing::TempFolder folder;
+  testing::write_rectangle_msh(folder.path() / "block.msh", 800.0, 1.0, 800, 2);
+  const auto c = testing::build_model(
+      testing::clamped_block("E = 1000.0, nu = 0.25") +
+          "[[contact]]\na = \"block.top\"\nfriction = \"coulomb\"\nmu = 0.3\n"
+          "[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 1.5]\nnormal = [0.0, -1.0]\n",
+      folder.path());
+  ASSERT_EQ(predicted_condensed_dofs(c->spec, *c->model), 1602);
+  const LinearSolverDecision d = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e4});
+  EXPECT_FALSE(d.iterative) << d.reason;
+  EXPECT_NE(d.reason.find("uncondensed instead: a sparse factorisation of K_ff"), std::string::npos) << d.reason;
+  // Without friction the serial solver stays condensed (the dual), and its dense work is what is weighed.
+  c->spec.contacts[0].friction = "none";
+  EXPECT_TRUE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e2}).iterative);
+}
+
 /// serial_only_choice(): the InputError it throws, or "" when it throws none.
 std::string serial_only_error(const testing::ModelCase& c, const MemoryBudget& budget) {
   try {
