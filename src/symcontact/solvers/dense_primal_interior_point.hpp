@@ -4,10 +4,12 @@
 ///
 ///     min_x f(x)   subject to   c(x) = A x + b ≥ 0,
 ///
-/// f twice differentiable and convex, ∇²f dense m × m (the condensed frictional contact problem: the Schur
-/// complement S plus the friction term's node blocks, condensed_problem.hpp), A sparse p × m. IPOPT solves the
-/// same problem with MUMPS factorising the dense KKT matrix as a sparse one at every iteration; here an
-/// iteration is one LAPACK Cholesky factorisation of the m × m normal matrix and a few triangular solves.
+/// f twice differentiable and convex, A sparse p × m. Where ∇²f is dense (ConstrainedProblem::hessian_is_dense():
+/// the condensed frictional contact problem, the Schur complement S plus the friction term's node blocks,
+/// condensed_problem.hpp) an iteration is one LAPACK Cholesky factorisation of the m × m normal matrix and a few
+/// triangular solves, where IPOPT's MUMPS factorises the dense KKT matrix as a sparse one; where it is sparse
+/// (the uncondensed problem of linear-elastic bodies: K_ff plus the friction blocks) one CHOLMOD factorisation,
+/// the ordering and symbolic analysis made once per solve.
 ///
 /// With slacks s = c(x) and multipliers λ (∇f(x) = Aᵀλ at a solution), the perturbed KKT conditions
 ///     r_d = ∇f(x) − Aᵀλ = 0,   r_p = A x + b − s = 0,   s ∘ λ = σμ 1,   s, λ > 0,
