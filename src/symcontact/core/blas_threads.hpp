@@ -6,9 +6,8 @@
 /// thread unless asked otherwise (CLI --threads, or OPENBLAS_NUM_THREADS in the environment).
 /// The OpenMP thread count (CHOLMOD's parallel regions) is set along: on one thread they run on the calling
 /// thread (set_openmp_threads). CHOLMOD's supernodal factorisation otherwise wakes four OpenMP threads per
-/// large supernode, a futex storm on a 2-core machine: a 3D sparse interior point at 1e4 DOFs took 16.5 s of
-/// wall time (4.1 s of it in the kernel) with them and 8.2 s without. With a BLAS other than OpenBLAS the
-/// BLAS calls do nothing.
+/// large supernode: on a 2-core machine the futex wake-ups and waits cost about as much as the factorisation
+/// itself (docs/performance.md, "Machine"). With a BLAS other than OpenBLAS the BLAS calls do nothing.
 
 namespace symcontact {
 
