@@ -80,9 +80,9 @@ std::pair<double, std::string> serial_work(const ProblemSpec& spec, const Model&
                                 " condensed DOFs: a dense factorisation of " + figure(dense) + " flops";
   const bool friction =
       std::any_of(spec.contacts.begin(), spec.contacts.end(), [](const ContactSpec& c) { return c.friction != "none"; });
-  if (!friction || !(dense > kSparseAboveFlops)) return {dense, condensed};
+  if (!friction || !(dense > kSparseAboveFlops)) return {dense, condensed};  // K_ff's analysis only if it may matter
   const double flops = predict_factor(model.energy(), free_index, num_free).flops;
-  if (!(dense > kDenseOverSparse * flops)) return {dense, condensed};
+  if (!uncondensed_is_cheaper(dense, flops)) return {dense, condensed};
   const double sparse = kSparseFlopInDenseFlops * flops;
   return {sparse, condensed + ", uncondensed instead: a sparse factorisation of K_ff worth " + figure(sparse)};
 }

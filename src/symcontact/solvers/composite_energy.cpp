@@ -11,6 +11,10 @@ double CompositeEnergy::value(const VectorXd& u) const {
 
 void CompositeEnergy::add_gradient(const VectorXd& u, VectorXd& g) const {
   base_.add_gradient(u, g);
+  add_extra_gradient(u, g);
+}
+
+void CompositeEnergy::add_extra_gradient(const VectorXd& u, VectorXd& g) const {
   for (const auto& t : extra)
     if (t) t->add_gradient(u, g);
 }

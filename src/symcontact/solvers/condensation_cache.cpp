@@ -84,7 +84,7 @@ bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy,
     ws.sparse_logged_for = -1;
   }
   const double dense = std::pow(static_cast<double>(b), 3) / 3.0;
-  const bool sparse = dense > kSparseAboveFlops && dense > kDenseOverSparse * ws.sparse_flops;
+  const bool sparse = uncondensed_is_cheaper(dense, ws.sparse_flops);
   if (ws.sparse_logged_for != b) {
     ws.sparse_logged_for = b;
     std::ostringstream m;

@@ -73,6 +73,12 @@ struct ContactWorkspace {
 /// DOFs, 2.8e9–3.7e10 flops); on a ball 1.05, 1.03 at 7.1e3 and 1.0e4 DOFs; peak memory 0.28–0.35 times.
 inline constexpr double kDenseOverSparse = 4.0;
 inline constexpr double kSparseAboveFlops = 1e9;
+/// The rule above: the uncondensed problem is cheaper, from the flops of the dense factorisation on B
+/// (|B|³/3) and of K_ff's sparse one. condense_problem decides by it, and the run-level choice
+/// (app/linear_solver_choice.hpp) predicts that decision by it.
+inline bool uncondensed_is_cheaper(double dense_flops, double sparse_flops) {
+  return dense_flops > kSparseAboveFlops && dense_flops > kDenseOverSparse * sparse_flops;
+}
 
 /// When and how far to condense (ContactSolveOptions::max_condensed_dofs, ::same_loads).
 struct CondensationLimits {

@@ -91,17 +91,17 @@ bool GeometrySubproblem::unchanged(const ContactLinearization& lin, const Vector
 }
 
 /// The bodies' force on the surfaces at the uncondensed iterate x with multipliers λ, as
-/// CondensedProblem::surface_force gives it: Aᵀλ − ∇(friction terms) = Aᵀλ − (∇f − ∇f_bulk) at the free DOFs,
-/// zero at the others (full-DOF vector).
+/// CondensedProblem::surface_force gives it: Aᵀλ − ∇(friction terms) at the free DOFs, zero at the others
+/// (full-DOF vector).
 VectorXd GeometrySubproblem::surface_force(const VectorXd& x, const VectorXd& multipliers) {
-  VectorXd g, g_bulk;
-  problem_.gradient(x, g);
-  bulk_.gradient(x, g_bulk);
-  const VectorXd free_force = problem_.constraint_matrix().transpose() * multipliers - (g - g_bulk);
+  const VectorXd u = problem_.expand(x);
+  VectorXd friction = VectorXd::Zero(u.size());
+  total_.add_extra_gradient(u, friction);
+  const VectorXd free_force = problem_.constraint_matrix().transpose() * multipliers;
   const std::vector<Index>& free_index = problem_.free_index();
-  VectorXd f = VectorXd::Zero(static_cast<Index>(free_index.size()));
+  VectorXd f = VectorXd::Zero(u.size());
   for (std::size_t d = 0; d < free_index.size(); ++d)
-    if (free_index[d] >= 0) f[static_cast<Index>(d)] = free_force[free_index[d]];
+    if (free_index[d] >= 0) f[static_cast<Index>(d)] = free_force[free_index[d]] - friction[static_cast<Index>(d)];
   return f;
 }
 
