@@ -11,14 +11,18 @@
 ///  1. S = the rows with a positive warm multiplier (above 1e-6 of the largest) and the rows violated at x0;
 ///  2. Newton on  min f  subject to  c_S(x) = 0: each step the range-space solve of its KKT system
 ///     (dense_kkt.hpp), by a new factorisation of ∇²f + ρ A_SᵀA_S or, where only the friction blocks of ∇²f
-///     changed since the last one, by projected CG preconditioned with it (O(m²) an iteration);
+///     changed since the last one, by projected CG preconditioned with it (O(m²) an iteration); with a sparse
+///     ∇²f (the uncondensed problem), the method of multipliers on CHOLMOD's factor of the same matrix, kept
+///     for the later steps while they are small and still fall (a modified Newton method); an Armijo line
+///     search on f where a step is large;
 ///  3. data of f that follow the iterate (the Coulomb thresholds, FollowIterate) are set after each Newton
 ///     step below a tenth of max|x|, and Newton goes on until its step is at round-off and they no longer
 ///     change;
-///  4. rows of S with a negative multiplier leave it and rows the point violates join it; 2–4 again until S
-///     settles.
-/// No line search: Newton on f's regularised friction term from a start far from its solution can fail to
-/// converge, and then step 2's budget ends the attempt. The point is returned as a success only where it passes
+///  4. rows of S with a negative multiplier leave it and rows the point violates join it — as soon as a
+///     whole step below a tenth of max|x| finds such rows, not only once Newton has converged on S; 2–4 again
+///     until S settles.
+/// Newton on f's regularised friction term from a start far from its solution can fail to converge within
+/// step 2's budget, which then ends the attempt. The point is returned as a success only where it passes
 /// the dense interior point's own stopping test (dense_primal_error, in the scales of the same start): it is
 /// then a point that the interior point could have returned, and — f strictly convex on the condensed DOFs —
 /// the same solution up to the tolerance. Otherwise the caller solves by the interior point.

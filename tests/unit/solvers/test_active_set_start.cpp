@@ -143,6 +143,42 @@ TEST(ActiveSetStart, DataThatFollowTheIterateEndAtTheirFixedPoint) {
   EXPECT_LT(relative(as.x, ip.x), 1e-8);
 }
 
+// The same followed weights on the sparse path: once its steps are small and falling, they keep the factor of
+// an earlier step (a modified Newton method), so it factorises less often than it steps, and it still ends at
+// the fixed point, the dense path's answer.
+TEST(ActiveSetStart, TheSparsePathKeepsItsFactorWhileTheFollowedDataSettle) {
+  const auto rule = [](const VectorXd& l) { return VectorXd(0.2 * (1.0 + l.head(kN / 2).array())); };
+  const auto follower = [&](FrictionLikeProblem& q) {
+    return FollowIterate([&](const VectorXd&, const VectorXd& l) {
+      const VectorXd w = rule(l);
+      if ((w - q.weights()).lpNorm<Eigen::Infinity>() <= 1e-12 * w.lpNorm<Eigen::Infinity>()) return false;
+      q.set_weights(w);
+      return true;
+    });
+  };
+  FrictionLikeProblem p(kN, kM, 2);
+  p.set_weights(VectorXd::Constant(kN / 2, 0.2));
+  const FollowIterate follow = follower(p);
+  const IpoptResult last = solve_dense_primal(p, VectorXd::Zero(kN), tight<DensePrimalOptions>(), nullptr, &follow);
+  ASSERT_TRUE(last.success) << last.status_text;
+  FrictionLikeProblem qd(kN, kM, 2), qs(kN, kM, 2);
+  for (FrictionLikeProblem* q : {&qd, &qs}) {
+    q->shift_offset(1e-3);
+    q->set_weights(p.weights());
+  }
+  qs.set_dense(false);
+  const FollowIterate fd = follower(qd), fs = follower(qs);
+  const IpoptResult dense = solve_from_active_set(qd, last.x, last.multipliers, tight<ActiveSetStartOptions>(), &fd);
+  const IpoptResult sparse = solve_from_active_set(qs, last.x, last.multipliers, tight<ActiveSetStartOptions>(), &fs);
+  ASSERT_TRUE(dense.success) << dense.status_text;
+  ASSERT_TRUE(sparse.success) << sparse.status_text;
+  EXPECT_GE(factorisations(sparse), 1) << sparse.status_text;
+  EXPECT_LT(factorisations(sparse), sparse.iterations) << sparse.status_text;
+  const double w_scale = qs.weights().lpNorm<Eigen::Infinity>();
+  EXPECT_LT((qs.weights() - rule(sparse.multipliers)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
+  EXPECT_LT(relative(sparse.x, dense.x), 1e-8);
+}
+
 TEST(ActiveSetStart, AChangeOfUnitsChangesNeitherTheStepsNorTheAnswer) {
   FrictionLikeProblem si(30, 45, 7), mm(30, 45, 7, 1e3, 1e-6);  // lengths × 1e3, forces × 1e-6
   const IpoptResult a0 = solve_dense_primal(si, VectorXd::Zero(30), tight<DensePrimalOptions>());
