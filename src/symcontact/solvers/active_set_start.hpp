@@ -33,7 +33,7 @@ namespace symcontact {
 
 struct ActiveSetStartOptions {
   double tolerance = 1e-10;   ///< of the stopping test (DensePrimalOptions::tolerance)
-  int max_set_rounds = 8;     ///< changes of S before the attempt is given up
+  int max_set_rounds = 20;    ///< changes of S before the attempt is given up (step 4 changes it at small steps too)
   int max_newton_steps = 100;  ///< Newton steps on one S, followed data included
   int max_follows = 100;       ///< changes of the followed data; then the point stands for the data it has
 };
