@@ -37,6 +37,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
       c->report = solve_load_step(*c->model, step, c->u, friction, opt, log);
       c->step_cuts.push_back(c->report.cuts);
       c->coulomb_iterations.push_back(c->report.coulomb_iterations);
+      c->optimizer_iterations.push_back(c->report.ipopt_iterations);
       c->checks.push_back(check_step(*c->model, c->u, fixed, &c->report));
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
       c->history.push_back(c->contact);

@@ -29,6 +29,8 @@ struct SolvedCase {
   std::vector<int> step_cuts;
   /// Coulomb iterations of every step (contact problems: the solves after each step's first).
   std::vector<int> coulomb_iterations;
+  /// Optimizer iterations of every step (contact problems), those of attempts that failed included.
+  std::vector<int> optimizer_iterations;
   /// What the checks of each step's answer measured (post/step_checks.hpp); solve_case runs the checks of
   /// `symcontact run` (model/setup_checks.hpp before the solve, check_step() after each step) and throws
   /// what they throw.
