@@ -2,9 +2,9 @@
 // pad-ball-2d at h = 0.0046 (2.8e4 DOFs): the pad [−½, ½] × [0, ¼], plane strain, pressed by 0.03 in four steps
 // onto a rigid cylinder of radius 1 that touches it at the origin (the zone grows from a point), then dragged along
 // x by 0.05 in two, Coulomb μ = 0.3. Each step's solves are warm-started from the last, so Newton on the set is
-// what solves them; where it does not converge the interior point solves instead, and the step costs both. With
-// whole Newton steps up to 1e-3 of max|x| (no line search), the fourth step cycled between two iterates for
-// 100 steps before the interior point took over: 141 optimizer iterations against 30–45 for the others.
+// what solves them; where it does not converge the interior point solves instead, and the step costs both.
+// Whole Newton steps without a line search up to 1e-3 of max|x| make the fourth step cycle between two iterates
+// for 100 steps before the interior point takes over: 141 optimizer iterations against 30–45 for the others.
 #include <gtest/gtest.h>
 
 #include <algorithm>

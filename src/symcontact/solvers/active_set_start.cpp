@@ -183,8 +183,8 @@ class NewtonOnSet {
     // From the last step's multipliers on S (the answer's, to the model's change), else from 0.
     if (!sparse_.nu_warm || nu.size() != AS_.rows()) nu = VectorXd::Zero(AS_.rows());
     int solves = 0;
-    if (!multiplier_method(sparse_.chol, hessian_times, AS_, bS_, rho, std::max(x.lpNorm<Eigen::Infinity>(), 1e-300), gs, xs,
-                           nu, solves))
+    const double xscale = std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
+    if (!multiplier_method(sparse_.chol, hessian_times, AS_, bS_, rho, xscale, gs, xs, nu, solves))
       return false;
     sparse_.nu_warm = true;
     dx = xs - x;
