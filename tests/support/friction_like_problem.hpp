@@ -4,6 +4,7 @@
 // (solvers/active_set_start.hpp): a dense positive definite quadratic plus regularised |x_k| terms (the friction
 // term's sqrt(|v|² + α²)), and sparse rows.
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -85,6 +86,26 @@ class FrictionLikeProblem : public ConstrainedProblem {
   SparseMatrix A_;
   VectorXd b_;
 };
+
+/// The rule of the tests whose data follow the iterate: w_k = 0.2 (1 + λ_k) for the |x_k| terms (the first half
+/// of x's n entries), each term's weight following one row's multiplier, as τ = μ p follows the pressure.
+inline VectorXd followed_weights(const VectorXd& multipliers, Index n) {
+  return VectorXd(0.2 * (1.0 + multipliers.head(n / 2).array()));
+}
+
+/// A hook of FollowIterate's form (solvers/dense_primal_interior_point.hpp) that sets q's weights by
+/// followed_weights() until they change by at most 1e-12 of their largest; `changes` (if given) counts the
+/// changes.
+inline std::function<bool(const VectorXd&, const VectorXd&)> weights_follower(FrictionLikeProblem& q,
+                                                                              int* changes = nullptr) {
+  return [&q, changes](const VectorXd&, const VectorXd& multipliers) {
+    const VectorXd w = followed_weights(multipliers, q.num_variables());
+    if ((w - q.weights()).lpNorm<Eigen::Infinity>() <= 1e-12 * w.lpNorm<Eigen::Infinity>()) return false;
+    q.set_weights(w);
+    if (changes) ++*changes;
+    return true;
+  };
+}
 
 /// The largest KKT violation, relative to the problem's force scale ‖q‖∞ and length scale.
 inline double kkt_violation(FrictionLikeProblem& p, const IpoptResult& r, double force, double length) {

@@ -9,7 +9,9 @@
 
 using namespace symcontact;
 using symcontact::testing::FrictionLikeProblem;
+using symcontact::testing::followed_weights;
 using symcontact::testing::kkt_violation;
+using symcontact::testing::weights_follower;
 
 namespace {
 
@@ -107,20 +109,10 @@ TEST(ActiveSetStart, AChangedActiveSetIsFoundByItsUpdates) {
 // the pressure), from the fixed point of the last problem: the answer is the new problem's fixed point, the one
 // the interior point reaches with the same rule.
 TEST(ActiveSetStart, DataThatFollowTheIterateEndAtTheirFixedPoint) {
-  const auto rule = [](const VectorXd& l) { return VectorXd(0.2 * (1.0 + l.head(kN / 2).array())); };
-  const auto follower = [&](FrictionLikeProblem& q, int& changes) {
-    return FollowIterate([&](const VectorXd&, const VectorXd& l) {
-      const VectorXd w = rule(l);
-      if ((w - q.weights()).lpNorm<Eigen::Infinity>() <= 1e-12 * w.lpNorm<Eigen::Infinity>()) return false;
-      q.set_weights(w);
-      ++changes;
-      return true;
-    });
-  };
   FrictionLikeProblem p(kN, kM, 2);
   p.set_weights(VectorXd::Constant(kN / 2, 0.2));
   int changes = 0;
-  const FollowIterate follow = follower(p, changes);
+  const FollowIterate follow = weights_follower(p, &changes);
   const IpoptResult last = solve_dense_primal(p, VectorXd::Zero(kN), tight<DensePrimalOptions>(), nullptr, &follow);
   ASSERT_TRUE(last.success) << last.status_text;
   FrictionLikeProblem qi(kN, kM, 2), qa(kN, kM, 2);
@@ -129,7 +121,7 @@ TEST(ActiveSetStart, DataThatFollowTheIterateEndAtTheirFixedPoint) {
     q->set_weights(p.weights());
   }
   int changes_ip = 0, changes_as = 0;
-  const FollowIterate fi = follower(qi, changes_ip), fa = follower(qa, changes_as);
+  const FollowIterate fi = weights_follower(qi, &changes_ip), fa = weights_follower(qa, &changes_as);
   auto o = tight<DensePrimalOptions>();
   o.follow_below = DensePrimalOptions::follow_below_near_fixed_point(o.tolerance);
   const IpoptResult ip = solve_dense_primal(qi, last.x, o, &last.multipliers, &fi);
@@ -138,7 +130,7 @@ TEST(ActiveSetStart, DataThatFollowTheIterateEndAtTheirFixedPoint) {
   ASSERT_TRUE(as.success) << as.status_text;
   EXPECT_GE(changes_as, 2) << "the hook moved the weights: the test exercises it";
   const double w_scale = qa.weights().lpNorm<Eigen::Infinity>();
-  EXPECT_LT((qa.weights() - rule(as.multipliers)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
+  EXPECT_LT((qa.weights() - followed_weights(as.multipliers, kN)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
   EXPECT_LT((qa.weights() - qi.weights()).lpNorm<Eigen::Infinity>(), 1e-8 * w_scale);
   EXPECT_LT(relative(as.x, ip.x), 1e-8);
 }
@@ -147,18 +139,9 @@ TEST(ActiveSetStart, DataThatFollowTheIterateEndAtTheirFixedPoint) {
 // an earlier step (a modified Newton method), so it factorises less often than it steps, and it still ends at
 // the fixed point, the dense path's answer.
 TEST(ActiveSetStart, TheSparsePathKeepsItsFactorWhileTheFollowedDataSettle) {
-  const auto rule = [](const VectorXd& l) { return VectorXd(0.2 * (1.0 + l.head(kN / 2).array())); };
-  const auto follower = [&](FrictionLikeProblem& q) {
-    return FollowIterate([&](const VectorXd&, const VectorXd& l) {
-      const VectorXd w = rule(l);
-      if ((w - q.weights()).lpNorm<Eigen::Infinity>() <= 1e-12 * w.lpNorm<Eigen::Infinity>()) return false;
-      q.set_weights(w);
-      return true;
-    });
-  };
   FrictionLikeProblem p(kN, kM, 2);
   p.set_weights(VectorXd::Constant(kN / 2, 0.2));
-  const FollowIterate follow = follower(p);
+  const FollowIterate follow = weights_follower(p);
   const IpoptResult last = solve_dense_primal(p, VectorXd::Zero(kN), tight<DensePrimalOptions>(), nullptr, &follow);
   ASSERT_TRUE(last.success) << last.status_text;
   FrictionLikeProblem qd(kN, kM, 2), qs(kN, kM, 2);
@@ -167,7 +150,7 @@ TEST(ActiveSetStart, TheSparsePathKeepsItsFactorWhileTheFollowedDataSettle) {
     q->set_weights(p.weights());
   }
   qs.set_dense(false);
-  const FollowIterate fd = follower(qd), fs = follower(qs);
+  const FollowIterate fd = weights_follower(qd), fs = weights_follower(qs);
   const IpoptResult dense = solve_from_active_set(qd, last.x, last.multipliers, tight<ActiveSetStartOptions>(), &fd);
   const IpoptResult sparse = solve_from_active_set(qs, last.x, last.multipliers, tight<ActiveSetStartOptions>(), &fs);
   ASSERT_TRUE(dense.success) << dense.status_text;
@@ -175,7 +158,7 @@ TEST(ActiveSetStart, TheSparsePathKeepsItsFactorWhileTheFollowedDataSettle) {
   EXPECT_GE(factorisations(sparse), 1) << sparse.status_text;
   EXPECT_LT(factorisations(sparse), sparse.iterations) << sparse.status_text;
   const double w_scale = qs.weights().lpNorm<Eigen::Infinity>();
-  EXPECT_LT((qs.weights() - rule(sparse.multipliers)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
+  EXPECT_LT((qs.weights() - followed_weights(sparse.multipliers, kN)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
   EXPECT_LT(relative(sparse.x, dense.x), 1e-8);
 }
 

@@ -17,7 +17,9 @@
 
 using namespace symcontact;
 using symcontact::testing::FrictionLikeProblem;
+using symcontact::testing::followed_weights;
 using symcontact::testing::kkt_violation;
+using symcontact::testing::weights_follower;
 
 TEST(DensePrimalInteriorPoint, MeetsTheKktConditionsAndAgreesWithIpopt) {
   for (const unsigned seed : {1u, 2u, 3u}) {
@@ -106,28 +108,20 @@ TEST(DensePrimalInteriorPoint, DataThatFollowTheIterateEndAtTheirFixedPoint) {
 // reaches. (Followed from 1e-9 here, it stops at the line search's round-off floor; the iterations it saves on
 // the pads on a ball are measured in docs/performance.md.)
 TEST(DensePrimalInteriorPoint, FollowingNearTheEndFromAFixedPointEndsAtTheSameFixedPoint) {
-  // w_k = 0.2 (1 + λ_k): each term's weight follows one row's multiplier, as τ = μ p follows the pressure.
+  // w_k = 0.2 (1 + λ_k) (followed_weights): each term's weight follows one row's multiplier, as τ = μ p follows
+  // the pressure.
   const Index n = 40, m = 60;
-  const auto rule = [&](const VectorXd& l) { return VectorXd(0.2 * (1.0 + l.head(n / 2).array())); };
-  const auto follower = [&](FrictionLikeProblem& q) {
-    return FollowIterate([&](const VectorXd&, const VectorXd& l) {
-      const VectorXd w = rule(l);
-      if ((w - q.weights()).lpNorm<Eigen::Infinity>() <= 1e-12 * w.lpNorm<Eigen::Infinity>()) return false;
-      q.set_weights(w);
-      return true;
-    });
-  };
   DensePrimalOptions tight;  // solutions within 1e-8 of the exact one (as in the warm start's test below)
   tight.tolerance = 1e-12;
   FrictionLikeProblem p(n, m, 2);
   p.set_weights(VectorXd::Constant(n / 2, 0.2));
-  const FollowIterate follow = follower(p);
+  const FollowIterate follow = weights_follower(p);
   const IpoptResult first = solve_dense_primal(p, VectorXd::Zero(n), tight, nullptr, &follow);
   ASSERT_TRUE(first.success) << first.status_text;
   const auto resolve = [&](double follow_below, FrictionLikeProblem& q) {
     q.shift_offset(1e-3);  // the rows moved by 1e-3 of b
     q.set_weights(p.weights());
-    const FollowIterate f = follower(q);
+    const FollowIterate f = weights_follower(q);
     DensePrimalOptions o = tight;
     o.follow_below = follow_below;
     return solve_dense_primal(q, first.x, o, &first.multipliers, &f);
@@ -138,7 +132,7 @@ TEST(DensePrimalInteriorPoint, FollowingNearTheEndFromAFixedPointEndsAtTheSameFi
   ASSERT_TRUE(early.success && late.success) << early.status_text << " / " << late.status_text;
   const double w_scale = ql.weights().lpNorm<Eigen::Infinity>();
   EXPECT_GT((ql.weights() - p.weights()).lpNorm<Eigen::Infinity>(), 1e-6 * w_scale) << "the hook moved the weights";
-  EXPECT_LT((ql.weights() - rule(late.multipliers)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
+  EXPECT_LT((ql.weights() - followed_weights(late.multipliers, n)).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
   EXPECT_LT((ql.weights() - qe.weights()).lpNorm<Eigen::Infinity>(), 1e-9 * w_scale);
   EXPECT_LT((late.x - early.x).lpNorm<Eigen::Infinity>(), 1e-8 * early.x.lpNorm<Eigen::Infinity>());
   EXPECT_LE(late.iterations, early.iterations + 1);
