@@ -14,7 +14,7 @@
 ///     changed since the last one, by projected CG preconditioned with it (O(m²) an iteration); with a sparse
 ///     ∇²f (the uncondensed problem), the method of multipliers on CHOLMOD's factor of the same matrix, kept
 ///     for the later steps while they are small and still fall (a modified Newton method); an Armijo line
-///     search on f where a step is large;
+///     search on f for steps above 1e-6 of max|x|;
 ///  3. data of f that follow the iterate (the Coulomb thresholds, FollowIterate) are set after each Newton
 ///     step below a tenth of max|x|, and Newton goes on until its step is at round-off and they no longer
 ///     change;
