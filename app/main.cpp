@@ -7,7 +7,7 @@
 /// Started by mpirun (OpenMPI's or MPICH's environment), `symcontact` replaces itself with `symcontact-mpi`,
 /// its sibling: this file built with SYMCONTACT_DISTRIBUTED_RUN, which solves the contact steps on the
 /// distributed path (distributed/distributed_step.hpp) and never loads IPOPT (src/CMakeLists.txt). Rank 0
-/// writes the output folder and the log; every rank exits with the same code.
+/// writes the output folder and the log, every rank its pieces of the VTU files; every rank exits with the same code.
 
 #include <CLI/CLI.hpp>
 
@@ -83,8 +83,10 @@ ProblemSpec read_case(const std::string& file) {
   return spec;
 }
 
-RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, bool root, char**) {
-  if (!root) opt.files = OutputFiles::kNone;
+RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, const PetscSession& petsc, char**) {
+  // Every rank writes its pieces of the VTU files (run.hpp); rank 0 the rest of the folder.
+  opt.parallel = ParallelOutput{petsc.rank(), petsc.size(), [&petsc](bool ok) { return petsc.all_ranks(ok); }};
+  if (petsc.rank() != 0) opt.files = OutputFiles::kNone;
   return run_problem(spec, opt, log, distributed_step_solver(spec, ContactInteriorPointOptions{}, log));
 }
 #else
@@ -117,7 +119,7 @@ struct StartDistributed {};
 
 /// The serial run, unless [contact_solver] linear_solver (or its automatic choice, app/linear_solver_choice.hpp)
 /// gives the problem to the distributed path: then the process becomes symcontact-mpi, before any output.
-RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, bool, char** argv) {
+RunResult solve_case(const ProblemSpec& spec, RunOptions opt, const Logger& log, char** argv) {
   if (spec.linear_solver == LinearSolverChoice::kIterative)
     switch_to_distributed(spec, "linear_solver = \"iterative\"", argv);
   std::string why;
@@ -218,7 +220,11 @@ int main(int argc, char** argv) {
     }
     opt.meshing = meshing.overrides();
     opt.signals = SignalHandling::kStopCleanly;
-    return exit_code(solve_case(spec, opt, log, root, argv), opt.out_dir, log, err);
+#ifdef SYMCONTACT_DISTRIBUTED_RUN
+    return exit_code(solve_case(spec, opt, log, petsc, argv), opt.out_dir, log, err);
+#else
+    return exit_code(solve_case(spec, opt, log, argv), opt.out_dir, log, err);
+#endif
   } catch (const InputError& e) {
     err << "symcontact: input error: " << e.what() << "\n";
     return kExitInputError;

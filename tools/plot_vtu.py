@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Draws the deformed mesh of one or more symcontact .vtu files into a PNG.
 
-    tools/plot_vtu.py OUT.png FILE.vtu [FILE.vtu ...] [--field von_mises] [--scale S] [--title T]
+    tools/plot_vtu.py OUT.png FILE.vtu|FILE.pvtu [...] [--field von_mises] [--scale S] [--title T]
                       [--xlim LO,HI] [--ylim LO,HI]
 
-Reads the ASCII VTK XML UnstructuredGrid files written by `symcontact run` (inline ASCII DataArrays).
+Reads the ASCII VTK XML UnstructuredGrid files written by `symcontact run` (inline ASCII DataArrays), and the
+.pvtu of a run on several processes with its pieces.
 The mesh is moved by `--scale` times the point data "displacement" (default: the factor that makes the
 largest displacement 10 % of the model size), coloured by a point (or cell) data field (default
 "von_mises"; vector and tensor fields are shown by their Euclidean norm), with a colour bar, a title and
@@ -61,34 +62,69 @@ class VtuError(Exception):
     pass
 
 
+def _xml_root(path, kind):
+    try:
+        root = ET.parse(path).getroot()
+    except (ET.ParseError, OSError) as e:
+        raise VtuError(f"{path}: cannot read as XML: {e}")
+    if root.get("type") != kind:
+        raise VtuError(f"{path}: not a VTK {kind} file (type={root.get('type')!r})")
+    return root
+
+
+def _read_grid(path):
+    """Points (N x 3), connectivity, offsets, types, point data and cell data of one .vtu file."""
+    pieces = _xml_root(path, "UnstructuredGrid").findall("./UnstructuredGrid/Piece")
+    if len(pieces) != 1:
+        raise VtuError(f"{path}: expected one <Piece>, found {len(pieces)}")
+    piece = pieces[0]
+    npts = int(piece.get("NumberOfPoints"))
+    ncells = int(piece.get("NumberOfCells"))
+    points = _array(path, piece.find("./Points/DataArray"), "Points").reshape(npts, -1)
+    cells = piece.find("Cells")
+    conn = _named(path, cells, "connectivity").astype(np.int64)
+    offsets = _named(path, cells, "offsets").astype(np.int64)
+    types = _named(path, cells, "types").astype(np.int64)
+    if len(offsets) != ncells or len(types) != ncells:
+        raise VtuError(f"{path}: {ncells} cells declared but {len(offsets)} offsets and {len(types)} types")
+    return points, conn, offsets, types, _data(path, piece.find("PointData"), npts), _data(path, piece.find("CellData"),
+                                                                                            ncells)
+
+
+def _read_parallel(path):
+    """The same of a .pvtu (a run on several processes), its pieces put back together: each piece's points are the
+    body's nodes of its point data "node", its cells follow the previous piece's."""
+    sources = [p.get("Source") for p in _xml_root(path, "PUnstructuredGrid").findall("./PUnstructuredGrid/Piece")]
+    parts = [_read_grid(os.path.join(os.path.dirname(path), s)) for s in sources]
+    if not parts or any("node" not in p[4] for p in parts):
+        raise VtuError(f"{path}: expected pieces with the point data 'node' (written by symcontact)")
+    nodes = [p[4]["node"].astype(np.int64) for p in parts]
+    count = 1 + max(int(n.max(initial=-1)) for n in nodes)
+    points = np.zeros((count, parts[0][0].shape[1]))
+    point_data = {k: np.zeros((count,) + v.shape[1:]) for k, v in parts[0][4].items() if k != "node"}
+    conn, offsets, end = [], [], 0
+    for (pts, c, o, _, pd, _), n in zip(parts, nodes):
+        points[n] = pts
+        for k in point_data:
+            point_data[k][n] = pd[k]
+        conn.append(n[c])
+        offsets.append(o + end)
+        end += len(c)
+    cell_data = {k: np.concatenate([p[5][k] for p in parts]) for k in parts[0][5]}
+    return (points, np.concatenate(conn), np.concatenate(offsets), np.concatenate([p[3] for p in parts]), point_data,
+            cell_data)
+
+
 class Body:
-    """One .vtu piece: points (N x 3), cells by vertex nodes, point and cell data by name."""
+    """One body: points (N x 3), cells by vertex nodes, point and cell data by name."""
 
     def __init__(self, path):
         self.path = path
-        # "<body>_<step>.vtu" as written by symcontact: the body's name.
+        # "<body>_<step>.vtu" (or .pvtu) as written by symcontact: the body's name.
         self.name = re.sub(r"_[0-9]+$", "", os.path.splitext(os.path.basename(path))[0])
-        try:
-            root = ET.parse(path).getroot()
-        except (ET.ParseError, OSError) as e:
-            raise VtuError(f"{path}: cannot read as XML: {e}")
-        if root.get("type") != "UnstructuredGrid":
-            raise VtuError(f"{path}: not a VTK UnstructuredGrid file (type={root.get('type')!r})")
-        pieces = root.findall("./UnstructuredGrid/Piece")
-        if len(pieces) != 1:
-            raise VtuError(f"{path}: expected one <Piece>, found {len(pieces)}")
-        piece = pieces[0]
-        npts = int(piece.get("NumberOfPoints"))
-        ncells = int(piece.get("NumberOfCells"))
-        self.points = _array(path, piece.find("./Points/DataArray"), "Points").reshape(npts, -1)
-        cells = piece.find("Cells")
-        conn = _named(path, cells, "connectivity").astype(np.int64)
-        offsets = _named(path, cells, "offsets").astype(np.int64)
-        types = _named(path, cells, "types").astype(np.int64)
-        if len(offsets) != ncells or len(types) != ncells:
-            raise VtuError(f"{path}: {ncells} cells declared but {len(offsets)} offsets and {len(types)} types")
-        self.point_data = _data(path, piece.find("PointData"), npts)
-        self.cell_data = _data(path, piece.find("CellData"), ncells)
+        read = _read_parallel if path.endswith(".pvtu") else _read_grid
+        self.points, conn, offsets, types, self.point_data, self.cell_data = read(path)
+        npts = len(self.points)
 
         # Cells grouped by their vertex count; quadratic cells keep their vertices only.
         unknown = sorted(set(types.tolist()) - set(CELL_TYPES))
@@ -327,7 +363,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("out", metavar="OUT.png", help="picture to write")
-    ap.add_argument("files", metavar="FILE.vtu", nargs="+", help="one .vtu file per body")
+    ap.add_argument("files", metavar="FILE.vtu", nargs="+", help="one .vtu (or .pvtu) file per body")
     ap.add_argument("--field", default="von_mises", help="point or cell data to colour by (default: von_mises)")
     ap.add_argument("--scale", type=float, default=None,
                     help="displacement amplification (default: largest displacement = 10%% of the model size)")

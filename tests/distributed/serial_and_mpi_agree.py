@@ -3,7 +3,8 @@
 `symcontact run` of the same case with [contact_solver] linear_solver = "iterative" (one process), the two
 ranks run again (the same files to the last bit, summary.json's timings aside), and the two ranks under OpenBLAS's baseline kernels (OPENBLAS_CORETYPE=Prescott, which every x86-64 CPU runs).
 
-Both runs must end "ok" and write the same files; every number of their summary.json, contact CSV and VTU
+Both runs must end "ok" and write the same files (on two ranks a .pvtu and one piece per rank in place of each
+.vtu, the pieces put back together to compare); every number of their summary.json, contact CSV and VTU
 files must agree to REL relative to its quantity's scale: the largest magnitude of the same quantity in the
 serial file (all components of a VTU array, of the reactions, of the force columns of a CSV together), so
 that a component that is zero up to round-off in one run (a force along a symmetry plane) is compared at
@@ -70,8 +71,9 @@ UNITS = [("hertz_2d/cylinder_on_plane.toml", "", 2, 1e3, 1.0, "mm–N–MPa"),
 
 
 def compare(serial, other, units=None):
-    """The Comparison of two output folders (`units`: other's units against serial's)."""
-    files_a, files_b = sorted(os.listdir(serial)), sorted(os.listdir(other))
+    """The Comparison of two output folders (`units`: other's units against serial's). A .pvtu of a run on several
+    ranks stands for the .vtu of the same name, its pieces put together (pvtu_arrays)."""
+    files_a, files_b = logical_files(serial), logical_files(other)
     c = Comparison(units)
     for f in files_a:  # the run's scale of each quantity, over every step's files
         path = os.path.join(serial, f)
@@ -97,6 +99,86 @@ def compare(serial, other, units=None):
         elif f == "summary.json":
             c.summary(f, a, b)
     return c
+
+
+PIECE = re.compile(r"_p\d+\.vtu$")
+
+
+def logical_files(folder):
+    """The files of an output folder, a .pvtu named as the .vtu it stands for, without its pieces."""
+    names = [f for f in os.listdir(folder) if not PIECE.search(f)]
+    return sorted(f.removesuffix(".pvtu") + ".vtu" if f.endswith(".pvtu") else f for f in names)
+
+
+def check_parallel_files(folder):
+    """Whether the output of a run on two ranks fails to be a .pvtu per body and step, with two pieces that exist,
+    named by the collection in place of any .vtu."""
+    names = os.listdir(folder)
+    pvtu = [f for f in names if f.endswith(".pvtu")]
+    whole = [f for f in names if f.endswith(".vtu") and not PIECE.search(f)]
+    pieces = [p for f in pvtu for p in re.findall(r'<Piece Source="([^"]+)"/>', open(os.path.join(folder, f)).read())]
+    listed = re.findall(r'file="([^"]+)"', open(os.path.join(folder, "results.pvd")).read())
+    bad = (not pvtu or whole or len(pieces) != 2 * len(pvtu) or not all(p in names for p in pieces)
+           or sorted(listed) != sorted(pvtu))
+    if bad:
+        print(f"{folder}: .pvtu {pvtu}, whole .vtu {whole}, pieces {pieces}, in results.pvd {listed}")
+    return bool(bad)
+
+
+def plot_tool_differs(serial, mpi):
+    """Whether tools/plot_vtu.py reads a .pvtu of `mpi` otherwise than the serial .vtu it stands for: other points or
+    cells, or data beyond REL of each array's largest magnitude."""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+    import numpy as np
+    import plot_vtu
+    differ = False
+    for f in sorted(f for f in os.listdir(mpi) if f.endswith(".pvtu")):
+        a, b = plot_vtu.Body(os.path.join(serial, f.removesuffix(".pvtu") + ".vtu")), plot_vtu.Body(os.path.join(mpi, f))
+        same_cells = len(a.cells) == len(b.cells) and all(
+            np.array_equal(ia, ib) and np.array_equal(va, vb) for (ia, va), (ib, vb) in zip(a.cells, b.cells))
+        data = [(d[k], e.get(k)) for d, e in ((a.point_data, b.point_data), (a.cell_data, b.cell_data)) for k in d]
+        same_data = all(v is not None and np.abs(u - v).max(initial=0) <= REL * max(np.abs(u).max(initial=0), 1e-300)
+                        for u, v in data)
+        print(f"tools/plot_vtu.py on {f}: points {np.array_equal(a.points, b.points)}, cells {same_cells}, "
+              f"data {same_data}")
+        differ = differ or not (np.array_equal(a.points, b.points) and same_cells and same_data)
+    return differ
+
+
+def vtu_sections(path):
+    """{section: [(name, components, values)]} of the Float64 arrays of a VTU file's PointData, CellData, Points."""
+    text = open(path).read()
+    out = {}
+    for section in ("PointData", "CellData", "Points"):
+        body = re.search(f"<{section}>(.*?)</{section}>", text, re.S)
+        out[section] = [(n, int(k), [float(v) for v in t.split()]) for n, k, t in re.findall(
+            r'<DataArray type="Float64" Name="([^"]+)" NumberOfComponents="(\d+)"[^>]*>([^<]*)</DataArray>',
+            body.group(1) if body else "")]
+    return out
+
+
+def pvtu_arrays(path):
+    """(name, values) of the VTU a .pvtu stands for, in a serial VTU's order: its pieces' point data put back in the
+    body's node order by their "node" array (which is left out), their cell data one piece after the other."""
+    folder = os.path.dirname(path)
+    pieces = [vtu_sections(os.path.join(folder, f)) for f in re.findall(r'<Piece Source="([^"]+)"/>', open(path).read())]
+    nodes = [[int(v) for n, _, vals in p["PointData"] if n == "node" for v in vals] for p in pieces]
+    num_nodes = 1 + max(max(n, default=-1) for n in nodes)
+    arrays = []
+    for section in ("PointData", "CellData", "Points"):
+        for k, (name, comps, _) in enumerate(pieces[0][section]):
+            if section == "CellData":
+                arrays.append((name, [v for p in pieces for v in p[section][k][2]]))
+                continue
+            if name == "node":
+                continue
+            values = [None] * (num_nodes * comps)
+            for p, ids in zip(pieces, nodes):
+                local = p[section][k][2]
+                for j, node in enumerate(ids):
+                    values[node * comps:(node + 1) * comps] = local[j * comps:(j + 1) * comps]
+            arrays.append((name, values))
+    return arrays
 
 # CSV columns by quantity (the scale of each column is its group's largest magnitude).
 CSV_GROUPS = [
@@ -174,7 +256,9 @@ CSV_SCALES = {"gap": "length", "displacement": "length", "pressure": "stress", "
 
 
 def vtu_arrays(path):
-    """(name, values) of every Float64 array of a VTU file."""
+    """(name, values) of every Float64 array of a VTU file, or of the VTU a .pvtu of the same name stands for."""
+    if not os.path.exists(path) and os.path.exists(path.removesuffix(".vtu") + ".pvtu"):
+        return pvtu_arrays(path.removesuffix(".vtu") + ".pvtu")
     return [(n, [float(v) for v in t.split()]) for n, t in
             re.findall(r'<DataArray type="Float64" Name="([^"]+)"[^>]*>([^<]*)</DataArray>', open(path).read())]
 
@@ -262,13 +346,14 @@ def main():
         run([symcontact, "run", path, "-o", serial, "-q"] + size)
         run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", path, "-o", mpi, "-q"] + size)
         runs = [("2 ranks", mpi)]
+        failed = check_parallel_files(mpi) or failed
         if k == 0:  # the same two ranks again: equal to the last bit
             again = os.path.join(work, tag + "_mpi_again")
             run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", path, "-o", again, "-q"] + size)
             differ = [f for f in sorted(os.listdir(mpi)) if not f.endswith(".json")
                       and not filecmp.cmp(os.path.join(mpi, f), os.path.join(again, f), shallow=False)]
             print(f"{name}, 2 ranks twice: files that differ: {differ}")
-            failed = failed or bool(differ)
+            failed = failed or bool(differ) or plot_tool_differs(serial, mpi)
         if k == 0:  # one process on the distributed path, chosen by the problem file
             single = os.path.join(work, tag + "_iterative")
             run([symcontact, "run", case_file(examples, work, name, extra + ITERATIVE), "-o", single, "-q"] + size)

@@ -6,6 +6,8 @@
 #include <exception>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/progress_clock.hpp"
@@ -141,8 +143,8 @@ std::string first_non_finite(const BodyFields& f) {
   return "";
 }
 
-void write_body_vtu(const Body& body, const BodyFields& f, const std::string& path,
-                    const BodyContactFields* contact = nullptr) {
+/// The VTU of one body: its fields, and the contact fields when `contact` is given.
+VtuWriter body_vtu(const Body& body, const BodyFields& f, const BodyContactFields* contact = nullptr) {
   VtuWriter w(body.mesh);
   if (contact) {
     w.add_point_data("contact_pressure", contact->pressure);
@@ -161,7 +163,35 @@ void write_body_vtu(const Body& body, const BodyFields& f, const std::string& pa
   w.add_cell_data("von_mises", f.cell_von_mises);
   w.add_point_data("J", f.volume_ratio);
   w.add_cell_data("J", f.cell_volume_ratio);
-  w.write(path);
+  return w;
+}
+
+/// Process `parallel.rank`'s piece of `w` (the file `stem`.vtu of a serial run): the cells [n r / P, n (r + 1) / P)
+/// of the n, P the processes, with the point data "node" (the body's node number of each of its points), written
+/// as `stem`_p<r>.vtu; then the first process writes `stem`.pvtu naming every piece, once all are written.
+/// Returns the .pvtu's name. Collective; a process that cannot write its piece makes every one throw.
+std::string write_parallel_vtu(const VtuWriter& w, const std::string& stem, const std::string& out_dir,
+                               const ParallelOutput& parallel) {
+  namespace fs = std::filesystem;
+  const auto piece_name = [&](int rank) { return stem + "_p" + std::to_string(rank) + ".vtu"; };
+  const Index n = w.num_cells();
+  std::vector<Index> used;
+  VtuWriter piece = w.piece(n * parallel.rank / parallel.size, n * (parallel.rank + 1) / parallel.size, used);
+  piece.add_point_data("node", Eigen::Map<const Eigen::Matrix<Index, Eigen::Dynamic, 1>>(
+                                   used.data(), static_cast<Index>(used.size())).cast<double>().eval());
+  std::string error;
+  try {
+    ensure_directory(out_dir);  // the first process makes it before the first step; this one may be earlier
+    piece.write((fs::path(out_dir) / piece_name(parallel.rank)).string());
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  if (!parallel.all_ranks(error.empty()))
+    throw std::runtime_error(error.empty() ? "another process could not write its piece of " + stem + ".pvtu" : error);
+  std::vector<std::string> pieces;
+  for (int r = 0; r < parallel.size; ++r) pieces.push_back(piece_name(r));
+  if (parallel.rank == 0) piece.write_parallel((fs::path(out_dir) / (stem + ".pvtu")).string(), pieces);
+  return stem + ".pvtu";
 }
 
 /// The "contact" entry of a step in summary.json, one object per pair, each pair's contact table in `tables`
@@ -299,31 +329,30 @@ Json write_failed_iterates(const Model& model, const VectorXd& u, int step, cons
     const BodyFields f = body_fields(body, model.dofs(), b, u);
     if (!first_non_finite(f).empty()) continue;
     const std::string name = body.name + "_failed_step" + std::to_string(step + 1) + ".vtu";
-    write_body_vtu(body, f, (std::filesystem::path(out_dir) / name).string());
+    body_vtu(body, f).write((std::filesystem::path(out_dir) / name).string());
     failed.push_back(name);
   }
   return failed;
 }
 
-/// One VTU per body for load step `step` (0-based), with the contact fields when `contact` is given, added
-/// to the collection, which is written anew.
+/// One VTU per body for load step `step` (0-based), with the contact fields when `contact` is given, or on several
+/// processes its piece and the .pvtu (write_parallel_vtu); added to the collection, written anew, where `collection`.
 void write_step_vtu(const Model& model, const std::vector<BodyFields>& fields,
                     const std::vector<ContactPairResult>* contact,
                     const std::vector<std::vector<Eigen::VectorXd>>& accumulated_slip, int step,
-                    const std::string& out_dir, PvdCollection& pvd) {
+                    const RunOptions& options, bool collection, PvdCollection& pvd) {
   for (int b = 0; b < model.dofs().num_bodies(); ++b) {
     const Body& body = *model.bodies()[b];
-    const std::string name = step_file(body.name, step + 1);
-    const std::string path = (std::filesystem::path(out_dir) / name).string();
-    if (contact) {
-      const BodyContactFields cf = body_contact_fields(model, b, *contact, accumulated_slip);
-      write_body_vtu(body, fields[b], path, &cf);
-    } else {
-      write_body_vtu(body, fields[b], path);
-    }
-    pvd.add(step + 1, b, name, body.name);
+    const BodyContactFields cf = contact ? body_contact_fields(model, b, *contact, accumulated_slip) : BodyContactFields{};
+    const VtuWriter w = body_vtu(body, fields[b], contact ? &cf : nullptr);
+    std::string name = step_file(body.name, step + 1);
+    if (options.parallel.size > 1)
+      name = write_parallel_vtu(w, name.substr(0, name.size() - 4), options.out_dir, options.parallel);
+    else
+      w.write((std::filesystem::path(options.out_dir) / name).string());
+    if (collection) pvd.add(step + 1, b, name, body.name);
   }
-  pvd.write();
+  if (collection) pvd.write();
 }
 
 }  // namespace
@@ -359,7 +388,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
   if (options.signals == SignalHandling::kStopCleanly) install_interrupt_handlers();
   const std::string summary_path = (fs::path(options.out_dir) / "summary.json").string();
   PvdCollection pvd((fs::path(options.out_dir) / "results.pvd").string());
-  const bool vtu = write_files && options.write_vtu && spec.output.vtu;
+  const bool vtu = (write_files || options.parallel.size > 1) && options.write_vtu && spec.output.vtu;
 
   RunResult result;
   Json summary = summary_header(spec, *model);
@@ -452,7 +481,7 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
     js["applied_load"] = to_vector(applied);
     if (vtu) {
       ScopedPhase t(st, "output");
-      write_step_vtu(*model, fields, has_contact ? &cres : nullptr, accumulated_slip, step, options.out_dir, pvd);
+      write_step_vtu(*model, fields, has_contact ? &cres : nullptr, accumulated_slip, step, options, write_files, pvd);
     }
     js["timings"] = timings_json(st);
     times.merge(st);

@@ -5,7 +5,8 @@
 ///
 /// Outputs in `out_dir` (created only once the model has been built without input errors; none with
 /// OutputFiles::kNone):
-///  - `<body>_<step>.vtu` per body and load step (displacement, strain, stress, von Mises),
+///  - `<body>_<step>.vtu` per body and load step (displacement, strain, stress, von Mises); on several processes
+///    (RunOptions::parallel) `<body>_<step>.pvtu` naming the pieces `<body>_<step>_p<rank>.vtu`,
 ///  - `results.pvd`, a ParaView collection over the steps (one part per body), rewritten after each step,
 ///  - `summary.json`: status, sizes, per step the reactions on every Dirichlet boundary, iterations and
 ///    timings; rewritten after each step ("status": "running"), final status at the end.
@@ -55,6 +56,15 @@ struct StepRecord {
   const std::string& progress;                ///< the text of the step's progress line
 };
 
+/// A run shared by several processes (symcontact-mpi under mpirun, every process running the same steps): each
+/// writes its piece of every body's VTU, the first the rest of the output folder (parallel_output() in run.cpp).
+struct ParallelOutput {
+  int rank = 0;
+  int size = 1;
+  /// Collective: whether `ok` holds on every process (each calls it at the same points of the run).
+  std::function<bool(bool ok)> all_ranks;
+};
+
 struct RunOptions {
   std::string out_dir;        ///< output folder (OutputFiles::kWrite)
   OutputFiles files = OutputFiles::kWrite;
@@ -65,6 +75,9 @@ struct RunOptions {
   std::function<void(const Model&)> on_model;
   MeshingOverrides meshing;   ///< --mesh-size (> 0 overrides problem.mesh_size) and the meshing limits
   bool write_vtu = true;      ///< and the problem's output.vtu
+  /// On several processes, the VTU of each body and step is a .pvtu naming one piece per process (a process with
+  /// OutputFiles::kNone writes its pieces and nothing else).
+  ParallelOutput parallel;
   /// kStopCleanly installs the handlers once the output folder exists (before, a signal ends the
   /// process with nothing written).
   SignalHandling signals = SignalHandling::kDefault;

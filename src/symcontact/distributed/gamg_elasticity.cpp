@@ -29,6 +29,12 @@ int PetscSession::size() const {
   return s;
 }
 
+bool PetscSession::all_ranks(bool ok) const {
+  int mine = ok ? 1 : 0, all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_LAND, PETSC_COMM_WORLD);
+  return all != 0;
+}
+
 namespace {
 
 /// CG on the unpreconditioned residual, GAMG, the options' tolerance; PETSC_OPTIONS may still change them.

@@ -37,6 +37,8 @@ class PetscSession {
   ~PetscSession();
   int rank() const;
   int size() const;
+  /// Whether `ok` holds on every rank (collective over PETSC_COMM_WORLD).
+  bool all_ranks(bool ok) const;
 };
 
 struct GamgOptions {

@@ -201,4 +201,68 @@ void VtuWriter::write(const std::string& path) const {
   });
 }
 
+VtuWriter VtuWriter::piece(Index first, Index end, std::vector<Index>& points_used) const {
+  if (first < 0 || end < first || end > num_cells())
+    throw std::invalid_argument("VtuWriter: piece of cells [" + std::to_string(first) + ", " + std::to_string(end) +
+                                ") outside [0, " + std::to_string(num_cells()) + ")");
+  const auto begin_entry = static_cast<std::size_t>(first == 0 ? 0 : offsets_[static_cast<std::size_t>(first - 1)]);
+  const auto end_entry = static_cast<std::size_t>(end == 0 ? 0 : offsets_[static_cast<std::size_t>(end - 1)]);
+  std::vector<Index> local(static_cast<std::size_t>(num_points()), -1);
+  for (std::size_t k = begin_entry; k < end_entry; ++k) local[static_cast<std::size_t>(connectivity_[k])] = 0;
+  points_used.clear();
+  for (Index p = 0; p < num_points(); ++p)
+    if (local[static_cast<std::size_t>(p)] == 0) {
+      local[static_cast<std::size_t>(p)] = static_cast<Index>(points_used.size());
+      points_used.push_back(p);
+    }
+  VtuWriter w;
+  w.encoding_ = encoding_;
+  w.per_line_ = per_line_;
+  w.points_.resize(3, static_cast<Index>(points_used.size()));
+  for (std::size_t j = 0; j < points_used.size(); ++j) w.points_.col(static_cast<Index>(j)) = points_.col(points_used[j]);
+  for (std::size_t k = begin_entry; k < end_entry; ++k)
+    w.connectivity_.push_back(local[static_cast<std::size_t>(connectivity_[k])]);
+  for (Index c = first; c < end; ++c) {
+    w.offsets_.push_back(offsets_[static_cast<std::size_t>(c)] - static_cast<std::int64_t>(begin_entry));
+    w.types_.push_back(types_[static_cast<std::size_t>(c)]);
+  }
+  for (const Array& a : point_data_) {
+    Eigen::MatrixXd v(a.values.rows(), static_cast<Index>(points_used.size()));
+    for (std::size_t j = 0; j < points_used.size(); ++j) v.col(static_cast<Index>(j)) = a.values.col(points_used[j]);
+    w.point_data_.push_back(Array{a.name, std::move(v), a.component_names});
+  }
+  for (const Array& a : cell_data_)
+    w.cell_data_.push_back(Array{a.name, a.values.middleCols(first, end - first), a.component_names});
+  return w;
+}
+
+void VtuWriter::write_parallel(const std::string& path, const std::vector<std::string>& pieces) const {
+  write_file_atomically(path, [&](std::ostream& os) {
+    auto header = [&](const std::string& name, Index components, const std::vector<std::string>& component_names) {
+      os << "      <PDataArray type=\"Float64\" Name=\"" << xml_escape(name) << "\" NumberOfComponents=\"" << components
+         << "\"";
+      for (std::size_t k = 0; k < component_names.size(); ++k)
+        os << " ComponentName" << k << "=\"" << xml_escape(component_names[k]) << "\"";
+      os << "/>\n";
+    };
+    auto data_section = [&](const char* tag, const std::vector<Array>& arrays) {
+      os << "    <" << tag << ">\n";
+      for (const Array& a : arrays) header(a.name, a.values.rows(), a.component_names);
+      os << "    </" << tag << ">\n";
+    };
+    os << "<?xml version=\"1.0\"?>\n"
+       << "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\""
+       << (host_is_little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\">\n"
+       << "  <PUnstructuredGrid GhostLevel=\"0\">\n";
+    data_section("PPointData", point_data_);
+    data_section("PCellData", cell_data_);
+    os << "    <PPoints>\n";
+    header("Points", 3, {});
+    os << "    </PPoints>\n";
+    for (const std::string& p : pieces) os << "    <Piece Source=\"" << xml_escape(p) << "\"/>\n";
+    os << "  </PUnstructuredGrid>\n"
+       << "</VTKFile>\n";
+  });
+}
+
 }  // namespace symcontact

@@ -14,6 +14,10 @@
 /// z so ParaView can warp by them); symmetric tensors (stress, strain) as 6 components in ParaView's
 /// order XX, YY, ZZ, XY, YZ, XZ (2D: XX, YY, 0 or the plane value, XY, 0, 0).
 ///
+/// A parallel VTU (.pvtu, "PUnstructuredGrid") names several such files, its pieces, that ParaView reads as one
+/// grid: piece() cuts a range of cells out of a writer, write_parallel() writes the .pvtu that lists the pieces
+/// with their arrays (the same names and components in every piece).
+///
 /// Encodings: kAscii writes every value in the shortest text that reads back to the same double
 /// (format_double); NaN or inf cannot be written that way and make write() throw. kBinaryAppended
 /// writes raw little- or big-endian bytes (the host's, declared in byte_order) in one AppendedData
@@ -82,7 +86,18 @@ class VtuWriter {
   /// if the encoding is kAscii and an array holds a non-finite value.
   void write(const std::string& path) const;
 
+  /// The cells [first, end) with the points they use, in increasing order of their index here (their indices,
+  /// to `points_used`), and every data array restricted to those points and cells: one piece of a parallel
+  /// VTU. An empty range gives a piece of no cells and no points. Throws std::invalid_argument for a range
+  /// outside [0, num_cells()].
+  VtuWriter piece(Index first, Index end, std::vector<Index>& points_used) const;
+
+  /// Writes the .pvtu at `path` (atomically) naming `pieces`, files relative to its folder, each written by a
+  /// writer with this one's arrays (piece() of the same writer, with the same arrays added to each).
+  void write_parallel(const std::string& path, const std::vector<std::string>& pieces) const;
+
  private:
+  VtuWriter() = default;
   struct Array {
     std::string name;
     Eigen::MatrixXd values;  ///< ncomp × count

@@ -73,6 +73,56 @@ TEST(VtuWriter, TwoTrianglesAscii) {
   EXPECT_FALSE(contains(s, "AppendedData"));
 }
 
+// A piece holds its cells, the points they use (renumbered in their order) and the data of both; the .pvtu
+// names the arrays of the pieces and the pieces themselves.
+TEST(VtuWriter, PiecesOfAParallelVtu) {
+  const testing::TempFolder folder;
+  const fs::path& dir = folder.path();
+  VtuWriter w(two_triangles());
+  w.add_point_data("pressure", Eigen::VectorXd::LinSpaced(4, 0.0, 3.0));
+  Eigen::MatrixXd stress = Eigen::MatrixXd::Zero(6, 2);
+  stress(0, 1) = 5.0;
+  w.add_cell_data("stress", stress, {"XX", "YY", "ZZ", "XY", "YZ", "XZ"});
+  Eigen::MatrixXd cell_ids(1, 2);
+  cell_ids << 10.0, 11.0;
+  w.add_cell_data("id", cell_ids);
+  std::vector<Index> used;
+  const VtuWriter second = w.piece(1, 2, used);
+  EXPECT_EQ(used, (std::vector<Index>{0, 2, 3}));
+  EXPECT_EQ(second.num_points(), 3);
+  EXPECT_EQ(second.num_cells(), 1);
+  second.write((dir / "p1.vtu").string());
+  const std::string s = testing::read_text((dir / "p1.vtu").string());
+  EXPECT_TRUE(contains(s, "<Piece NumberOfPoints=\"3\" NumberOfCells=\"1\">"));
+  EXPECT_TRUE(contains(s, "Name=\"pressure\" NumberOfComponents=\"1\" format=\"ascii\">\n          0\n          2\n"
+                          "          3\n"));
+  EXPECT_TRUE(contains(s, "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n          11\n"));
+  EXPECT_TRUE(contains(s, "format=\"ascii\">\n          5 0 0 0 0 0\n"));
+  EXPECT_TRUE(contains(s, "Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n          0 0 0\n"
+                          "          1 1 0\n          0 0.5 0\n"));
+  EXPECT_TRUE(contains(s, "Name=\"connectivity\" format=\"ascii\">\n          0 1 2\n"));
+  EXPECT_TRUE(contains(s, "Name=\"offsets\" format=\"ascii\">\n          3\n"));
+
+  const VtuWriter first = w.piece(0, 1, used);
+  EXPECT_EQ(used, (std::vector<Index>{0, 1, 2}));
+  const VtuWriter none = w.piece(2, 2, used);
+  EXPECT_TRUE(used.empty());
+  EXPECT_EQ(none.num_points(), 0);
+  EXPECT_EQ(none.num_cells(), 0);
+  EXPECT_THROW(w.piece(1, 3, used), std::invalid_argument);
+
+  first.write_parallel((dir / "two.pvtu").string(), {"p0.vtu", "p1.vtu"});
+  const std::string p = testing::read_text((dir / "two.pvtu").string());
+  EXPECT_TRUE(contains(p, "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\""));
+  EXPECT_TRUE(contains(p, "<PPointData>\n      <PDataArray type=\"Float64\" Name=\"pressure\" NumberOfComponents=\"1\"/>\n"
+                          "    </PPointData>\n"));
+  EXPECT_TRUE(contains(p, "<PDataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"6\" ComponentName0=\"XX\""));
+  EXPECT_TRUE(contains(p, "<PPoints>\n      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"));
+  EXPECT_TRUE(contains(p, "    <Piece Source=\"p0.vtu\"/>\n    <Piece Source=\"p1.vtu\"/>\n"));
+  EXPECT_LT(p.find("<PPointData>"), p.find("<PCellData>"));
+  EXPECT_EQ(p.substr(p.size() - 11), "</VTKFile>\n");
+}
+
 // A mesh of two cell types: one type and one offset per cell, the cells in mesh order.
 TEST(VtuWriter, MixedTrianglesAndQuadrilateralAscii) {
   const testing::TempFolder folder;
