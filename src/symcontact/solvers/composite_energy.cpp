@@ -2,8 +2,10 @@
 
 namespace symcontact {
 
-double CompositeEnergy::value(const VectorXd& u) const {
-  double v = base_.value(u);
+double CompositeEnergy::value(const VectorXd& u) const { return base_.value(u) + extra_value(u); }
+
+double CompositeEnergy::extra_value(const VectorXd& u) const {
+  double v = 0.0;
   for (const auto& t : extra)
     if (t) v += t->value(u);
   return v;

@@ -22,6 +22,8 @@ class CompositeEnergy : public EnergyTerm {
   double value(const VectorXd& u) const override;
   void add_gradient(const VectorXd& u, VectorXd& g) const override;
   void add_hessian(const VectorXd& u, MatrixSink& sink) const override;
+  /// The friction terms' part of value() alone.
+  double extra_value(const VectorXd& u) const;
   /// The friction terms' part of add_gradient() alone.
   void add_extra_gradient(const VectorXd& u, VectorXd& g) const;
   /// The friction terms' part of add_hessian() alone.

@@ -16,9 +16,12 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
       sparse_alternative_(energy.hessian_is_constant() && dense_primal_first(contacts, options.subproblem_solver)) {
-  // Linear elasticity: K_ff assembled once (bulk_ caches it), the friction terms at each call.
+  // Linear elasticity: K_ff assembled once (bulk_ caches it) and the bodies' energy its quadratic form, the friction
+  // terms at each call.
   if (energy.hessian_is_constant())
-    problem_.split_hessian(bulk_, [this](const VectorXd& u, MatrixSink& sink) { total_.add_extra_hessian(u, sink); });
+    problem_.split_energy(bulk_, {[this](const VectorXd& u) { return total_.extra_value(u); },
+                                  [this](const VectorXd& u, VectorXd& g) { total_.add_extra_gradient(u, g); },
+                                  [this](const VectorXd& u, MatrixSink& sink) { total_.add_extra_hessian(u, sink); }});
 }
 
 /// A zero threshold (the frictionless start of Coulomb, μ = 0) adds nothing to the energy: its term is left out

@@ -40,18 +40,47 @@ VectorXd ReducedProblem::restrict(const VectorXd& u) const {
   return x;
 }
 
-double ReducedProblem::objective(const VectorXd& x) { return energy_.value(expand(x)); }
+double ReducedProblem::objective(const VectorXd& x) {
+  if (constant_) return constant_->quadratic_value(x) + rest_.value(expand(x));
+  return energy_.value(expand(x));
+}
 
 void ReducedProblem::gradient(const VectorXd& x, VectorXd& g) {
   VectorXd gu = VectorXd::Zero(u_fixed_.size());
-  energy_.add_gradient(expand(x), gu);
-  g = restrict(gu);
+  if (!constant_) {
+    energy_.add_gradient(expand(x), gu);
+    g = restrict(gu);
+    return;
+  }
+  constant_->quadratic_gradient(x, g);
+  rest_.add_gradient(expand(x), gu);
+  for (Index k = 0; k < num_free_; ++k) g[k] += gu[free_dofs_[k]];
 }
 
-void ReducedProblem::split_hessian(ReducedProblem& constant,
-                                   std::function<void(const VectorXd& u, MatrixSink& sink)> rest) {
+void ReducedProblem::split_energy(ReducedProblem& constant, Rest rest) {
   constant_ = &constant;
   rest_ = std::move(rest);
+}
+
+double ReducedProblem::quadratic_value(const VectorXd& x) {
+  VectorXd g;
+  quadratic_gradient(x, g);  // ∇f(0) + H x
+  // f(0) + ∇f(0)ᵀx + ½ xᵀH x = f(0) + ½ (∇f(0) + ∇f(x))ᵀx
+  return f_at_zero_ + 0.5 * (g_at_zero_ + g).dot(x);
+}
+
+void ReducedProblem::quadratic_gradient(const VectorXd& x, VectorXd& g) {
+  if (g_at_zero_.size() != num_free_) {
+    const VectorXd zero = VectorXd::Zero(num_free_);
+    f_at_zero_ = energy_.value(expand(zero));
+    VectorXd gu = VectorXd::Zero(u_fixed_.size());
+    energy_.add_gradient(expand(zero), gu);
+    g_at_zero_ = restrict(gu);
+  }
+  SparseMatrix H;
+  if (!have_H_) hessian_lower(x, H);
+  g = g_at_zero_;
+  g.noalias() += H_cache_.selfadjointView<Eigen::Lower>() * x;
 }
 
 void ReducedProblem::hessian_lower(const VectorXd& x, SparseMatrix& H) {
@@ -62,7 +91,7 @@ void ReducedProblem::hessian_lower(const VectorXd& x, SparseMatrix& H) {
   if (constant_) {
     constant_->hessian_lower(x, H);
     ReducedTripletSink sink(free_index_);
-    rest_(expand(x), sink);
+    rest_.add_hessian(expand(x), sink);
     if (!sink.triplets().empty()) H += sink.to_lower_matrix(num_free_);
     return;
   }

@@ -28,10 +28,22 @@ class ReducedProblem : public ConstrainedProblem {
   const SparseMatrix& constraint_matrix() const override { return A_; }
   const VectorXd& constraint_offset() const override { return b_; }
 
-  /// ∇²f as the cached Hessian of `constant` (a problem on the same DOFs whose energy's Hessian is constant: the
-  /// bodies' energy) plus what `rest` adds at u (the friction terms): hessian_lower() then assembles the rest
-  /// only. The caller keeps the energy equal to constant's plus rest's.
-  void split_hessian(ReducedProblem& constant, std::function<void(const VectorXd& u, MatrixSink& sink)> rest);
+  /// The terms of f's energy beyond a constant-Hessian part (the friction terms): value, gradient, Hessian at u.
+  struct Rest {
+    std::function<double(const VectorXd& u)> value;
+    std::function<void(const VectorXd& u, VectorXd& g)> add_gradient;
+    std::function<void(const VectorXd& u, MatrixSink& sink)> add_hessian;
+  };
+  /// f as `constant` (a problem on the same DOFs and Dirichlet values whose energy's Hessian is constant: the
+  /// bodies' energy) plus `rest` (the friction terms). Constant's part is its quadratic form (quadratic_value()),
+  /// evaluated from the cached Hessian instead of element by element; hessian_lower() assembles rest's only.
+  /// The caller keeps the energy equal to constant's plus rest's.
+  void split_energy(ReducedProblem& constant, Rest rest);
+
+  /// For a problem whose energy's Hessian is constant (a quadratic energy): f(x) = f(0) + ∇f(0)ᵀx + ½ xᵀ∇²f x and
+  /// its gradient, f(0) and ∇f(0) evaluated once (the first call); f itself up to the terms' round-off.
+  double quadratic_value(const VectorXd& x);
+  void quadratic_gradient(const VectorXd& x, VectorXd& g);
 
   VectorXd expand(const VectorXd& x) const;    ///< u = P x + u_D
   VectorXd restrict(const VectorXd& u) const;  ///< x = Pᵀ u
@@ -48,8 +60,11 @@ class ReducedProblem : public ConstrainedProblem {
   VectorXd b_;
   SparseMatrix H_cache_;
   bool have_H_ = false;
-  ReducedProblem* constant_ = nullptr;  ///< split_hessian()'s
-  std::function<void(const VectorXd&, MatrixSink&)> rest_;
+  ReducedProblem* constant_ = nullptr;  ///< split_energy()'s
+  Rest rest_;
+  /// The quadratic form's f(0) and ∇f(0) (quadratic_value()), once evaluated.
+  double f_at_zero_ = 0.0;
+  VectorXd g_at_zero_;
 };
 
 }  // namespace symcontact

@@ -8,6 +8,8 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "support/quadratic_energy.hpp"
@@ -107,25 +109,35 @@ TEST(ReducedProblem, ConstraintsMoveTheFixedColumnsIntoTheOffset) {
   EXPECT_DOUBLE_EQ(r.constraint_offset()[1], -0.2 - 6.0 - 0.25);
 }
 
-// split_hessian: the cached Hessian of a constant part plus the rest assembled at x is the Hessian of the whole
-// energy (the geometry subproblem's K_ff plus friction terms), at every call.
-TEST(ReducedProblem, ASplitHessianIsTheWholeOnesHessian) {
+// split_energy: the constant part's quadratic form (its value and gradient at 0, its cached Hessian) plus the rest
+// evaluated at x is the whole energy (the geometry subproblem's bodies plus friction terms): the same objective,
+// gradient and Hessian at every call.
+TEST(ReducedProblem, ASplitEnergyIsTheWholeOne) {
   SmallProblem p;
   const SparseMatrix k_rest = 0.3 * grid_laplacian(3, 1.0);
   EnergySum whole;
   whole.add(std::make_unique<QuadraticEnergy>(p.k, VectorXd::LinSpaced(9, 1.0, -1.0)));
-  const QuadraticEnergy* rest = whole.add(std::make_unique<QuadraticEnergy>(k_rest, VectorXd::Zero(9)));
+  const QuadraticEnergy* rest =
+      whole.add(std::make_unique<QuadraticEnergy>(k_rest, VectorXd::LinSpaced(9, -0.5, 2.0)));
   ReducedProblem unsplit(whole, p.fixed, 9), split(whole, p.fixed, 9), constant(p.energy, p.fixed, 9);
-  split.split_hessian(constant, [rest](const VectorXd& u, MatrixSink& sink) { rest->add_hessian(u, sink); });
+  split.split_energy(constant, {[rest](const VectorXd& u) { return rest->value(u); },
+                                [rest](const VectorXd& u, VectorXd& g) { rest->add_gradient(u, g); },
+                                [rest](const VectorXd& u, MatrixSink& sink) { rest->add_hessian(u, sink); }});
   SparseMatrix h_unsplit, h_split;
-  for (const double s : {0.0, 1.0}) {
+  VectorXd g_unsplit, g_split;
+  for (const double s : {0.0, 1.0, -3.0}) {
     const VectorXd x = s * VectorXd::LinSpaced(6, -1.0, 1.0);
+    EXPECT_NEAR(split.objective(x), unsplit.objective(x), 1e-14 * std::max(1.0, std::abs(unsplit.objective(x))));
+    unsplit.gradient(x, g_unsplit);
+    split.gradient(x, g_split);
+    EXPECT_LT((g_split - g_unsplit).lpNorm<Eigen::Infinity>(), 1e-14 * std::max(1.0, g_unsplit.lpNorm<Eigen::Infinity>()));
     unsplit.hessian_lower(x, h_unsplit);
     split.hessian_lower(x, h_split);
     EXPECT_EQ(h_split.nonZeros(), h_unsplit.nonZeros());
     EXPECT_LT((MatrixXd(h_split) - MatrixXd(h_unsplit)).cwiseAbs().maxCoeff(), 1e-14);
     EXPECT_GT(MatrixXd(h_split).cwiseAbs().maxCoeff(), 0.0);
   }
+  EXPECT_GT(g_unsplit.lpNorm<Eigen::Infinity>(), 1.0);  // the loads and the fixed values make it non-trivial
 }
 
 }  // namespace
