@@ -57,7 +57,7 @@ struct StepRecord {
 };
 
 /// A run shared by several processes (symcontact-mpi under mpirun, every process running the same steps): each
-/// writes its piece of every body's VTU, the first the rest of the output folder (parallel_output() in run.cpp).
+/// writes its piece of every body's VTU, the first the rest of the output folder (write_parallel_vtu() in run.cpp).
 struct ParallelOutput {
   int rank = 0;
   int size = 1;
