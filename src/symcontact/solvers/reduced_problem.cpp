@@ -1,5 +1,7 @@
 #include "symcontact/solvers/reduced_problem.hpp"
 
+#include <stdexcept>
+
 namespace symcontact {
 
 ReducedProblem::ReducedProblem(const EnergyTerm& energy, const FixedDofs& fixed, Index num_dofs) : energy_(energy) {
@@ -70,6 +72,8 @@ double ReducedProblem::quadratic_value(const VectorXd& x) {
 }
 
 void ReducedProblem::quadratic_gradient(const VectorXd& x, VectorXd& g) {
+  if (!energy_.hessian_is_constant())
+    throw std::logic_error("ReducedProblem::quadratic_gradient: the energy " + energy_.name() + " is not quadratic");
   if (g_at_zero_.size() != num_free_) {
     const VectorXd zero = VectorXd::Zero(num_free_);
     f_at_zero_ = energy_.value(expand(zero));
