@@ -1077,7 +1077,7 @@ class Reader {
     check_keys(t, "contact_solver",
                {"geometry_tolerance", "max_geometry_iterations", "coulomb_tolerance", "converge_past_tolerance",
                 "max_coulomb_iterations", "coulomb_update", "static_condensation", "subproblem_solver", "warm_start",
-                "max_step_cuts", "linear_solver"});
+                "ipopt_problem", "max_step_cuts", "linear_solver"});
     read_linear_solver(t, spec);
     FrictionalOptions& f = spec.contact_solver.friction;
     ContactSolveOptions& s = f.contact;
@@ -1107,6 +1107,8 @@ class Reader {
                 "\"dual_interior_point\", \"dual_ipopt\", \"primal_ipopt\" or \"primal_interior_point\"",
                 s.subproblem_solver);
     read_choice(t, "warm_start", parse_warm_start, "\"active_set\" or \"interior_point\"", s.warm_start);
+    read_choice(t, "ipopt_problem", parse_ipopt_problem, "\"automatic\", \"condensed\" or \"uncondensed\"",
+                s.ipopt_problem);
     if (const toml::node* n = t.get("max_step_cuts")) {
       const std::string key = "contact_solver.max_step_cuts";
       const std::int64_t c = as_integer(*n, key);

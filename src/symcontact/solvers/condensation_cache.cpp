@@ -65,12 +65,13 @@ void add_condensation_margin(const ContactSet& contacts, const DofMap& dofs, con
   }
 }
 
-/// The cost rule of the primal path (friction terms present): whether a sparse factorisation of K_ff plus the
-/// contact terms (the uncondensed interior point, dense_primal_interior_point.hpp) costs less per iteration than
-/// the dense |B| × |B| one of the condensed problem (kDenseOverSparse, kSparseAboveFlops). K_ff's analysis is
-/// made once per model (ContactWorkspace::sparse_flops); the choice is logged at -v for each new |B|.
+/// The cost rule of the primal path: whether a sparse factorisation of K_ff plus the contact terms (the
+/// uncondensed interior point, dense_primal_interior_point.hpp, or IPOPT's KKT system) costs less per iteration
+/// than the dense |B| × |B| one of the condensed problem (kDenseOverSparse, kSparseAboveFlops). K_ff's analysis
+/// is made once per model (ContactWorkspace::sparse_flops); the choice is logged at -v for each new |B|, as
+/// `who` takes it.
 bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy, const std::vector<Index>& free_index,
-                       ContactWorkspace& ws, const Logger& log) {
+                       SparseAlternative who, ContactWorkspace& ws, const Logger& log) {
   if (ws.sparse_flops_energy != &energy || ws.sparse_flops_free_index != free_index) {
     CholeskySolver analysis;
     try {
@@ -84,11 +85,15 @@ bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy,
     ws.sparse_logged_for = -1;
   }
   const double dense = std::pow(static_cast<double>(b), 3) / 3.0;
-  const bool sparse = uncondensed_is_cheaper(dense, ws.sparse_flops);
+  const bool sparse = uncondensed_is_cheaper(
+      dense, ws.sparse_flops, who == SparseAlternative::kOptimiser ? kOptimiserSparseAboveFlops : kSparseAboveFlops);
   if (ws.sparse_logged_for != b) {
     ws.sparse_logged_for = b;
     std::ostringstream m;
-    m << "  contact subproblems " << (sparse ? "not condensed" : "condensed") << " (|B| = " << b
+    const char* choice = !sparse                                 ? "condensed"
+                         : who == SparseAlternative::kWholeSolve ? "not condensed"
+                                                                 : "optimised uncondensed, polished condensed";
+    m << "  contact subproblems " << choice << " (|B| = " << b
       << ": a dense factorisation of " << std::setprecision(2) << dense << " flops per interior-point iteration against "
       << ws.sparse_flops << " for the sparse one of K_ff)";
     log.detail(m.str());
@@ -139,8 +144,13 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
       return nullptr;
     SparseMatrix K;
     bulk.hessian_lower(VectorXd::Zero(n), K);
-    if (limits.sparse_alternative && !extras.empty() && sparse_is_cheaper(K, static_cast<Index>(boundary.size()), energy, free_index, ws, log))
+    const Index nb = static_cast<Index>(boundary.size());
+    const SparseAlternative who = limits.sparse_alternative;
+    if (who == SparseAlternative::kWholeSolve && !extras.empty() &&
+        sparse_is_cheaper(K, nb, energy, free_index, who, ws, log))
       return nullptr;
+    ws.optimise_uncondensed =
+        who == SparseAlternative::kOptimiser && sparse_is_cheaper(K, nb, energy, free_index, who, ws, log);
     if (!ws.condensation) ws.condensation = std::make_unique<StaticCondensation>();
     try {
       ws.condensation->compute(K, std::move(boundary));

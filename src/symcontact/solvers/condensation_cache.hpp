@@ -55,6 +55,9 @@ struct ContactWorkspace {
   bool closing_polish_rejected = false;
   /// The last solve left u's interior out of date (ContactSolveOptions::lazy_interior): complete_interior().
   bool interior_pending = false;
+  /// The cost rule's verdict for the condensation's B where the optimiser alone may take the uncondensed
+  /// problem (SparseAlternative::kOptimiser): the uncondensed problem is the cheaper one to optimise on.
+  bool optimise_uncondensed = false;
   /// CHOLMOD's predicted flops of factorising K_ff, for the energy and numbering they belong to (the cost rule
   /// of condense_problem), and the |B| the rule's choice was last logged for.
   double sparse_flops = 0.0;
@@ -73,26 +76,45 @@ struct ContactWorkspace {
 /// DOFs, 2.8e9–3.7e10 flops); on a ball 1.05, 1.03 at 7.1e3 and 1.0e4 DOFs; peak memory 0.28–0.35 times.
 inline constexpr double kDenseOverSparse = 4.0;
 inline constexpr double kSparseAboveFlops = 1e9;
+/// The floor where IPOPT optimises (SparseAlternative::kOptimiser): MUMPS factorises the condensed problem's
+/// dense KKT block more slowly per flop than LAPACK does the interior point's, so that the uncondensed KKT
+/// system pays from lower. Measured on the 3D clamped plates with Coulomb friction (docs/performance.md), CPU
+/// time uncondensed / condensed optimisation: 1.04 at 3.4e8 flops (2.9e3 DOFs), 0.87 at 8.5e8, 0.72 at 3.4e9,
+/// 0.54 at 1.0e4 DOFs, flop ratios 16–24.
+inline constexpr double kOptimiserSparseAboveFlops = 5e8;
 /// The rule above: the uncondensed problem is cheaper, from the flops of the dense factorisation on B
-/// (|B|³/3) and of K_ff's sparse one. condense_problem decides by it, and the run-level choice
-/// (app/linear_solver_choice.hpp) predicts that decision by it.
-inline bool uncondensed_is_cheaper(double dense_flops, double sparse_flops) {
-  return dense_flops > kSparseAboveFlops && dense_flops > kDenseOverSparse * sparse_flops;
+/// (|B|³/3) and of K_ff's sparse one, above the floor `above`. condense_problem decides by it, and the run-level
+/// choice (app/linear_solver_choice.hpp) predicts that decision by it.
+inline bool uncondensed_is_cheaper(double dense_flops, double sparse_flops, double above = kSparseAboveFlops) {
+  return dense_flops > above && dense_flops > kDenseOverSparse * sparse_flops;
 }
+
+/// Who may take the uncondensed problem where the cost rule (uncondensed_is_cheaper) prefers it; linear-elastic
+/// bodies only.
+enum class SparseAlternative {
+  kNone,
+  /// The primal interior point, for the whole subproblem (independent rows): with friction terms and the rule
+  /// against the dense factorisation, condense_problem condenses nothing.
+  kWholeSolve,
+  /// IPOPT (symmetric pairs): it optimises the uncondensed problem, whose sparse KKT system MUMPS factorises,
+  /// and its answer is restricted to B for the condensed problem's polish, a dense range-space solve on B. The
+  /// sparse polish would take one solve per active row, or the method of multipliers, which stalls on the
+  /// nearly dependent rows of the two families. condense_problem condenses, and sets
+  /// ContactWorkspace::optimise_uncondensed to the rule's verdict.
+  kOptimiser,
+};
 
 /// When and how far to condense (ContactSolveOptions::max_condensed_dofs, ::same_loads).
 struct CondensationLimits {
   Index max_condensed_dofs = 12000;
   bool same_loads = false;
-  /// The primal interior point solves the uncondensed problem too (linear-elastic bodies, independent rows):
-  /// the cost rule (kDenseOverSparse) applies.
-  bool sparse_alternative = false;
+  SparseAlternative sparse_alternative = SparseAlternative::kNone;
 };
 
 /// The condensed form of the current geometry iterate's problem, or null when condensing does not apply
 /// or pay: B empty, |B| above `limits.max_condensed_dofs` or above half the free DOFs, with friction terms and
-/// `limits.sparse_alternative` a dense factorisation on B dearer than a sparse one of K_ff (kDenseOverSparse),
-/// or a factorisation that fails. Reuses the workspace's factorisation when its B holds every DOF the constraints of `problem`
+/// `limits.sparse_alternative` kWholeSolve a dense factorisation on B dearer than a sparse one of K_ff
+/// (kDenseOverSparse), or a factorisation that fails. Reuses the workspace's factorisation when its B holds every DOF the constraints of `problem`
 /// and the `friction` terms (evaluated at the full vector u) touch; otherwise refactorises with the union
 /// of the old B, the new DOFs and a margin. `load` (null on the first call of a solve) caches the load part
 /// for this solve's Dirichlet values and loads.

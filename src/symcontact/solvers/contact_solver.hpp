@@ -81,6 +81,8 @@ struct ContactSolveOptions {
   SubproblemSolver subproblem_solver = SubproblemSolver::kDualInteriorPoint;
   /// How the dense primal interior point's warm-started subproblems start (WarmStart).
   WarmStart warm_start = WarmStart::kActiveSet;
+  /// Which form of a condensed frictional subproblem IPOPT optimises (IpoptProblem).
+  IpoptProblem ipopt_problem = IpoptProblem::kAutomatic;
   /// Reused between calls when set (create one per run); a fresh one per call when null.
   std::shared_ptr<ContactWorkspace> workspace;
   /// The caller vouches that the loads and Dirichlet values are those of the previous solve with this

@@ -6,6 +6,19 @@
 
 namespace symcontact {
 
+namespace {
+
+/// Who may take the uncondensed problem (CondensationLimits::sparse_alternative): linear-elastic bodies only;
+/// the primal interior point where it solves, else IPOPT unless ContactSolveOptions::ipopt_problem says condensed.
+SparseAlternative sparse_alternative(const EnergyTerm& energy, const ContactSet& contacts,
+                                     const ContactSolveOptions& options) {
+  if (!energy.hessian_is_constant()) return SparseAlternative::kNone;
+  if (dense_primal_first(contacts, options.subproblem_solver)) return SparseAlternative::kWholeSolve;
+  return options.ipopt_problem == IpoptProblem::kCondensed ? SparseAlternative::kNone : SparseAlternative::kOptimiser;
+}
+
+}  // namespace
+
 GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs& fixed, const ContactSet& contacts,
                                        const DofMap& dofs, const ContactSolveOptions& options,
                                        ContactWorkspace& workspace, const Logger& log, const FrictionState* friction)
@@ -15,7 +28,7 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       dual_(dual_method(contacts, options.subproblem_solver, options.warm_start)),
       primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
-      sparse_alternative_(energy.hessian_is_constant() && dense_primal_first(contacts, options.subproblem_solver)) {
+      sparse_alternative_(sparse_alternative(energy, contacts, options)) {
   // Linear elasticity: K_ff assembled once (bulk_ caches it) and the bodies' energy its quadratic form, the friction
   // terms at each call.
   if (energy.hessian_is_constant())
@@ -156,12 +169,43 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
   }
   if (friction_)
     p.restart = [this, condensed] {
-      VectorXd u_retry = friction_->u_start;  // the start of the step, moved as at the first solve
-      predict_dirichlet_increment(energy_, fixed_, u_retry);
-      const VectorXd xr = problem_.restrict(u_retry);
+      const VectorXd xr = step_start();
       return condensed ? condensed->restrict(xr) : xr;
     };
+  if (condensed && sparse_alternative_ == SparseAlternative::kOptimiser &&
+      (options_.ipopt_problem == IpoptProblem::kUncondensed || workspace_.optimise_uncondensed))
+  {
+    ++rep.uncondensed_solves;
+    return {solve_uncondensed(p, *condensed, x, warm, rep.times), false};
+  }
   return {primal_->solve(p, warm, log_, rep.times), false};
+}
+
+VectorXd GeometrySubproblem::step_start() const {
+  VectorXd u_retry = friction_->u_start;  // the start of the step, moved as at the first solve
+  predict_dirichlet_increment(energy_, fixed_, u_retry);
+  return problem_.restrict(u_retry);
+}
+
+SubproblemSolution GeometrySubproblem::solve_uncondensed(const Subproblem& p, const CondensedProblem& condensed,
+                                                         const VectorXd& x, const SubproblemWarmStart& warm,
+                                                         PhaseTimes& times) {
+  // x's interior completed for B's entries (lazy_interior leaves it out of date): the optimum over the
+  // interior, IPOPT's best start.
+  VectorXd start;
+  {
+    ScopedPhase t(times, "condensation");
+    start = condensed.expand(condensed.restrict(x));
+  }
+  Subproblem whole{problem_, nullptr, nullptr, start, p.geometry_iteration, p.ipopt, p.close_active_set,
+                   p.quadratic_bodies, {}, {}};
+  if (p.restart) whole.restart = [this] { return step_start(); };
+  if (p.follow) whole.follow = follow_hook(nullptr);
+  SubproblemSolution s = primal_->solve(whole, warm, log_, times);
+  IpoptResult& r = s.result;
+  if (r.x.size() == problem_.num_variables()) r.x = condensed.restrict(r.x);
+  if (r.bound_multipliers.size() == problem_.num_variables()) r.bound_multipliers = condensed.restrict(r.bound_multipliers);
+  return s;
 }
 
 }  // namespace symcontact

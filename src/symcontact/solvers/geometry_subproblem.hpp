@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "symcontact/solvers/composite_energy.hpp"
+#include "symcontact/solvers/condensation_cache.hpp"
 #include "symcontact/solvers/condensed_problem.hpp"
 #include "symcontact/solvers/contact_solver.hpp"
 #include "symcontact/solvers/dual_subproblem.hpp"
@@ -84,14 +85,20 @@ class GeometrySubproblem {
   /// The thresholds follow the optimiser's iterates (FrictionState::follower, given only where the primal
   /// interior point solves the subproblems): every friction term is kept, zero thresholds too.
   bool follows_ = false;
-  /// The primal interior point takes the uncondensed problem as well (CondensationLimits::sparse_alternative).
-  bool sparse_alternative_ = false;
+  /// Who may take the uncondensed problem by the cost rule (CondensationLimits::sparse_alternative).
+  SparseAlternative sparse_alternative_ = SparseAlternative::kNone;
 
   /// The optimiser's hook (Subproblem::follow) on `condensed`, or on the whole reduced problem where it is null:
   /// the follower sets the nodal thresholds, and the friction terms take them at their points.
   std::function<bool(const VectorXd&, const VectorXd&)> follow_hook(CondensedProblem* condensed);
   /// The bodies' force on the surfaces at the reduced problem's x (see the .cpp).
   VectorXd surface_force(const VectorXd& x, const VectorXd& multipliers);
+  /// The free DOFs of the start of the load step, moved as at its first solve: the primal's retry with friction.
+  VectorXd step_start() const;
+  /// The primal method on the whole reduced problem for the condensed one `p` (SparseAlternative::kOptimiser):
+  /// its answer restricted to B, in p.target's variables.
+  SubproblemSolution solve_uncondensed(const Subproblem& p, const CondensedProblem& condensed, const VectorXd& x,
+                                       const SubproblemWarmStart& warm, PhaseTimes& times);
 };
 
 }  // namespace symcontact

@@ -86,6 +86,31 @@ inline std::optional<WarmStart> parse_warm_start(const std::string& name) {
   return std::nullopt;
 }
 
+/// Which form of a condensed subproblem IPOPT optimises where it solves the primal (symmetric pairs and
+/// self-contact, or subproblem_solver = "primal_ipopt", with friction terms on linear-elastic bodies). The polish
+/// closes the condensed problem either way (a dense range-space solve on B).
+enum class IpoptProblem {
+  /// By the cost rule (condensation_cache.hpp, kOptimiserSparseAboveFlops): the uncondensed one, with a sparse
+  /// KKT system, once the dense factorisation on B costs more than kDenseOverSparse sparse ones of K_ff.
+  kAutomatic,
+  /// The condensed one, a dense |B| × |B| KKT block at each iteration.
+  kCondensed,
+  /// The uncondensed one, whatever the cost (to compare).
+  kUncondensed,
+};
+
+/// The problem file's name of an IpoptProblem: "automatic", "condensed", "uncondensed".
+inline const char* ipopt_problem_name(IpoptProblem p) {
+  return p == IpoptProblem::kAutomatic ? "automatic" : p == IpoptProblem::kCondensed ? "condensed" : "uncondensed";
+}
+
+/// The IpoptProblem named `name` in the problem file; nullopt for any other string.
+inline std::optional<IpoptProblem> parse_ipopt_problem(const std::string& name) {
+  for (const IpoptProblem p : {IpoptProblem::kAutomatic, IpoptProblem::kCondensed, IpoptProblem::kUncondensed})
+    if (name == ipopt_problem_name(p)) return p;
+  return std::nullopt;
+}
+
 /// Whether the constraint rows of `contacts` are independent (obstacles and one-pass pairs: no symmetric pair,
 /// no self-contact), so that the multipliers are unique.
 bool independent_rows(const ContactSet& contacts);

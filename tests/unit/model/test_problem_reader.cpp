@@ -491,7 +491,8 @@ TEST(ProblemReader, CoulombFriction) {
   const ProblemSpec spec = parse(with_contact_keys(kTwoBodies, "friction = \"coulomb\"\nmu = 0.3\nalpha = 2e-6\n") +
                                  "[contact_solver]\ncoulomb_tolerance = 1e-8\nmax_coulomb_iterations = 12\n"
                                  "max_step_cuts = 3\nsubproblem_solver = \"dual_ipopt\"\nconverge_past_tolerance = false\n"
-                                 "coulomb_update = \"between_solves\"\nwarm_start = \"interior_point\"\n");
+                                 "coulomb_update = \"between_solves\"\nwarm_start = \"interior_point\"\n"
+                                 "ipopt_problem = \"uncondensed\"\n");
   const ContactSpec& c = spec.contacts.at(0);
   EXPECT_EQ(c.friction, "coulomb");
   EXPECT_EQ(c.mu, 0.3);
@@ -504,6 +505,7 @@ TEST(ProblemReader, CoulombFriction) {
   EXPECT_EQ(spec.contact_solver.max_step_cuts, 3);
   EXPECT_EQ(spec.contact_solver.friction.contact.subproblem_solver, SubproblemSolver::kDualIpopt);
   EXPECT_EQ(spec.contact_solver.friction.contact.warm_start, WarmStart::kInteriorPoint);
+  EXPECT_EQ(spec.contact_solver.friction.contact.ipopt_problem, IpoptProblem::kUncondensed);
   EXPECT_EQ(spec.contact_solver.friction.contact.geometry_tolerance, 1e-6);  // the others keep their defaults
   EXPECT_EQ(spec.contact_solver.friction.contact.max_geometry_iterations, 50);
 }
@@ -1189,9 +1191,11 @@ INSTANTIATE_TEST_SUITE_P(
                 "contact_solver.tolerance",
                 "unknown key \"tolerance\"; allowed keys in contact_solver: geometry_tolerance, max_geometry_iterations, "
                 "coulomb_tolerance, converge_past_tolerance, max_coulomb_iterations, coulomb_update, static_condensation, "
-                "subproblem_solver, warm_start, max_step_cuts, linear_solver"},
+                "subproblem_solver, warm_start, ipopt_problem, max_step_cuts, linear_solver"},
         InputErrorCase{"WarmStartUnknown", kTwoBodies + "[contact_solver]\nwarm_start = \"cold\"\n",
                 "contact_solver.warm_start", "expected \"active_set\" or \"interior_point\", got \"cold\""},
+        InputErrorCase{"IpoptProblemUnknown", kTwoBodies + "[contact_solver]\nipopt_problem = \"dense\"\n",
+                "contact_solver.ipopt_problem", "expected \"automatic\", \"condensed\" or \"uncondensed\", got \"dense\""},
         InputErrorCase{"LinearSolverUnknown", kTwoBodies + "[contact_solver]\nlinear_solver = \"cg\"\n",
                 "contact_solver.linear_solver", "expected \"automatic\", \"direct\" or \"iterative\", got \"cg\""},
         InputErrorCase{"CoulombUpdateUnknown", kTwoBodies + "[contact_solver]\ncoulomb_update = \"always\"\n",
