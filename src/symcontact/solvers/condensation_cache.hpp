@@ -78,9 +78,9 @@ inline constexpr double kDenseOverSparse = 4.0;
 inline constexpr double kSparseAboveFlops = 1e9;
 /// The floor where IPOPT optimises (SparseAlternative::kOptimiser): MUMPS factorises the condensed problem's
 /// dense KKT block more slowly per flop than LAPACK does the interior point's, so that the uncondensed KKT
-/// system pays from lower. Measured on the 3D clamped plates with Coulomb friction (docs/performance.md), CPU
-/// time uncondensed / condensed optimisation: 1.04 at 3.4e8 flops (2.9e3 DOFs), 0.87 at 8.5e8, 0.72 at 3.4e9,
-/// 0.54 at 1.0e4 DOFs, flop ratios 16–24.
+/// system pays from lower. Measured on the 3D clamped plates with Coulomb friction (docs/performance.md), contact
+/// CPU time with the uncondensed / the condensed optimisation: 1.04 at 3.4e8 flops (2.9e3 DOFs), 0.87 at 8.5e8
+/// (4.4e3), 0.74 at 3.4e9 (8.1e3), 0.54 at 1.0e4 DOFs; flop ratios 16–24.
 inline constexpr double kOptimiserSparseAboveFlops = 5e8;
 /// The rule above: the uncondensed problem is cheaper, from the flops of the dense factorisation on B
 /// (|B|³/3) and of K_ff's sparse one, above the floor `above`. condense_problem decides by it, and the run-level
