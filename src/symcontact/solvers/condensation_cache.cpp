@@ -90,9 +90,10 @@ bool sparse_is_cheaper(const SparseMatrix& K, Index b, const EnergyTerm& energy,
   if (ws.sparse_logged_for != b) {
     ws.sparse_logged_for = b;
     std::ostringstream m;
-    const char* choice = !sparse                                 ? "condensed"
-                         : who == SparseAlternative::kWholeSolve ? "not condensed"
-                                                                 : "condensed, IPOPT's primal solves on the uncondensed problem";
+    const char* choice = !sparse ? "condensed"
+                         : who == SparseAlternative::kWholeSolve
+                             ? "not condensed"
+                             : "condensed, IPOPT's primal solves on the uncondensed problem";
     m << "  contact subproblems " << choice << " (|B| = " << b
       << ": a dense factorisation of " << std::setprecision(2) << dense << " flops per interior-point iteration against "
       << ws.sparse_flops << " for the sparse one of K_ff)";

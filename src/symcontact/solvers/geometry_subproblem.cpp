@@ -173,8 +173,7 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
       return condensed ? condensed->restrict(xr) : xr;
     };
   if (condensed && sparse_alternative_ == SparseAlternative::kOptimiser &&
-      (options_.ipopt_problem == IpoptProblem::kUncondensed || workspace_.optimise_uncondensed))
-  {
+      (options_.ipopt_problem == IpoptProblem::kUncondensed || workspace_.optimise_uncondensed)) {
     ++rep.uncondensed_solves;
     return {solve_uncondensed(p, *condensed, x, warm, rep.times), false};
   }
@@ -204,7 +203,8 @@ SubproblemSolution GeometrySubproblem::solve_uncondensed(const Subproblem& p, co
   SubproblemSolution s = primal_->solve(whole, warm, log_, times);
   IpoptResult& r = s.result;
   if (r.x.size() == problem_.num_variables()) r.x = condensed.restrict(r.x);
-  if (r.bound_multipliers.size() == problem_.num_variables()) r.bound_multipliers = condensed.restrict(r.bound_multipliers);
+  if (r.bound_multipliers.size() == problem_.num_variables())
+    r.bound_multipliers = condensed.restrict(r.bound_multipliers);
   return s;
 }
 

@@ -7,7 +7,10 @@
 /// problem is condensed onto the contact DOFs B (condensed_problem.hpp, one factor of K for the whole run in
 /// the ContactWorkspace). It is then solved by the dual where it applies (condensed, no friction term,
 /// constraints present: dual_subproblem.hpp) and otherwise, or when the dual fails, by the primal, the
-/// reference formulation (primal_subproblem.hpp); which method of each is SubproblemSolver's choice.
+/// reference formulation (primal_subproblem.hpp); which method of each is SubproblemSolver's choice. Where IPOPT
+/// solves the primal of a condensed problem whose dense KKT block would cost more than a sparse factorisation of
+/// K_ff (IpoptProblem), it optimises the uncondensed problem, and the answer is restricted to B for the condensed
+/// problem's polish.
 
 #include <memory>
 #include <vector>

@@ -37,7 +37,8 @@ struct SolveReport : ContactState {
   Index num_condensed = 0;                  ///< DOFs IPOPT worked on when condensed (0: not condensed)
   int condensation_factorisations = 0;      ///< factorisations for the condensation in that solve
   int dual_solves = 0;                      ///< geometry iterations solved through the dual (SubproblemSolver)
-  int uncondensed_solves = 0;  ///< geometry iterations IPOPT optimised uncondensed for the condensed polish (IpoptProblem)
+  /// geometry iterations IPOPT optimised uncondensed for the condensed polish (IpoptProblem)
+  int uncondensed_solves = 0;
   bool interior_deferred = false;           ///< u's interior was left out of date (ContactSolveOptions::lazy_interior)
 
   // The Coulomb fixed point of the last (sub-)step.
