@@ -9,6 +9,7 @@
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/log.hpp"
 #include "symcontact/core/timer.hpp"
+#include "symcontact/model/load_step.hpp"
 #include "symcontact/model/problem_reader.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
@@ -40,11 +41,12 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
   run->model = Model::build(run->spec, log, run->build_times);
   Model& model = *run->model;
   const DofMap& dofs = model.dofs();
-  const FrictionalOptions opt = contact_options(run->spec, log).friction;
+  // As `symcontact run` solves each step (app/run_serial.cpp): with the problem's step cutting.
+  const LoadStepOptions opt = contact_options(run->spec, log);
   const bool contact = !model.contacts().empty();
   run->u = VectorXd::Zero(dofs.num_dofs());
   run->steps = model.num_steps();
-  FrictionState previous;  // the last step's thresholds (Coulomb warm start)
+  FrictionState friction;  // the last step's thresholds (Coulomb warm start)
   for (int step = 0; step < run->steps; ++step) {
     model.set_step(step);
     run->fixed = model.fixed_dofs(step);
@@ -54,15 +56,13 @@ std::unique_ptr<ProblemRun> solve_problem(const std::string& toml, const std::st
     if (contact) {
       SolveReport rep;
       try {
-        rep = solve_frictional_contact(model.energy(), run->fixed, model.contacts(), dofs, run->u, opt, log,
-                                       step > 0 ? &previous : nullptr);
+        rep = solve_load_step(model, step, run->u, friction, opt, log);
       } catch (const SolveError& e) {
         throw SolveError("load step " + std::to_string(step + 1) + " of " + std::to_string(run->steps) + " (" +
                          std::to_string(dofs.num_dofs()) + " DOFs): " + e.what());
       }
-      previous = rep.friction_state;
       run->times.merge(rep.times);
-      f.contact_solves = 1 + rep.coulomb_iterations;
+      f.contact_solves = static_cast<int>(std::max<std::size_t>(1, rep.substeps.size())) + rep.coulomb_iterations;
       f.geometry_iterations = rep.geometry_iterations;
       f.ipopt_iterations = rep.ipopt_iterations;
       run->coulomb_iterations += rep.coulomb_iterations;
