@@ -151,7 +151,11 @@ std::unique_ptr<CondensedProblem> condense_problem(ReducedProblem& bulk, const R
         sparse_is_cheaper(K, nb, energy, free_index, who, ws, log))
       return nullptr;
     ws.optimise_uncondensed =
-        who == SparseAlternative::kOptimiser && sparse_is_cheaper(K, nb, energy, free_index, who, ws, log);
+        who == SparseAlternative::kOptimiserAlways ||
+        (who == SparseAlternative::kOptimiser && sparse_is_cheaper(K, nb, energy, free_index, who, ws, log));
+    if (who == SparseAlternative::kOptimiserAlways)
+      log.detail("  contact subproblems condensed (|B| = " + std::to_string(nb) +
+                 "), IPOPT's primal solves on the uncondensed problem (ipopt_problem = \"uncondensed\")");
     if (!ws.condensation) ws.condensation = std::make_unique<StaticCondensation>();
     try {
       ws.condensation->compute(K, std::move(boundary));

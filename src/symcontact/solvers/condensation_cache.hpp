@@ -102,6 +102,8 @@ enum class SparseAlternative {
   /// nearly dependent rows of the two families. condense_problem condenses, and sets
   /// ContactWorkspace::optimise_uncondensed to the rule's verdict.
   kOptimiser,
+  /// The same whatever the cost (IpoptProblem::kUncondensed): ContactWorkspace::optimise_uncondensed is set.
+  kOptimiserAlways,
 };
 
 /// When and how far to condense (ContactSolveOptions::max_condensed_dofs, ::same_loads).

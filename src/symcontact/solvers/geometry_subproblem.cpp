@@ -9,12 +9,17 @@ namespace symcontact {
 namespace {
 
 /// Who may take the uncondensed problem (CondensationLimits::sparse_alternative): linear-elastic bodies only;
-/// the primal interior point where it solves, else IPOPT unless ContactSolveOptions::ipopt_problem says condensed.
+/// the primal interior point where it solves, else IPOPT as ContactSolveOptions::ipopt_problem says.
 SparseAlternative sparse_alternative(const EnergyTerm& energy, const ContactSet& contacts,
                                      const ContactSolveOptions& options) {
   if (!energy.hessian_is_constant()) return SparseAlternative::kNone;
   if (dense_primal_first(contacts, options.subproblem_solver)) return SparseAlternative::kWholeSolve;
-  return options.ipopt_problem == IpoptProblem::kCondensed ? SparseAlternative::kNone : SparseAlternative::kOptimiser;
+  switch (options.ipopt_problem) {
+    case IpoptProblem::kCondensed: return SparseAlternative::kNone;
+    case IpoptProblem::kUncondensed: return SparseAlternative::kOptimiserAlways;
+    case IpoptProblem::kAutomatic: break;
+  }
+  return SparseAlternative::kOptimiser;
 }
 
 }  // namespace
@@ -172,8 +177,9 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
       const VectorXd xr = step_start();
       return condensed ? condensed->restrict(xr) : xr;
     };
-  if (condensed && sparse_alternative_ == SparseAlternative::kOptimiser &&
-      (options_.ipopt_problem == IpoptProblem::kUncondensed || workspace_.optimise_uncondensed)) {
+  const bool optimiser = sparse_alternative_ == SparseAlternative::kOptimiser ||
+                         sparse_alternative_ == SparseAlternative::kOptimiserAlways;
+  if (condensed && optimiser && workspace_.optimise_uncondensed) {
     ++rep.uncondensed_solves;
     return {solve_uncondensed(p, *condensed, x, warm, rep.times), false};
   }
