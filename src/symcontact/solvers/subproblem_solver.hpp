@@ -23,7 +23,8 @@ class PrimalIpopt;
 /// choices by IPOPT.
 enum class SubproblemSolver {
   /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
-  /// factorisation at each of its iterations (primal_subproblem.hpp).
+  /// factorisation at each of its iterations (primal_subproblem.hpp), or where that costs more, with friction,
+  /// on the uncondensed problem's sparse one (IpoptProblem).
   kPrimalIpopt,
   /// The dual in the m contact multipliers with bounds, its Hessian formed once per geometry iteration, by
   /// IPOPT (MUMPS factorising the dense matrix as a sparse one: about 3 times the time of the interior point
