@@ -4,7 +4,7 @@
 // problem (the active set's equality-constrained problem solved by sparse Cholesky, checked for contact
 // forces ≥ 0 and gaps ≥ 0), the same for a block loaded onto a plane it touches up to round-off, the Krylov
 // iterations per Newton system as the mesh is refined, and Tresca and
-// Coulomb friction on a block sliding on a rigid plane against their closed forms.
+// Coulomb friction on a block sliding on a rigid plane against their closed forms, its slip also given by maps.
 
 #include "symcontact/distributed/contact_interior_point.hpp"
 
@@ -200,6 +200,51 @@ TEST(ContactInteriorPoint, TrescaFrictionOfASlidingBlockIsItsBound) {
     EXPECT_NEAR(reaction, friction, 1e-6 * tau);
     EXPECT_LE(reaction, tau);
     EXPECT_GE(reaction, (dim == 2 ? 1 - 1e-5 : 0.999) * tau);
+  }
+}
+
+// The slip measured by a slip map (NodalConstraints::slip_map, here for the same sliding block): each node's
+// displacement written as a map explicitly, and again against a frame that moves with the dragged top (one of
+// its fixed DOFs, along x, minus the shift d: that column moves into the slip origin, which then holds −d).
+// Both describe the same energy as the nodes' own displacements: the same answer to the solver's tolerance.
+TEST(ContactInteriorPoint, ASlipMapGivesTheNodalFrictionItDescribes) {
+  const double tau = 0.002, alpha = 1e-4;
+  for (const auto& [dim, n] : {std::pair{2, 24}, std::pair{3, 8}}) {
+    const ObstacleSystem o = block_on_plane_system(dim, n, 0.01, 0.05, tau, alpha, g_petsc->rank(), g_petsc->size());
+    const ContactInteriorPointResult nodal = solve(o);
+    ASSERT_TRUE(nodal.converged) << nodal.reason;
+    const Index num_dofs = o.block.f.size(), m = o.contact.size();
+    Index dragged = -1;  // a fixed DOF along x with a nonzero value: the top's drag
+    double shift = 0.0;
+    for (std::size_t k = 0; k < o.block.fixed.size() && dragged < 0; ++k)
+      if (o.block.fixed[k] % dim == 0 && o.block.fixed_values[static_cast<Index>(k)] != 0.0) {
+        dragged = o.block.fixed[k];
+        shift = o.block.fixed_values[static_cast<Index>(k)];
+      }
+    ASSERT_GE(dragged, 0);
+    for (const bool moving_frame : {false, true}) {
+      ObstacleSystem mapped = o;
+      std::vector<Eigen::Triplet<double>> t;
+      mapped.contact.slip_origin = Eigen::MatrixXd::Zero(dim, m);
+      for (Index j = 0; j < m; ++j)
+        for (int k = 0; k < dim; ++k) t.emplace_back(static_cast<int>(dim * j + k), static_cast<int>(dim * o.contact.node[j] + k), 1.0);
+      if (moving_frame)
+        for (Index j = 0; j < m; ++j) {
+          t.emplace_back(static_cast<int>(dim * j), static_cast<int>(dragged), -1.0);
+          mapped.contact.slip_origin(0, j) = -shift;
+        }
+      mapped.contact.slip_map.resize(dim * m, num_dofs);
+      mapped.contact.slip_map.setFromTriplets(t.begin(), t.end());
+      const ContactInteriorPointResult r = solve(mapped);
+      ASSERT_TRUE(r.converged) << r.reason;
+      const double difference = (r.u - nodal.u).lpNorm<Eigen::Infinity>() / nodal.u.lpNorm<Eigen::Infinity>();
+      if (g_petsc->rank() == 0)
+        std::printf("dim %d, %s: %d iterations against %d, largest difference in u %.1e of its scale\n", dim,
+                    moving_frame ? "against the dragged top" : "the nodes' own map", r.iterations, nodal.iterations,
+                    difference);
+      EXPECT_LT(difference, 1e-7);
+      EXPECT_LT((r.lambda - nodal.lambda).lpNorm<Eigen::Infinity>(), 1e-7 * nodal.lambda.lpNorm<Eigen::Infinity>());
+    }
   }
 }
 

@@ -20,11 +20,6 @@ DistributedLimit distributed_path_limit(const ProblemSpec& spec) {
       return {c.key + ".friction", "the distributed path solves friction on order-1 elements only, got \"" +
                                        c.friction + "\" with problem.order = " + std::to_string(spec.order)};
     if (c.obstacle) continue;
-    // Its friction terms slide a slave node against a fixed frame (contact_interior_point.hpp), not against
-    // the opposite body.
-    if (c.friction != "none")
-      return {c.key + ".friction", "the distributed path solves friction against rigid obstacles only, got \"" +
-                                       c.friction + "\" between \"" + c.body_a + "\" and \"" + c.body_b + "\""};
     // A symmetric pair's two constraint families are nearly dependent: on a curved pair (examples/rings_2d)
     // the rows of one family stay open by the meshes' mismatch while the other's close, and the Newton
     // systems break down (docs/distributed.md). A surface's contact with itself is one family.

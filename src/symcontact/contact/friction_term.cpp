@@ -176,6 +176,19 @@ std::vector<double> FrictionTerm::bounds() const {
   return g;
 }
 
+SparseMatrix FrictionTerm::slip_map(Index num_dofs) const {
+  std::vector<Eigen::Triplet<double>> t;
+  for (std::size_t q = 0; q < local_.size(); ++q)
+    for (std::size_t k = 0; k < local_[q].dofs.size(); ++k)
+      for (int i = 0; i < dim_; ++i)
+        if (local_[q].B(i, static_cast<Index>(k)) != 0.0)
+          t.emplace_back(static_cast<int>(dim_ * static_cast<Index>(q) + i), static_cast<int>(local_[q].dofs[k]),
+                         local_[q].B(i, static_cast<Index>(k)));
+  SparseMatrix B(dim_ * static_cast<Index>(local_.size()), num_dofs);
+  B.setFromTriplets(t.begin(), t.end());
+  return B;
+}
+
 std::vector<Eigen::Vector3d> FrictionTerm::slips(const VectorXd& u) const {
   std::vector<Eigen::Vector3d> out;
   out.reserve(local_.size());

@@ -60,6 +60,9 @@ class FrictionTerm : public EnergyTerm {
   const std::vector<ContactPoint>& points() const { return points_; }
   /// The regularisation length α_q of every point.
   const std::vector<double>& alphas() const { return alpha_; }
+  /// The relative-displacement maps B of every point, before the projector: (dim · points) × num_dofs, rows
+  /// dim·q … dim·q + dim − 1 the map of point q, so that s_q = P_q (B_q u − B_q u⁰) (the file comment).
+  SparseMatrix slip_map(Index num_dofs) const;
   /// The bound w_q τ_q of every point's friction force.
   std::vector<double> bounds() const;
   /// New thresholds τ_q ≥ 0, one per point (α_q > 0 wherever τ_q > 0): the same points, slips and weights.

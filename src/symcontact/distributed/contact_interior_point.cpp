@@ -20,34 +20,35 @@ struct Direction {
   VectorXd ds, dl;
 };
 
-// Regularised Tresca friction at the constrained nodes, from U (dim × m: the nodes' displacements); with
-// s = P (u − u⁰) (P = I − n nᵀ, u⁰ the slip origin) and r = √(|s|² + α²) ≥ α: j_j = g r, ∇j_j = g s / r,
-// ∇²j_j = g (P − s sᵀ / r²) / r (P s = s). Nothing divides by the slip itself.
+// Regularised Tresca friction at the rows' friction points, from V (dim × m: the points' relative
+// displacements B_j u); with s = P (v − v⁰) (P = I − n nᵀ, v⁰ the slip origin) and r = √(|s|² + α²) ≥ α:
+// j_j = g r, ∂j_j/∂v = g s / r, ∂²j_j/∂v² = g (P − s sᵀ / r²) / r (P s = s); ∇j = Σ_j B_jᵀ ∂j_j/∂v and
+// ∇²j = Σ_j B_jᵀ ∂²j_j/∂v² B_j. Nothing divides by the slip itself.
 
-VectorXd slip(const NodalConstraints& c, const Eigen::MatrixXd& U, Index j) {
-  const VectorXd d = c.slip_origin.size() > 0 ? VectorXd(U.col(j) - c.slip_origin.col(j)) : VectorXd(U.col(j));
+VectorXd slip(const NodalConstraints& c, const Eigen::MatrixXd& V, Index j) {
+  const VectorXd d = c.slip_origin.size() > 0 ? VectorXd(V.col(j) - c.slip_origin.col(j)) : VectorXd(V.col(j));
   return d - c.normal.col(j) * c.normal.col(j).dot(d);
 }
 
-double friction_energy(const NodalConstraints& c, const Eigen::MatrixXd& U) {
+double friction_energy(const NodalConstraints& c, const Eigen::MatrixXd& V) {
   double e = 0.0;
   for (Index j = 0; j < c.size(); ++j)
-    e += c.friction_bound[j] * std::sqrt(slip(c, U, j).squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]);
+    e += c.friction_bound[j] * std::sqrt(slip(c, V, j).squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]);
   return e;
 }
 
-Eigen::MatrixXd friction_gradient(const NodalConstraints& c, const Eigen::MatrixXd& U) {
-  Eigen::MatrixXd G(U.rows(), U.cols());
+Eigen::MatrixXd friction_gradient(const NodalConstraints& c, const Eigen::MatrixXd& V) {
+  Eigen::MatrixXd G(V.rows(), V.cols());
   for (Index j = 0; j < c.size(); ++j) {
-    const VectorXd s = slip(c, U, j);
+    const VectorXd s = slip(c, V, j);
     G.col(j) = c.friction_bound[j] / std::sqrt(s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j]) * s;
   }
   return G;
 }
 
-Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixXd& U, Index j) {
-  const Index dim = U.rows();
-  const VectorXd n = c.normal.col(j), s = slip(c, U, j);
+Eigen::MatrixXd friction_hessian(const NodalConstraints& c, const Eigen::MatrixXd& V, Index j) {
+  const Index dim = V.rows();
+  const VectorXd n = c.normal.col(j), s = slip(c, V, j);
   const double r2 = s.squaredNorm() + c.friction_alpha[j] * c.friction_alpha[j], r = std::sqrt(r2);
   const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(dim, dim) - n * n.transpose();
   return c.friction_bound[j] / r * (P - s * s.transpose() / r2);
@@ -96,17 +97,17 @@ class InteriorPoint {
   void set_scales(const VectorXd& fixed_values, double max_diagonal);
   void create_solver();
   VectorXd gather(Vec v);
-  Eigen::MatrixXd nodal(const VectorXd& g) const;
-  void add_nodal(const Eigen::MatrixXd& W, Vec out);
+  Eigen::MatrixXd slip_values(const VectorXd& g) const;
   void add_gathered(const VectorXd& w, Vec out);
   void add_transpose(const VectorXd& w, Vec out);
-  VectorXd residuals(const VectorXd& g, const Eigen::MatrixXd& U);
-  double merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& U,
-               const Eigen::MatrixXd& dU, const VectorXd& rp);
-  double line_search(double alpha, const Direction& d, double target, const VectorXd& rp, const Eigen::MatrixXd& U);
+  VectorXd residuals(const VectorXd& g, const Eigen::MatrixXd& V);
+  double merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& V,
+               const Eigen::MatrixXd& dV, const VectorXd& rp);
+  double line_search(double alpha, const Direction& d, double target, const VectorXd& rp, const Eigen::MatrixXd& V);
   SparseMatrix newton_pattern(const SparseMatrix& K_share) const;
   void zero_fixed_rows(Vec v);
-  void update_newton_matrix(const Eigen::MatrixXd& U, const VectorXd& sigma);
+  SparseMatrix slip_map(Index n) const;
+  void update_newton_matrix(const Eigen::MatrixXd& V, const VectorXd& sigma);
   bool solve_newton(double eta, double atol);
   bool solve_direction(const VectorXd& rc, const VectorXd& rp, double eta, Direction& d);
   void save(Iterate& to);
@@ -118,7 +119,7 @@ class InteriorPoint {
   double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
-  bool step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& U, Direction& d);
+  bool step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& V, Direction& d);
 
   ContactInteriorPointOptions options_;
   NodalConstraints c_;
@@ -129,11 +130,11 @@ class InteriorPoint {
   Owned<Mat, MatDestroy> K_, N_;
   Owned<Vec, VecDestroy> u_, b_, rd_, rhs_, du_, Kdu_, gathered_;
   Owned<VecScatter, VecScatterDestroy> to_constrained_;
-  /// The DOFs the constraints read (A's columns and the constrained nodes' DOFs), sorted: A_ is A on them,
-  /// node_position_[dim·j + k] the position of node p_j's DOF k among them.
+  /// The DOFs the constraints read (A's free columns, the constrained nodes' DOFs and, with friction, the slip
+  /// map's free columns), sorted: A_ is A on them, S_ the slip map (NodalConstraints::slip_map, its fixed
+  /// columns moved into the slip origin) on them.
   std::vector<PetscInt> gathered_dofs_;
-  Eigen::SparseMatrix<double, Eigen::RowMajor, int> A_;
-  std::vector<Index> node_position_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> A_, S_;
   std::unique_ptr<SubspaceCorrection> correction_;
   Owned<KSP, KSPDestroy> ksp_;
   VectorXd s_, lambda_;
@@ -156,16 +157,12 @@ InteriorPoint::InteriorPoint(const SparseMatrix& K_share, const VectorXd& f, con
       (c.frictional() && (c.friction_bound.size() != m_ || c.friction_alpha.size() != m_ ||
                           c.friction_bound.minCoeff() < 0.0 || c.friction_alpha.minCoeff() <= 0.0)) ||
       (c.slip_origin.size() > 0 && (c.slip_origin.rows() != dim_ || c.slip_origin.cols() != m_)) ||
+      (c.slip_map.size() > 0 && (c.slip_map.rows() != dim_ * m_ || c.slip_map.cols() != n)) ||
       (start && start->size() != n))
     throw std::invalid_argument("solve_contact_interior_point: K, f, the fixed values, the coordinates and the "
                                 "constraints do not match (or there is no constraint)");
   std::vector<char> is_fixed(static_cast<std::size_t>(n), 0);
   for (const Index i : fixed) is_fixed[static_cast<std::size_t>(i)] = 1;
-  for (Index j = 0; j < m_ && c.frictional(); ++j)
-    for (int k = 0; k < dim_; ++k)
-      if (is_fixed[static_cast<std::size_t>(dim_ * c.node[j] + k)] && c.normal(k, j) != 0.0)
-        throw std::invalid_argument("solve_contact_interior_point: the normal of contact node " +
-                                    std::to_string(c.node[j]) + " moves its fixed DOF " + std::to_string(k));
   for (const Index i : fixed)
     if (mine_.owns(i)) fixed_owned_.push_back(static_cast<PetscInt>(i));
   coordinate_scale_ = x.size() ? x.cwiseAbs().maxCoeff() : 0.0;
@@ -235,37 +232,68 @@ void InteriorPoint::build_rows(const std::vector<Index>& fixed, const VectorXd& 
     is_fixed[static_cast<std::size_t>(fixed[k])] = 1;
   }
   c_.lower -= rows * ubar;
-  rows.prune([&](Index, Index col, double) { return !is_fixed[static_cast<std::size_t>(col)]; });
-  for (int col = 0; col < rows.outerSize(); ++col)
-    if (rows.col(col).nonZeros() > 0) gathered_dofs_.push_back(col);
+  auto free_columns = [&](Index, Index col, double) { return !is_fixed[static_cast<std::size_t>(col)]; };
+  rows.prune(free_columns);
+  SparseMatrix slips;
+  if (c_.frictional()) {
+    slips = slip_map(n);
+    const VectorXd fixed_part = slips * ubar;
+    if (c_.slip_origin.size() == 0) c_.slip_origin = Eigen::MatrixXd::Zero(dim_, m_);
+    c_.slip_origin -= Eigen::Map<const Eigen::MatrixXd>(fixed_part.data(), dim_, m_);
+    slips.prune(free_columns);
+  }
+  for (const SparseMatrix* M : {&rows, &slips})
+    for (int col = 0; col < M->outerSize(); ++col)
+      if (M->col(col).nonZeros() > 0) gathered_dofs_.push_back(col);
   for (const Index p : c_.node)
     for (int k = 0; k < dim_; ++k) gathered_dofs_.push_back(static_cast<PetscInt>(dim_ * p + k));
   std::sort(gathered_dofs_.begin(), gathered_dofs_.end());
   gathered_dofs_.erase(std::unique(gathered_dofs_.begin(), gathered_dofs_.end()), gathered_dofs_.end());
-  auto position = [&](Index dof) {
-    return static_cast<Index>(std::lower_bound(gathered_dofs_.begin(), gathered_dofs_.end(), dof) - gathered_dofs_.begin());
+  auto on_gathered = [&](const SparseMatrix& M) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int col = 0; col < M.outerSize(); ++col) {
+      const auto at = std::lower_bound(gathered_dofs_.begin(), gathered_dofs_.end(), static_cast<PetscInt>(col));
+      for (SparseMatrix::InnerIterator it(M, col); it; ++it)
+        t.emplace_back(static_cast<int>(it.row()), static_cast<int>(at - gathered_dofs_.begin()), it.value());
+    }
+    Eigen::SparseMatrix<double, Eigen::RowMajor, int> out(M.rows(), static_cast<Index>(gathered_dofs_.size()));
+    out.setFromTriplets(t.begin(), t.end());
+    return out;
   };
-  std::vector<Eigen::Triplet<double>> t;
-  for (int col = 0; col < rows.outerSize(); ++col)
-    for (SparseMatrix::InnerIterator it(rows, col); it; ++it)
-      t.emplace_back(static_cast<int>(it.row()), static_cast<int>(position(col)), it.value());
-  A_.resize(m_, static_cast<Index>(gathered_dofs_.size()));
-  A_.setFromTriplets(t.begin(), t.end());
-  for (const Index p : c_.node)
-    for (int k = 0; k < dim_; ++k) node_position_.push_back(position(dim_ * p + k));
+  A_ = on_gathered(rows);
+  S_ = on_gathered(slips);
 }
 
-/// K's share with explicit zeros where Aᵀ Σ A adds entries outside K's pattern (this rank's rows), so that
-/// N = K + ∇²j + Aᵀ Σ A keeps K's pattern.
-SparseMatrix InteriorPoint::newton_pattern(const SparseMatrix& K_share) const {
+/// B of the friction term (NodalConstraints::slip_map, or the nodes' own DOFs where it is empty), n DOFs.
+SparseMatrix InteriorPoint::slip_map(Index n) const {
+  if (c_.slip_map.size() > 0) return c_.slip_map;
   std::vector<Eigen::Triplet<double>> t;
   for (Index j = 0; j < m_; ++j)
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator a(A_, j); a; ++a)
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator b(A_, j); b; ++b) {
-        const PetscInt r = gathered_dofs_[static_cast<std::size_t>(a.col())];
-        const PetscInt c = gathered_dofs_[static_cast<std::size_t>(b.col())];
-        if (r >= c && mine_.owns(r)) t.emplace_back(static_cast<int>(r), static_cast<int>(c), 0.0);
-      }
+    for (int k = 0; k < dim_; ++k)
+      t.emplace_back(static_cast<int>(dim_ * j + k), static_cast<int>(dim_ * c_.node[j] + k), 1.0);
+  SparseMatrix B(dim_ * m_, n);
+  B.setFromTriplets(t.begin(), t.end());
+  return B;
+}
+
+/// K's share with explicit zeros where Aᵀ Σ A and ∇²j = Sᵀ H S (H block diagonal, dim × dim blocks) add
+/// entries outside K's pattern (this rank's rows), so that N = K + ∇²j + Aᵀ Σ A keeps K's pattern.
+SparseMatrix InteriorPoint::newton_pattern(const SparseMatrix& K_share) const {
+  std::vector<Eigen::Triplet<double>> t;
+  std::vector<int> columns;
+  auto add = [&](const Eigen::SparseMatrix<double, Eigen::RowMajor, int>& M, Index block) {
+    for (Index first = 0; first < M.rows(); first += block) {
+      columns.clear();
+      for (Index row = first; row < first + block; ++row)
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator it(M, row); it; ++it)
+          columns.push_back(gathered_dofs_[static_cast<std::size_t>(it.col())]);
+      for (const int r : columns)
+        for (const int c : columns)
+          if (r >= c && mine_.owns(r)) t.emplace_back(r, c, 0.0);
+    }
+  };
+  add(A_, 1);
+  add(S_, dim_);
   SparseMatrix Z(K_share.rows(), K_share.cols());
   Z.setFromTriplets(t.begin(), t.end());
   return K_share + Z;
@@ -313,22 +341,10 @@ VectorXd InteriorPoint::gather(Vec v) {
   return out;
 }
 
-/// The constrained nodes' components of the gathered values g, dim × m (column j: node p_j).
-Eigen::MatrixXd InteriorPoint::nodal(const VectorXd& g) const {
-  Eigen::MatrixXd U(dim_, m_);
-  for (Index j = 0; j < m_; ++j)
-    for (int k = 0; k < dim_; ++k) U(k, j) = g[node_position_[static_cast<std::size_t>(dim_ * j + k)]];
-  return U;
-}
-
-/// out += column j of W on node p_j's DOFs (each rank its own nodes).
-void InteriorPoint::add_nodal(const Eigen::MatrixXd& W, Vec out) {
-  PetscScalar* a = nullptr;
-  check(VecGetArray(out, &a), "VecGetArray");
-  for (Index j = 0; j < m_; ++j)
-    if (mine_.owns_node(c_.node[j]))
-      for (int k = 0; k < dim_; ++k) a[dim_ * c_.node[j] + k - mine_.row0()] += W(k, j);
-  check(VecRestoreArray(out, &a), "VecRestoreArray");
+/// S g for the gathered values g, dim × m (column j: row j's friction point); empty without friction.
+Eigen::MatrixXd InteriorPoint::slip_values(const VectorXd& g) const {
+  const VectorXd v = S_ * g;
+  return Eigen::Map<const Eigen::MatrixXd>(v.data(), dim_, v.size() / dim_);
 }
 
 /// out += w on the gathered DOFs (each rank its own).
@@ -350,11 +366,23 @@ void InteriorPoint::zero_fixed_rows(Vec v) {
   check(VecRestoreArray(v, &a), "VecRestoreArray");
 }
 
-/// N = K + ∇²j(u) + Aᵀ Σ A (j's block on node p_j's diagonal block); U the nodes' displacements, sigma Σ's
+/// N = K + ∇²j(u) + Aᵀ Σ A, ∇²j = Sᵀ H S with H the friction points' dim × dim blocks at V = S u; sigma Σ's
 /// diagonal (λ_j / s_j in the interior point).
-void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& U, const VectorXd& sigma) {
+void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& V, const VectorXd& sigma) {
   check(MatCopy(K_.object, N_.object, SAME_NONZERO_PATTERN), "MatCopy");
-  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> B = A_.transpose() * sigma.asDiagonal() * A_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor, int> B = A_.transpose() * sigma.asDiagonal() * A_;
+  if (c_.frictional()) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (Index j = 0; j < m_; ++j) {
+      const Eigen::MatrixXd block = friction_hessian(c_, V, j);
+      for (int a = 0; a < dim_; ++a)
+        for (int b = 0; b < dim_; ++b)
+          t.emplace_back(static_cast<int>(dim_ * j + a), static_cast<int>(dim_ * j + b), block(a, b));
+    }
+    Eigen::SparseMatrix<double, Eigen::RowMajor, int> H(dim_ * m_, dim_ * m_);
+    H.setFromTriplets(t.begin(), t.end());
+    B += Eigen::SparseMatrix<double, Eigen::RowMajor, int>(S_.transpose() * H * S_);
+  }
   std::vector<PetscInt> columns;
   std::vector<PetscScalar> values;
   for (Index r = 0; r < B.outerSize(); ++r) {
@@ -369,13 +397,6 @@ void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& U, const VectorX
     check(MatSetValues(N_.object, 1, &row, static_cast<PetscInt>(columns.size()), columns.data(), values.data(),
                        ADD_VALUES),
           "MatSetValues");
-  }
-  std::vector<PetscInt> rows(static_cast<std::size_t>(dim_));
-  for (Index j = 0; j < m_ && c_.frictional(); ++j) {
-    if (!mine_.owns_node(c_.node[j])) continue;
-    for (int k = 0; k < dim_; ++k) rows[static_cast<std::size_t>(k)] = static_cast<PetscInt>(dim_ * c_.node[j] + k);
-    const Eigen::MatrixXd block = friction_hessian(c_, U, j);  // symmetric: either storage order
-    check(MatSetValues(N_.object, dim_, rows.data(), dim_, rows.data(), block.data(), ADD_VALUES), "MatSetValues");
   }
   check(MatAssemblyBegin(N_.object, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(N_.object, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
@@ -464,7 +485,7 @@ void InteriorPoint::restore(const Iterate& from) {
   result_.complementarity = from.complementarity;
   result_.reason = from.reason;
   const VectorXd g = gather(u_.object);
-  residuals(g, nodal(g));  // r_d of the restored iterate, which the next step's right-hand side reads
+  residuals(g, slip_values(g));  // r_d of the restored iterate, which the next step's right-hand side reads
 }
 
 /// Without friction: the polish to `accuracy`, kept where its point passes the stopping test (the residuals
@@ -597,52 +618,54 @@ bool InteriorPoint::converged(double rd, double rp) {
   return result_.dual_residual <= tol && result_.primal_residual <= tol && result_.complementarity <= tol;
 }
 
-/// r_d = K u − f + ∇j(u) − Aᵀ λ into rd_; returns r_p = c(u) − s. g: u's gathered values, U: the nodes'.
-VectorXd InteriorPoint::residuals(const VectorXd& g, const Eigen::MatrixXd& U) {
+/// r_d = K u − f + ∇j(u) − Aᵀ λ into rd_; returns r_p = c(u) − s. g: u's gathered values, V = S g.
+VectorXd InteriorPoint::residuals(const VectorXd& g, const Eigen::MatrixXd& V) {
   check(MatMult(K_.object, u_.object, rd_.object), "MatMult");
   check(VecAXPY(rd_.object, -1.0, b_.object), "VecAXPY");
   add_transpose(-lambda_, rd_.object);
-  if (c_.frictional()) add_nodal(friction_gradient(c_, U), rd_.object);
+  if (c_.frictional()) {
+    const Eigen::MatrixXd G = friction_gradient(c_, V);
+    add_gathered(S_.transpose() * Eigen::Map<const VectorXd>(G.data(), G.size()), rd_.object);
+  }
   return A_ * g - c_.lower - s_;
 }
 
 /// The terms of the merit function (the header's φ) beyond the elastic energy, at the step α: j(u + α Δu),
-/// the barrier of s + α Δs and ν ‖c − s‖₁ = ν (1 − α) ‖r_p‖₁ (c is linear). U, dU: the nodes' u and Δu.
-double InteriorPoint::merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& U,
-                            const Eigen::MatrixXd& dU, const VectorXd& rp) {
-  return friction_energy(c_, U + alpha * dU) - target * (s_ + alpha * d.ds).array().log().sum() +
+/// the barrier of s + α Δs and ν ‖c − s‖₁ = ν (1 − α) ‖r_p‖₁ (c is linear). V, dV: S u and S Δu.
+double InteriorPoint::merit(double alpha, const Direction& d, double target, double nu, const Eigen::MatrixXd& V,
+                            const Eigen::MatrixXd& dV, const VectorXd& rp) {
+  return friction_energy(c_, V + alpha * dV) - target * (s_ + alpha * d.ds).array().log().sum() +
          nu * (1.0 - alpha) * rp.lpNorm<1>();
 }
 
 /// The step from `alpha` halved until the merit function decreases enough (Armijo); alpha itself without
-/// friction, or when the direction is not one of descent for the merit function. U: the nodes' u.
+/// friction, or when the direction is not one of descent for the merit function. V = S u.
 double InteriorPoint::line_search(double alpha, const Direction& d, double target, const VectorXd& rp,
-                                  const Eigen::MatrixXd& U) {
+                                  const Eigen::MatrixXd& V) {
   if (!c_.frictional()) return alpha;
-  const Eigen::MatrixXd dU = nodal(gather(du_.object));
-  const Eigen::MatrixXd grad_j = friction_gradient(c_, U);
+  const Eigen::MatrixXd dV = slip_values(gather(du_.object));
+  const Eigen::MatrixXd grad_j = friction_gradient(c_, V);
   PetscScalar du_rd = 0.0, du_Kdu = 0.0;
   check(VecDot(du_.object, rd_.object, &du_rd), "VecDot");  // Δuᵀ(K u − f) = Δuᵀ r_d + (AΔu)ᵀλ − Δuᵀ∇j
   check(MatMult(K_.object, du_.object, Kdu_.object), "MatMult");
   check(VecDot(du_.object, Kdu_.object, &du_Kdu), "VecDot");
-  const double dj = grad_j.cwiseProduct(dU).sum();
+  const double dj = grad_j.cwiseProduct(dV).sum();
   const double g = du_rd + (d.ds - rp).dot(lambda_) - dj;
   const double nu = 2.0 * std::max(lambda_.lpNorm<Eigen::Infinity>(), (lambda_ + alpha * d.dl).lpNorm<Eigen::Infinity>());
   const double slope = g + dj - target * d.ds.cwiseQuotient(s_).sum() - nu * rp.lpNorm<1>();
   if (slope >= 0.0) return alpha;
-  const double phi0 = merit(0.0, d, target, nu, U, dU, rp);
+  const double phi0 = merit(0.0, d, target, nu, V, dV, rp);
   for (int k = 0; k < 40; ++k, alpha *= 0.5)
-    if (alpha * g + 0.5 * alpha * alpha * du_Kdu + merit(alpha, d, target, nu, U, dU, rp) <=
+    if (alpha * g + 0.5 * alpha * alpha * du_Kdu + merit(alpha, d, target, nu, V, dV, rp) <=
         phi0 + 1e-4 * alpha * slope)
       break;
   return alpha;
 }
 
-/// One interior-point step from the current iterate (rp, rd: its primal residual and ‖r_d‖∞; U: the nodes'
-/// u): Newton matrix, predictor, Mehrotra's corrector, step length; false when a Krylov solve broke down.
-bool InteriorPoint::step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& U, Direction& d) {
+/// One interior-point step from the current iterate (rp, rd: its primal residual and ‖r_d‖∞; V = S u): Newton matrix, predictor, Mehrotra's corrector, step length; false when a Krylov solve broke down.
+bool InteriorPoint::step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& V, Direction& d) {
   const auto t_setup = std::chrono::steady_clock::now();
-  update_newton_matrix(U, lambda_.cwiseQuotient(s_));
+  update_newton_matrix(V, lambda_.cwiseQuotient(s_));
   result_.setup_seconds += petsc::seconds_since(t_setup);
   const double mu = s_.dot(lambda_) / static_cast<double>(m_);
   const double eta = std::min(0.01, mu / mu0);
@@ -658,7 +681,7 @@ bool InteriorPoint::step(const VectorXd& rp, double rd, double mu0, const Eigen:
     target = std::max(target, 0.1 * std::min(mu, L_ * F_ * std::max(rd / F_, rp.lpNorm<Eigen::Infinity>() / L_)));
   const VectorXd rc = s_.cwiseProduct(lambda_) + d.ds.cwiseProduct(d.dl) - VectorXd::Constant(m_, target);
   if (!solve_direction(rc, rp, eta, d)) return false;
-  const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, U);
+  const double alpha = line_search(std::min(1.0, 0.995 * largest_step(d)), d, target, rp, V);
   check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
   s_ += alpha * d.ds;
   lambda_ += alpha * d.dl;
@@ -674,8 +697,8 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
   Direction d;
   for (result_.iterations = 0;; ++result_.iterations) {
     const VectorXd g = gather(u_.object);
-    const Eigen::MatrixXd U = nodal(g);
-    VectorXd rp = residuals(g, U);
+    const Eigen::MatrixXd V = slip_values(g);
+    VectorXd rp = residuals(g, V);
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
@@ -689,7 +712,7 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
         std::max({result_.dual_residual, result_.primal_residual, result_.complementarity}) <= options_.follow_below) {
       if (std::optional<VectorXd> bound = (*follow)(petsc::gather_to_all(u_.object), lambda_)) {
         c_.friction_bound = std::move(*bound);
-        rp = residuals(g, U);
+        rp = residuals(g, V);
         check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
         result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
       }
@@ -714,7 +737,7 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
       result_.converged = rescued();
       break;
     }
-    if (!step(rp, rd, mu0, U, d)) {
+    if (!step(rp, rd, mu0, V, d)) {
       result_.converged = rescued();
       break;
     }

@@ -67,18 +67,21 @@ namespace symcontact {
 /// c_j(u) = (rows u)_j − lower_j ≥ 0, row j still node_j's (its force λ_j, its friction), such as the weak
 /// gap rows of contact/gap_constraints.hpp, each divided by its support Σ w φ_j so that c_j is a length and
 /// λ_j a force. The entries of `rows` on fixed DOFs move into the constant (c is affine in the free DOFs).
-/// With friction, no normal has a component along a fixed DOF of its node (a symmetry plane's node slides in it).
 struct NodalConstraints {
   std::vector<Index> node;
   Eigen::MatrixXd normal;  ///< dim × m, unit columns
   VectorXd lower;          ///< m
   SparseMatrix rows;       ///< m × num_dofs, or empty: the rows n_jᵀ at node_j
   /// Regularised Tresca friction at the same nodes, optional (empty: frictionless; else m values each):
-  /// the energy j(u) = Σ_j g_j η_α_j(P_j (u_{p_j} − u⁰_j)), η_α(v) = √(|v|² + α²), P_j = I − n_j n_jᵀ (METHOD.md,
+  /// the energy j(u) = Σ_j g_j η_α_j(P_j (B_j u − v⁰_j)), η_α(v) = √(|v|² + α²), P_j = I − n_j n_jᵀ (METHOD.md,
   /// "Friction"; talk eq. 16–18 with one point per node), g_j ≥ 0 the node's friction force bound (its
-  /// lumped area times the threshold τ), α_j > 0 its regularisation length. The slip is measured from the
-  /// node's u in slip_origin (dim × m: u at the start of the load step), from u = 0 where it is empty.
+  /// lumped area times the threshold τ), α_j > 0 its regularisation length. B_j (dim × num_dofs) maps u to
+  /// the relative displacement of row j's friction point: rows dim·j … dim·j + dim − 1 of slip_map, or, where
+  /// slip_map is empty, node p_j's displacement (an obstacle that does not move). The slip is measured from
+  /// v⁰_j = B_j u⁰ in slip_origin (dim × m: u⁰ the displacement at the start of the load step), from u = 0
+  /// where it is empty. Entries of B on fixed DOFs move into v⁰ (j is a function of the free DOFs).
   VectorXd friction_bound, friction_alpha;
+  SparseMatrix slip_map;
   Eigen::MatrixXd slip_origin;
   Index size() const { return static_cast<Index>(node.size()); }
   bool frictional() const { return friction_bound.size() > 0; }

@@ -117,31 +117,30 @@ NodalConstraints scaled_rows(const ContactLinearization& lin, const DofMap& dofs
   return c;
 }
 
-/// The serial friction terms (solvers/friction_state.hpp: one point per slave node of a pair's friction family,
-/// P1 against obstacles: each point's slip is its node's) as the interior point's friction on the rows of c:
-/// the row of node k of family f takes the point of node k of the pair whose friction family is f, with its
-/// bound g = w τ, its α, its normal n̄ (P = I − n̄ n̄ᵀ, as the term's) and the slip origin u_start at the node,
-/// so that the interior point's j(u) is the sum of the terms'. Throws SolveError for a point with τ > 0 and no
-/// row (the interior point carries friction on its rows only), and for a normal n̄ with a component along a
-/// fixed DOF of its node (the interior point's tangential projector must keep to the free DOFs).
+/// The serial friction terms (solvers/friction_state.hpp: one point per slave node of a pair's friction family)
+/// as the interior point's friction on the rows of c: the row of node k of family f takes the point of node k
+/// of the pair whose friction family is f, with its bound g = w τ, its α, its normal n̄ (P = I − n̄ n̄ᵀ, as the
+/// term's), its relative-displacement map B (FrictionTerm::slip_map: the slave node against the master surface
+/// at its projection, or against a rigid obstacle) and the slip origin B u_start, so that the interior point's
+/// j(u) is the sum of the terms'. Throws SolveError for a point with τ > 0 and no row (the interior point
+/// carries friction on its rows only).
 void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const ContactLinearization& lin,
-                  const ContactSet& contacts, const DofMap& dofs, const FixedDofs& fixed, const VectorXd& u_start,
-                  NodalConstraints& c) {
-  const Index m = c.size(), dim = dofs.dim();
-  std::vector<char> is_fixed(static_cast<std::size_t>(dofs.num_dofs()), 0);
-  for (const Index d : fixed.dofs) is_fixed[static_cast<std::size_t>(d)] = 1;
+                  const ContactSet& contacts, const DofMap& dofs, const VectorXd& u_start, NodalConstraints& c) {
+  const Index m = c.size(), dim = dofs.dim(), n = dofs.num_dofs();
   std::map<std::pair<int, Index>, Index> row_of;
   for (Index j = 0; j < m; ++j)
     row_of[{lin.row_family[static_cast<std::size_t>(j)], lin.row_node[static_cast<std::size_t>(j)]}] = j;
   c.friction_bound = VectorXd::Zero(m);
   c.friction_alpha = VectorXd::Ones(m);  // any α > 0 where g = 0: such a row adds nothing
-  c.slip_origin.resize(dim, m);
-  for (Index j = 0; j < m; ++j) c.slip_origin.col(j) = u_start.segment(dim * c.node[j], dim);
+  c.slip_origin = Eigen::MatrixXd::Zero(dim, m);
+  std::vector<Eigen::Triplet<double>> map;
   for (std::size_t p = 0; p < terms.size(); ++p) {
     if (!terms[p]) continue;
     const int family = contacts.friction_family(static_cast<int>(p));
     const std::vector<ContactPoint>& points = terms[p]->points();
     const std::vector<double> bound = terms[p]->bounds();
+    const Eigen::SparseMatrix<double, Eigen::RowMajor, int> B = terms[p]->slip_map(n);
+    const VectorXd origin = B * u_start;
     for (std::size_t q = 0; q < points.size(); ++q) {
       const auto it = row_of.find({family, points[q].slave_node});
       if (it == row_of.end()) {
@@ -155,14 +154,16 @@ void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const
       c.friction_bound[j] = bound[q];
       c.friction_alpha[j] = terms[p]->alphas()[q];
       c.normal.col(j) = points[q].normal.head(dim);
-      for (Index k = 0; k < dim; ++k)
-        if (is_fixed[static_cast<std::size_t>(dim * c.node[j] + k)] && c.normal(k, j) != 0.0)
-          throw SolveError("pair " + contacts.pairs[p].name + ": the normal at surface node " +
-                           std::to_string(points[q].slave_node) + " has a component along a DOF that a Dirichlet "
-                           "condition fixes; the distributed path carries friction only where the normals keep "
-                           "clear of the fixed DOFs (the direct solver does not need this)");
+      for (Index k = 0; k < dim; ++k) {
+        const Index point_row = dim * static_cast<Index>(q) + k;
+        c.slip_origin(k, j) = origin[point_row];
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator e(B, point_row); e; ++e)
+          map.emplace_back(static_cast<int>(dim * j + k), static_cast<int>(e.col()), e.value());
+      }
     }
   }
+  c.slip_map.resize(dim * m, n);
+  c.slip_map.setFromTriplets(map.begin(), map.end());
 }
 
 /// The bounds of the thresholds followed at the iterate (u, λ), for FollowBounds: the bodies' force on the
@@ -189,7 +190,7 @@ std::optional<VectorXd> followed_bounds(const FrictionState& friction, std::vect
   NodalConstraints nodes;  // the rows' nodes and normals only: add_friction() reads no more
   nodes.node = rows.node;
   nodes.normal = rows.normal;
-  add_friction(terms, lin, contacts, model.dofs(), fixed, friction.u_start, nodes);
+  add_friction(terms, lin, contacts, model.dofs(), friction.u_start, nodes);
   return nodes.friction_bound;
 }
 
@@ -215,7 +216,7 @@ class DistributedStep {
     terms.assign(model.contacts().pairs.size(), nullptr);
     if (friction) {
       terms = friction_terms(*friction, model.contacts(), model.dofs(), u);
-      add_friction(terms, lin, model.contacts(), model.dofs(), fixed, friction->u_start, rows);
+      add_friction(terms, lin, model.contacts(), model.dofs(), friction->u_start, rows);
     }
     FollowBounds follow;
     if (friction && friction->follower) {

@@ -1,8 +1,8 @@
 #pragma once
 /// \file distributed_step.hpp
 /// The contact solver of `symcontact run` on the distributed path (`mpirun -np N symcontact run CASE.toml`):
-/// a load step of a model with linear-elastic bodies in contact with rigid obstacles, frictionless or with
-/// friction, or without friction with each other (one-pass pairs) or with themselves, solved by the interior
+/// a load step of a model with linear-elastic bodies in contact with rigid obstacles, with each other
+/// (one-pass pairs) or with themselves, frictionless or with friction, solved by the interior
 /// point of contact_interior_point.hpp on the same constraints and friction terms as the serial solver, so
 /// that both give the same answer to their tolerances.
 ///
@@ -17,13 +17,14 @@
 /// does (solvers/contact_forces.hpp).
 ///
 /// Friction: j is the sum of the serial friction terms of the step's thresholds (solvers/friction_state.hpp:
-/// one point per slave node on order-1 surfaces), handed to the interior point as its nodal friction at the
-/// rows of the same nodes; Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with
+/// one point per slave node on order-1 surfaces, its slip the node's against the opposite surface at its
+/// projection or against the obstacle), handed to the interior point as its friction at the rows of the same
+/// nodes, each with the term's relative-displacement map (NodalConstraints::slip_map); Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with
 /// CoulombThresholds) around the geometry fixed point, each solve starting from the current displacement,
 /// the thresholds following the interior point's iterates where coulomb_update says so (FollowBounds).
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
-/// strain, symmetric pairs of two surfaces, friction between elastic bodies, friction on order-2 elements.
+/// strain, symmetric pairs of two surfaces, friction on order-2 elements.
 /// The meshes are whole on every rank; each rank assembles the stiffness rows it owns.
 #include "symcontact/app/run.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"

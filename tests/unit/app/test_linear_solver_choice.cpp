@@ -67,7 +67,7 @@ TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathD
   EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
 }
 
-TEST(LinearSolverChoice, TheDistributedPathSolvesFrictionlessOnePassPairsAndSelfContact) {
+TEST(LinearSolverChoice, TheDistributedPathSolvesOnePassPairsAndSelfContactWithAndWithoutFriction) {
   const testing::TempFolder folder;
   const auto c = block(folder, "", "");
   ContactSpec& pair = c->spec.contacts[0];  // the rule reads the specification only: made a pair here
@@ -81,8 +81,13 @@ TEST(LinearSolverChoice, TheDistributedPathSolvesFrictionlessOnePassPairsAndSelf
   pair.body_b = pair.body_a;  // a surface in contact with itself: one family
   pair.boundary_b = pair.boundary_a;
   EXPECT_TRUE(distributed_path_limit(c->spec).none());
-  pair.friction = "coulomb";  // friction terms slide against a fixed frame, not the opposite body
-  EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
+  pair.friction = "coulomb";  // each slave node slides against the opposite side at its projection
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
+  pair.body_b = "other";
+  pair.boundary_b = "bottom";
+  EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].mode");
+  pair.mode = "one-pass";
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
   // Solved, but not measured for the cost part of the rule: the serial solver unless it does not fit.
   pair.friction = "none";
   const LinearSolverDecision d = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e-3});

@@ -213,6 +213,39 @@ TEST_P(FrictionTermCase, DerivativesAtSlipsOfOrderAlpha) {
   }
 }
 
+// slip_map: the maps B_q give the term's slips, s_q = P_q B_q (u − u⁰), and its gradient,
+// Σ_q B_qᵀ w τ s_q / r_q (r_q = √(|s_q|² + α²)): what the distributed interior point builds its friction from.
+TEST_P(FrictionTermCase, SlipMapGivesTheSlipsAndTheGradient) {
+  const Interface s = interface();
+  const Index n = s.dofs.num_dofs();
+  const std::vector<double> tau = random_tau(s.points.size(), 14);
+  const VectorXd u0 = random_vector(n, 0.01, 15);
+  const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 16);
+  const FrictionTerm term = make_term(s, tau, u0);
+  const SparseMatrix B = term.slip_map(n);
+  ASSERT_EQ(B.rows(), 2 * static_cast<Index>(s.points.size()));
+  const VectorXd v = B * (u - u0);
+  const std::vector<Eigen::Vector3d> slips = term.slips(u);
+  const std::vector<double> bounds = term.bounds();
+  VectorXd gradient = VectorXd::Zero(n), expected = VectorXd::Zero(n);
+  term.add_gradient(u, gradient);
+  double scale = 0.0;
+  for (std::size_t q = 0; q < s.points.size(); ++q) {
+    const Eigen::Vector2d normal = s.points[q].normal.head<2>();
+    const Eigen::Vector2d vq = v.segment<2>(2 * static_cast<Index>(q));
+    const Eigen::Vector2d sq = vq - normal * normal.dot(vq);
+    // to round-off in the displacements (the term subtracts P B u⁰ after the product)
+    EXPECT_NEAR((sq - slips[q].head<2>()).norm(), 0.0, 1e-13 * u.lpNorm<Eigen::Infinity>()) << "point " << q;
+    const double r = std::sqrt(sq.squaredNorm() + kAlpha * kAlpha);
+    VectorXd per_point = VectorXd::Zero(2 * static_cast<Index>(s.points.size()));
+    per_point.segment<2>(2 * static_cast<Index>(q)) = bounds[q] / r * sq;
+    expected += B.transpose() * per_point;
+    scale = std::max(scale, bounds[q]);
+  }
+  EXPECT_LT((gradient - expected).lpNorm<Eigen::Infinity>(), 1e-13 * scale);
+  EXPECT_GT(gradient.lpNorm<Eigen::Infinity>(), 0.0);
+}
+
 TEST_P(FrictionTermCase, ValueAtTheStartIsSumOfWeightTauAlpha) {
   const Interface s = interface();
   const std::vector<double> tau = random_tau(s.points.size(), 6);
