@@ -39,7 +39,9 @@ REL = 1e-8
 # test (two blocks of quadrilaterals) with their pairs in one-pass mode, and the self-contact of a block with a
 # crack, frictionless; V5's inclined interface in one-pass mode with Coulomb friction (each slave node slides
 # against the other body), in 2D at the Coulomb tolerance of V4, in 3D at 1e-8 (at 1e-10 the Coulomb loop
-# reaches the inner solves' noise and asks them for 1e-14, where conjugate gradients break down).
+# reaches the inner solves' noise and asks them for 1e-14, where conjugate gradients break down). Friction on
+# order-2 elements (each point's slip mixes the nodes of its facet: FrictionTerm's modified basis on 6-node
+# triangles): V4's block and the 3D pad at order 2.
 THREE_STEPS = "[steps]\nload_factors = [0.3, 0.6, 1.0]\n"
 # V4's block with Tresca friction (τ = 0.002, below μ p = 0.003: it slides earlier) in place of Coulomb.
 TRESCA = ('friction = "coulomb"\nmu = 0.3\n', 'friction = "tresca"\ntau = 0.002\n')  # (replaced, by)
@@ -59,6 +61,10 @@ CASES = [
                                    ("coulomb_tolerance = 1e-6\n", "coulomb_tolerance = 1e-10\n")], None),
     ("inclined_3d/inclined.toml", [('mode = "symmetric"\n', 'mode = "one-pass"\n'),
                                    ("coulomb_tolerance = 1e-6\n", "coulomb_tolerance = 1e-8\n")], None),
+    ("friction_block/block.toml", ["coulomb_tolerance = 1e-10\n",
+                                   ('model = "plane_strain"\n', 'model = "plane_strain"\norder = 2\n')], None),
+    (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"),
+     [("mesh_size = 0.2\n", "mesh_size = 0.2\norder = 2\n")], None),
 ]
 # What neither path solves: a failed solve (exit 3) saying why, the same on both. V4 with the block's left side
 # held vertically: the bottom-left node's normal is along a fixed DOF, and the Coulomb fixed point stagnates.
@@ -201,26 +207,47 @@ SKIPPED_SUMMARY_KEYS = {"timings", "wall_time", "ipopt_status", "ipopt_iteration
                         "max_penetration_ratio"}
 
 
-def case_file(examples, work, name, extra):
-    """The example, or a copy of its folder in `work` with `extra` added to its [contact_solver] table (a table
-    of its own when it starts with "["; a pair (text, replacement): that text replaced; a list of pairs: each)."""
-    path = os.path.join(examples, name)
-    if not extra:
-        return path
-    folder = os.path.join(work, "case_" + os.path.dirname(name))
-    shutil.copytree(os.path.dirname(path), folder, dirs_exist_ok=True)
-    copy = os.path.join(folder, os.path.basename(name))
-    text = open(copy).read()
-    if isinstance(extra, (tuple, list)):
-        for old, new in [extra] if isinstance(extra, tuple) else extra:
-            assert old in text, f"{name} has no {old!r}"
-            text = text.replace(old, new)
+def label_of(extra):
+    """What a case's `extra` changes, for its output folders and the log."""
+    if extra == THREE_STEPS:
+        return " in three steps"
+    if extra == TRESCA:
+        return " with Tresca friction"
+    replaced = [item[1] for item in (extra if isinstance(extra, list) else [extra]) if isinstance(item, tuple)]
+    if any("one-pass" in new for new in replaced):
+        return " in one-pass mode"
+    if any("order = 2" in new for new in replaced):
+        return " at order 2"
+    return ""
+
+
+def with_extra(text, name, extra):
+    """`text` with `extra` added to its [contact_solver] table (a table of its own when it starts with "["; a pair
+    (text, replacement): that text replaced; a list: each of its items in turn)."""
+    if isinstance(extra, list):
+        for item in extra:
+            text = with_extra(text, name, item)
+    elif isinstance(extra, tuple):
+        assert extra[0] in text, f"{name} has no {extra[0]!r}"
+        text = text.replace(*extra)
     elif extra.startswith("["):  # a table of its own
         text += "\n" + extra
     elif "[contact_solver]" in text:
         text = text.replace("[contact_solver]\n", "[contact_solver]\n" + extra, 1)
     else:
         text += "\n[contact_solver]\n" + extra
+    return text
+
+
+def case_file(examples, work, name, extra):
+    """The example, or a copy of its folder in `work` with `extra` applied (with_extra)."""
+    path = os.path.join(examples, name)
+    if not extra:
+        return path
+    folder = os.path.join(work, "case_" + os.path.dirname(name))
+    shutil.copytree(os.path.dirname(path), folder, dirs_exist_ok=True)
+    copy = os.path.join(folder, os.path.basename(name))
+    text = with_extra(open(copy).read(), name, extra)
     with open(copy, "w") as f:
         f.write(text)
     return copy
@@ -344,11 +371,7 @@ def main():
     failed = False
     for k, (name, extra, mesh_size) in enumerate(CASES):
         path = case_file(examples, work, name, extra)
-        case_label = {THREE_STEPS: " in three steps", TRESCA: " with Tresca friction"}.get(
-            extra if not isinstance(extra, list) else None, "")
-        if any("one-pass" in new for _, new in ([extra] if isinstance(extra, tuple) else
-                                                  extra if isinstance(extra, list) else [])):
-            case_label = " in one-pass mode"
+        case_label = label_of(extra)
         tag = name.replace("/", "_").removesuffix(".toml") + case_label.replace(" ", "_")
         serial, mpi = os.path.join(work, tag + "_serial"), os.path.join(work, tag + "_mpi")
         size = ["--mesh-size", str(mesh_size)] if mesh_size else []

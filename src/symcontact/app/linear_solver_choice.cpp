@@ -16,9 +16,6 @@ DistributedLimit distributed_path_limit(const ProblemSpec& spec) {
       if (m.model != "linear_elastic")
         return {m.key + ".model", "the distributed path solves linear-elastic bodies only, got \"" + m.model + "\""};
   for (const ContactSpec& c : spec.contacts) {
-    if (c.friction != "none" && spec.order != 1)  // P2 surfaces' friction points mix nodes (friction_term.hpp)
-      return {c.key + ".friction", "the distributed path solves friction on order-1 elements only, got \"" +
-                                       c.friction + "\" with problem.order = " + std::to_string(spec.order)};
     if (c.obstacle) continue;
     // A symmetric pair's two constraint families are nearly dependent: on a curved pair (examples/rings_2d)
     // the rows of one family stay open by the meshes' mismatch while the other's close, and the Newton

@@ -17,14 +17,14 @@
 /// does (solvers/contact_forces.hpp).
 ///
 /// Friction: j is the sum of the serial friction terms of the step's thresholds (solvers/friction_state.hpp:
-/// one point per slave node on order-1 surfaces, its slip the node's against the opposite surface at its
-/// projection or against the obstacle), handed to the interior point as its friction at the rows of the same
-/// nodes, each with the term's relative-displacement map (NodalConstraints::slip_map); Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with
-/// CoulombThresholds) around the geometry fixed point, each solve starting from the current displacement,
+/// one point per slave node, its slip the node's against the opposite surface at its projection or against
+/// the obstacle, on 6-node triangles in the modified test basis), handed to the interior point as its friction
+/// at the rows of the same nodes, each with the term's relative-displacement map (NodalConstraints::slip_map);
+/// Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with CoulombThresholds) around the geometry fixed point, each solve starting from the current displacement,
 /// the thresholds following the interior point's iterates where coulomb_update says so (FollowBounds).
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
-/// strain, symmetric pairs of two surfaces, friction on order-2 elements.
+/// strain and symmetric pairs of two surfaces.
 /// The meshes are whole on every rank; each rank assembles the stiffness rows it owns.
 #include "symcontact/app/run.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"

@@ -56,15 +56,19 @@ TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheFactorDoesNotFit) 
 TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathDoesNotSolve) {
   const testing::TempFolder folder;
   EXPECT_TRUE(distributed_path_limit(block(folder, "", "")->spec).none());
-  // Coulomb friction on order-1 elements: solved; on order-2 ones (friction points that mix nodes): not.
+  // Coulomb friction on order-1 and order-2 elements (friction points that mix nodes: their slip maps): solved;
+  // a hyperelastic body: not.
   const auto c = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "");
   EXPECT_TRUE(distributed_path_limit(c->spec).none());
   EXPECT_TRUE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0}).iterative);
   c->spec.order = 2;
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
+  MaterialSpec& material = c->spec.bodies[0].materials[0];
+  material.model = "neo_hookean";
   const LinearSolverDecision d = choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0});
   EXPECT_FALSE(d.iterative);
-  EXPECT_NE(d.reason.find("contact[0].friction"), std::string::npos) << d.reason;
-  EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].friction");
+  EXPECT_NE(d.reason.find(material.key + ".model"), std::string::npos) << d.reason;
+  EXPECT_EQ(distributed_path_limit(c->spec).key, material.key + ".model");
 }
 
 TEST(LinearSolverChoice, TheDistributedPathSolvesOnePassPairsAndSelfContactWithAndWithoutFriction) {
@@ -122,7 +126,7 @@ TEST(LinearSolverChoice, AutomaticTakesTheIterativePathWhenTheDenseWorkCostsMore
   EXPECT_FALSE(d.iterative) << d.reason;
   EXPECT_NE(d.reason.find("contact[0]"), std::string::npos) << d.reason;
   // Not for what the distributed path does not solve.
-  c->spec.order = 2;
+  c->spec.bodies[0].materials[0].model = "neo_hookean";
   EXPECT_FALSE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e12, 1e9, 1e-3}).iterative);
 }
 
@@ -179,10 +183,10 @@ TEST(LinearSolverChoice, TheSerialOnlyProgramSaysWhatTheDirectSolverCannotDo) {
   const auto iterative = block(folder, "", "linear_solver = \"iterative\"\n");
   EXPECT_NE(serial_only_error(*iterative, MemoryBudget{1e12, 0.0}).find("asks for \"iterative\""), std::string::npos);
   // Not to fit where the distributed path does not solve the problem either: the serial solver, warned.
-  c->spec.order = 2;
-  const LinearSolverDecision order2 = serial_only_choice(c->spec, *c->model, MemoryBudget{1e3, 0.0, 20.0});
-  EXPECT_FALSE(order2.iterative);
-  EXPECT_EQ(order2.basis, DecisionBasis::kMemory);
+  c->spec.bodies[0].materials[0].model = "neo_hookean";
+  const LinearSolverDecision hyperelastic = serial_only_choice(c->spec, *c->model, MemoryBudget{1e3, 0.0, 20.0});
+  EXPECT_FALSE(hyperelastic.iterative);
+  EXPECT_EQ(hyperelastic.basis, DecisionBasis::kMemory);
 }
 
 }  // namespace
