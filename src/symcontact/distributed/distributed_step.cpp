@@ -13,6 +13,7 @@
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/progress_clock.hpp"
 #include "symcontact/distributed/gamg_elasticity.hpp"
+#include "symcontact/distributed/node_ordering.hpp"
 #include "symcontact/distributed/petsc_support.hpp"
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/solvers/contact_forces.hpp"
@@ -34,22 +35,25 @@ void check_distributed_support(const ProblemSpec& spec) {
 
 namespace {
 
-/// The stiffness and the load of a linear-elastic model at its current step: E(u) = ½ uᵀKu − fᵀu.
+/// The stiffness and the load of a linear-elastic model at its current step, E(u) = ½ uᵀKu − fᵀu, in the PETSc
+/// numbering of `ordering` (node_ordering.hpp).
 struct QuadraticModel {
-  SparseMatrix K_lower;  ///< the rows this rank owns (its share), lower triangle
+  SparseMatrix K_lower;  ///< the lower triangle of this rank's rows
   VectorXd f;
-  Eigen::MatrixXd x;     ///< dim × nodes, the DofMap's node order
+  Eigen::MatrixXd x;     ///< dim × nodes, reference coordinates
 };
 
-/// The lower-triangle entries of the rows a rank owns: each rank keeps 1/P of the stiffness's entries.
+/// The lower-triangle entries, in the PETSc numbering, of the rows a rank owns: each rank keeps 1/P of the
+/// stiffness's entries.
 class OwnedLowerSink : public MatrixSink {
  public:
-  explicit OwnedLowerSink(const petsc::RowRange& mine) : mine_(mine) {}
+  OwnedLowerSink(const petsc::RowRange& mine, const NodeOrdering& ordering) : mine_(mine), ordering_(ordering) {}
   void add(const Index* dofs, int n, const double* K) override {
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        if (dofs[i] >= dofs[j] && mine_.owns(dofs[i]))
-          triplets_.emplace_back(static_cast<int>(dofs[i]), static_cast<int>(dofs[j]), K[i + j * n]);
+      for (int i = 0; i < n; ++i) {
+        const Index row = ordering_.dof(dofs[i]), col = ordering_.dof(dofs[j]);
+        if (row >= col && mine_.owns(row)) triplets_.emplace_back(static_cast<int>(row), static_cast<int>(col), K[i + j * n]);
+      }
   }
   SparseMatrix matrix(Index n) const {
     SparseMatrix A(n, n);
@@ -59,29 +63,37 @@ class OwnedLowerSink : public MatrixSink {
 
  private:
   petsc::RowRange mine_;
+  const NodeOrdering& ordering_;
   std::vector<Triplet> triplets_;
 };
 
+/// The model's reference node coordinates, dim × nodes, in the DofMap's node order.
+Eigen::MatrixXd reference_coordinates(const Model& model) {
+  const DofMap& dofs = model.dofs();
+  const Index dim = dofs.dim();
+  Eigen::MatrixXd x(dim, dofs.num_dofs() / dim);
+  for (int b = 0; b < dofs.num_bodies(); ++b)
+    x.middleCols(dofs.offset(b) / dim, model.bodies()[b]->mesh.x.cols()) = model.bodies()[b]->mesh.x;
+  return x;
+}
+
 /// The model at its current step; K from `stiffness` when it holds one, into it when the energy's Hessian is
 /// constant (then the same for every step: only the load changes).
-QuadraticModel quadratic_model(const Model& model, std::optional<SparseMatrix>& stiffness) {
-  const DofMap& dofs = model.dofs();
-  const Index n = dofs.num_dofs(), dim = dofs.dim();
+QuadraticModel quadratic_model(const Model& model, const NodeOrdering& ordering, std::optional<SparseMatrix>& stiffness) {
+  const Index n = model.dofs().num_dofs(), dim = model.dofs().dim();
   QuadraticModel q;
   if (stiffness && stiffness->rows() == n) {
     q.K_lower = *stiffness;
   } else {
-    OwnedLowerSink sink(petsc::my_rows(static_cast<int>(dim), n / dim));
+    OwnedLowerSink sink(petsc::my_rows(static_cast<int>(dim), n / dim), ordering);
     model.energy().add_hessian(VectorXd::Zero(n), sink);
     q.K_lower = sink.matrix(n);
     if (model.energy().hessian_is_constant()) stiffness = q.K_lower;
   }
-  q.f = VectorXd::Zero(n);
-  model.energy().add_gradient(VectorXd::Zero(n), q.f);
-  q.f = -q.f;
-  q.x.resize(dim, n / dim);
-  for (int b = 0; b < dofs.num_bodies(); ++b)
-    q.x.middleCols(dofs.offset(b) / dim, model.bodies()[b]->mesh.x.cols()) = model.bodies()[b]->mesh.x;
+  VectorXd gradient = VectorXd::Zero(n);
+  model.energy().add_gradient(VectorXd::Zero(n), gradient);
+  q.f = -ordering.to_petsc(gradient);
+  q.x = ordering.nodes_to_petsc(reference_coordinates(model));
   return q;
 }
 
@@ -222,18 +234,24 @@ class DistributedStep {
     if (friction && friction->follower) {
       friction->follower->start_solve();
       follow = [&](const VectorXd& u_now, const VectorXd& lambda) {
-        return followed_bounds(*friction, terms, lin, model, fixed, u_now, lambda, rows);
+        return followed_bounds(*friction, terms, lin, model, fixed, ordering().to_model(u_now), lambda, rows);
       };
     }
-    if (lin.A.rows() > 0)
-      return solve_contact_interior_point(q.K_lower, q.f, fixed.dofs, fixed_values, q.x, rows, options,
-                                          friction ? &u : nullptr, follow ? &follow : nullptr);
-    const GamgResult g = solve_elasticity_gamg(q.K_lower, q.f, fixed.dofs, fixed_values, q.x);
+    const std::vector<Index> fixed_dofs = ordering().dofs_to_petsc(fixed.dofs);
+    if (lin.A.rows() > 0) {
+      const VectorXd start = friction ? ordering().to_petsc(u) : VectorXd();
+      ContactInteriorPointResult r =
+          solve_contact_interior_point(q.K_lower, q.f, fixed_dofs, fixed_values, q.x, ordering().to_petsc(rows),
+                                       options, friction ? &start : nullptr, follow ? &follow : nullptr);
+      r.u = ordering().to_model(r.u);
+      return r;
+    }
+    const GamgResult g = solve_elasticity_gamg(q.K_lower, q.f, fixed_dofs, fixed_values, q.x);
     if (!g.converged)
       throw SolveError("no contact point within any pair's search distance, and the stiffness system alone did not "
                        "solve (" + g.reason + "): a body held by contact alone?");
     ContactInteriorPointResult r;
-    r.u = g.u;
+    r.u = ordering().to_model(g.u);
     r.converged = true;
     r.total_seconds = g.setup_seconds + g.solve_seconds;
     return r;
@@ -297,7 +315,8 @@ class DistributedStep {
     SolveReport r;
     const ProgressClock clock;
     const auto t0 = std::chrono::steady_clock::now();
-    const QuadraticModel q = quadratic_model(model, *stiffness_);
+    if (!*ordering_) *ordering_ = std::make_shared<const NodeOrdering>(reference_coordinates(model));
+    const QuadraticModel q = quadratic_model(model, ordering(), *stiffness_);
     const FixedDofs fixed = model.fixed_dofs(step);
     const VectorXd fixed_values = Eigen::Map<const VectorXd>(fixed.values.data(), static_cast<Index>(fixed.values.size()));
     r.times.add("assembly", petsc::seconds_since(t0));
@@ -370,8 +389,13 @@ class DistributedStep {
   FrictionalOptions frictional_;  ///< the problem's [contact_solver] settings
   ContactInteriorPointOptions options_;
   const Logger& log_;
-  /// K of the first step, kept for the next ones (this rank's rows); shared by the copies a StepSolver makes.
+  const NodeOrdering& ordering() const { return **ordering_; }
+
+  /// K of the first step, kept for the next ones (this rank's rows, PETSc's numbering), and that numbering;
+  /// shared by the copies a StepSolver makes.
   std::shared_ptr<std::optional<SparseMatrix>> stiffness_ = std::make_shared<std::optional<SparseMatrix>>();
+  std::shared_ptr<std::shared_ptr<const NodeOrdering>> ordering_ =
+      std::make_shared<std::shared_ptr<const NodeOrdering>>();
 };
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "symcontact/distributed/filtered_amg.hpp"
 
 #include <exception>
-#include <string>
 
 namespace symcontact {
 
@@ -77,25 +76,10 @@ PetscErrorCode SubspaceCorrection::apply(PC pc, Vec x, Vec y) {
 
 namespace {
 
-/// The upper bound of GAMG's Chebyshev smoothers as a multiple of the estimated largest eigenvalue of D⁻¹N
-/// (PETSc's default 1.1). The symmetric product of the filtered preconditioner is SPD only where each smoothing
-/// sweep converges, which needs the bound above the true eigenvalue; the estimate of a few Krylov iterations
-/// fell short by more than 10 % on friction between two bodies, whose stick points tie a slave node to the
-/// master nodes with stiffness g/α (examples/inclined_2d in one-pass mode: preconditioner indefinite). 1.3
-/// costs 4–7 % more CG iterations on a ball and on a sliding block (symcontact-bench-distributed).
-constexpr const char* kChebyshevEstimate = "0,0.1,0,1.3";
-
-/// GAMG rebuilt from scratch for every new matrix (PETSc keeps the first prolongators by default), its smoothers'
-/// bound kChebyshevEstimate unless the options database gives one for this PC.
+/// GAMG rebuilt from scratch for every new matrix (PETSc keeps the first prolongators by default).
 void configure_gamg(PC pc) {
   check(PCSetType(pc, PCGAMG), "PCSetType");
   check(PCGAMGSetReuseInterpolation(pc, PETSC_FALSE), "PCGAMGSetReuseInterpolation");
-  const char* prefix = nullptr;
-  check(PCGetOptionsPrefix(pc, &prefix), "PCGetOptionsPrefix");
-  const std::string key = "-" + std::string(prefix ? prefix : "") + "mg_levels_ksp_chebyshev_esteig";
-  PetscBool given = PETSC_FALSE;
-  check(PetscOptionsHasName(nullptr, nullptr, key.c_str(), &given), "PetscOptionsHasName");
-  if (!given) check(PetscOptionsSetValue(nullptr, key.c_str(), kChebyshevEstimate), "PetscOptionsSetValue");
 }
 
 }  // namespace
