@@ -25,7 +25,8 @@
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
 /// strain and symmetric pairs of two surfaces.
-/// The meshes are whole on every rank; each rank assembles the stiffness rows it owns.
+/// The meshes are whole on every rank; each rank assembles the stiffness rows it owns, the nodes numbered for
+/// PETSc by NodeOrdering (node_ordering.hpp) and back to the model's numbering for everything else.
 #include "symcontact/app/run.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"
 
