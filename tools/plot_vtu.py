@@ -93,7 +93,8 @@ def _read_grid(path):
 
 def _read_parallel(path):
     """The same of a .pvtu (a run on several processes), its pieces put back together: each piece's points are the
-    body's nodes of its point data "node", its cells follow the previous piece's."""
+    body's nodes of its point data "node", its cells the body's cells of its cell data "cell" (without it, they
+    follow the previous piece's)."""
     sources = [p.get("Source") for p in _xml_root(path, "PUnstructuredGrid").findall("./PUnstructuredGrid/Piece")]
     parts = [_read_grid(os.path.join(os.path.dirname(path), s)) for s in sources]
     if not parts or any("node" not in p[4] for p in parts):
@@ -111,8 +112,17 @@ def _read_parallel(path):
         offsets.append(o + end)
         end += len(c)
     cell_data = {k: np.concatenate([p[5][k] for p in parts]) for k in parts[0][5]}
-    return (points, np.concatenate(conn), np.concatenate(offsets), np.concatenate([p[3] for p in parts]), point_data,
-            cell_data)
+    conn, offsets, types = np.concatenate(conn), np.concatenate(offsets), np.concatenate([p[3] for p in parts])
+    ids = cell_data.pop("cell", None)
+    if ids is not None:  # the pieces' cells back in the body's order
+        order = np.argsort(ids.astype(np.int64), kind="stable")
+        starts = np.concatenate([[0], offsets[:-1]])
+        cells = [conn[starts[i]:offsets[i]] for i in order]
+        conn = np.concatenate(cells) if cells else conn
+        offsets = np.cumsum([len(c) for c in cells]).astype(offsets.dtype)
+        types = types[order]
+        cell_data = {k: v[order] for k, v in cell_data.items()}
+    return points, conn, offsets, types, point_data, cell_data
 
 
 class Body:

@@ -172,16 +172,24 @@ def vtu_sections(path):
 
 def pvtu_arrays(path):
     """(name, values) of the VTU a .pvtu stands for, in a serial VTU's order: its pieces' point data put back in the
-    body's node order by their "node" array (which is left out), their cell data one piece after the other."""
+    body's node order by their "node" array, their cell data in the body's cell order by their "cell" array (both
+    left out)."""
     folder = os.path.dirname(path)
     pieces = [vtu_sections(os.path.join(folder, f)) for f in re.findall(r'<Piece Source="([^"]+)"/>', open(path).read())]
     nodes = [[int(v) for n, _, vals in p["PointData"] if n == "node" for v in vals] for p in pieces]
     num_nodes = 1 + max(max(n, default=-1) for n in nodes)
+    cells = [int(v) for p in pieces for n, _, vals in p["CellData"] if n == "cell" for v in vals]
     arrays = []
     for section in ("PointData", "CellData", "Points"):
         for k, (name, comps, _) in enumerate(pieces[0][section]):
             if section == "CellData":
-                arrays.append((name, [v for p in pieces for v in p[section][k][2]]))
+                if name == "cell":
+                    continue
+                values = [v for p in pieces for v in p[section][k][2]]
+                if cells:  # back in the body's order
+                    values = [values[j * comps + c] for j in sorted(range(len(cells)), key=cells.__getitem__)
+                              for c in range(comps)]
+                arrays.append((name, values))
                 continue
             if name == "node":
                 continue

@@ -1,6 +1,6 @@
-// The PETSc numbering of the distributed path (src/symcontact/distributed/node_ordering.hpp): the Hilbert index
-// is a walk through every grid cell by face neighbours, and the ordering it gives nodes cuts a body into compact
-// halves where the mesh generator's order does not; vectors and constraints carried over and back unchanged.
+// The PETSc numbering of the distributed path (src/symcontact/distributed/node_ordering.hpp): the ordering the
+// Hilbert curve gives nodes cuts a body into compact halves where the mesh generator's order does not; vectors
+// and constraints carried over and back unchanged.
 
 #include "symcontact/distributed/node_ordering.hpp"
 
@@ -16,35 +16,6 @@
 
 namespace symcontact {
 namespace {
-
-/// Every cell of the 2^bits grid in `dim` dimensions, its Hilbert index: a bijection onto [0, 2^(dim·bits)) whose
-/// consecutive indices are face neighbours.
-void expect_hilbert_walk(int dim, int bits) {
-  const std::uint64_t side = std::uint64_t{1} << bits, cells = std::uint64_t{1} << (dim * bits);
-  std::vector<std::vector<std::uint64_t>> at(cells);
-  for (std::uint64_t c = 0; c < cells; ++c) {
-    std::vector<std::uint64_t> cell(static_cast<std::size_t>(dim));
-    for (int i = 0; i < dim; ++i) cell[static_cast<std::size_t>(i)] = (c >> (bits * i)) % side;
-    const std::uint64_t h = hilbert_index(cell, bits);
-    ASSERT_LT(h, cells);
-    ASSERT_TRUE(at[h].empty()) << "index " << h << " twice";
-    at[h] = cell;
-  }
-  for (std::uint64_t h = 1; h < cells; ++h) {
-    std::uint64_t distance = 0;
-    for (int i = 0; i < dim; ++i) {
-      const auto a = at[h - 1][static_cast<std::size_t>(i)], b = at[h][static_cast<std::size_t>(i)];
-      distance += a > b ? a - b : b - a;
-    }
-    EXPECT_EQ(distance, 1u) << "dim " << dim << ", indices " << h - 1 << " and " << h;
-  }
-}
-
-TEST(NodeOrdering, TheHilbertIndexWalksThroughEveryCellByFaceNeighbours) {
-  expect_hilbert_walk(2, 4);
-  expect_hilbert_walk(3, 3);
-  EXPECT_THROW(hilbert_index({1, 2, 3}, 22), std::invalid_argument);
-}
 
 /// An n³ grid of nodes in a shuffled order (as a mesh generator's), its edges between grid neighbours.
 struct ShuffledGrid {

@@ -1,5 +1,6 @@
 #include "symcontact/app/run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "symcontact/io/json_writer.hpp"
 #include "symcontact/io/pvd_writer.hpp"
 #include "symcontact/io/vtu_writer.hpp"
+#include "symcontact/mesh/hilbert_curve.hpp"
 #include "symcontact/model/model.hpp"
 #include "symcontact/model/setup_checks.hpp"
 #include "symcontact/post/contact_results.hpp"
@@ -166,19 +168,29 @@ VtuWriter body_vtu(const Body& body, const BodyFields& f, const BodyContactField
   return w;
 }
 
-/// Process `parallel.rank`'s piece of `w` (the file `stem`.vtu of a serial run): the cells [n r / P, n (r + 1) / P)
-/// of the n, P the processes, with the point data "node" (the body's node number of each of its points), written
-/// as `stem`_p<r>.vtu; then the first process writes `stem`.pvtu naming every piece, once all are written.
-/// Returns the .pvtu's name. Collective; a process that cannot write its piece makes every one throw.
+/// Process `parallel.rank`'s piece of `w` (the file `stem`.vtu of a serial run): of the n cells ordered along a
+/// Hilbert curve through their centres (mesh/hilbert_curve.hpp), the run [n r / P, n (r + 1) / P) (P the
+/// processes), in the body's order — a compact region, whose border points alone repeat in the next piece — with
+/// the point data "node" (the body's node number of each of its points) and the cell data "cell" (the body's
+/// cell number of each of its cells), written as `stem`_p<r>.vtu; then the first process writes `stem`.pvtu
+/// naming every piece, once all are written. Returns the .pvtu's name. Collective; a process that cannot write
+/// its piece makes every one throw.
 std::string write_parallel_vtu(const VtuWriter& w, const std::string& stem, const std::string& out_dir,
                                const ParallelOutput& parallel) {
   namespace fs = std::filesystem;
   const auto piece_name = [&](int rank) { return stem + "_p" + std::to_string(rank) + ".vtu"; };
   const Index n = w.num_cells();
+  const std::vector<Index> order = hilbert_order(w.cell_centres());
+  std::vector<Index> cells(order.begin() + n * parallel.rank / parallel.size,
+                           order.begin() + n * (parallel.rank + 1) / parallel.size);
+  std::sort(cells.begin(), cells.end());
   std::vector<Index> used;
-  VtuWriter piece = w.piece(n * parallel.rank / parallel.size, n * (parallel.rank + 1) / parallel.size, used);
-  piece.add_point_data("node", Eigen::Map<const Eigen::Matrix<Index, Eigen::Dynamic, 1>>(
-                                   used.data(), static_cast<Index>(used.size())).cast<double>().eval());
+  VtuWriter piece = w.piece(cells, used);
+  const auto as_data = [](const std::vector<Index>& v) {
+    return Eigen::Map<const Eigen::Matrix<Index, Eigen::Dynamic, 1>>(v.data(), static_cast<Index>(v.size())).cast<double>().eval();
+  };
+  piece.add_point_data("node", as_data(used));
+  piece.add_cell_data("cell", as_data(cells));
   std::string error;
   try {
     ensure_directory(out_dir);  // the first process makes it before the first step; this one may be earlier

@@ -4,25 +4,16 @@
 /// (petsc::my_rows); in the model's numbering (the mesh generator's) such a range is scattered over the whole
 /// body — the second half of a Gmsh tetrahedral sphere's nodes touches nearly every node of the first, and a
 /// split of its node list cuts 22 % of the mesh's edges. Numbered along a Hilbert curve through the reference
-/// coordinates, each range is a compact region (8.6 % of the edges cut there): fewer entries to exchange in every
+/// coordinates (mesh/hilbert_curve.hpp), each range is a compact region (8.6 % of the edges cut there): fewer entries to exchange in every
 /// product and smoother aggregates for GAMG on each rank. The numbering depends on the coordinates only, so it
 /// is the same on every rank and in every run.
-///
-/// Hilbert index: the coordinates quantised on a 2^b grid over the bounding box's largest side (b = 31 in 2D,
-/// 21 in 3D: 62 and 63 bits), mapped to the curve by Skilling's transpose algorithm ("Programming the Hilbert
-/// curve", AIP Conf. Proc. 707, 381, 2004: the inverse undo of the axes' excess work, then Gray encoding, then
-/// the bits interleaved); ties (coincident nodes) in the model's order.
 
-#include <cstdint>
 #include <vector>
 
 #include "symcontact/core/types.hpp"
 #include "symcontact/distributed/contact_interior_point.hpp"
 
 namespace symcontact {
-
-/// The Hilbert index of grid point `cell` (dim values, each below 2^bits) on the curve of `bits` levels.
-std::uint64_t hilbert_index(std::vector<std::uint64_t> cell, int bits);
 
 class NodeOrdering {
  public:

@@ -201,14 +201,16 @@ void VtuWriter::write(const std::string& path) const {
   });
 }
 
-VtuWriter VtuWriter::piece(Index first, Index end, std::vector<Index>& points_used) const {
-  if (first < 0 || end < first || end > num_cells())
-    throw std::invalid_argument("VtuWriter: piece of cells [" + std::to_string(first) + ", " + std::to_string(end) +
-                                ") outside [0, " + std::to_string(num_cells()) + ")");
-  const auto begin_entry = static_cast<std::size_t>(first == 0 ? 0 : offsets_[static_cast<std::size_t>(first - 1)]);
-  const auto end_entry = static_cast<std::size_t>(end == 0 ? 0 : offsets_[static_cast<std::size_t>(end - 1)]);
+VtuWriter VtuWriter::piece(const std::vector<Index>& cells, std::vector<Index>& points_used) const {
+  for (const Index c : cells)
+    if (c < 0 || c >= num_cells())
+      throw std::invalid_argument("VtuWriter: piece with cell " + std::to_string(c) + " outside [0, " +
+                                  std::to_string(num_cells()) + ")");
+  auto cell_begin = [&](Index c) { return c == 0 ? std::size_t{0} : static_cast<std::size_t>(offsets_[static_cast<std::size_t>(c - 1)]); };
+  auto cell_end = [&](Index c) { return static_cast<std::size_t>(offsets_[static_cast<std::size_t>(c)]); };
   std::vector<Index> local(static_cast<std::size_t>(num_points()), -1);
-  for (std::size_t k = begin_entry; k < end_entry; ++k) local[static_cast<std::size_t>(connectivity_[k])] = 0;
+  for (const Index c : cells)
+    for (std::size_t k = cell_begin(c); k < cell_end(c); ++k) local[static_cast<std::size_t>(connectivity_[k])] = 0;
   points_used.clear();
   for (Index p = 0; p < num_points(); ++p)
     if (local[static_cast<std::size_t>(p)] == 0) {
@@ -220,10 +222,10 @@ VtuWriter VtuWriter::piece(Index first, Index end, std::vector<Index>& points_us
   w.per_line_ = per_line_;
   w.points_.resize(3, static_cast<Index>(points_used.size()));
   for (std::size_t j = 0; j < points_used.size(); ++j) w.points_.col(static_cast<Index>(j)) = points_.col(points_used[j]);
-  for (std::size_t k = begin_entry; k < end_entry; ++k)
-    w.connectivity_.push_back(local[static_cast<std::size_t>(connectivity_[k])]);
-  for (Index c = first; c < end; ++c) {
-    w.offsets_.push_back(offsets_[static_cast<std::size_t>(c)] - static_cast<std::int64_t>(begin_entry));
+  for (const Index c : cells) {
+    for (std::size_t k = cell_begin(c); k < cell_end(c); ++k)
+      w.connectivity_.push_back(local[static_cast<std::size_t>(connectivity_[k])]);
+    w.offsets_.push_back(static_cast<std::int64_t>(w.connectivity_.size()));
     w.types_.push_back(types_[static_cast<std::size_t>(c)]);
   }
   for (const Array& a : point_data_) {
@@ -231,9 +233,24 @@ VtuWriter VtuWriter::piece(Index first, Index end, std::vector<Index>& points_us
     for (std::size_t j = 0; j < points_used.size(); ++j) v.col(static_cast<Index>(j)) = a.values.col(points_used[j]);
     w.point_data_.push_back(Array{a.name, std::move(v), a.component_names});
   }
-  for (const Array& a : cell_data_)
-    w.cell_data_.push_back(Array{a.name, a.values.middleCols(first, end - first), a.component_names});
+  for (const Array& a : cell_data_) {
+    Eigen::MatrixXd v(a.values.rows(), static_cast<Index>(cells.size()));
+    for (std::size_t j = 0; j < cells.size(); ++j) v.col(static_cast<Index>(j)) = a.values.col(cells[j]);
+    w.cell_data_.push_back(Array{a.name, std::move(v), a.component_names});
+  }
   return w;
+}
+
+Eigen::MatrixXd VtuWriter::cell_centres() const {
+  Eigen::MatrixXd centres = Eigen::MatrixXd::Zero(3, num_cells());
+  std::size_t begin = 0;
+  for (Index c = 0; c < num_cells(); ++c) {
+    const auto end = static_cast<std::size_t>(offsets_[static_cast<std::size_t>(c)]);
+    for (std::size_t k = begin; k < end; ++k) centres.col(c) += points_.col(connectivity_[k]);
+    if (end > begin) centres.col(c) /= static_cast<double>(end - begin);
+    begin = end;
+  }
+  return centres;
 }
 
 void VtuWriter::write_parallel(const std::string& path, const std::vector<std::string>& pieces) const {

@@ -86,11 +86,14 @@ class VtuWriter {
   /// if the encoding is kAscii and an array holds a non-finite value.
   void write(const std::string& path) const;
 
-  /// The cells [first, end) with the points they use, in increasing order of their index here (their indices,
-  /// to `points_used`), and every data array restricted to those points and cells: one piece of a parallel
-  /// VTU. An empty range gives a piece of no cells and no points. Throws std::invalid_argument for a range
-  /// outside [0, num_cells()].
-  VtuWriter piece(Index first, Index end, std::vector<Index>& points_used) const;
+  /// The cells `cells` (indices here, in that order) with the points they use, in increasing order of their
+  /// index here (their indices, to `points_used`), and every data array restricted to those points and cells:
+  /// one piece of a parallel VTU. No cells give a piece of no cells and no points. Throws
+  /// std::invalid_argument for an index outside [0, num_cells()).
+  VtuWriter piece(const std::vector<Index>& cells, std::vector<Index>& points_used) const;
+
+  /// The mean of each cell's points, 3 × num_cells().
+  Eigen::MatrixXd cell_centres() const;
 
   /// Writes the .pvtu at `path` (atomically) naming `pieces`, files relative to its folder, each written by a
   /// writer with this one's arrays (piece() of the same writer, with the same arrays added to each).

@@ -87,7 +87,7 @@ TEST(VtuWriter, PiecesOfAParallelVtu) {
   cell_ids << 10.0, 11.0;
   w.add_cell_data("id", cell_ids);
   std::vector<Index> used;
-  const VtuWriter second = w.piece(1, 2, used);
+  const VtuWriter second = w.piece({1}, used);
   EXPECT_EQ(used, (std::vector<Index>{0, 2, 3}));
   EXPECT_EQ(second.num_points(), 3);
   EXPECT_EQ(second.num_cells(), 1);
@@ -103,13 +103,23 @@ TEST(VtuWriter, PiecesOfAParallelVtu) {
   EXPECT_TRUE(contains(s, "Name=\"connectivity\" format=\"ascii\">\n          0 1 2\n"));
   EXPECT_TRUE(contains(s, "Name=\"offsets\" format=\"ascii\">\n          3\n"));
 
-  const VtuWriter first = w.piece(0, 1, used);
+  const VtuWriter first = w.piece({0}, used);
   EXPECT_EQ(used, (std::vector<Index>{0, 1, 2}));
-  const VtuWriter none = w.piece(2, 2, used);
+  const VtuWriter none = w.piece({}, used);
   EXPECT_TRUE(used.empty());
   EXPECT_EQ(none.num_points(), 0);
   EXPECT_EQ(none.num_cells(), 0);
-  EXPECT_THROW(w.piece(1, 3, used), std::invalid_argument);
+  EXPECT_THROW(w.piece({1, 2}, used), std::invalid_argument);
+  // Cells in any order: the piece keeps it, its points in their order here.
+  const VtuWriter both = w.piece({1, 0}, used);
+  EXPECT_EQ(used, (std::vector<Index>{0, 1, 2, 3}));
+  both.write((dir / "both.vtu").string());
+  const std::string b = testing::read_text((dir / "both.vtu").string());
+  EXPECT_TRUE(contains(b, "Name=\"id\" NumberOfComponents=\"1\" format=\"ascii\">\n          11\n          10\n"));
+  EXPECT_TRUE(contains(b, "Name=\"offsets\" format=\"ascii\">\n          3 6\n"));
+  const Eigen::MatrixXd centres = w.cell_centres();
+  ASSERT_EQ(centres.cols(), 2);
+  EXPECT_LT((centres.col(1) - Eigen::Vector3d(1.0 / 3.0, 0.5, 0.0)).norm(), 1e-15) << centres.col(1).transpose();
 
   first.write_parallel((dir / "two.pvtu").string(), {"p0.vtu", "p1.vtu"});
   const std::string p = testing::read_text((dir / "two.pvtu").string());
