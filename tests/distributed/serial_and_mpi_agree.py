@@ -76,11 +76,15 @@ UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_
                ("inclined_2d/inclined.toml", "contact[0].mode")]
 ITERATIVE = 'linear_solver = "iterative"\n'
 # (example, extra as in CASES, dimension, length, force, units): solved on two ranks in m–N–Pa and in the other
-# units, on the same mesh; every number must agree to REL of its quantity's scale once converted. V4 with
-# lengths × 1e3 and forces × 1e6 (Coulomb, the tolerance of CASES).
+# units, on the same mesh; every number must agree to REL of its quantity's scale once converted. V4 and V5's
+# inclined interface in one-pass mode (friction between the bodies) with lengths × 1e3 and forces × 1e6
+# (Coulomb, the tolerances of CASES).
 UNITS = [("hertz_2d/cylinder_on_plane.toml", "", 2, 1e3, 1.0, "mm–N–MPa"),
          ("hertz_3d/sphere_on_plane.toml", "", 3, 1e3, 1e-3, "mm–kN–GPa"),
-         ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", 2, 1e3, 1e6, "lengths × 1e3, forces × 1e6")]
+         ("friction_block/block.toml", "coulomb_tolerance = 1e-10\n", 2, 1e3, 1e6, "lengths × 1e3, forces × 1e6"),
+         ("inclined_2d/inclined.toml", [('mode = "symmetric"\n', 'mode = "one-pass"\n'),
+                                        ("coulomb_tolerance = 1e-6\n", "coulomb_tolerance = 1e-9\n")],
+          2, 1e3, 1e6, "lengths × 1e3, forces × 1e6")]
 
 
 def compare(serial, other, units=None):
