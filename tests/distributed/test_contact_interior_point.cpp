@@ -227,7 +227,8 @@ TEST(ContactInteriorPoint, ASlipMapGivesTheNodalFrictionItDescribes) {
       std::vector<Eigen::Triplet<double>> t;
       mapped.contact.slip_origin = Eigen::MatrixXd::Zero(dim, m);
       for (Index j = 0; j < m; ++j)
-        for (int k = 0; k < dim; ++k) t.emplace_back(static_cast<int>(dim * j + k), static_cast<int>(dim * o.contact.node[j] + k), 1.0);
+        for (int k = 0; k < dim; ++k)
+          t.emplace_back(static_cast<int>(dim * j + k), static_cast<int>(dim * o.contact.node[j] + k), 1.0);
       if (moving_frame)
         for (Index j = 0; j < m; ++j) {
           t.emplace_back(static_cast<int>(dim * j), static_cast<int>(dragged), -1.0);

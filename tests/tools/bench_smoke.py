@@ -60,7 +60,8 @@ def main():
     rows = bench_rows([bench, "--case", "pad-flat-2d", "--h", "0.04", "0.02", "--csv", path], path)
     check_rows("pad-flat-2d", rows, 2)
     for row in rows:
-        check(abs(float(row["reaction_ratio"]) - 0.3) <= 1e-4, f"pad-flat-2d: |R_t/R_n| = {row['reaction_ratio']}, mu = 0.3")
+        ratio = float(row["reaction_ratio"])
+        check(abs(ratio - 0.3) <= 1e-4, f"pad-flat-2d: |R_t/R_n| = {ratio}, mu = 0.3")
 
     path = os.path.join(work, "plates.csv")
     rows = bench_rows([bench, "--case", "clamped-plates", "--h", "0.12", "--csv", path], path)

@@ -187,7 +187,8 @@ std::string write_parallel_vtu(const VtuWriter& w, const std::string& stem, cons
   std::vector<Index> used;
   VtuWriter piece = w.piece(cells, used);
   const auto as_data = [](const std::vector<Index>& v) {
-    return Eigen::Map<const Eigen::Matrix<Index, Eigen::Dynamic, 1>>(v.data(), static_cast<Index>(v.size())).cast<double>().eval();
+    using Indices = Eigen::Matrix<Index, Eigen::Dynamic, 1>;
+    return Eigen::Map<const Indices>(v.data(), static_cast<Index>(v.size())).cast<double>().eval();
   };
   piece.add_point_data("node", as_data(used));
   piece.add_cell_data("cell", as_data(cells));

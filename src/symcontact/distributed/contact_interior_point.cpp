@@ -662,7 +662,8 @@ double InteriorPoint::line_search(double alpha, const Direction& d, double targe
   return alpha;
 }
 
-/// One interior-point step from the current iterate (rp, rd: its primal residual and ‖r_d‖∞; V = S u): Newton matrix, predictor, Mehrotra's corrector, step length; false when a Krylov solve broke down.
+/// One interior-point step from the current iterate (rp, rd: its primal residual and ‖r_d‖∞; V = S u): Newton
+/// matrix, predictor, Mehrotra's corrector, step length; false when a Krylov solve broke down.
 bool InteriorPoint::step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& V, Direction& d) {
   const auto t_setup = std::chrono::steady_clock::now();
   update_newton_matrix(V, lambda_.cwiseQuotient(s_));

@@ -52,7 +52,8 @@ class OwnedLowerSink : public MatrixSink {
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const Index row = ordering_.dof(dofs[i]), col = ordering_.dof(dofs[j]);
-        if (row >= col && mine_.owns(row)) triplets_.emplace_back(static_cast<int>(row), static_cast<int>(col), K[i + j * n]);
+        if (row >= col && mine_.owns(row))
+          triplets_.emplace_back(static_cast<int>(row), static_cast<int>(col), K[i + j * n]);
       }
   }
   SparseMatrix matrix(Index n) const {
@@ -79,7 +80,8 @@ Eigen::MatrixXd reference_coordinates(const Model& model) {
 
 /// The model at its current step; K from `stiffness` when it holds one, into it when the energy's Hessian is
 /// constant (then the same for every step: only the load changes).
-QuadraticModel quadratic_model(const Model& model, const NodeOrdering& ordering, std::optional<SparseMatrix>& stiffness) {
+QuadraticModel quadratic_model(const Model& model, const NodeOrdering& ordering,
+                               std::optional<SparseMatrix>& stiffness) {
   const Index n = model.dofs().num_dofs(), dim = model.dofs().dim();
   QuadraticModel q;
   if (stiffness && stiffness->rows() == n) {
@@ -129,51 +131,64 @@ NodalConstraints scaled_rows(const ContactLinearization& lin, const DofMap& dofs
   return c;
 }
 
-/// The serial friction terms (solvers/friction_state.hpp: one point per slave node of a pair's friction family)
-/// as the interior point's friction on the rows of c: the row of node k of family f takes the point of node k
-/// of the pair whose friction family is f, with its bound g = w τ, its α, its normal n̄ (P = I − n̄ n̄ᵀ, as the
-/// term's), its relative-displacement map B (FrictionTerm::slip_map: the slave node against the master surface
-/// at its projection, or against a rigid obstacle) and the slip origin B u_start, so that the interior point's
-/// j(u) is the sum of the terms'. Throws SolveError for a point with τ > 0 and no row (the interior point
-/// carries friction on its rows only).
-void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const ContactLinearization& lin,
-                  const ContactSet& contacts, const DofMap& dofs, const VectorXd& u_start, NodalConstraints& c) {
-  const Index m = c.size(), dim = dofs.dim(), n = dofs.num_dofs();
+/// The row of each friction point: `visit(p, q, j, g)` for point q of pair p's term, row j of `lin` and the
+/// point's bound g = w τ. The row of node k of family f takes the point of node k of the pair whose friction
+/// family is f. Throws SolveError for a point with τ > 0 and no row (the interior point carries friction on its
+/// rows only).
+template <class Visit>
+void for_each_friction_row(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const ContactLinearization& lin,
+                           const ContactSet& contacts, Visit visit) {
   std::map<std::pair<int, Index>, Index> row_of;
-  for (Index j = 0; j < m; ++j)
+  for (Index j = 0; j < lin.A.rows(); ++j)
     row_of[{lin.row_family[static_cast<std::size_t>(j)], lin.row_node[static_cast<std::size_t>(j)]}] = j;
-  c.friction_bound = VectorXd::Zero(m);
-  c.friction_alpha = VectorXd::Ones(m);  // any α > 0 where g = 0: such a row adds nothing
-  c.slip_origin = Eigen::MatrixXd::Zero(dim, m);
-  std::vector<Eigen::Triplet<double>> map;
   for (std::size_t p = 0; p < terms.size(); ++p) {
     if (!terms[p]) continue;
     const int family = contacts.friction_family(static_cast<int>(p));
     const std::vector<ContactPoint>& points = terms[p]->points();
     const std::vector<double> bound = terms[p]->bounds();
-    const Eigen::SparseMatrix<double, Eigen::RowMajor, int> B = terms[p]->slip_map(n);
-    const VectorXd origin = B * u_start;
     for (std::size_t q = 0; q < points.size(); ++q) {
       const auto it = row_of.find({family, points[q].slave_node});
-      if (it == row_of.end()) {
-        if (bound[q] > 0.0)
-          throw SolveError("pair " + contacts.pairs[p].name + ": surface node " + std::to_string(points[q].slave_node) +
-                           " has a friction threshold and no contact row; the distributed path carries friction at "
-                           "the nodes within the search distance only");
-        continue;
-      }
-      const Index j = it->second;
-      c.friction_bound[j] = bound[q];
-      c.friction_alpha[j] = terms[p]->alphas()[q];
-      c.normal.col(j) = points[q].normal.head(dim);
-      for (Index k = 0; k < dim; ++k) {
-        const Index point_row = dim * static_cast<Index>(q) + k;
-        c.slip_origin(k, j) = origin[point_row];
-        for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator e(B, point_row); e; ++e)
-          map.emplace_back(static_cast<int>(dim * j + k), static_cast<int>(e.col()), e.value());
+      if (it != row_of.end()) {
+        visit(p, q, it->second, bound[q]);
+      } else if (bound[q] > 0.0) {
+        throw SolveError("pair " + contacts.pairs[p].name + ": surface node " + std::to_string(points[q].slave_node) +
+                         " has a friction threshold and no contact row; the distributed path carries friction at "
+                         "the nodes within the search distance only");
       }
     }
   }
+}
+
+/// The serial friction terms (solvers/friction_state.hpp: one point per slave node of a pair's friction family)
+/// as the interior point's friction on the rows of c (for_each_friction_row), each row with its point's bound,
+/// α, normal n̄ (P = I − n̄ n̄ᵀ, as the term's), relative-displacement map B (FrictionTerm::slip_map: the slave
+/// node against the master surface at its projection, or against a rigid obstacle) and slip origin B u_start,
+/// so that the interior point's j(u) is the sum of the terms'.
+void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const ContactLinearization& lin,
+                  const ContactSet& contacts, const DofMap& dofs, const VectorXd& u_start, NodalConstraints& c) {
+  const Index m = c.size(), dim = dofs.dim(), n = dofs.num_dofs();
+  c.friction_bound = VectorXd::Zero(m);
+  c.friction_alpha = VectorXd::Ones(m);  // any α > 0 where g = 0: such a row adds nothing
+  c.slip_origin = Eigen::MatrixXd::Zero(dim, m);
+  std::vector<Eigen::SparseMatrix<double, Eigen::RowMajor, int>> maps(terms.size());
+  std::vector<VectorXd> origins(terms.size());
+  for (std::size_t p = 0; p < terms.size(); ++p)
+    if (terms[p]) {
+      maps[p] = terms[p]->slip_map(n);
+      origins[p] = maps[p] * u_start;
+    }
+  std::vector<Eigen::Triplet<double>> map;
+  for_each_friction_row(terms, lin, contacts, [&](std::size_t p, std::size_t q, Index j, double bound) {
+    c.friction_bound[j] = bound;
+    c.friction_alpha[j] = terms[p]->alphas()[q];
+    c.normal.col(j) = terms[p]->points()[q].normal.head(dim);
+    for (Index k = 0; k < dim; ++k) {
+      const Index point_row = dim * static_cast<Index>(q) + k;
+      c.slip_origin(k, j) = origins[p][point_row];
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor, int>::InnerIterator e(maps[p], point_row); e; ++e)
+        map.emplace_back(static_cast<int>(dim * j + k), static_cast<int>(e.col()), e.value());
+    }
+  });
   c.slip_map.resize(dim * m, n);
   c.slip_map.setFromTriplets(map.begin(), map.end());
 }
@@ -181,10 +196,10 @@ void add_friction(const std::vector<std::shared_ptr<FrictionTerm>>& terms, const
 /// The bounds of the thresholds followed at the iterate (u, λ), for FollowBounds: the bodies' force on the
 /// surfaces there, ∇E(u) = Aᵀμ − ∇j(u) (μ = λ / support, zero on fixed DOFs), handed to the follower
 /// (friction_state.hpp); where it moved τ, the Coulomb pairs' terms take the new thresholds (as the serial
-/// GeometrySubproblem's hook) and the rows `rows` their bounds. nullopt where τ did not move.
+/// GeometrySubproblem's hook) and the rows of `lin` their bounds. nullopt where τ did not move.
 std::optional<VectorXd> followed_bounds(const FrictionState& friction, std::vector<std::shared_ptr<FrictionTerm>>& terms,
                                         const ContactLinearization& lin, const Model& model, const FixedDofs& fixed,
-                                        const VectorXd& u, const VectorXd& lambda, const NodalConstraints& rows) {
+                                        const VectorXd& u, const VectorXd& lambda) {
   const ContactSet& contacts = model.contacts();
   VectorXd mu(lambda.size());
   for (Index j = 0; j < mu.size(); ++j) mu[j] = lambda[j] / lin.row_support[static_cast<std::size_t>(j)];
@@ -199,11 +214,9 @@ std::optional<VectorXd> followed_bounds(const FrictionState& friction, std::vect
     const ContactSurface& slave = contacts.surfaces[contacts.families()[contacts.friction_family(static_cast<int>(p))].slave];
     terms[p]->set_thresholds(interpolate_at_points(slave, terms[p]->points(), friction.nodal_tau[p]));
   }
-  NodalConstraints nodes;  // the rows' nodes and normals only: add_friction() reads no more
-  nodes.node = rows.node;
-  nodes.normal = rows.normal;
-  add_friction(terms, lin, contacts, model.dofs(), friction.u_start, nodes);
-  return nodes.friction_bound;
+  VectorXd bounds = VectorXd::Zero(lin.A.rows());
+  for_each_friction_row(terms, lin, contacts, [&](std::size_t, std::size_t, Index j, double g) { bounds[j] = g; });
+  return bounds;
 }
 
 bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
@@ -234,7 +247,7 @@ class DistributedStep {
     if (friction && friction->follower) {
       friction->follower->start_solve();
       follow = [&](const VectorXd& u_now, const VectorXd& lambda) {
-        return followed_bounds(*friction, terms, lin, model, fixed, ordering().to_model(u_now), lambda, rows);
+        return followed_bounds(*friction, terms, lin, model, fixed, ordering().to_model(u_now), lambda);
       };
     }
     const std::vector<Index> fixed_dofs = ordering().dofs_to_petsc(fixed.dofs);

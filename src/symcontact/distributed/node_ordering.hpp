@@ -4,9 +4,9 @@
 /// (petsc::my_rows); in the model's numbering (the mesh generator's) such a range is scattered over the whole
 /// body — the second half of a Gmsh tetrahedral sphere's nodes touches nearly every node of the first, and a
 /// split of its node list cuts 22 % of the mesh's edges. Numbered along a Hilbert curve through the reference
-/// coordinates (mesh/hilbert_curve.hpp), each range is a compact region (8.6 % of the edges cut there): fewer entries to exchange in every
-/// product and smoother aggregates for GAMG on each rank. The numbering depends on the coordinates only, so it
-/// is the same on every rank and in every run.
+/// coordinates (mesh/hilbert_curve.hpp), each range is a compact region (8.6 % of the edges cut there): fewer
+/// entries to exchange in every product and smoother aggregates for GAMG on each rank. The numbering depends on
+/// the coordinates only, so it is the same on every rank and in every run.
 
 #include <vector>
 

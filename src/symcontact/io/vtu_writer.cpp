@@ -206,8 +206,8 @@ VtuWriter VtuWriter::piece(const std::vector<Index>& cells, std::vector<Index>& 
     if (c < 0 || c >= num_cells())
       throw std::invalid_argument("VtuWriter: piece with cell " + std::to_string(c) + " outside [0, " +
                                   std::to_string(num_cells()) + ")");
-  auto cell_begin = [&](Index c) { return c == 0 ? std::size_t{0} : static_cast<std::size_t>(offsets_[static_cast<std::size_t>(c - 1)]); };
   auto cell_end = [&](Index c) { return static_cast<std::size_t>(offsets_[static_cast<std::size_t>(c)]); };
+  auto cell_begin = [&](Index c) { return c == 0 ? std::size_t{0} : cell_end(c - 1); };
   std::vector<Index> local(static_cast<std::size_t>(num_points()), -1);
   for (const Index c : cells)
     for (std::size_t k = cell_begin(c); k < cell_end(c); ++k) local[static_cast<std::size_t>(connectivity_[k])] = 0;
