@@ -430,6 +430,11 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
   // 2·gauss_points − 1 as on segments.
   const int degree = options.gauss_points > 0 ? 2 * options.gauss_points - 1 : 2 * cell_order(slave.facet_type) + 1;
   const QuadratureRule rule = simplex_quadrature(2, degree);
+  // On flat (Tri3) facets the integrand is a cubic in ξ within a cell (θ quadratic: x and x̄ affine, the
+  // master's smoothed normal linear; φ linear), which any triangulation of the cell integrates exactly:
+  // the fan from one vertex takes the fewest triangles, n − 2 of an n-gon. Curved and bilinear facets
+  // keep the fan from the centroid, whose better-shaped triangles suit an integrand that is no polynomial.
+  const bool flat = slave.facet_type == CellType::kTri3;
   std::vector<ContactPoint> points, facet_points;
   std::vector<double> N(npf);
   const Eigen::MatrixXd ns_nodal = slave_normals_for_ray(slave, xs, master, options);
@@ -439,7 +444,8 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
     const double reach = facet_reach(slave.facet_type, xf, options.search_distance);
     facet_points.clear();
     for (const MortarCell& cell : mortar_cells(slave, xs, f, master, reach)) {
-      for (const auto& tri : triangulate_from_centroid(cell.polygon)) {
+      const auto triangles = flat ? triangulate_from_vertex(cell.polygon) : triangulate_from_centroid(cell.polygon);
+      for (const auto& tri : triangles) {
         // ξ(ζ) = t0 + ζ1 (t1 − t0) + ζ2 (t2 − t0): the rule's weights (sum 1/2) times 2 × the sub-area.
         const double jac = (tri[1] - tri[0]).x() * (tri[2] - tri[0]).y() - (tri[1] - tri[0]).y() * (tri[2] - tri[0]).x();
         if (!(jac > 0)) continue;

@@ -13,10 +13,11 @@
 /// IJNME 79, 2009, §3.2): for each slave facet, the vertices of every nearby facing master facet are
 /// projected along the normal n0 of the slave's vertex triangle onto its plane, in the slave's reference
 /// coordinates; the reference triangle is clipped by the projected master triangle (Sutherland–Hodgman,
-/// polygon_clipping.hpp), and each clip polygon is triangulated from its centroid and carries a
-/// triangle rule of degree 2·order + 1 (2·gauss_points − 1 when given): exact for θ φ on flat facets,
-/// whose degree in ξ is 2·order within a cell. Each point is evaluated on the (possibly curved, Tri6)
-/// slave facet and projected onto the master by closest point, as in 2D. Curved Tri6 facets are clipped
+/// polygon_clipping.hpp), and each clip polygon is triangulated (from a vertex on flat Tri3 facets, where
+/// any triangulation is exact; from its centroid on curved or bilinear ones) and carries a triangle rule
+/// of degree 2·order + 1 (2·gauss_points − 1 when given): exact for θ φ on flat facets, of that degree
+/// in ξ within a cell (the master's smoothed normal varies along it). Each point is evaluated on the
+/// (possibly curved, Tri6) slave facet and projected onto the master by closest point, as in 2D. Curved Tri6 facets are clipped
 /// through their vertex triangles (the standard approach; exact for flat facets). Quadrilateral facets
 /// (Quad4, Quad9) are clipped the same way in their reference square: the master's vertices projected on
 /// the plane through the slave's vertices (normal: the cross product of its diagonals) are mapped to the

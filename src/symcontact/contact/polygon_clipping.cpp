@@ -68,4 +68,10 @@ std::vector<std::array<Eigen::Vector2d, 3>> triangulate_from_centroid(const Poly
   return t;
 }
 
+std::vector<std::array<Eigen::Vector2d, 3>> triangulate_from_vertex(const Polygon2& p) {
+  std::vector<std::array<Eigen::Vector2d, 3>> t;
+  for (std::size_t k = 1; k + 1 < p.size(); ++k) t.push_back({p[0], p[k], p[k + 1]});
+  return t;
+}
+
 }  // namespace symcontact

@@ -27,4 +27,7 @@ Polygon2 clip_convex_polygon(const Polygon2& subject, const Polygon2& clip, doub
 /// Fan triangulation from the vertex centroid: triangles (c, p_k, p_{k+1}), k = 0..n−1, for a convex polygon.
 std::vector<std::array<Eigen::Vector2d, 3>> triangulate_from_centroid(const Polygon2& p);
 
+/// Fan triangulation from the first vertex: triangles (p_0, p_k, p_{k+1}), k = 1..n−2, for a convex polygon.
+std::vector<std::array<Eigen::Vector2d, 3>> triangulate_from_vertex(const Polygon2& p);
+
 }  // namespace symcontact

@@ -1,5 +1,7 @@
 #include "symcontact/contact/polygon_clipping.hpp"
 
+#include "symcontact/fem/quadrature.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,8 +71,45 @@ TEST(PolygonClipping, ClipsOfATilingSumToTheSubjectArea) {
         double fan = 0.0;
         for (const auto& tri : triangulate_from_centroid(p)) fan += polygon_area(Polygon2(tri.begin(), tri.end()));
         EXPECT_NEAR(fan, polygon_area(p), 1e-15);
+        const auto from_vertex = triangulate_from_vertex(p);
+        EXPECT_EQ(from_vertex.size(), p.size() - 2);
+        double sum = 0.0;
+        for (const auto& tri : from_vertex) {
+          const double area = polygon_area(Polygon2(tri.begin(), tri.end()));
+          EXPECT_GE(area, -1e-16);
+          sum += area;
+        }
+        EXPECT_NEAR(sum, polygon_area(p), 1e-15);
       }
     }
   EXPECT_GT(pieces, 5);
   EXPECT_NEAR(total, 0.5, 1e-14);
+}
+
+// The mortar rule (degree 3 on each triangle) integrates a cubic over a clip polygon exactly on either
+// fan, so the vertex fan, with two triangles fewer, gives the centroid fan's integral.
+TEST(PolygonClipping, BothFansIntegrateACubicAlike) {
+  const Polygon2 shifted = {Eigen::Vector2d(-0.2, 0.3), Eigen::Vector2d(0.7, -0.15), Eigen::Vector2d(0.6, 0.75)};
+  const Polygon2 p = clip_convex_polygon(kReference, shifted);
+  ASSERT_GE(p.size(), 5u);
+  const QuadratureRule rule = simplex_quadrature(2, 3);
+  const auto integral = [&](const std::vector<std::array<Eigen::Vector2d, 3>>& triangles, auto f) {
+    double sum = 0.0;
+    for (const auto& t : triangles) {
+      const double jac = (t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x();
+      for (int q = 0; q < rule.size(); ++q)
+        sum += rule.weights[q] * jac * f(t[0] + rule.point(q)[0] * (t[1] - t[0]) + rule.point(q)[1] * (t[2] - t[0]));
+    }
+    return sum;
+  };
+  const auto cubic = [](const Eigen::Vector2d& x) {
+    return 1.0 + x.x() * x.y() + std::pow(x.x(), 3) - 2.0 * std::pow(x.y(), 3) + x.x() * x.y() * x.y();
+  };
+  const double centroid = integral(triangulate_from_centroid(p), cubic);
+  EXPECT_NEAR(integral(triangulate_from_vertex(p), cubic), centroid, 1e-15 * std::abs(centroid));
+  EXPECT_GT(std::abs(centroid), 0.05);
+  // An exponential is not integrated exactly: the two fans part on it, so the comparison above can fail.
+  const auto exponential = [](const Eigen::Vector2d& x) { return std::exp(6.0 * x.x() - 4.0 * x.y()); };
+  EXPECT_GT(std::abs(integral(triangulate_from_centroid(p), exponential) - integral(triangulate_from_vertex(p), exponential)),
+            1e-6);
 }
