@@ -57,6 +57,12 @@ void BoundingVolumeHierarchy::for_each_overlap(const Box& query, const std::func
 
 int BoundingVolumeHierarchy::nearest(const Eigen::Vector3d& p, double max_dist2,
                                      const std::function<double(int)>& distance2, double* best_dist2) const {
+  return nearest_within_bound(p, max_dist2, [&](int item, double) { return distance2(item); }, best_dist2);
+}
+
+int BoundingVolumeHierarchy::nearest_within_bound(const Eigen::Vector3d& p, double max_dist2,
+                                                  const std::function<double(int, double)>& distance2,
+                                                  double* best_dist2) const {
   int best = -1;
   double best_d2 = max_dist2;
   if (!nodes_.empty()) {
@@ -71,7 +77,7 @@ int BoundingVolumeHierarchy::nearest(const Eigen::Vector3d& p, double max_dist2,
       if (lb > best_d2) continue;
       const Node& n = nodes_[id];
       if (n.item >= 0) {
-        const double d2 = distance2(n.item);
+        const double d2 = distance2(n.item, best_d2);
         if (d2 <= best_d2) {
           best_d2 = d2;
           best = n.item;

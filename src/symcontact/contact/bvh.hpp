@@ -26,6 +26,11 @@ class BoundingVolumeHierarchy {
   int nearest(const Eigen::Vector3d& p, double max_dist2, const std::function<double(int)>& distance2,
               double* best_dist2 = nullptr) const;
 
+  /// As above, with distance2(item, bound) told the best squared distance so far: for an item that cannot
+  /// win it may return any value > bound without finishing its work.
+  int nearest_within_bound(const Eigen::Vector3d& p, double max_dist2,
+                           const std::function<double(int, double)>& distance2, double* best_dist2 = nullptr) const;
+
  private:
   struct Node {
     Box box;

@@ -344,13 +344,14 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
   const Eigen::Vector3d p3 = pad3(p);
   // The nearest FACING master facet: back-facing facets (a point's own facet in self-contact, the far
   // face of a thin master) are skipped so that the search goes on to the one that matters.
-  const int mf = master.tree.nearest(p3, search * search, [&](int k) {
+  const auto distance2 = [&](int k, double bound) {
     const Eigen::MatrixXd& xk = master.facet_x[k];
     const FacetProjection q = project_on_facet(ms.facet_type, xk, p);
-    if (pad3(facet_normal(ms.facet_type, xk, q.eta)).dot(slave_normal) >= 0)
+    if (q.distance2 > bound || pad3(facet_normal(ms.facet_type, xk, q.eta)).dot(slave_normal) >= 0)
       return std::numeric_limits<double>::infinity();
     return q.distance2;
-  });
+  };
+  const int mf = master.tree.nearest_within_bound(p3, search * search, distance2);
   if (mf < 0) return false;
   const FacetProjection pr = project_on_facet(ms.facet_type, master.facet_x[mf], p);
   if (!allow_past_end && past_end(ms, mf, pr)) return false;
@@ -570,7 +571,16 @@ std::vector<MortarCell> mortar_cells(const ContactSurface& slave, const Eigen::M
     if (nm.dot(n0) >= 0) return;  // not facing the slave facet
     // Master vertices projected along n0 onto the auxiliary plane, in the slave's reference coordinates.
     Polygon2 poly;
-    for (int a = 0; a < master_vertices; ++a) poly.push_back(aux.reference(y[a]));
+    Eigen::AlignedBox2d box;
+    box.setEmpty();
+    for (int a = 0; a < master_vertices; ++a) {
+      poly.push_back(aux.reference(y[a]));
+      box.extend(poly.back());
+    }
+    // Most facets of the query lie beside the slave facet (the box of a tilted prism is wide): a polygon
+    // whose box misses the reference cell's [0, 1]² by more than the clipping's round-off gives no cell.
+    const double margin = 1e-9 * std::max(1.0, box.max().cwiseAbs().maxCoeff() + box.min().cwiseAbs().maxCoeff());
+    if ((box.min().array() > 1.0 + margin).any() || (box.max().array() < -margin).any()) return;
     const double area = polygon_area(poly);
     if (std::abs(area) < 1e-14) return;
     if (area < 0) std::reverse(poly.begin(), poly.end());

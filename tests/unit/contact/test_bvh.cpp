@@ -103,6 +103,18 @@ TEST_P(BvhDim, NearestEqualsBruteForceMinimiser) {
     // A radius just above the minimum still finds it; just below finds nothing.
     EXPECT_EQ(tree.nearest(p, want_d2 * (1 + 1e-9) + 1e-300, dist2), want);
     EXPECT_EQ(tree.nearest(p, want_d2 * (1 - 1e-9), dist2), -1);
+    // Told the best distance so far, an item that cannot win may stop early (+∞): same answer, and
+    // every bound is at least the answer's distance.
+    double smallest_bound = std::numeric_limits<double>::infinity();
+    const auto bounded = [&](int i, double bound) {
+      smallest_bound = std::min(smallest_bound, bound);
+      const double d2 = (site[i] - p).squaredNorm();
+      return d2 > bound ? std::numeric_limits<double>::infinity() : d2;
+    };
+    double bounded_d2 = -1.0;
+    EXPECT_EQ(tree.nearest_within_bound(p, 1e30, bounded, &bounded_d2), want);
+    EXPECT_DOUBLE_EQ(bounded_d2, want_d2);
+    EXPECT_GE(smallest_bound, want_d2);
   }
 }
 
