@@ -89,10 +89,10 @@ void GeometryFixedPoint::after_stagnation(int it, double change, VectorXd& u) {
     std::ostringstream s;
     if (at_noise)
       s << "  the geometry fixed point stopped falling near its tolerance (" << c[c.size() - 2] << ", then " << change
-        << "); IPOPT tol tightened to " << ipopt_.tolerance;
+        << "); optimiser tolerance ([ipopt] tol) tightened to " << ipopt_.tolerance;
     else
       s << "  the geometry fixed point stagnated (no new low below " << monitor_.best()
-        << "); IPOPT tol tightened to " << ipopt_.tolerance;
+        << "); optimiser tolerance ([ipopt] tol) tightened to " << ipopt_.tolerance;
     log_.detail(s.str());
     monitor_.restart();
   }
@@ -101,7 +101,8 @@ void GeometryFixedPoint::after_stagnation(int it, double change, VectorXd& u) {
   std::ostringstream s;
   s << "the geometry fixed point did not converge in " << options_.max_geometry_iterations
     << " iterations (last relative change " << change << ", tolerance " << stop_tolerance_ << ")";
-  if (tightenings_ > 0) s << "; tried: IPOPT tol tightened " << tightenings_ << " time(s), to " << ipopt_.tolerance;
+  if (tightenings_ > 0)
+    s << "; tried: optimiser tolerance ([ipopt] tol) tightened " << tightenings_ << " time(s), to " << ipopt_.tolerance;
   s << "; try smaller load steps ([contact_solver] max_step_cuts = 4, or more [steps])";
   throw SolveError(s.str());
 }

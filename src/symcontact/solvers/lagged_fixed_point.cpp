@@ -106,8 +106,8 @@ std::string LaggedFixedPoint::failure(const std::string& what, int iteration, do
     << ", smallest since the last remedy " << monitor_.best() << ", tolerance " << options_.coulomb_tolerance
     << ")";
   if (tightenings_ > 0)
-    e << "; tried: inner solves tightened " << tightenings_ << " time(s), to IPOPT tol " << inner_.ipopt.tolerance
-      << " and geometry tolerance " << inner_.geometry_tolerance;
+    e << "; tried: inner solves tightened " << tightenings_ << " time(s), to optimiser tolerance ([ipopt] tol) "
+      << inner_.ipopt.tolerance << " and geometry tolerance " << inner_.geometry_tolerance;
   e << "; " << term_.advice();
   return e.str();
 }
@@ -121,8 +121,8 @@ bool LaggedFixedPoint::stagnation_ends(int iteration, double change) {
     tighten(inner_);
     std::ostringstream m;
     m << "  the " << term_.loop_name() << " fixed point stagnated (no new low below " << monitor_.best()
-      << "); inner solves tightened to IPOPT tol " << inner_.ipopt.tolerance << ", geometry tolerance "
-      << inner_.geometry_tolerance;
+      << "); inner solves tightened to optimiser tolerance ([ipopt] tol) " << inner_.ipopt.tolerance
+      << ", geometry tolerance " << inner_.geometry_tolerance;
     log_.detail(m.str());
     monitor_.restart();
     return false;
@@ -169,7 +169,8 @@ bool LaggedFixedPoint::stops(int k, const std::vector<Eigen::VectorXd>& r) {
       confirming_ = false;
       return false;
     }
-    log_.detail("  the " + term_.data_name() + "s settled on an inexact solve; one more solve to the geometry tolerance");
+    log_.detail("  the " + term_.data_name() +
+                "s settled on an inexact solve; one more solve to the geometry tolerance");
     scale_ = 0.0;
   } else if (confirming_ && inexact_) {
     // The exact solve moved the data back above the tolerance: the inexact solves' error was larger than
