@@ -30,7 +30,7 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
     : energy_(energy), fixed_(fixed), contacts_(contacts), dofs_(dofs), options_(options), workspace_(workspace),
       log_(log), friction_(friction), total_(energy), problem_(total_, fixed, dofs.num_dofs()),
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
-      dual_(dual_method(contacts, options.subproblem_solver, options.warm_start)),
+      dual_(dual_method(options.subproblem_solver, options.warm_start)),
       primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
       sparse_alternative_(sparse_alternative(energy, contacts, options)) {

@@ -12,10 +12,9 @@ bool independent_rows(const ContactSet& contacts) {
   return std::none_of(contacts.pairs.begin(), contacts.pairs.end(), [](const ContactPair& p) { return p.two_sided(); });
 }
 
-std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm) {
+std::unique_ptr<DualIpopt> dual_method(SubproblemSolver choice, WarmStart warm) {
   if (choice == SubproblemSolver::kPrimalIpopt || choice == SubproblemSolver::kPrimalInteriorPoint) return nullptr;
-  if (choice == SubproblemSolver::kDualInteriorPoint && independent_rows(contacts))
-    return std::make_unique<DualInteriorPoint>(warm);
+  if (choice == SubproblemSolver::kDualInteriorPoint) return std::make_unique<DualInteriorPoint>(warm);
   return std::make_unique<DualIpopt>();
 }
 

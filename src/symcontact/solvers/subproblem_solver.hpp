@@ -32,9 +32,11 @@ enum class SubproblemSolver {
   /// with no optimiser error (dual_subproblem.hpp). Falls back to the primal when IPOPT fails.
   kDualIpopt,
   /// The dual by the dense interior point of dense_qp_interior_point.hpp (one LAPACK Cholesky of the m × m
-  /// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance too) where the rows are
-  /// independent (no symmetric pair, no self-contact: the dual's λ is unique); by IPOPT otherwise, and
-  /// where it fails. Subproblems with friction terms: the dense primal interior point (above).
+  /// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance too), on every contact
+  /// kind: the dual is a convex QP whatever the rows, and on a symmetric pair or a self-contact, whose nearly
+  /// dependent rows leave λ not unique, the barrier keeps its Newton matrix definite and the interior point
+  /// ends at a point of the optimal face (the displacements are unique); by IPOPT where it fails.
+  /// Subproblems with friction terms: the dense primal interior point (above).
   kDualInteriorPoint,
   /// Every subproblem on the primal, by the dense primal interior point where it applies (above).
   kPrimalInteriorPoint,
@@ -116,10 +118,10 @@ inline std::optional<IpoptProblem> parse_ipopt_problem(const std::string& name) 
 /// no self-contact), so that the multipliers are unique.
 bool independent_rows(const ContactSet& contacts);
 
-/// The dual method of a solve under `choice` (dual_subproblem.hpp): the dense interior point only where the
-/// rows are independent, IPOPT on the dual for symmetric pairs and self-contact; null for the primal choices.
-/// `warm`: whether the dense interior point's subproblems first close the previous solution's active set.
-std::unique_ptr<DualIpopt> dual_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm);
+/// The dual method of a solve under `choice` (dual_subproblem.hpp): the dense interior point for
+/// "dual_interior_point", IPOPT on the dual for "dual_ipopt"; null for the primal choices. `warm`: whether the
+/// dense interior point's subproblems first close the previous solution's active set.
+std::unique_ptr<DualIpopt> dual_method(SubproblemSolver choice, WarmStart warm);
 
 /// Whether the primal subproblems of a solve under `choice` go to the dense primal interior point first (the
 /// "interior_point" choices, rows independent); primal_method() gives it then.

@@ -81,8 +81,8 @@ TEST_F(ContactSolverTest, EveryMethodGivesTheSameAnswerOnSymmetricAndOnePassPair
       const Solved s = solve(options(dual, true));
       EXPECT_EQ(s.report.dual_solves, s.report.geometry_iterations) << "every iteration through the dual";
       expect_same_answer(s, primal_whole, "dual");
-      // The dense interior point only on independent rows (one-pass); IPOPT on the symmetric pair's dual.
-      const bool interior_point = dual == SubproblemSolver::kDualInteriorPoint && mode == "one-pass";
+      // The dense interior point on both kinds of rows (the symmetric pair's nearly dependent ones too).
+      const bool interior_point = dual == SubproblemSolver::kDualInteriorPoint;
       // (its later solves may close the previous solution's active set instead: dual_subproblem.hpp)
       const std::string& status = s.report.ipopt_status;
       const bool dense = status.rfind("interior point", 0) == 0 || status.rfind("previous active set closed", 0) == 0;
