@@ -5,17 +5,18 @@
 /// active set closed exactly in the dual's own form, and the displacements y = S⁺(Aᵀλ − ĝ) − Nβ, which
 /// balance the forces for any λ. Warm-started, from the second solve of a run on, from the previous rows'
 /// multipliers, the gaps at the start point as the bounds' multipliers, and the previous rigid-motion
-/// multipliers β. Where the answer is to be closed and the rows are independent (DualInteriorPoint, with
-/// WarmStart::kActiveSet), the previous solution's active set is closed first (also across load steps, where no rigid motion needs
-/// the previous β), as the polish would close the optimiser's, the QP's KKT conditions checked the same
-/// way: a few rounds of |F|³/3 instead of the interior point's iterations of m³/3, which run where it
-/// does not close.
+/// multipliers β. Where the answer is to be closed (DualInteriorPoint, with WarmStart::kActiveSet), the
+/// previous solution's active set is closed first (also across load steps, where no rigid motion needs the
+/// previous β), as the polish would close the optimiser's, the QP's KKT conditions checked the same way: a
+/// few rounds of |F|³/3 instead of the interior point's iterations of m³/3, which run where it does not
+/// close.
 ///  - DualIpopt: IPOPT (MUMPS factorising the dense W as a sparse matrix), warm then cold.
 ///  - DualInteriorPoint: the dense interior point (dense_qp_interior_point.hpp, a LAPACK Cholesky of the m × m
 ///    matrix per iteration, stopping at IPOPT's `tol`, complementarity at 1e-6 of it), warm then cold;
-///    DualIpopt's attempts where it fails. For independent rows only (obstacles, one-pass pairs): with the
-///    nearly dependent families of a symmetric pair the optimal λ form a face, and the interior point ends
-///    on another point of it, from which the closing finds a smaller set or none.
+///    DualIpopt's attempts where it fails. With the nearly dependent families of a symmetric pair or a
+///    self-contact the optimal λ form a face (the displacements are unique) and the interior point ends at
+///    a point of it, from which the closing may find a smaller set or none: the interior point's answer,
+///    within its tolerance, then stands.
 /// A solution with `success` false asks the caller for the primal (the reference formulation).
 
 #include <memory>
