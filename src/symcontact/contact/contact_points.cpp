@@ -434,7 +434,7 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
   // On flat (Tri3) facets the integrand is a cubic in ξ within a cell (θ quadratic: x and x̄ affine, the
   // master's smoothed normal linear; φ linear), which any triangulation of the cell integrates exactly:
   // the fan from one vertex takes the fewest triangles, n − 2 of an n-gon. Curved and bilinear facets
-  // keep the fan from the centroid, whose better-shaped triangles suit an integrand that is no polynomial.
+  // keep the fan from the centroid, whose better-shaped triangles suit an integrand that is not a polynomial.
   const bool flat = slave.facet_type == CellType::kTri3;
   std::vector<ContactPoint> points, facet_points;
   std::vector<double> N(npf);

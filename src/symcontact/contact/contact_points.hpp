@@ -17,13 +17,13 @@
 /// any triangulation is exact; from its centroid on curved or bilinear ones) and carries a triangle rule
 /// of degree 2·order + 1 (2·gauss_points − 1 when given): exact for θ φ on flat facets, of that degree
 /// in ξ within a cell (the master's smoothed normal varies along it). Each point is evaluated on the
-/// (possibly curved, Tri6) slave facet and projected onto the master by closest point, as in 2D. Curved Tri6 facets are clipped
-/// through their vertex triangles (the standard approach; exact for flat facets). Quadrilateral facets
-/// (Quad4, Quad9) are clipped the same way in their reference square: the master's vertices projected on
-/// the plane through the slave's vertices (normal: the cross product of its diagonals) are mapped to the
-/// square by inverting the bilinear map of the slave's projected vertices; the polygon so clipped is
-/// exact for parallelogram slave facets (the map is then affine), and approximate, like a curved
-/// facet's, for others.
+/// (possibly curved, Tri6) slave facet and projected onto the master by closest point, as in 2D. Curved
+/// Tri6 facets are clipped through their vertex triangles (the standard approach; exact for flat facets).
+/// Quadrilateral facets (Quad4, Quad9) are clipped the same way in their reference square: the master's
+/// vertices projected on the plane through the slave's vertices (normal: the cross product of its
+/// diagonals) are mapped to the square by inverting the bilinear map of the slave's projected vertices;
+/// the polygon so clipped is exact for parallelogram slave facets (the map is then affine), and
+/// approximate, like a curved facet's, for others.
 /// A slave region that no projected master facet covers gets no points: past the border of the master
 /// there is no contact, which the 3D end rule (contact_surface.hpp, border edges) also enforces.
 ///
