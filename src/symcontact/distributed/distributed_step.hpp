@@ -21,7 +21,8 @@
 /// the obstacle, on 6-node triangles in the modified test basis), handed to the interior point as its friction
 /// at the rows of the same nodes, each with the term's relative-displacement map (NodalConstraints::slip_map);
 /// Coulomb is the serial Coulomb fixed point (lagged_fixed_point.hpp with CoulombThresholds) around the
-/// geometry fixed point, each solve starting from the current displacement, the thresholds following the interior point's iterates where coulomb_update says so (FollowBounds).
+/// geometry fixed point, each solve starting from the current displacement, the thresholds following the
+/// interior point's iterates where coulomb_update says so (FollowBounds).
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
 /// strain and symmetric pairs of two surfaces.
