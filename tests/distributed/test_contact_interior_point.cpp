@@ -2,7 +2,8 @@
 // (src/symcontact/distributed/contact_interior_point.hpp) on a block pressed onto a rigid ball, on one rank
 // and, registered a second time under mpirun, on two: its answer against the exact solution of the contact
 // problem (the active set's equality-constrained problem solved by sparse Cholesky, checked for contact
-// forces ≥ 0 and gaps ≥ 0), the same for a block loaded onto a plane it touches up to round-off, the Krylov
+// forces ≥ 0 and gaps ≥ 0), the same for a block loaded onto a plane it touches up to round-off and with a
+// second family of rows that cannot close with the first, the Krylov
 // iterations per Newton system as the mesh is refined, and Tresca and
 // Coulomb friction on a block sliding on a rigid plane against their closed forms, its slip also given by maps.
 
@@ -144,6 +145,47 @@ TEST(ContactInteriorPoint, SolvesALoadDrivenProblemWithRoundOffGaps) {
     EXPECT_LE((r.u - a.u).lpNorm<Eigen::Infinity>(), 1e-8 * a.u.lpNorm<Eigen::Infinity>());
     EXPECT_LE((r.lambda - a.lambda).lpNorm<Eigen::Infinity>(), 1e-8 * a.lambda.maxCoeff());
   }
+}
+
+/// o's rows and beside each a copy that asks its node to stay `offset` further away (the same normal, the lower
+/// bound + offset): two families of rows as a curved symmetric pair has, the one held open by the other.
+ObstacleSystem with_offset_copies(ObstacleSystem o, double offset) {
+  NodalConstraints& c = o.contact;
+  const Index m = c.size();
+  c.node.insert(c.node.end(), c.node.begin(), c.node.end());
+  c.normal.conservativeResize(Eigen::NoChange, 2 * m);
+  c.normal.rightCols(m) = c.normal.leftCols(m);
+  c.lower.conservativeResize(2 * m);
+  c.lower.tail(m) = c.lower.head(m).array() + offset;
+  return o;
+}
+
+// Two families of nearly dependent rows, one of each pair open by 1e-7 of the imposed displacement at the
+// answer: the polish that first takes both into its active set finds that they cannot close together, drops the
+// open ones and closes the rest: the answer of the tighter family alone, to a hundredth of the tolerance.
+TEST(ContactInteriorPoint, ClosesOneOfEachPairOfRowsThatCannotCloseTogether) {
+  const int dim = 2, n = 24;
+  const double depth = 0.02, offset = 1e-7 * depth;
+  const ObstacleSystem tight = block_on_ball_system(dim, n, 1.0, depth, g_petsc->rank(), g_petsc->size());
+  ObstacleSystem alone = tight;
+  alone.contact.lower.array() += offset;
+  const ContactInteriorPointResult reference = solve(alone);
+  ASSERT_TRUE(reference.converged) << reference.reason;
+  const ContactInteriorPointResult r = solve(with_offset_copies(tight, offset));
+  ASSERT_TRUE(r.converged) << r.reason;
+  EXPECT_EQ(r.polishes, 1);
+  EXPECT_EQ(r.polishes_rejected, 0) << "the first polish meets both families and keeps the tighter one";
+  const Index m = tight.contact.size();
+  const double u_error = (r.u - reference.u).lpNorm<Eigen::Infinity>() / reference.u.lpNorm<Eigen::Infinity>();
+  const double lambda_error =
+      (r.lambda.head(m) + r.lambda.tail(m) - reference.lambda).lpNorm<Eigen::Infinity>() / reference.lambda.maxCoeff();
+  if (g_petsc->rank() == 0)
+    std::printf("%d iterations (%d polish, %d rejected): u %.1e, λ %.1e from the tighter family's answer; "
+                "the looser rows carry %.1e\n", r.iterations, r.polishes, r.polishes_rejected, u_error, lambda_error,
+                r.lambda.head(m).lpNorm<Eigen::Infinity>());
+  EXPECT_LE(u_error, 1e-10);
+  EXPECT_LE(lambda_error, 1e-9);
+  EXPECT_EQ(r.lambda.head(m).lpNorm<Eigen::Infinity>(), 0.0) << "the open rows carry no force";
 }
 
 int largest(const std::vector<int>& v) { return *std::max_element(v.begin(), v.end()); }

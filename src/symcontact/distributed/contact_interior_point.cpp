@@ -74,6 +74,13 @@ constexpr PolishAccuracy kEarly{1e-2, 1e-4};
 /// The rescue before giving up: the interior point's own test.
 constexpr PolishAccuracy kRescue{1.0, 1.0};
 
+/// How the method of multipliers on one active set ends (InteriorPoint::polish_on).
+enum class PolishOutcome {
+  kClosed,          ///< the rows of S closed and the forces balanced, to the accuracy asked
+  kRowsCannotClose,  ///< ‖c_S‖ stopped halving: S holds rows that no point closes together
+  kFailed,          ///< out of steps, or the Krylov solve broke down
+};
+
 /// An iterate (u, s, λ) with the result's figures at it: what a polish that is not accepted gives back.
 struct Iterate {
   Owned<Vec, VecDestroy> u;
@@ -115,7 +122,8 @@ class InteriorPoint {
   bool polished(const PolishAccuracy& accuracy);
   bool rescued();
   bool polish(const PolishAccuracy& accuracy);
-  bool polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy);
+  double gap_tolerance(const PolishAccuracy& accuracy) const;
+  PolishOutcome polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy);
   double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
@@ -503,6 +511,7 @@ bool InteriorPoint::polished(const PolishAccuracy& accuracy) {
       return true;
     }
   }
+  ++result_.polishes_rejected;
   restore(before);
   return false;
 }
@@ -531,17 +540,25 @@ bool InteriorPoint::polish(const PolishAccuracy& accuracy) {
   for (Index j = 0; j < m_; ++j) in_set[static_cast<std::size_t>(j)] = lambda_[j] / F_ >= s_[j] / L_;
   VectorXd nu = lambda_;
   for (int round = 0; round < kRounds; ++round) {
-    if (!polish_on(in_set, nu, accuracy)) break;
+    const PolishOutcome outcome = polish_on(in_set, nu, accuracy);
+    if (outcome == PolishOutcome::kFailed) break;
+    // Rows that cannot close together (the two nearly dependent families of a symmetric pair, one of each
+    // pair held open by the meshes' mismatch): the method of multipliers meets them halfway, the row that
+    // should stay open still open, its partner pushed past closed. The rows of S still open leave it, and no
+    // row joins before S has closed (a row that should have stayed is then violated and joins again).
+    const bool closed = outcome == PolishOutcome::kClosed;
+    const double open = closed ? std::numeric_limits<double>::infinity() : gap_tolerance(accuracy);
     const VectorXd c = A_ * gather(u_.object) - c_.lower;
     bool changed = false;
     for (Index j = 0; j < m_; ++j) {
       char& in = in_set[static_cast<std::size_t>(j)];
-      if ((in && nu[j] < -0.1 * tol * F_) || (!in && c[j] < -0.1 * tol * L_)) {
+      if ((in && (nu[j] < -0.1 * tol * F_ || c[j] > open)) || (closed && !in && c[j] < -0.1 * tol * L_)) {
         in = !in;
         nu[j] = 0.0;
         changed = true;
       }
     }
+    if (!closed && !changed) break;
     if (changed) continue;
     s_ = c.cwiseMax(0.0);
     for (Index j = 0; j < m_; ++j) lambda_[j] = in_set[static_cast<std::size_t>(j)] ? std::max(nu[j], 0.0) : 0.0;
@@ -550,21 +567,26 @@ bool InteriorPoint::polish(const PolishAccuracy& accuracy) {
   return false;
 }
 
+/// The gaps a polish closes its rows to: accuracy.gaps tol L, not below the round-off of gaps computed from the
+/// coordinates (the gap rows' constants), 10 ε max |x|.
+double InteriorPoint::gap_tolerance(const PolishAccuracy& accuracy) const {
+  return std::max(accuracy.gaps * options_.tolerance * L_,
+                  10.0 * std::numeric_limits<double>::epsilon() * coordinate_scale_);
+}
+
 /// min ½ uᵀKu − bᵀu subject to c_j(u) = 0 for j in S, from u and the multipliers ν of S, by the method of
 /// multipliers (Hestenes 1969; Nocedal & Wright §17.3), which converges whatever the rank of A_S:
 ///     (K + ρ A_Sᵀ A_S) Δu = −(K u − b − A_Sᵀ ν) − ρ A_Sᵀ c_S(u),   u ← u + Δu,   ν_S ← ν_S − ρ c_S(u),
 /// ρ = 10² × K's largest diagonal entry (the rows are lengths of unit entries: ρ A_SᵀA_S is 10² times as stiff
 /// as the stiffest DOF; at 10³ the round-off of the Newton matrix, ε ρ ‖u‖, kept ‖K u − b − A_Sᵀ ν‖∞ above
-/// 10⁻¹¹ F on a contact patch test). True when ‖c_S‖∞ ≤ accuracy.gaps tol L (at least 10 ε max |x|) and
-/// ‖K u − b − A_Sᵀ ν‖∞ ≤ accuracy.forces tol F; false after kIterations steps, when ‖c_S‖∞ stops halving at
-/// each step (rows that cannot all close: the nearly dependent families of a curved symmetric pair), or when
-/// the Krylov solve broke down. Frictionless only.
-bool InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy) {
+/// 10⁻¹¹ F on a contact patch test). Closed when ‖c_S‖∞ ≤ accuracy.gaps tol L (at least 10 ε max |x|) and
+/// ‖K u − b − A_Sᵀ ν‖∞ ≤ accuracy.forces tol F; rows that cannot close when ‖c_S‖∞ stops halving at each
+/// step (the nearly dependent families of a curved symmetric pair: polish() then drops the rows still
+/// open); failed after kIterations steps or when the Krylov solve broke down. Frictionless only.
+PolishOutcome InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy) {
   constexpr int kIterations = 12;
   const double rho = 1e2 * max_diagonal_, force_tol = accuracy.forces * options_.tolerance * F_;
-  // Not below the round-off of gaps computed from the coordinates (the gap rows' constants): 10 ε max |x|.
-  const double gap_tol = std::max(accuracy.gaps * options_.tolerance * L_,
-                                  10.0 * std::numeric_limits<double>::epsilon() * coordinate_scale_);
+  const double gap_tol = gap_tolerance(accuracy);
   VectorXd mask(m_);
   for (Index j = 0; j < m_; ++j) mask[j] = in_set[static_cast<std::size_t>(j)] ? 1.0 : 0.0;
   update_newton_matrix(Eigen::MatrixXd(), rho * mask);
@@ -577,14 +599,14 @@ bool InteriorPoint::polish_on(std::vector<char>& in_set, VectorXd& nu, const Pol
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     const double closing = c_S.lpNorm<Eigen::Infinity>();
-    if (closing <= gap_tol && rd <= force_tol) return true;
-    if (k >= 2 && closing > 0.5 * last_closing) return false;  // rows that cannot all close (nearly dependent)
+    if (closing <= gap_tol && rd <= force_tol) return PolishOutcome::kClosed;
+    if (k >= 2 && closing > 0.5 * last_closing) return PolishOutcome::kRowsCannotClose;
     last_closing = closing;
-    if (k == kIterations) return false;
+    if (k == kIterations) return PolishOutcome::kFailed;
     check(VecCopy(rd_.object, rhs_.object), "VecCopy");
     check(VecScale(rhs_.object, -1.0), "VecScale");
     add_transpose(-rho * c_S, rhs_.object);
-    if (!solve_newton(0.0, 0.1 * force_tol)) return false;
+    if (!solve_newton(0.0, 0.1 * force_tol)) return PolishOutcome::kFailed;
     zero_fixed_rows(du_.object);
     check(VecAXPY(u_.object, 1.0, du_.object), "VecAXPY");
     nu -= rho * (A_ * gather(u_.object) - c_.lower).cwiseProduct(mask);

@@ -104,6 +104,7 @@ struct ContactInteriorPointResult {
   std::string reason;                  ///< why it stopped when it did not converge
   int iterations = 0;                  ///< interior-point iterations (two Newton solves each)
   int polishes = 0;                    ///< accepted active-set polishes (0 or 1: the last one ends the solve)
+  int polishes_rejected = 0;           ///< polishes tried and not kept (the iterations went on from before them)
   std::vector<int> krylov_iterations;  ///< conjugate-gradient iterations of every Newton solve, in order
   double setup_seconds = 0.0;          ///< Newton matrices and preconditioners
   double krylov_seconds = 0.0;         ///< conjugate gradients
