@@ -27,15 +27,20 @@ import subprocess
 import sys
 
 REL = 1e-8
+# On a curved symmetric pair the answer is pinned only to what the serial path's own optimisers agree to: on V6
+# the dense interior point and IPOPT on the dual part by 1.1e-6 of the forces' scale (7.6e-8 of the pressures',
+# 2.6e-8 of the displacements') at the default tolerances, and by 1.5e-6 still with geometry_tolerance = 1e-10
+# and IPOPT's tol = 1e-12; the two ranks by 2.1e-6 from the serial run.
+REL_SYMMETRIC = 1e-5
 
-# (example, extra [contact_solver] keys, --mesh-size): VALIDATION.md's V1 and V2, elastic bodies on rigid
-# planes, V1 in three load steps (the steps after the first reuse the first one's stiffness), and V4, the
-# block pressed and dragged with Coulomb friction in 11 steps. Both paths stop the Coulomb fixed point at
-# coulomb_tolerance from one fixed point, each on its own side: at the default 1e-6 they part by about 1e-7
-# of the forces' scale in the steps where the block starts to slip, so V4 runs with 1e-10; the same block with
-# Tresca friction (TRESCA: no Coulomb loop); and in 3D, a pad
-# pressed and dragged on a plane with Coulomb friction (pad_3d/pad.toml, a path of its own: os.path.join keeps
-# it whole), and on a rigid sphere (pad_3d/pad_ball.toml). Between elastic bodies: V6's rings and V3's patch
+# (example, extra [contact_solver] keys, --mesh-size[, tolerance, REL where none]): VALIDATION.md's V1 and V2,
+# elastic bodies on rigid planes, V1 in three load steps (the steps after the first reuse the first one's
+# stiffness), and V4, the block pressed and dragged with Coulomb friction in 11 steps.
+# Both paths stop the Coulomb fixed point at coulomb_tolerance from one fixed point, each on its own side: at the
+# default 1e-6 they part by about 1e-7 of the forces' scale in the steps where the block starts to slip, so V4 runs
+# with 1e-10; the same block with Tresca friction (TRESCA: no Coulomb loop); and in 3D, a pad pressed and dragged on a
+# plane with Coulomb friction (pad_3d/pad.toml, a path of its own: os.path.join keeps it whole), and on a rigid sphere
+# (pad_3d/pad_ball.toml). Between elastic bodies: V6's rings and V3's patch
 # test (two blocks of quadrilaterals) with their pairs in one-pass mode, and the self-contact of a block with a
 # crack, frictionless; V5's inclined interface in one-pass mode with Coulomb friction (each slave node slides
 # against the other body), with coulomb_tolerance = 1e-9 in 2D (at 1e-8 the two loops stop up to 1.2e-8 of the
@@ -66,13 +71,19 @@ CASES = [
                                    ('model = "plane_strain"\n', 'model = "plane_strain"\norder = 2\n')], None),
     (os.path.join(os.path.dirname(os.path.abspath(__file__)), "pad_3d", "pad.toml"),
      [("mesh_size = 0.2\n", "mesh_size = 0.2\norder = 2\n")], None),
+    # Symmetric pairs without friction, as the examples are written: V3's flat patch test, whose two families
+    # close together, to REL; V6's curved rings, where one row of each nearly dependent pair is held open by the
+    # meshes' mismatch, to REL_SYMMETRIC.
+    ("quad_blocks_2d/quad_blocks.toml", "", None),
+    ("rings_2d/rings.toml", "", None, REL_SYMMETRIC),
 ]
 # What neither path solves: a failed solve (exit 3) saying why, the same on both. V4 with the block's left side
 # held vertically: the bottom-left node's normal is along a fixed DOF, and the Coulomb fixed point stagnates.
 FAILED_SOLVES = [("friction_block/block.toml", '[[body.dirichlet]]\nboundary = "left"\nuy = 0.0\n',
                   "the Coulomb fixed point stagnated")]
-# What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder.
-UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"), ("hertz_3d/two_spheres.toml", "contact[0].mode"),
+# What the distributed path does not solve yet: an input error (exit 2) naming the key, no output folder (friction
+# on a symmetric pair: V5's inclined interface as written).
+UNSUPPORTED = [("crushed_ring_2d/ring.toml", "body[0].material.model"),
                ("inclined_2d/inclined.toml", "contact[0].mode")]
 ITERATIVE = 'linear_solver = "iterative"\n'
 # (example, extra as in CASES, dimension, length, force, units): solved on two ranks in m–N–Pa and in the other
@@ -87,11 +98,11 @@ UNITS = [("hertz_2d/cylinder_on_plane.toml", "", 2, 1e3, 1.0, "mm–N–MPa"),
           2, 1e3, 1e6, "lengths × 1e3, forces × 1e6")]
 
 
-def compare(serial, other, units=None):
-    """The Comparison of two output folders (`units`: other's units against serial's). A .pvtu of a run on several
-    ranks stands for the .vtu of the same name, its pieces put together (pvtu_arrays)."""
+def compare(serial, other, units=None, rel=REL):
+    """The Comparison of two output folders to `rel` (`units`: other's units against serial's). A .pvtu of a run on
+    several ranks stands for the .vtu of the same name, its pieces put together (pvtu_arrays)."""
     files_a, files_b = logical_files(serial), logical_files(other)
-    c = Comparison(units)
+    c = Comparison(units, rel)
     for f in files_a:  # the run's scale of each quantity, over every step's files
         path = os.path.join(serial, f)
         if f.endswith(".vtu"):
@@ -313,7 +324,8 @@ def vtu_arrays(path):
 class Comparison:
     """Two runs' numbers; `units`: the second run's units against the first's (None: the same)."""
 
-    def __init__(self, units=None):
+    def __init__(self, units=None, rel=REL):
+        self.rel = rel
         self.count = 0
         self.failures = []
         self.units = units or UnitChange()
@@ -332,7 +344,7 @@ class Comparison:
             self.count += 1
             if math.isnan(x) and math.isnan(y):
                 continue
-            if not abs(f * x - y) <= REL * f * scale:
+            if not abs(f * x - y) <= self.rel * f * scale:
                 self.failures.append(f"{where}[{i}]: {x!r} × {f:g} != {y!r} (scale {scale:.3g})")
 
     def vtu(self, where, a_path, b_path):
@@ -382,7 +394,8 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     failed = False
-    for k, (name, extra, mesh_size) in enumerate(CASES):
+    for k, (name, extra, mesh_size, *tolerance) in enumerate(CASES):
+        rel = tolerance[0] if tolerance else REL
         path = case_file(examples, work, name, extra)
         case_label = label_of(extra)
         tag = name.replace("/", "_").removesuffix(".toml") + case_label.replace(" ", "_")
@@ -417,8 +430,9 @@ def main():
                     os.environ["OPENBLAS_CORETYPE"] = given
             runs.append(("2 ranks, OPENBLAS_CORETYPE=Prescott", baseline))
         for label, folder in runs:
-            c = compare(serial, folder)
-            print(f"{name}{case_label}, {label}: {c.count} numbers, {len(c.failures)} beyond {REL:g} of their quantity's scale")
+            c = compare(serial, folder, rel=rel)
+            print(f"{name}{case_label}, {label}: {c.count} numbers, {len(c.failures)} beyond {rel:g} of their "
+                  "quantity's scale")
             for line in c.failures[:20]:
                 print("  " + line)
             failed = failed or bool(c.failures)

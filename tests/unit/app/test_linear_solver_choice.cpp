@@ -71,7 +71,7 @@ TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathD
   EXPECT_EQ(distributed_path_limit(c->spec).key, material.key + ".model");
 }
 
-TEST(LinearSolverChoice, TheDistributedPathSolvesOnePassPairsAndSelfContactWithAndWithoutFriction) {
+TEST(LinearSolverChoice, TheDistributedPathSolvesOnePassPairsSelfContactAndFrictionlessSymmetricPairs) {
   const testing::TempFolder folder;
   const auto c = block(folder, "", "");
   ContactSpec& pair = c->spec.contacts[0];  // the rule reads the specification only: made a pair here
@@ -80,8 +80,12 @@ TEST(LinearSolverChoice, TheDistributedPathSolvesOnePassPairsAndSelfContactWithA
   pair.boundary_b = "bottom";
   pair.mode = "one-pass";
   EXPECT_TRUE(distributed_path_limit(c->spec).none());
-  pair.mode = "symmetric";  // two nearly dependent families of rows
+  pair.mode = "symmetric";  // two nearly dependent families of rows: frictionless only
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
+  pair.friction = "tresca";
   EXPECT_EQ(distributed_path_limit(c->spec).key, "contact[0].mode");
+  EXPECT_NE(distributed_path_limit(c->spec).message.find("friction = \"tresca\""), std::string::npos);
+  pair.friction = "none";
   pair.body_b = pair.body_a;  // a surface in contact with itself: one family
   pair.boundary_b = pair.boundary_a;
   EXPECT_TRUE(distributed_path_limit(c->spec).none());
