@@ -368,9 +368,12 @@ class DistributedStep {
         << solve.iterations << " iterations (distributed interior point: converged), change " << change;
       log_iteration(log_, clock, m.str());
       if (change <= o.geometry_tolerance) break;
-      if (r.geometry_iterations == o.max_geometry_iterations)
-        throw SolveError("the geometry fixed point did not converge in " + std::to_string(o.max_geometry_iterations) +
-                         " iterations (last change " + std::to_string(change) + ")");
+      if (r.geometry_iterations == o.max_geometry_iterations) {
+        std::ostringstream s;
+        s << "the geometry fixed point did not converge in " << o.max_geometry_iterations
+          << " iterations (last relative change " << change << ", tolerance " << o.geometry_tolerance << ")";
+        throw SolveError(s.str());
+      }
     }
     set_contact_state(model, fixed, u, std::move(lin), solve.lambda, terms, r);
     return r;
