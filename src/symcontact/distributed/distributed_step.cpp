@@ -224,6 +224,18 @@ bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
          (a.A - b.A).norm() == 0.0;
 }
 
+/// What to try when the interior point stops on a model with a symmetric pair of two surfaces: its two nearly
+/// dependent families of rows are what the path closes least surely (docs/distributed.md); "" without one.
+std::string symmetric_pair_hint(const ContactSet& contacts) {
+  for (std::size_t i = 0; i < contacts.pairs.size(); ++i) {
+    const ContactPair& p = contacts.pairs[i];
+    if (p.two_sided() && p.surface_a != p.surface_b)
+      return "; contact '" + p.name + "' is a symmetric pair, whose two nearly dependent families of rows this path "
+             "closes least surely: mode = \"one-pass\" gives it one family (or run without mpirun)";
+  }
+  return "";
+}
+
 class DistributedStep {
  public:
   DistributedStep(const ProblemSpec& spec, const ContactInteriorPointOptions& options, const Logger& log)
@@ -359,7 +371,8 @@ class DistributedStep {
       r.ipopt_per_iteration.push_back(solve.iterations);
       if (!solve.converged)
         throw SolveError("geometry iteration " + std::to_string(r.geometry_iterations) +
-                         ": the distributed interior point stopped: " + solve.reason);
+                         ": the distributed interior point stopped: " + solve.reason +
+                         symmetric_pair_hint(model.contacts()));
       const double change = (solve.u - u).lpNorm<Eigen::Infinity>() / solve.u.lpNorm<Eigen::Infinity>();
       r.change_history.push_back(change);
       u = solve.u;
