@@ -18,6 +18,7 @@
 #include "symcontact/fem/matrix_sink.hpp"
 #include "symcontact/solvers/contact_forces.hpp"
 #include "symcontact/solvers/coulomb_thresholds.hpp"
+#include "symcontact/solvers/fixed_point_monitor.hpp"
 #include "symcontact/solvers/friction_state.hpp"
 #include "symcontact/solvers/lagged_fixed_point.hpp"
 
@@ -34,6 +35,9 @@ void check_distributed_support(const ProblemSpec& spec) {
 }
 
 namespace {
+
+/// The iterations without a new low of the geometry fixed point's change after which it is stagnated.
+constexpr int kStagnationWindow = 10;
 
 /// The stiffness and the load of a linear-elastic model at its current step, E(u) = ½ uᵀKu − fᵀu, in the PETSc
 /// numbering of `ordering` (node_ordering.hpp).
@@ -224,6 +228,25 @@ bool same_rows(const ContactLinearization& a, const ContactLinearization& b) {
          (a.A - b.A).norm() == 0.0;
 }
 
+/// Ends a geometry fixed point that cannot converge: past its iteration limit, or with no new low of its change
+/// in ten iterations (FixedPointMonitor: a cycle of period up to nine, or a floor above the tolerance, as the
+/// rings' symmetric pair shows at geometry_tolerance = 1e-10). Its subproblems' answers are exact on their active
+/// sets, so that, unlike the serial solver, a tighter interior point would not move the floor.
+void fail_if_stuck(FixedPointMonitor& monitor, int iteration, double change, const ContactSolveOptions& o) {
+  monitor.record(change);
+  const bool stagnated = monitor.stagnated();
+  if (!stagnated && iteration < o.max_geometry_iterations) return;
+  std::ostringstream s;
+  if (stagnated)
+    s << "the geometry fixed point stagnated: no new low of its relative change in " << kStagnationWindow
+      << " iterations (best " << monitor.best() << ", last " << change << ", tolerance " << o.geometry_tolerance
+      << "); try a larger [contact_solver] geometry_tolerance";
+  else
+    s << "the geometry fixed point did not converge in " << o.max_geometry_iterations
+      << " iterations (last relative change " << change << ", tolerance " << o.geometry_tolerance << ")";
+  throw SolveError(s.str());
+}
+
 /// What to try when the interior point stops on a model with a symmetric pair of two surfaces: its two nearly
 /// dependent families of rows are what the path closes least surely (docs/distributed.md); "" without one.
 std::string symmetric_pair_hint(const ContactSet& contacts) {
@@ -350,6 +373,7 @@ class DistributedStep {
     ContactLinearization lin;
     ContactInteriorPointResult solve;
     std::vector<std::shared_ptr<FrictionTerm>> terms;
+    FixedPointMonitor monitor(kStagnationWindow);
     for (r.geometry_iterations = 1;; ++r.geometry_iterations) {
       const auto t_search = std::chrono::steady_clock::now();
       ContactLinearization next = model.contacts().linearize(model.dofs(), u);
@@ -381,12 +405,7 @@ class DistributedStep {
         << solve.iterations << " iterations (distributed interior point: converged), change " << change;
       log_iteration(log_, clock, m.str());
       if (change <= o.geometry_tolerance) break;
-      if (r.geometry_iterations == o.max_geometry_iterations) {
-        std::ostringstream s;
-        s << "the geometry fixed point did not converge in " << o.max_geometry_iterations
-          << " iterations (last relative change " << change << ", tolerance " << o.geometry_tolerance << ")";
-        throw SolveError(s.str());
-      }
+      fail_if_stuck(monitor, r.geometry_iterations, change, o);
     }
     set_contact_state(model, fixed, u, std::move(lin), solve.lambda, terms, r);
     return r;
