@@ -76,9 +76,9 @@ constexpr PolishAccuracy kRescue{1.0, 1.0};
 
 /// How the method of multipliers on one active set ends (InteriorPoint::polish_on).
 enum class PolishOutcome {
-  kClosed,          ///< the rows of S closed and the forces balanced, to the accuracy asked
+  kClosed,           ///< the rows of S closed and the forces balanced, to the accuracy asked
   kRowsCannotClose,  ///< ‖c_S‖ stopped halving: S holds rows that no point closes together
-  kFailed,          ///< out of steps, or the Krylov solve broke down
+  kFailed,           ///< out of steps, or the Krylov solve broke down
 };
 
 /// An iterate (u, s, λ) with the result's figures at it: what a polish that is not accepted gives back.

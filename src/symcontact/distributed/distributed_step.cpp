@@ -250,12 +250,10 @@ void fail_if_stuck(FixedPointMonitor& monitor, int iteration, double change, con
 /// What to try when the interior point stops on a model with a symmetric pair of two surfaces: its two nearly
 /// dependent families of rows are what the path closes least surely (docs/distributed.md); "" without one.
 std::string symmetric_pair_hint(const ContactSet& contacts) {
-  for (std::size_t i = 0; i < contacts.pairs.size(); ++i) {
-    const ContactPair& p = contacts.pairs[i];
+  for (const ContactPair& p : contacts.pairs)
     if (p.two_sided() && p.surface_a != p.surface_b)
       return "; contact '" + p.name + "' is a symmetric pair, whose two nearly dependent families of rows this path "
              "closes least surely: mode = \"one-pass\" gives it one family (or run without mpirun)";
-  }
   return "";
 }
 
