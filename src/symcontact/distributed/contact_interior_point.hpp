@@ -41,13 +41,15 @@
 /// (dual and primal residuals and min(s_j/L, λ_j/F) within 10³ tol; again each time the last has fallen a
 /// hundredfold): the program with the rows S = {j : λ_j/F ≥ s_j/L} held as equalities, solved by the method
 /// of multipliers with the same conjugate gradients, rows added or dropped until the multipliers of S are ≥ 0
-/// and no other row is violated. A polish that closes S to 10⁻⁴ tol L and balances the forces to 10⁻² tol F
-/// ends the solve at a KKT point of the program, and is tried again where the interior point's own test ends
-/// it (the same point whatever path led there); when the Krylov solve breaks down or the iterations run out,
-/// the polish of the last iterate that met the dual and primal tests, to tol, rescues it. At a row at the edge
-/// of the zone, degenerate (s_j/L ≈ λ_j/F ≈ 0), the interior point alone would need a barrier parameter near
-/// 10⁻²⁰ F L to pass the per-row test, with Σ spanning 10⁻²² … 10¹⁵ and conjugate gradients breaking down
-/// in round-off (two elastic bodies: examples/hertz_2d/two_cylinders).
+/// and no other row is violated; where that set does not settle (nearly dependent rows, as a symmetric pair's
+/// two families on unmatched meshes), the method of multipliers on the inequalities themselves, which needs
+/// no set. A polish that closes S to 10⁻⁴ tol L and balances the forces to 10⁻² tol F ends the solve at a
+/// KKT point of the program, and is tried again where the interior point's own test ends it (the same point
+/// whatever path led there); when the Krylov solve breaks down or the iterations run out, the polish of the
+/// last iterate that met the dual and primal tests, to tol, rescues it. At a row at the edge of the zone,
+/// degenerate (s_j/L ≈ λ_j/F ≈ 0), the interior point alone would need a barrier parameter near 10⁻²⁰ F L to
+/// pass the per-row test, with Σ spanning 10⁻²² … 10¹⁵ and conjugate gradients breaking down in round-off
+/// (two elastic bodies: examples/hertz_2d/two_cylinders).
 ///
 /// Distribution: as solve_elasticity_gamg() — each rank passes its share of K (the shares summing to K)
 /// and owns the rows of a contiguous range of nodes; s and λ (m values) are kept whole on every rank. The
@@ -103,8 +105,9 @@ struct ContactInteriorPointResult {
   bool converged = false;
   std::string reason;                  ///< why it stopped when it did not converge
   int iterations = 0;                  ///< interior-point iterations (two Newton solves each)
-  int polishes = 0;                    ///< accepted active-set polishes (0 or 1: the last one ends the solve)
+  int polishes = 0;                    ///< accepted polishes (0 or 1: the last one ends the solve)
   int polishes_rejected = 0;           ///< polishes tried and not kept (the iterations went on from before them)
+  int inequality_polishes = 0;         ///< accepted polishes made on the inequalities (no active set)
   std::vector<int> krylov_iterations;  ///< conjugate-gradient iterations of every Newton solve, in order
   double setup_seconds = 0.0;          ///< Newton matrices and preconditioners
   double krylov_seconds = 0.0;         ///< conjugate gradients
