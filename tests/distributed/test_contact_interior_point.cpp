@@ -3,9 +3,10 @@
 // and, registered a second time under mpirun, on two: its answer against the exact solution of the contact
 // problem (the active set's equality-constrained problem solved by sparse Cholesky, checked for contact
 // forces ≥ 0 and gaps ≥ 0), the same for a block loaded onto a plane it touches up to round-off and with a
-// second family of rows that cannot close with the first, the Krylov
-// iterations per Newton system as the mesh is refined, and Tresca and
-// Coulomb friction on a block sliding on a rigid plane against their closed forms, its slip also given by maps.
+// second family of rows that cannot close with the first; nearly dependent rows polished on their inequalities
+// (KKT conditions), with friction too (a solve cut short, rescued); the Krylov iterations per Newton system as
+// the mesh is refined, and Tresca and Coulomb friction on a block sliding on a rigid plane against their closed
+// forms, its slip also given by maps.
 
 #include "symcontact/distributed/contact_interior_point.hpp"
 
@@ -195,6 +196,7 @@ TEST(ContactInteriorPoint, ClosesOneOfEachPairOfRowsThatCannotCloseTogether) {
 /// dependent families of a curved symmetric pair on unmatched meshes, each row of one close to a combination of
 /// rows of the other.
 ObstacleSystem with_rows_between_nodes(ObstacleSystem o, double radius) {
+  const bool frictional = o.contact.frictional();
   NodalConstraints& c = o.contact;
   const Index m = c.size(), dim = 2;
   const Eigen::MatrixXd& x = o.block.mesh.x;
@@ -209,7 +211,7 @@ ObstacleSystem with_rows_between_nodes(ObstacleSystem o, double radius) {
       entries.emplace_back(row, dim * a + 1, 1.0 - t);
       entries.emplace_back(row, dim * b + 1, t);
       const double r = (1.0 - t) * x(0, a) + t * x(0, b) - 0.5;
-      lower.push_back(-(radius - std::sqrt(radius * radius - r * r)));
+      lower.push_back(radius > 0.0 ? -(radius - std::sqrt(radius * radius - r * r)) : 0.0);
       c.node.push_back(t < 0.5 ? a : b);
     }
   const Index rows = c.size();
@@ -218,6 +220,12 @@ ObstacleSystem with_rows_between_nodes(ObstacleSystem o, double radius) {
   c.normal.row(1).setOnes();
   c.rows.resize(rows, o.block.f.size());
   c.rows.setFromTriplets(entries.begin(), entries.end());
+  if (frictional) {
+    c.friction_bound.conservativeResize(rows);
+    c.friction_bound.tail(rows - m).setZero();
+    c.friction_alpha.conservativeResize(rows);
+    c.friction_alpha.tail(rows - m).setConstant(c.friction_alpha[0]);
+  }
   return o;
 }
 
@@ -250,6 +258,45 @@ TEST(ContactInteriorPoint, PolishesNearlyDependentRowsOnTheirInequalities) {
   EXPECT_GE(g.minCoeff(), -1e-4 * tol * L);
   EXPECT_GE(r.lambda.minCoeff(), 0.0);
   EXPECT_LE(complementarity, 1e-4 * tol);
+}
+
+// With friction the same method of multipliers, the friction term in its inner problems, rescues a solve that
+// stops short: the block of TrescaFrictionOfASlidingBlockIsItsBound dragged on the plane, with the second family
+// of rows between its bottom nodes (on a plane, exact combinations of the nodes' rows), its interior point cut
+// at 10 iterations where it needs 13. The rescued answer meets the friction law's closed form as the full solve
+// does, and the full solve's displacements to its tolerance.
+TEST(ContactInteriorPoint, RescuesAFrictionalSolveOnNearlyDependentRows) {
+  const double tau = 0.002, alpha = 1e-4;
+  const int dim = 2;
+  const ObstacleSystem o = with_rows_between_nodes(
+      block_on_plane_system(dim, 24, 0.01, 0.05, tau, alpha, g_petsc->rank(), g_petsc->size()), 0.0);
+  const ObstacleSystem whole = with_rows_between_nodes(block_on_plane_system(dim, 24, 0.01, 0.05, tau, alpha), 0.0);
+  const ContactInteriorPointResult full = solve(o);
+  ASSERT_TRUE(full.converged) << full.reason;
+  ContactInteriorPointOptions cut;
+  cut.max_iterations = 10;
+  ASSERT_GT(full.iterations, cut.max_iterations);
+  const ContactInteriorPointResult r = solve(o, cut);
+  ASSERT_TRUE(r.converged) << r.reason;
+  EXPECT_EQ(r.inequality_polishes, 1);
+  const VectorXd residual = SparseMatrix(whole.block.K_lower.selfadjointView<Eigen::Lower>()) * r.u - whole.block.f;
+  double reaction = 0.0, friction = 0.0;
+  for (const Index v : whole.block.mesh.group_nodes("top")) reaction += residual[dim * v];
+  for (Index j = 0; j < whole.contact.size(); ++j) {
+    const double slip = r.u[dim * whole.contact.node[j]];
+    friction += whole.contact.friction_bound[j] * slip / std::sqrt(slip * slip + alpha * alpha);
+  }
+  const double u_change = (r.u - full.u).lpNorm<Eigen::Infinity>() / full.u.lpNorm<Eigen::Infinity>();
+  if (g_petsc->rank() == 0)
+    std::printf("%d iterations (%d on the inequalities) against %d: top reaction along x %.9f, friction forces "
+                "%.9f, bound %.9f; u %.1e from the full solve's\n", r.iterations, r.inequality_polishes,
+                full.iterations, reaction, friction, tau, u_change);
+  EXPECT_NEAR(reaction, friction, 1e-6 * tau);
+  EXPECT_LE(reaction, tau);
+  EXPECT_GE(reaction, (1 - 1e-5) * tau);
+  EXPECT_GE((whole.contact.rows * r.u - whole.contact.lower).minCoeff(), -cut.tolerance * r.length_scale);
+  EXPECT_GE(r.lambda.minCoeff(), 0.0);
+  EXPECT_LE(u_change, 1e-7);
 }
 
 int largest(const std::vector<int>& v) { return *std::max_element(v.begin(), v.end()); }

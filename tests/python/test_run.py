@@ -158,11 +158,11 @@ def test_input_errors_leave_no_folder(tmp_path):
 
 def test_the_linear_solver_is_chosen_by_the_command_lines_rule_and_said(capfd):
     """The module runs the direct solver only: it says so at "verbose" (the rule of
-    src/symcontact/app/linear_solver_choice.hpp, here for a symmetric pair), and refuses
-    "iterative"."""
+    src/symcontact/app/linear_solver_choice.hpp, here for a pair of elastic bodies, which its cost
+    part does not weigh), and refuses "iterative"."""
     symcontact.Problem(INCLINED).run(verbosity="verbose")
     err = capfd.readouterr().err
-    assert "linear solver: direct (automatic: no cost estimate: contact[0].mode" in err, err
+    assert "linear solver: direct (automatic: no cost estimate: contact[0] is between elastic bodies" in err, err
     problem = symcontact.Problem(INCLINED)
     problem["contact_solver.linear_solver"] = "iterative"
     with pytest.raises(symcontact.InputError) as e:

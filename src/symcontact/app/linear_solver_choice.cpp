@@ -15,18 +15,6 @@ DistributedLimit distributed_path_limit(const ProblemSpec& spec) {
     for (const MaterialSpec& m : b.materials)
       if (m.model != "linear_elastic")
         return {m.key + ".model", "the distributed path solves linear-elastic bodies only, got \"" + m.model + "\""};
-  for (const ContactSpec& c : spec.contacts) {
-    if (c.obstacle) continue;
-    // A symmetric pair's two constraint families are nearly dependent: on a curved pair (examples/rings_2d)
-    // the rows of one family stay open by the meshes' mismatch while the other's close. Without friction the
-    // interior point's closing polish tells them apart; with friction, which has no such polish, its
-    // complementarity stalls at the mismatch and the Newton systems break down (docs/distributed.md). A
-    // surface's contact with itself is one family.
-    const bool self = c.body_a == c.body_b && c.boundary_a == c.boundary_b;
-    if (!self && c.mode != "one-pass" && c.friction != "none")
-      return {c.key + ".mode", "the distributed path solves friction between elastic bodies in mode = \"one-pass\" "
-                               "only, got \"" + c.mode + "\" with friction = \"" + c.friction + "\""};
-  }
   return {};
 }
 

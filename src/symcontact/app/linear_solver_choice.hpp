@@ -5,8 +5,8 @@
 /// algebraic multigrid on PETSc, docs/distributed.md), which `symcontact` starts in its place.
 ///
 /// The rule for "automatic", where the distributed path solves the problem (linear elasticity; contact with
-/// rigid obstacles, frictionless or with friction on order-1 elements; frictionless contact between elastic
-/// bodies in one-pass pairs and self-contact): the distributed path when
+/// rigid obstacles, between elastic bodies and self-contact, frictionless or with friction on order-1
+/// elements): the distributed path when
 ///  - the serial solver's work per interior-point iteration is predicted to cost more than the iterative
 ///    solve's: W > kIterativeFlopsPerDof × free DOFs, with W = |B|³/3 and B the DOFs the serial solver
 ///    condenses onto (predicted_condensed_dofs) — its interior point factorises a dense |B| × |B| matrix at every

@@ -126,6 +126,7 @@ class InteriorPoint {
   PolishOutcome polish_on(std::vector<char>& in_set, VectorXd& nu, const PolishAccuracy& accuracy);
   bool polish_inequalities(const PolishAccuracy& accuracy);
   bool minimise_augmented(const VectorXd& nu, double rho, double force_tol, VectorXd& c);
+  double augmented_step(const VectorXd& nu, double rho, const VectorXd& c, const Eigen::MatrixXd& V);
   double true_residual();
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
@@ -498,21 +499,21 @@ void InteriorPoint::restore(const Iterate& from) {
   residuals(g, slip_values(g));  // r_d of the restored iterate, which the next step's right-hand side reads
 }
 
-/// Without friction: the polish to `accuracy` (the active-set polish; where it fails, the method of
-/// multipliers on the inequalities from the same iterate), kept where its point passes the stopping test (the
-/// residuals and the result's figures at it). False with friction, or where it was not kept (the iterate as it
-/// was).
+/// The polish to `accuracy` (without friction the active-set polish, and where it fails the method of
+/// multipliers on the inequalities from the same iterate; with friction the latter), kept where its point passes
+/// the stopping test (the residuals and the result's figures at it). False where it was not kept (the iterate
+/// as it was).
 bool InteriorPoint::polished(const PolishAccuracy& accuracy) {
-  if (c_.frictional()) return false;
   Iterate before;
   save(before);
-  bool on_inequalities = false, ok = polish(accuracy);
+  bool on_inequalities = false, ok = !c_.frictional() && polish(accuracy);
   if (!ok) {
     restore(before);
     ok = on_inequalities = polish_inequalities(accuracy);
   }
   if (ok) {
-    const VectorXd rp = residuals(gather(u_.object), Eigen::MatrixXd());
+    const VectorXd g = gather(u_.object);
+    const VectorXd rp = residuals(g, slip_values(g));
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     if (converged(rd, rp.lpNorm<Eigen::Infinity>())) {
@@ -527,7 +528,8 @@ bool InteriorPoint::polished(const PolishAccuracy& accuracy) {
 }
 
 /// Before giving up: the polish, to the tolerance, from the last iterate that met the dual and primal tests
-/// (rescue_, saved by run(); none: false). The interior point's last iterate stays where it is not accepted.
+/// (with friction: came within kPolishBelow of them; rescue_, saved by run(); none: false). The interior
+/// point's last iterate stays where it is not accepted.
 bool InteriorPoint::rescued() {
   if (!rescue_.u.object) return false;
   Iterate last;
@@ -580,14 +582,14 @@ bool InteriorPoint::polish(const PolishAccuracy& accuracy) {
 /// The method of multipliers on the inequalities themselves (Rockafellar, J. Optim. Theory Appl. 12, 1973;
 /// Nocedal & Wright §17.4), where the active-set polish fails: from ν = λ on the rows the interior point
 /// tells active (λ_j/F ≥ s_j/L), 0 elsewhere, rounds of
-///     u ← argmin ½ uᵀKu − bᵀu + ‖max(0, ν − ρ c(u))‖² / (2ρ),   ν ← max(0, ν − ρ c(u)).
+///     u ← argmin ½ uᵀKu − bᵀu + j(u) + ‖max(0, ν − ρ c(u))‖² / (2ρ),   ν ← max(0, ν − ρ c(u)).
 /// It guesses no set of equalities: the rows of a symmetric pair on unmatched flat meshes, nearly dependent
 /// everywhere, on which the active set cycles, keep whatever multipliers the optimal set allows. Its rate is
 /// linear, about 1/(1 + ρ σ) with σ the rows' compliance: ρ = 10⁴ × K's largest diagonal entry gains about
 /// 40 % a round on V5's interface (10² about 5 %; at 10⁶ conjugate gradients broke down). Accepted, with s =
 /// c(u)⁺ and λ = ν, when no row is violated beyond the gap tolerance, min(c_j/L, ν_j/F) ≤ accuracy.gaps tol
 /// for every j and the forces balance to accuracy.forces tol F; false after kRounds rounds or when an inner
-/// problem is not solved. Frictionless only.
+/// problem is not solved. With friction, j(u) joins each inner problem (the thresholds fixed).
 bool InteriorPoint::polish_inequalities(const PolishAccuracy& accuracy) {
   constexpr int kRounds = 40;
   const double rho = 1e4 * max_diagonal_, force_tol = accuracy.forces * options_.tolerance * F_;
@@ -609,32 +611,59 @@ bool InteriorPoint::polish_inequalities(const PolishAccuracy& accuracy) {
   return false;
 }
 
-/// One round's inner problem of polish_inequalities() by semismooth Newton (its gradient K u − b − Aᵀw,
-/// w = max(0, ν − ρ c(u)), is piecewise linear; a generalised Hessian K + ρ A_Wᵀ A_W, W = {j : w_j > 0}):
-///     (K + ρ A_Wᵀ A_W) Δu = −(K u − b − Aᵀ w),   u ← u + Δu,
-/// to ‖K u − b − Aᵀ w‖∞ ≤ 0.1 force_tol (a tenth of what the round must meet: the next round starts from it).
-/// W unchanged between two steps makes the step exact. On return λ = w and c = c(u); false after kSteps steps
-/// or when the Krylov solve broke down.
+/// One round's inner problem of polish_inequalities(), min ψ(u) = ½ uᵀKu − bᵀu + j(u) + ‖w‖² / (2ρ) with
+/// w = max(0, ν − ρ c(u)), by semismooth Newton (∇ψ = K u − b + ∇j − Aᵀw, piecewise smooth; a generalised
+/// Hessian K + ∇²j + ρ A_Wᵀ A_W, W = {j : w_j > 0}):
+///     (K + ∇²j + ρ A_Wᵀ A_W) Δu = −∇ψ(u),   u ← u + α Δu,
+/// to ‖∇ψ‖∞ ≤ 0.1 force_tol (a tenth of what the round must meet: the next round starts from it). Without
+/// friction α = 1 (W unchanged between two steps makes the step exact); with it, α halved until ψ decreases
+/// enough (Armijo: ψ is convex and C¹). On return λ = w and c = c(u); false after kSteps steps or when the
+/// Krylov solve broke down.
 bool InteriorPoint::minimise_augmented(const VectorXd& nu, double rho, double force_tol, VectorXd& c) {
-  constexpr int kSteps = 12;
+  constexpr int kSteps = 30;
   VectorXd active(m_);
   for (int k = 0;; ++k) {
     const VectorXd g = gather(u_.object);
+    const Eigen::MatrixXd V = slip_values(g);
     c = A_ * g - c_.lower;
     lambda_ = (nu - rho * c).cwiseMax(0.0);
-    residuals(g, Eigen::MatrixXd());
+    residuals(g, V);
     PetscReal rd = 0.0;
     check(VecNorm(rd_.object, NORM_INFINITY, &rd), "VecNorm");
     if (rd <= 0.1 * force_tol) return true;
     if (k == kSteps) return false;
     for (Index j = 0; j < m_; ++j) active[j] = lambda_[j] > 0.0 ? 1.0 : 0.0;
-    update_newton_matrix(Eigen::MatrixXd(), rho * active);
+    update_newton_matrix(V, rho * active);
     check(VecCopy(rd_.object, rhs_.object), "VecCopy");
     check(VecScale(rhs_.object, -1.0), "VecScale");
     if (!solve_newton(0.0, 0.01 * force_tol)) return false;
     zero_fixed_rows(du_.object);
-    check(VecAXPY(u_.object, 1.0, du_.object), "VecAXPY");
+    const double alpha = c_.frictional() ? augmented_step(nu, rho, c, V) : 1.0;
+    check(VecAXPY(u_.object, alpha, du_.object), "VecAXPY");
   }
+}
+
+/// The step along Δu of minimise_augmented() with friction: 1 halved until ψ(u + α Δu) ≤ ψ(u) + 10⁻⁴ α ∇ψᵀΔu
+/// (1 where Δu is no descent direction, the Krylov solve being inexact). c = c(u), V = S u; r_d holds ∇ψ(u).
+/// ψ's quadratic part along Δu is α Δuᵀ(K u − b) + ½ α² ΔuᵀKΔu, K u − b = ∇ψ − ∇j + Aᵀw.
+double InteriorPoint::augmented_step(const VectorXd& nu, double rho, const VectorXd& c, const Eigen::MatrixXd& V) {
+  const VectorXd du = gather(du_.object);
+  const VectorXd dc = A_ * du;
+  const Eigen::MatrixXd dV = slip_values(du);
+  PetscScalar slope = 0.0, du_Kdu = 0.0;
+  check(VecDot(du_.object, rd_.object, &slope), "VecDot");
+  if (slope >= 0.0) return 1.0;
+  check(MatMult(K_.object, du_.object, Kdu_.object), "MatMult");
+  check(VecDot(du_.object, Kdu_.object, &du_Kdu), "VecDot");
+  const double linear = slope - friction_gradient(c_, V).cwiseProduct(dV).sum() + dc.dot(lambda_);
+  const auto rest = [&](double alpha) {  // ψ − its quadratic part at u + α Δu
+    return friction_energy(c_, V + alpha * dV) + (nu - rho * (c + alpha * dc)).cwiseMax(0.0).squaredNorm() / (2 * rho);
+  };
+  const double psi0 = rest(0.0);
+  double alpha = 1.0;
+  for (int k = 0; k < 40; ++k, alpha *= 0.5)
+    if (alpha * linear + 0.5 * alpha * alpha * du_Kdu + rest(alpha) <= psi0 + 1e-4 * alpha * slope) break;
+  return alpha;
 }
 
 /// The gaps a polish closes its rows to: accuracy.gaps tol L, not below the round-off of gaps computed from the
@@ -813,11 +842,14 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
     // Without friction, the exact answer on the active rows once the interior point tells them apart (see
     // kPolishBelow), tried again each time the complementarity has fallen a hundredfold (to a hundredth of the
     // tolerance: as accurate as the interior point's own end, whose last step overshoots its test); and, from
-    // the last iterate that met the dual and primal tests, to the tolerance itself before giving up.
+    // the last iterate that met the dual and primal tests, to the tolerance itself before giving up. With
+    // friction only the latter, from the last iterate within kPolishBelow of them: on a symmetric pair the
+    // complementarity stalls at the meshes' mismatch and the Krylov solve breaks down before the dual residual
+    // meets the tolerance (V5's interface with Coulomb friction on two ranks: 3e-9 against 1e-9).
     const bool feasible = result_.dual_residual <= options_.tolerance && result_.primal_residual <= options_.tolerance;
-    if (feasible && !c_.frictional()) save(rescue_);
     const bool near = std::max(result_.dual_residual, result_.primal_residual) <= kPolishBelow * options_.tolerance;
-    if (!result_.converged && near && result_.complementarity <= polish_below) {
+    if (c_.frictional() ? near : feasible) save(rescue_);
+    if (!result_.converged && !c_.frictional() && near && result_.complementarity <= polish_below) {
       polish_below = 0.01 * result_.complementarity;
       result_.converged = polished(kEarly);
     }

@@ -49,7 +49,10 @@
 /// last iterate that met the dual and primal tests, to tol, rescues it. At a row at the edge of the zone,
 /// degenerate (s_j/L ≈ λ_j/F ≈ 0), the interior point alone would need a barrier parameter near 10⁻²⁰ F L to
 /// pass the per-row test, with Σ spanning 10⁻²² … 10¹⁵ and conjugate gradients breaking down in round-off
-/// (two elastic bodies: examples/hertz_2d/two_cylinders).
+/// (two elastic bodies: examples/hertz_2d/two_cylinders). With friction the interior point's own test ends the
+/// solve; where it breaks down or runs out of iterations, the method of multipliers on the inequalities, with
+/// the friction term in its inner problems, rescues it from its last iterate within 10³ tol of the dual and
+/// primal tests (a symmetric pair with Coulomb friction: examples/inclined_2d).
 ///
 /// Distribution: as solve_elasticity_gamg() — each rank passes its share of K (the shares summing to K)
 /// and owns the rows of a contiguous range of nodes; s and λ (m values) are kept whole on every rank. The

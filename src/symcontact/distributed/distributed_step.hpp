@@ -25,9 +25,9 @@
 /// interior point's iterates where coulomb_update says so (FollowBounds).
 ///
 /// What the path does not solve yet is an input error before any work (check_distributed_support): finite
-/// strain and friction on symmetric pairs of two surfaces. A symmetric pair without friction is solved, the
-/// interior point's polish settling its two nearly dependent families of rows; where a solve with such a pair
-/// fails, the message advises one-pass mode (symmetric_pair_hint in the .cpp).
+/// strain. A symmetric pair is solved, with or without friction, the interior point's polish settling its two
+/// nearly dependent families of rows; where a solve with such a pair fails, the message advises one-pass mode
+/// (symmetric_pair_hint in the .cpp).
 /// The meshes are whole on every rank; each rank assembles the stiffness rows it owns, the nodes numbered for
 /// PETSc by NodeOrdering (node_ordering.hpp) and back to the model's numbering for everything else.
 #include "symcontact/app/run.hpp"
