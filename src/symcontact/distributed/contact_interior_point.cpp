@@ -131,6 +131,7 @@ class InteriorPoint {
   double largest_step(const Direction& d) const;
   bool converged(double rd, double rp);
   bool step(const VectorXd& rp, double rd, double mu0, const Eigen::MatrixXd& V, Direction& d);
+  void end_with_polish(double& polish_below);
 
   ContactInteriorPointOptions options_;
   NodalConstraints c_;
@@ -810,6 +811,28 @@ bool InteriorPoint::step(const VectorXd& rp, double rd, double mu0, const Eigen:
   return true;
 }
 
+/// The polishes at the current iterate, whose figures converged() has set (result_.converged among them),
+/// updating it; polish_below is the complementarity below which the next early polish is tried.
+void InteriorPoint::end_with_polish(double& polish_below) {
+  // Without friction, the exact answer on the active rows once the interior point tells them apart (see
+  // kPolishBelow), tried again each time the complementarity has fallen a hundredfold (to a hundredth of the
+  // tolerance: as accurate as the interior point's own end, whose last step overshoots its test); and, from
+  // the last iterate that met the dual and primal tests, to the tolerance itself before giving up. With
+  // friction only the latter, from the last iterate within kPolishBelow of them: on a symmetric pair the
+  // complementarity stalls at the meshes' mismatch and the Krylov solve breaks down before the dual residual
+  // meets the tolerance (V5's interface with Coulomb friction on two ranks: 3e-9 against 1e-9).
+  const bool feasible = result_.dual_residual <= options_.tolerance && result_.primal_residual <= options_.tolerance;
+  const bool near = std::max(result_.dual_residual, result_.primal_residual) <= kPolishBelow * options_.tolerance;
+  if (c_.frictional() ? near : feasible) save(rescue_);
+  if (!result_.converged && !c_.frictional() && near && result_.complementarity <= polish_below) {
+    polish_below = 0.01 * result_.complementarity;
+    result_.converged = polished(kEarly);
+  }
+  // At the interior point's own end, the exact answer on its active set where that closes: the same point
+  // whatever path led there (ranks, Krylov tolerances), to a hundredth of the tolerance.
+  if (result_.converged && result_.polishes == 0 && !c_.frictional()) polished(kEarly);
+}
+
 ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
   const auto t_start = std::chrono::steady_clock::now();
   s_ = (A_ * gather(u_.object) - c_.lower).cwiseMax(L_);
@@ -839,23 +862,7 @@ ContactInteriorPointResult InteriorPoint::run(const FollowBounds* follow) {
         result_.converged = converged(rd, rp.lpNorm<Eigen::Infinity>());
       }
     }
-    // Without friction, the exact answer on the active rows once the interior point tells them apart (see
-    // kPolishBelow), tried again each time the complementarity has fallen a hundredfold (to a hundredth of the
-    // tolerance: as accurate as the interior point's own end, whose last step overshoots its test); and, from
-    // the last iterate that met the dual and primal tests, to the tolerance itself before giving up. With
-    // friction only the latter, from the last iterate within kPolishBelow of them: on a symmetric pair the
-    // complementarity stalls at the meshes' mismatch and the Krylov solve breaks down before the dual residual
-    // meets the tolerance (V5's interface with Coulomb friction on two ranks: 3e-9 against 1e-9).
-    const bool feasible = result_.dual_residual <= options_.tolerance && result_.primal_residual <= options_.tolerance;
-    const bool near = std::max(result_.dual_residual, result_.primal_residual) <= kPolishBelow * options_.tolerance;
-    if (c_.frictional() ? near : feasible) save(rescue_);
-    if (!result_.converged && !c_.frictional() && near && result_.complementarity <= polish_below) {
-      polish_below = 0.01 * result_.complementarity;
-      result_.converged = polished(kEarly);
-    }
-    // At the interior point's own end, the exact answer on its active set where that closes: the same point
-    // whatever path led there (ranks, Krylov tolerances), to a hundredth of the tolerance.
-    if (result_.converged && result_.polishes == 0 && !c_.frictional()) polished(kEarly);
+    end_with_polish(polish_below);
     if (result_.converged) break;
     if (result_.iterations == options_.max_iterations) {
       result_.reason = "no convergence in " + std::to_string(options_.max_iterations) + " iterations";
