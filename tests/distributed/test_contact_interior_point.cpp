@@ -189,8 +189,7 @@ TEST(ContactInteriorPoint, ClosesOneOfEachPairOfRowsThatCannotCloseTogether) {
   EXPECT_EQ(r.lambda.head(m).lpNorm<Eigen::Infinity>(), 0.0) << "the open rows carry no force";
 }
 
-
-/// o (a block on a ball of radius `radius`, 2D) with a second family of rows between each two neighbouring bottom
+/// o (a block on a ball of radius `radius`, 2D; radius 0: on a plane) with a second family of rows between each two neighbouring bottom
 /// nodes a and b: u_y at the points a tenth and nine tenths of the way, (1 − t) u_y(a) + t u_y(b), above the ball
 /// there. The ball being convex, these rows are a little tighter than the nodes' rows they combine: the nearly
 /// dependent families of a curved symmetric pair on unmatched meshes, each row of one close to a combination of
@@ -260,6 +259,25 @@ TEST(ContactInteriorPoint, PolishesNearlyDependentRowsOnTheirInequalities) {
   EXPECT_LE(complementarity, 1e-4 * tol);
 }
 
+/// The balance of a block dragged on a plane (block_on_plane_system), at its answer u: the top's reaction along x,
+/// the friction forces' sum along x, Σ_j g_j s_x / √(|s|² + α²) with s node j's displacement along the plane's
+/// tangents, and the smallest s_x.
+struct DragBalance {
+  double reaction = 0.0, friction = 0.0, smallest_slip = 1.0;
+};
+
+DragBalance drag_balance(const ObstacleSystem& whole, int dim, const VectorXd& u, double alpha) {
+  DragBalance b;
+  const VectorXd residual = SparseMatrix(whole.block.K_lower.selfadjointView<Eigen::Lower>()) * u - whole.block.f;
+  for (const Index v : whole.block.mesh.group_nodes(dim == 2 ? "top" : "zmax")) b.reaction += residual[dim * v];
+  for (Index j = 0; j < whole.contact.size(); ++j) {
+    const VectorXd slip = u.segment(dim * whole.contact.node[j], dim - 1);
+    b.friction += whole.contact.friction_bound[j] * slip[0] / std::sqrt(slip.squaredNorm() + alpha * alpha);
+    b.smallest_slip = std::min(b.smallest_slip, slip[0]);
+  }
+  return b;
+}
+
 // With friction the same method of multipliers, the friction term in its inner problems, rescues a solve that
 // stops short: the block of TrescaFrictionOfASlidingBlockIsItsBound dragged on the plane, with the second family
 // of rows between its bottom nodes (on a plane, exact combinations of the nodes' rows), its interior point cut
@@ -279,13 +297,7 @@ TEST(ContactInteriorPoint, RescuesAFrictionalSolveOnNearlyDependentRows) {
   const ContactInteriorPointResult r = solve(o, cut);
   ASSERT_TRUE(r.converged) << r.reason;
   EXPECT_EQ(r.inequality_polishes, 1);
-  const VectorXd residual = SparseMatrix(whole.block.K_lower.selfadjointView<Eigen::Lower>()) * r.u - whole.block.f;
-  double reaction = 0.0, friction = 0.0;
-  for (const Index v : whole.block.mesh.group_nodes("top")) reaction += residual[dim * v];
-  for (Index j = 0; j < whole.contact.size(); ++j) {
-    const double slip = r.u[dim * whole.contact.node[j]];
-    friction += whole.contact.friction_bound[j] * slip / std::sqrt(slip * slip + alpha * alpha);
-  }
+  const auto [reaction, friction, smallest_slip] = drag_balance(whole, dim, r.u, alpha);
   const double u_change = (r.u - full.u).lpNorm<Eigen::Infinity>() / full.u.lpNorm<Eigen::Infinity>();
   if (g_petsc->rank() == 0)
     std::printf("%d iterations (%d on the inequalities) against %d: top reaction along x %.9f, friction forces "
@@ -338,14 +350,7 @@ TEST(ContactInteriorPoint, TrescaFrictionOfASlidingBlockIsItsBound) {
     const ObstacleSystem whole = block_on_plane_system(dim, n, 0.01, 0.05, tau, alpha);
     const ContactInteriorPointResult r = solve(o);
     ASSERT_TRUE(r.converged) << r.reason;
-    const VectorXd residual = SparseMatrix(whole.block.K_lower.selfadjointView<Eigen::Lower>()) * r.u - whole.block.f;
-    double reaction = 0.0, friction = 0.0, smallest_slip = 1.0;
-    for (const Index v : whole.block.mesh.group_nodes(dim == 2 ? "top" : "zmax")) reaction += residual[dim * v];
-    for (Index j = 0; j < whole.contact.size(); ++j) {
-      const VectorXd slip = r.u.segment(dim * whole.contact.node[j], dim - 1);  // the plane's tangents
-      friction += whole.contact.friction_bound[j] * slip[0] / std::sqrt(slip.squaredNorm() + alpha * alpha);
-      smallest_slip = std::min(smallest_slip, slip[0]);
-    }
+    const auto [reaction, friction, smallest_slip] = drag_balance(whole, dim, r.u, alpha);
     if (g_petsc->rank() == 0)
       std::printf("dim %d: %d iterations, top reaction along x %.9f, friction forces %.9f, bound %.9f, smallest "
                   "slip %.2e\n", dim, r.iterations, reaction, friction, tau, smallest_slip);

@@ -507,11 +507,12 @@ void InteriorPoint::restore(const Iterate& from) {
 bool InteriorPoint::polished(const PolishAccuracy& accuracy) {
   Iterate before;
   save(before);
-  bool on_inequalities = false, ok = !c_.frictional() && polish(accuracy);
-  if (!ok) {
-    restore(before);
-    ok = on_inequalities = polish_inequalities(accuracy);
+  bool on_inequalities = false, ok = false;
+  if (!c_.frictional()) {
+    ok = polish(accuracy);
+    if (!ok) restore(before);
   }
+  if (!ok) ok = on_inequalities = polish_inequalities(accuracy);
   if (ok) {
     const VectorXd g = gather(u_.object);
     const VectorXd rp = residuals(g, slip_values(g));
