@@ -6,7 +6,7 @@
 // second family of rows that cannot close with the first; nearly dependent rows polished on their inequalities
 // (KKT conditions), with friction too (a solve cut short, rescued); the Krylov iterations per Newton system as
 // the mesh is refined, and Tresca and Coulomb friction on a block sliding on a rigid plane against their closed
-// forms, its slip also given by maps.
+// forms, its slip also given by maps; the block sticking, with the regularisation down to 10⁻⁷ of its elements.
 
 #include "symcontact/distributed/contact_interior_point.hpp"
 
@@ -359,6 +359,36 @@ TEST(ContactInteriorPoint, TrescaFrictionOfASlidingBlockIsItsBound) {
     EXPECT_LE(reaction, tau);
     EXPECT_GE(reaction, (dim == 2 ? 1 - 1e-5 : 0.999) * tau);
   }
+}
+
+// The same block dragged by 0.002, below the stick limit: its bottom sticks but near the edges, where the
+// Poisson effect makes it slip outward. With α down to 10⁻⁷ of the element size, each sticking node is a
+// spring g/α that Newton's steps must leave within α, and a node that slips at an iterate and sticks at the
+// answer had a curvature g α²/r³ along its slip: the exact Hessian's steps were (r/α)² too long there and the
+// line search cut them (50 and 78 iterations at α = 10⁻⁵ h and 10⁻⁷ h). With the primal-dual linearisation
+// of the friction law: at most 30, the friction forces balancing the top's reaction, which converges as α falls.
+TEST(ContactInteriorPoint, ABlockThatSticksConvergesAsTheRegularisationFalls) {
+  const double tau = 0.002, shift = 0.002;
+  const int dim = 2, n = 24;
+  ContactInteriorPointOptions options;
+  options.max_iterations = 30;
+  std::vector<double> reactions;
+  for (const double alpha_over_h : {1e-5, 1e-7}) {
+    const double alpha = alpha_over_h / n;
+    const ObstacleSystem o =
+        block_on_plane_system(dim, n, 0.01, shift, tau, alpha, g_petsc->rank(), g_petsc->size());
+    const ObstacleSystem whole = block_on_plane_system(dim, n, 0.01, shift, tau, alpha);
+    const ContactInteriorPointResult r = solve(o, options);
+    ASSERT_TRUE(r.converged) << "alpha = " << alpha_over_h << " h: " << r.reason;
+    const auto [reaction, friction, smallest_slip] = drag_balance(whole, dim, r.u, alpha);
+    if (g_petsc->rank() == 0)
+      std::printf("alpha = %.0e h: %d iterations, top reaction along x %.9f, friction forces %.9f, bound %.6f\n",
+                  alpha_over_h, r.iterations, reaction, friction, tau);
+    EXPECT_NEAR(reaction, friction, 1e-6 * tau);
+    EXPECT_LT(reaction, 0.5 * tau) << "most of the bottom sticks";
+    reactions.push_back(reaction);
+  }
+  EXPECT_NEAR(reactions[1], reactions[0], 1e-4 * reactions[0]);
 }
 
 // The slip measured by a slip map (NodalConstraints::slip_map, here for the same sliding block): each node's

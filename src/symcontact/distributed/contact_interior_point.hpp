@@ -21,8 +21,11 @@
 ///
 /// with r_d = K u − f − Aᵀ λ, r_p = c(u) − s, r_c the complementarity target, both directions of an
 /// iteration with the same matrix and preconditioner. One step length for u, s and λ: the largest that
-/// keeps 0.5 % of s and λ (fraction to the boundary 0.995). With friction, K above reads K + ∇²j(u) and r_d
-/// holds ∇j(u); the step is then also halved until the barrier merit function
+/// keeps 0.5 % of s and λ (fraction to the boundary 0.995). With friction, r_d holds ∇j(u) and K above reads
+/// K + H, H ∇²j(u) with each friction point's slip direction s/r in its curvature replaced by a dual estimate
+/// w (|w| ≤ 1) that takes the interior point's steps (the primal-dual linearisation of Chan, Golub & Mulet,
+/// 1999: the curvature along a slip no longer vanishes where the point slips at the iterate and sticks at the
+/// answer); the step is then also halved until the barrier merit function
 /// φ(u, s) = ½ uᵀKu − fᵀu + j(u) − μ_t Σ log s_j + ν ‖c(u) − s‖₁ (μ_t the corrector's target, ν = 2 ‖λ‖_∞ of
 /// both ends of the step) decreases by at least 10⁻⁴ of its directional derivative (Armijo; Nocedal & Wright
 /// §19.4); without friction the problem is a quadratic program and the full step is taken.
