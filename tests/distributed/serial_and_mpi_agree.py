@@ -90,6 +90,11 @@ CASES = [
     # two ranks of the distributed path agree to 1e-6, the total force's direction to 1e-8).
     ("inclined_2d/inclined.toml", "", None, REL_FRICTION_SYMMETRIC),
     ("inclined_3d/inclined.toml", "", None, REL_SYMMETRIC),
+    # V5 at coulomb_tolerance = 1e-8: on two ranks its Coulomb loop stagnates at 1.1e-8–1.3e-8 in the first two
+    # steps and the solves tightened past that break down; the loop accepts the iterate they started from at the
+    # noise floor (solvers/lagged_fixed_point.hpp), "ok" with a warning.
+    ("inclined_2d/inclined.toml", ("coulomb_tolerance = 1e-6\n", "coulomb_tolerance = 1e-8\n"), None,
+     REL_FRICTION_SYMMETRIC),
     # V8's cylinders (cattaneo_2d/cattaneo.toml): every contact node sticks as they are pressed together, with
     # alpha = 8e-6 against steps of 1e-2 (the primal-dual linearisation of the friction law in
     # contact_interior_point.hpp). Within 5e-5 of the forces' scale, one and two ranks to 1e-6.
@@ -268,6 +273,9 @@ def label_of(extra):
         return " at order 2"
     if any('friction = "none"' in new for new in replaced):
         return " without friction"
+    tolerance = [new.strip().replace(" = ", " ") for new in replaced if new.startswith("coulomb_tolerance")]
+    if tolerance:
+        return " at " + tolerance[0]
     return ""
 
 

@@ -394,8 +394,8 @@ void InteriorPoint::zero_fixed_rows(Vec v) {
   check(VecRestoreArray(v, &a), "VecRestoreArray");
 }
 
-/// N = K + ∇²j(u) + Aᵀ Σ A, ∇²j = Sᵀ H S with H the friction points' dim × dim blocks at V = S u; sigma Σ's
-/// diagonal (λ_j / s_j in the interior point).
+/// N = K + ∇²j(u) + Aᵀ Σ A, ∇²j = Sᵀ H S with H the friction points' dim × dim blocks at V = S u (with W, the
+/// primal-dual blocks of friction_hessian()); sigma Σ's diagonal (λ_j / s_j in the interior point).
 void InteriorPoint::update_newton_matrix(const Eigen::MatrixXd& V, const VectorXd& sigma, const Eigen::MatrixXd* W) {
   check(MatCopy(K_.object, N_.object, SAME_NONZERO_PATTERN), "MatCopy");
   Eigen::SparseMatrix<double, Eigen::RowMajor, int> B = A_.transpose() * sigma.asDiagonal() * A_;

@@ -50,6 +50,7 @@ class CoulombThresholds final : public LaggedTerm, public ThresholdFollower {
   const std::vector<Eigen::VectorXd>& data() const override { return state_.nodal_tau; }
   std::vector<Eigen::VectorXd> residual(const VectorXd& u, const SolveReport& solve) const override;
   void update(const std::vector<Eigen::VectorXd>& r, double omega) override;
+  void set_data(const std::vector<Eigen::VectorXd>& data) override { state_.nodal_tau = data; }
 
   /// The thresholds follow the optimiser's iterates until they change by less than `tolerance` (relative):
   /// state().follower is this object.

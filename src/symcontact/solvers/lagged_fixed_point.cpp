@@ -1,6 +1,7 @@
 #include "symcontact/solvers/lagged_fixed_point.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <sstream>
 #include <utility>
 
@@ -50,6 +51,8 @@ class LaggedFixedPoint {
   bool stops(int k, const std::vector<Eigen::VectorXd>& r);
   bool stagnation_ends(int iteration, double change);
   bool falls_fast(double change) const;
+  void keep_fallback(const VectorXd& u);
+  void accept_fallback(VectorXd& u, const SolveError& failed);
   std::string failure(const std::string& what, int iteration, double change) const;
 
   LaggedTerm& term_;
@@ -66,12 +69,22 @@ class LaggedFixedPoint {
   FixedPointMonitor monitor_;
   int tightenings_ = 0;      ///< inner accuracy raised this many times (at most kMaxTightenings)
   bool confirming_ = false;  ///< the last solve confirmed, to full tolerance, a change met on an inexact one
+  ContactSolveOptions last_inner_;  ///< inner_ of the last solve
+  /// After a tightening: the iterate the next solve starts from (u, its data before the update, the options
+  /// that solved it), accepted at the noise floor when a tightened solve fails (the file comment).
+  struct Fallback {
+    VectorXd u;
+    std::vector<Eigen::VectorXd> data;
+    ContactSolveOptions inner;
+  };
+  std::optional<Fallback> fallback_;
   ProgressClock clock_;      ///< since the step started
 };
 
 /// One solve with the term's current data; inexact (its geometry fixed point stopped at
 /// inner_tolerance_factor × change) while inexact_ holds.
 void LaggedFixedPoint::solve(double change) {
+  last_inner_ = inner_;
   ContactSolveOptions o = inner_;
   if (inexact_) o.loose_geometry_tolerance = options_.inner_tolerance_factor * change;
   o.same_loads = same_loads_;
@@ -191,12 +204,58 @@ SolveReport LaggedFixedPoint::run(VectorXd& u, const VectorXd& u_cold) {
     const std::vector<Eigen::VectorXd> r = term_.residual(u, rep_);
     const bool judged = k > 1 || term_.warm();  // a cold start's first residual is not judged
     if (judged && stops(k, r)) break;
+    keep_fallback(u);
     term_.update(r, judged ? omega_ : 1.0);
     r_prev_ = r;
     rep_.coulomb_iterations = k;
-    solve(scale_);
+    if (!fallback_) {
+      solve(scale_);
+      continue;
+    }
+    try {
+      solve(scale_);
+    } catch (const SolveError& e) {
+      accept_fallback(u, e);
+      break;
+    }
   }
   return std::move(rep_);
+}
+
+/// Once the inner solves are tightened: the iterate u of a converged solve, the data it was solved with and
+/// their options, before the update (none where the last solve did not converge).
+void LaggedFixedPoint::keep_fallback(const VectorXd& u) {
+  if (tightenings_ == 0) return;
+  if (!rep_.converged) {
+    fallback_.reset();
+    return;
+  }
+  fallback_ = Fallback{u, term_.data(), last_inner_};
+}
+
+/// A tightened solve failed: back to the fallback iterate, solved again under its own options, accepted at the
+/// noise floor where that solve converges with a change within the acceptance; otherwise `failed` stands.
+void LaggedFixedPoint::accept_fallback(VectorXd& u, const SolveError& failed) {
+  log_.detail(std::string("  a tightened solve failed (") + failed.what() + "); back to the iterate it started from");
+  u = fallback_->u;
+  term_.set_data(fallback_->data);
+  inner_ = fallback_->inner;
+  inexact_ = false;
+  try {
+    solve(scale_);
+  } catch (const SolveError&) {
+    throw failed;
+  }
+  const double change = relative_change(term_.residual(u, rep_), term_.data());
+  rep_.coulomb_change.push_back(change);
+  if (!rep_.converged || change > options_.stagnation_acceptance) throw failed;
+  rep_.accepted_at_noise_floor = change;
+  std::ostringstream m;
+  m << term_.loop_name() << " fixed point: the " << term_.data_name() << "s stopped changing at " << change
+    << " of their size (tolerance " << options_.coulomb_tolerance << ") and a solve tightened past that failed ("
+    << failed.what() << "): the noise floor of the inner solves; accepted: the law holds to " << change
+    << " (acceptance " << options_.stagnation_acceptance << ")";
+  log_.warning(m.str());
 }
 
 }  // namespace

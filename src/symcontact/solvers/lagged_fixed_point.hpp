@@ -31,6 +31,11 @@
 ///    that, the iterate is accepted only when its last solve converged and c ≤ stagnation_acceptance, with a
 ///    warning and SolveReport::accepted_at_noise_floor. Otherwise, and after max_coulomb_iterations, the
 ///    step fails with a SolveError naming the loop, what it tried, the changes and what the user can change.
+///  - A tightened solve that fails (the inner solver cannot reach the accuracy asked: an iterative Krylov
+///    solve breaking down in round-off) shows the noise floor too: the loop goes back to the iterate that
+///    solve started from, with its data, solves it again under the options that produced it, and accepts
+///    it as above when that solve converges and its change is at most stagnation_acceptance; otherwise the
+///    failed solve's SolveError stands.
 
 #include <functional>
 #include <string>
@@ -62,6 +67,8 @@ class LaggedTerm {
   virtual std::vector<Eigen::VectorXd> residual(const VectorXd& u, const SolveReport& solve) const = 0;
   /// d ← P(d + ω r).
   virtual void update(const std::vector<Eigen::VectorXd>& r, double omega) = 0;
+  /// d ← `data`, as data() returned it earlier in the loop.
+  virtual void set_data(const std::vector<Eigen::VectorXd>& data) = 0;
 };
 
 /// c = max_p ‖r_p‖∞ / max_p ‖d_p‖∞ over the parts that lag something (1 when d = 0 and r is not).

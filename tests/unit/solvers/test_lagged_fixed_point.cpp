@@ -3,7 +3,7 @@
 // converges to its fixed point; a map of slope −1, on which the plain iteration cycles, converges through
 // Aitken's relaxation; a cold start's first residual is not judged; inexact solves never end the loop; a
 // noise floor is tightened against, then accepted below the acceptance or reported as a failure naming the
-// loop, the remedies and the advice.
+// loop, the remedies and the advice; a tightened solve that fails falls back on the iterate it started from.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,6 +39,7 @@ class ScalarTerm final : public LaggedTerm {
   void update(const std::vector<Eigen::VectorXd>& r, double omega) override {
     data_[0] = (data_[0] + omega * r[0]).cwiseMax(0.0);
   }
+  void set_data(const std::vector<Eigen::VectorXd>& data) override { data_ = data; }
   double datum() const { return data_[0][0]; }
 
  private:
@@ -53,13 +54,16 @@ struct LoopRun {
   double datum = 0.0;
 };
 
+/// `tightened_fail`: a solve under options tightened past the first solve's throws a SolveError.
 LoopRun run(std::function<double(double)> target, double d0, bool warm, bool inexact,
-        FrictionalOptions options = FrictionalOptions()) {
+        FrictionalOptions options = FrictionalOptions(), bool tightened_fail = false) {
   ScalarTerm term(std::move(target), d0, warm);
   LoopRun out;
   VectorXd u = VectorXd::Zero(1);
   const LaggedSolve solve = [&](const ContactSolveOptions& o) {
     out.solves.push_back(o);
+    if (tightened_fail && o.ipopt.tolerance < out.solves.front().ipopt.tolerance)
+      throw SolveError("the inner solver broke down");
     u[0] = term.datum();
     SolveReport r;
     r.converged = !(o.loose_geometry_tolerance > o.geometry_tolerance);
@@ -135,6 +139,38 @@ TEST(LaggedFixedPoint, ANoiseFloorAboveTheAcceptanceFailsNamingLoopRemediesAndAd
     EXPECT_NE(m.find("the scalar fixed point stagnated"), std::string::npos) << m;
     EXPECT_NE(m.find("inner solves tightened 2 time(s)"), std::string::npos) << m;
     EXPECT_NE(m.find("change the map"), std::string::npos) << m;
+  }
+}
+
+// The same noise floor where every solve tightened past the first one fails: the loop goes back to the iterate
+// the first tightened solve started from, solves it again under the first options, and accepts it there (the
+// datum the last successful solve had, not the update the failed one took); above the acceptance, the failed
+// solve's error stands.
+TEST(LaggedFixedPoint, ATightenedSolveThatFailsAcceptsTheIterateItStartedFromAtTheNoiseFloor) {
+  int calls = 0;
+  std::vector<double> data;
+  const auto noisy = [&](double d) {
+    data.push_back(d);
+    return 2.0 * (1.0 + ((calls++ % 2) ? 1e-5 : -1e-5));
+  };
+  const LoopRun r = run(noisy, 2.0, true, false, FrictionalOptions(), true);
+  EXPECT_GT(r.report.accepted_at_noise_floor, FrictionalOptions().coulomb_tolerance);
+  EXPECT_LE(r.report.accepted_at_noise_floor, FrictionalOptions().stagnation_acceptance);
+  ASSERT_GE(r.solves.size(), 3u);
+  const ContactSolveOptions &failed = r.solves[r.solves.size() - 2], &again = r.solves.back();
+  EXPECT_LT(failed.ipopt.tolerance, again.ipopt.tolerance) << "the failed solve was tightened, the last one not";
+  EXPECT_EQ(again.ipopt.tolerance, r.solves.front().ipopt.tolerance);
+  ASSERT_GE(data.size(), 2u);
+  EXPECT_EQ(r.datum, data[data.size() - 2]) << "the data of the iterate the failed solve started from";
+
+  calls = 0;
+  FrictionalOptions strict;
+  strict.stagnation_acceptance = 1e-6;
+  try {
+    run(noisy, 2.0, true, false, strict, true);
+    FAIL() << "a floor above the acceptance must throw";
+  } catch (const SolveError& e) {
+    EXPECT_EQ(std::string(e.what()), "the inner solver broke down");
   }
 }
 
