@@ -167,6 +167,17 @@ def logical_files(folder):
     return sorted(f.removesuffix(".pvtu") + ".vtu" if f.endswith(".pvtu") else f for f in names)
 
 
+def noise_floor_steps(folder):
+    """The steps of a run's summary.json whose Coulomb fixed point was accepted at the noise floor, and whether
+    one of them lacks its warning (exit "ok" only with the warning that says so)."""
+    steps = json.load(open(os.path.join(folder, "summary.json")))["steps"]
+    accepted = [s for s in steps if s.get("coulomb_accepted_at_noise_floor", 0) > 0]
+    unwarned = [s["step"] for s in accepted if not any("noise floor" in w for w in s["warnings"])]
+    if unwarned:
+        print(f"{folder}: steps accepted at the noise floor without a warning: {unwarned}")
+    return len(accepted), bool(unwarned)
+
+
 def check_parallel_files(folder):
     """Whether the output of a run on two ranks fails to be a .pvtu per body and step, with two pieces that exist,
     named by the collection in place of any .vtu."""
@@ -439,6 +450,10 @@ def main():
         run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", path, "-o", mpi, "-q"] + size)
         runs = [("2 ranks", mpi)]
         failed = check_parallel_files(mpi) or failed
+        accepted, unwarned = noise_floor_steps(mpi)
+        if accepted:
+            print(f"{name}{case_label}, 2 ranks: {accepted} step(s) accepted at the noise floor")
+        failed = failed or unwarned
         if k == 0:  # the same two ranks again: equal to the last bit
             again = os.path.join(work, tag + "_mpi_again")
             run([mpiexec, "-n", "2", "--oversubscribe", symcontact, "run", path, "-o", again, "-q"] + size)

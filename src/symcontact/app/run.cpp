@@ -273,6 +273,15 @@ void add_solver_statistics(Json& js, const SolveReport* contact, const Equilibri
 }
 
 /// The progress line's account of a step: the contact solve's iterations (`contact` not null) or Newton's.
+/// The step warning of a Coulomb fixed point accepted at the noise floor of its inner solves (`change`: the
+/// relative change of the thresholds it was accepted at; lagged_fixed_point.hpp).
+std::string noise_floor_warning(double change) {
+  std::ostringstream m;
+  m << "the Coulomb fixed point was accepted at the noise floor of its inner solves: the friction law holds to "
+    << change << " of the thresholds' size (above contact_solver.coulomb_tolerance)";
+  return m.str();
+}
+
 std::string progress_text(const SolveReport* contact, const EquilibriumReport& newton) {
   std::ostringstream s;
   if (contact)
@@ -478,6 +487,8 @@ RunResult run_problem(const ProblemSpec& spec, const RunOptions& options, const 
       log.warning("load step " + std::to_string(step + 1) + ": " + w);
       js["warnings"].push_back(w);
     }
+    if (has_contact && lrep.accepted_at_noise_floor > 0.0)  // logged by the loop (lagged_fixed_point.hpp)
+      js["warnings"].push_back(noise_floor_warning(lrep.accepted_at_noise_floor));
     st.merge(has_contact ? lrep.times : rep.times);
     add_solver_statistics(js, has_contact ? &lrep : nullptr, rep);
     std::vector<ContactPairResult> cres;
