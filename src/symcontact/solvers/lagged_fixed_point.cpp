@@ -53,6 +53,7 @@ class LaggedFixedPoint {
   bool falls_fast(double change) const;
   void keep_fallback(const VectorXd& u);
   void accept_fallback(VectorXd& u, const SolveError& failed);
+  void accept_at_noise_floor(double change, const std::string& how);
   std::string failure(const std::string& what, int iteration, double change) const;
 
   LaggedTerm& term_;
@@ -141,16 +142,22 @@ bool LaggedFixedPoint::stagnation_ends(int iteration, double change) {
     return false;
   }
   if (rep_.converged && change <= options_.stagnation_acceptance) {
-    rep_.accepted_at_noise_floor = change;
-    std::ostringstream m;
-    m << term_.loop_name() << " fixed point: the " << term_.data_name() << "s stopped changing at " << change
-      << " of their size (tolerance " << options_.coulomb_tolerance
-      << "), the noise floor of the inner solves; accepted: the law holds to " << change << " (acceptance "
-      << options_.stagnation_acceptance << ")";
-    log_.warning(m.str());
+    accept_at_noise_floor(change, "");
     return true;
   }
   throw SolveError(failure("stagnated", iteration, change));
+}
+
+/// Ends the loop at the iterate whose change is `change`, with the warning of the file comment; `how`: what
+/// showed the noise floor beyond the stagnation (empty, or a clause starting with " and").
+void LaggedFixedPoint::accept_at_noise_floor(double change, const std::string& how) {
+  rep_.accepted_at_noise_floor = change;
+  std::ostringstream m;
+  m << term_.loop_name() << " fixed point: the " << term_.data_name() << "s stopped changing at " << change
+    << " of their size (tolerance " << options_.coulomb_tolerance << ")" << how
+    << ", the noise floor of the inner solves; accepted: the law holds to " << change << " (acceptance "
+    << options_.stagnation_acceptance << ")";
+  log_.warning(m.str());
 }
 
 /// Whether a change below the tolerance is worth one more iteration (the file comment: past the tolerance):
@@ -208,13 +215,10 @@ SolveReport LaggedFixedPoint::run(VectorXd& u, const VectorXd& u_cold) {
     term_.update(r, judged ? omega_ : 1.0);
     r_prev_ = r;
     rep_.coulomb_iterations = k;
-    if (!fallback_) {
-      solve(scale_);
-      continue;
-    }
     try {
       solve(scale_);
     } catch (const SolveError& e) {
+      if (!fallback_) throw;
       accept_fallback(u, e);
       break;
     }
@@ -249,13 +253,7 @@ void LaggedFixedPoint::accept_fallback(VectorXd& u, const SolveError& failed) {
   const double change = relative_change(term_.residual(u, rep_), term_.data());
   rep_.coulomb_change.push_back(change);
   if (!rep_.converged || change > options_.stagnation_acceptance) throw failed;
-  rep_.accepted_at_noise_floor = change;
-  std::ostringstream m;
-  m << term_.loop_name() << " fixed point: the " << term_.data_name() << "s stopped changing at " << change
-    << " of their size (tolerance " << options_.coulomb_tolerance << ") and a solve tightened past that failed ("
-    << failed.what() << "): the noise floor of the inner solves; accepted: the law holds to " << change
-    << " (acceptance " << options_.stagnation_acceptance << ")";
-  log_.warning(m.str());
+  accept_at_noise_floor(change, std::string(" and a solve tightened past that failed (") + failed.what() + ")");
 }
 
 }  // namespace
