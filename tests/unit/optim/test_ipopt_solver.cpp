@@ -443,3 +443,65 @@ TEST(IpoptSolver, SilentOnStdoutAtPrintLevelZero) {
   EXPECT_NE(log.str().find("EXIT: Optimal Solution Found"), std::string::npos) << log.str().substr(0, 500);
   std::remove(log_file.c_str());
 }
+
+namespace {
+
+/// f(x) = ½ xᵀK x − qᵀx with K the 5-point Laplacian of a g × g grid plus the identity, stored sparse, subject
+/// to x_i ≥ −0.01 on every seventh unknown and to one row over them all, Σ x_i ≤ 1: a KKT system with more
+/// than 1e4 rows and a dense row, on which MUMPS, left to choose its ordering, takes SCOTCH's nested dissection.
+class GridProblem : public ConstrainedProblem {
+ public:
+  explicit GridProblem(int g) : n_(static_cast<Index>(g) * g) {
+    std::vector<Triplet> k, a;
+    for (int i = 0; i < g; ++i)
+      for (int j = 0; j < g; ++j) {
+        const int p = i * g + j;
+        k.emplace_back(p, p, 5.0);
+        if (i > 0) k.emplace_back(p, p - g, -1.0);
+        if (j > 0) k.emplace_back(p, p - 1, -1.0);
+      }
+    K_.resize(n_, n_);
+    K_.setFromTriplets(k.begin(), k.end());
+    q_ = VectorXd(n_);
+    for (Index p = 0; p < n_; ++p) q_[p] = std::sin(0.37 * static_cast<double>(p));
+    int rows = 0;
+    for (Index p = 0; p < n_; p += 7) a.emplace_back(rows++, static_cast<int>(p), 1.0);
+    for (Index p = 0; p < n_; ++p) a.emplace_back(rows, static_cast<int>(p), -1.0);
+    A_.resize(rows + 1, n_);
+    A_.setFromTriplets(a.begin(), a.end());
+    b_ = VectorXd::Constant(A_.rows(), 0.01);
+    b_[rows] = 1.0;
+  }
+  Index num_variables() const override { return n_; }
+  double objective(const VectorXd& x) override {
+    return 0.5 * x.dot(K_.selfadjointView<Eigen::Lower>() * x) - q_.dot(x);
+  }
+  void gradient(const VectorXd& x, VectorXd& g) override { g = K_.selfadjointView<Eigen::Lower>() * x - q_; }
+  void hessian_lower(const VectorXd&, SparseMatrix& H) override { H = K_; }
+  bool hessian_is_constant() const override { return true; }
+  const SparseMatrix& constraint_matrix() const override { return A_; }
+  const VectorXd& constraint_offset() const override { return b_; }
+
+ private:
+  Index n_;
+  SparseMatrix K_, A_;
+  VectorXd q_, b_;
+};
+
+}  // namespace
+
+// 10. The same sparse problem twice gives the same digits: MUMPS's ordering is one without random choices
+// (its automatic choice takes SCOTCH on this size, whose seed differs from solve to solve and from run to run).
+TEST(IpoptSolver, SparseProblemTwiceGivesTheSameDigits) {
+  GridProblem problem(110);
+  const IpoptResult a = solve_with_ipopt(problem, VectorXd::Zero(problem.num_variables()), IpoptOptions{});
+  const IpoptResult b = solve_with_ipopt(problem, VectorXd::Zero(problem.num_variables()), IpoptOptions{});
+  ASSERT_TRUE(a.success) << a.status_text;
+  ASSERT_TRUE(b.success) << b.status_text;
+  EXPECT_GT((a.multipliers.array() > 0).count(), 100);  // many active rows: a real inequality problem
+  EXPECT_EQ(a.iterations, b.iterations);
+  Index differ = 0;
+  for (Index i = 0; i < a.x.size(); ++i) differ += a.x[i] != b.x[i];
+  for (Index i = 0; i < a.multipliers.size(); ++i) differ += a.multipliers[i] != b.multipliers[i];
+  EXPECT_EQ(differ, 0);
+}
