@@ -119,6 +119,7 @@ bool solve_set(ConstrainedProblem& problem, const VectorXd& x, bool hold_values,
                int& iterations, std::vector<char>& in_set, bool& changed, StartFactor& start) {
   const VectorXd nu_start = sys.nu;
   xs = x;
+  start.rows = sys.S;
   bool solved = solve_on_set(problem, sys.AS, sys.bS, xs, sys.nu, iterations, true, &start) && xs.allFinite() &&
                 sys.nu.allFinite();
   changed = solved && drop_pulling_rows(sys.S, sys.nu, in_set);

@@ -118,12 +118,32 @@ DenseRangeSpace::DenseRangeSpace(std::shared_ptr<const AlignedMatrix> L, const S
   lower_solve(*L_, false, *W_);
   AlignedMatrix WtW(m_, m_);
   gram_lower(*W_, WtW);
-  MatrixXd S = WtW.map();
-  S.triangularView<Eigen::StrictlyUpper>() = S.transpose();
+  WtW_ = WtW.map();
+  WtW_.triangularView<Eigen::StrictlyUpper>() = WtW_.transpose();
+  decompose();
+}
+
+DenseRangeSpace::DenseRangeSpace(const DenseRangeSpace& parent, const std::vector<Index>& keep, const SparseMatrix& A)
+    : L_(parent.L_), A_(A), rho_(parent.rho_), n_(parent.n_), m_(static_cast<Index>(keep.size())) {
+  if (A_.rows() != m_ || A_.cols() != n_ || m_ < 1)
+    throw std::invalid_argument("DenseRangeSpace: the subset's rows and constraints differ in size, or no constraint");
+  for (Index j = 0; j < m_; ++j)
+    if (keep[j] < 0 || keep[j] >= parent.m_ || (j > 0 && keep[j] <= keep[j - 1]))
+      throw std::invalid_argument("DenseRangeSpace: the subset's rows are not increasing rows of the parent");
+  W_ = std::make_unique<AlignedMatrix>(n_, m_);
+  WtW_.resize(m_, m_);
+  for (Index j = 0; j < m_; ++j) {
+    W_->map().col(j) = parent.W_->map().col(keep[j]);
+    for (Index i = 0; i < m_; ++i) WtW_(i, j) = parent.WtW_(keep[i], keep[j]);
+  }
+  decompose();
+}
+
+void DenseRangeSpace::decompose() {
   // The threshold before compute(): the rank it fixes decides how many Householder reflections of Z are
   // formed, and solve() must use that same rank.
   cod_.setThreshold(1e-12);
-  cod_.compute(S);
+  cod_.compute(WtW_);
 }
 
 void DenseRangeSpace::solve(const VectorXd& h, const VectorXd& c, VectorXd& y, VectorXd& lambda,

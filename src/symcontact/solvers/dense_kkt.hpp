@@ -26,6 +26,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -88,6 +89,10 @@ class DenseRangeSpace {
   /// `A`: m × n with m ≥ 1. Forms W = L⁻¹Aᵀ (one multi-column triangular solve), WᵀW (dsyrk) and its
   /// complete orthogonal decomposition: O(n²m + nm² + m³).
   DenseRangeSpace(std::shared_ptr<const AlignedMatrix> L, const SparseMatrix& A, double rho);
+  /// The same factor on a subset of `parent`'s rows: `A` is the parent's A with only the rows `keep` (in
+  /// increasing order), so that W = L⁻¹Aᵀ is the parent's W restricted to those columns and WᵀW the
+  /// parent's restricted to those rows and columns: only the m × m decomposition is formed anew, O(m³).
+  DenseRangeSpace(const DenseRangeSpace& parent, const std::vector<Index>& keep, const SparseMatrix& A);
   /// The KKT solution for the factorised K: y, λ from h (size n) and c (size m); `load_norm` (optional):
   /// ‖L⁻¹ĥ‖₂, ĥ = h + ρ Aᵀc, the M-norm of the load.
   void solve(const VectorXd& h, const VectorXd& c, VectorXd& y, VectorXd& lambda, double* load_norm = nullptr) const;
@@ -106,7 +111,10 @@ class DenseRangeSpace {
   double rho_;
   Index n_, m_;
   std::unique_ptr<AlignedMatrix> W_;
+  MatrixXd WtW_;  // WᵀW, both triangles
   Eigen::CompleteOrthogonalDecomposition<MatrixXd> cod_;
+
+  void decompose();
 };
 
 struct ProjectedCgResult {

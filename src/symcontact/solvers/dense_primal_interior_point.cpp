@@ -161,7 +161,7 @@ class NormalFactor {
       const double shift = relative_shift * std::max(N.diagonal().maxCoeff(), 1.0);
       for (Index j = 0; j < N.outerSize(); ++j) N.coeffRef(j, j) += shift;
     }
-    const bool same_pattern = pattern_.size() == N.nonZeros() + N.outerSize() + 1 &&
+    const bool same_pattern = static_cast<Index>(pattern_.size()) == N.nonZeros() + N.outerSize() + 1 &&
                               std::equal(N.outerIndexPtr(), N.outerIndexPtr() + N.outerSize() + 1, pattern_.begin()) &&
                               std::equal(N.innerIndexPtr(), N.innerIndexPtr() + N.nonZeros(),
                                          pattern_.begin() + N.outerSize() + 1);

@@ -31,6 +31,8 @@ constexpr double kCgTolerance = 1e-13;
 constexpr int kCgMaxIterations = 50;
 /// Newton steps of the polish below this (relative to max|x|) that no longer fall tenfold are round-off.
 constexpr double kRoundOffStep = 1e-9;
+/// A step of at most this fraction of the one before has left an error far below itself (at_round_off()).
+constexpr double kContracted = 1e-2;
 
 /// The range-space step on the sparse path, Δ = M⁻¹ (A_Sᵀ λ − ĝ) with (A_S M⁻¹ A_Sᵀ) λ = A_S M⁻¹ ĝ − c_S (see
 /// solve_on_set), λ in the least-squares, minimum-norm sense. Column by column: a multi-column solve goes
@@ -131,7 +133,7 @@ class NewtonOnSet {
         factor_at_start(*start_, *h.Hd)) {
       // The first step from the shared start: the range-space solve on the factor of H(xs) alone, which the
       // later Newton steps take as their preconditioner (cg_step).
-      reference_ = std::make_unique<DenseRangeSpace>(start_->L, AS_, 0.0);
+      reference_ = range_space_at_start();
       VectorXd dx, lambda;
       reference_->solve(h.g, AS_ * xs_ + bS_, dx, lambda);
       return take_step(dx, lambda) ? StepEnd::kConverged : StepEnd::kTaken;
@@ -140,6 +142,29 @@ class NewtonOnSet {
   }
 
  private:
+  /// The range space of the start's factor on A_S: the shared one restricted where S is a subset of its rows,
+  /// else formed (and shared when the caller named the rows).
+  std::shared_ptr<const DenseRangeSpace> range_space_at_start() {
+    StartFactor& s = *start_;
+    if (s.range && !s.rows.empty()) {
+      std::vector<Index> keep;
+      keep.reserve(s.rows.size());
+      std::size_t k = 0;
+      for (const Index row : s.rows) {
+        while (k < s.range_rows.size() && s.range_rows[k] < row) ++k;
+        if (k == s.range_rows.size() || s.range_rows[k] != row) break;
+        keep.push_back(static_cast<Index>(k));
+      }
+      if (keep.size() == s.rows.size()) return std::make_shared<const DenseRangeSpace>(*s.range, keep, AS_);
+    }
+    auto range = std::make_shared<const DenseRangeSpace>(s.L, AS_, 0.0);
+    if (!s.rows.empty()) {
+      s.range = range;
+      s.range_rows = s.rows;
+    }
+    return range;
+  }
+
   /// H and g at xs; a dense H goes into one buffer that every Newton step of the loop rewrites (|B|² doubles:
   /// not allocated, and its pages not touched anew, at each step).
   HessianAt hessian() {
@@ -259,10 +284,13 @@ class NewtonOnSet {
 
   /// Newton's steps fall quadratically until they reach the round-off of these augmented systems (1e-10 to
   /// 3e-10 of max|x| on the inclined interface, where IPOPT's point is already there: without this test its
-  /// force-balancing polish takes 12–20 steps of noise). A step at that level that is not a tenth of the one
-  /// before is taken as round-off, and ends the loop.
+  /// force-balancing polish takes 12–20 steps of noise). A step at that level ends the loop when it is not a
+  /// tenth of the one before (round-off), or when it is at most kContracted of it: converging q-linearly or
+  /// faster, the error it leaves is about that ratio times the step, below 1e-11 of max|x|, and a further step
+  /// would only measure round-off.
   bool at_round_off(double step) {
-    const bool stop = step <= kRoundOffStep * xscale0_ && step > 0.1 * previous_step_;
+    const bool stop = step <= kRoundOffStep * xscale0_ &&
+                      (step > 0.1 * previous_step_ || step <= kContracted * previous_step_);
     previous_step_ = step;
     return stop;
   }
@@ -276,7 +304,7 @@ class NewtonOnSet {
   bool direct_;
   StartFactor* start_;
   const double xscale0_;
-  std::unique_ptr<DenseRangeSpace> reference_;  // the last dense direct step's factorised KKT system
+  std::shared_ptr<const DenseRangeSpace> reference_;  // the last dense direct step's factorised KKT system
   std::unique_ptr<AlignedMatrix> Hd_;           // the dense H of the current step (hessian())
   SparseMatrix AtA_;                            // lower triangle of A_Sᵀ A_S
   double adiag_ = 0.0;

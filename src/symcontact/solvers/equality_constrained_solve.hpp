@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "symcontact/optim/constrained_problem.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
@@ -29,9 +30,16 @@ namespace symcontact {
 /// is the same solution). Kept only where H is numerically definite with its Cholesky pivots within 1e-6 of
 /// each other (condition below about 1e12); a body held by contact alone leaves H singular, and every solve
 /// then factorises H + ρ A_SᵀA_S of its own set.
+/// The range-space solve on that factor is shared too: the rounds' sets mostly shrink, and the range space of a
+/// subset of the rows is the first one's restricted to them (DenseRangeSpace's subset constructor).
 struct StartFactor {
   bool tried = false;                      ///< H(x) factorised (or found not definite) by an earlier solve
   std::shared_ptr<const AlignedMatrix> L;  ///< null: H(x) not definite enough
+  /// The rows (the caller's numbering, increasing) of the next solve's A_S; the caller sets them. Empty: not
+  /// known, no range space is shared.
+  std::vector<Index> rows;
+  std::shared_ptr<const DenseRangeSpace> range;  ///< L's range space on the rows `range_rows`
+  std::vector<Index> range_rows;
 };
 
 /// xs: the start on entry, the solution on exit; nu: the multipliers of the rows of AS (ν ≥ 0 for a pull of
