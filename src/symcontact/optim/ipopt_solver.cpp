@@ -21,6 +21,7 @@
 #include "symcontact/core/error.hpp"
 #include "symcontact/core/interrupt.hpp"
 #include "symcontact/core/timer.hpp"
+#include "symcontact/optim/ordering_seed.hpp"
 
 namespace symcontact {
 namespace {
@@ -470,14 +471,6 @@ void set_defaults(Ipopt::IpoptApplication& app, const IpoptOptions& options, con
     set_default(app, "mumps_permuting_scaling", 0);
     set_default(app, "mumps_scaling", 0);
     set_default(app, "mumps_pivot_order", 0);
-  } else {
-    // Left to choose (mumps_pivot_order = 7), MUMPS orders a KKT system of more than 1e4 rows by SCOTCH's
-    // nested dissection, whose random choices differ from one analysis to the next: the same problem solved
-    // twice gives other digits (to 1e-8 on the 3D clamped plates of docs/performance.md at 1e4 DOFs, and
-    // another count of Coulomb iterations). The approximate minimum fill ordering, MUMPS's choice below 1e4
-    // rows, makes no random choice, and on those plates takes the same time. (PORD, also without one, stops
-    // the process on a KKT system of a few rows.)
-    set_default(app, "mumps_pivot_order", 2);
   }
   set_default(app, "mu_strategy", std::string("adaptive"));
   set_default(app, "max_iter", options.max_iterations);
@@ -630,6 +623,7 @@ IpoptResult solve_with_ipopt(ConstrainedProblem& problem, const VectorXd& x0, co
 
   Ipopt::SmartPtr<ContactTNLP> tnlp = new ContactTNLP(problem, std::move(setup), result);
   const double t0 = wall_seconds();
+  restart_ordering_sequence();  // the same orderings, and digits, whatever was solved before (ordering_seed.hpp)
   status = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(Ipopt::GetRawPtr(tnlp)));
   result.seconds = wall_seconds() - t0;
 

@@ -490,8 +490,8 @@ class GridProblem : public ConstrainedProblem {
 
 }  // namespace
 
-// 10. The same sparse problem twice gives the same digits: MUMPS's ordering is one without random choices
-// (its automatic choice takes SCOTCH on this size, whose seed differs from solve to solve and from run to run).
+// 10. The same sparse problem twice gives the same digits: MUMPS orders it by SCOTCH, whose random sequence
+// each solve restarts (optim/ordering_seed.hpp; without that, 6,719 of the 12,100 unknowns differed).
 TEST(IpoptSolver, SparseProblemTwiceGivesTheSameDigits) {
   GridProblem problem(110);
   const IpoptResult a = solve_with_ipopt(problem, VectorXd::Zero(problem.num_variables()), IpoptOptions{});
