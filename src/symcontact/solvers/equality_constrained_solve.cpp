@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -289,8 +290,8 @@ class NewtonOnSet {
   /// faster, the error it leaves is about that ratio times the step, below 1e-11 of max|x|, and a further step
   /// would only measure round-off.
   bool at_round_off(double step) {
-    const bool stop = step <= kRoundOffStep * xscale0_ &&
-                      (step > 0.1 * previous_step_ || step <= kContracted * previous_step_);
+    const bool contracted = std::isfinite(previous_step_) && step <= kContracted * previous_step_;
+    const bool stop = step <= kRoundOffStep * xscale0_ && (step > 0.1 * previous_step_ || contracted);
     previous_step_ = step;
     return stop;
   }
@@ -305,8 +306,8 @@ class NewtonOnSet {
   StartFactor* start_;
   const double xscale0_;
   std::shared_ptr<const DenseRangeSpace> reference_;  // the last dense direct step's factorised KKT system
-  std::unique_ptr<AlignedMatrix> Hd_;           // the dense H of the current step (hessian())
-  SparseMatrix AtA_;                            // lower triangle of A_Sᵀ A_S
+  std::unique_ptr<AlignedMatrix> Hd_;                 // the dense H of the current step (hessian())
+  SparseMatrix AtA_;                                  // lower triangle of A_Sᵀ A_S
   double adiag_ = 0.0;
   double previous_step_ = std::numeric_limits<double>::infinity();
 };

@@ -4,6 +4,8 @@
 // Hessian (one block per contact node) moved. Random SPD cases, with a dependent constraint row.
 #include <memory>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
@@ -146,4 +148,30 @@ TEST(DenseKkt, ProjectedCgReportsAnIndefiniteMatrix) {
   auto multiply = [&](const VectorXd& x, VectorXd& out) { out = K1 * x; };
   const ProjectedCgResult r = projected_cg(*f, multiply, k.h, k.c, y, lambda, 1e-13, 50);
   EXPECT_FALSE(r.converged);
+}
+
+// The polish's rounds: the range space on a subset of the rows, restricted from the one on all of them,
+// solves as the one formed on the subset itself, to 1e-12; rows that are not increasing are refused.
+TEST(DenseKkt, RangeSpaceOnASubsetOfTheRowsEqualsTheOneFormedOnIt) {
+  const Case k = random_case(5);
+  const auto all = factorise(k.K, k.A, 0.0);
+  const std::vector<Index> keep = {0, 2, 3, 7, kM - 1};
+  std::vector<Triplet> t;
+  for (int j = 0; j < k.A.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(k.A, j); it; ++it)
+      for (std::size_t r = 0; r < keep.size(); ++r)
+        if (it.row() == keep[r]) t.emplace_back(static_cast<int>(r), j, it.value());
+  SparseMatrix As(static_cast<Index>(keep.size()), kN);
+  As.setFromTriplets(t.begin(), t.end());
+  VectorXd cs(static_cast<Index>(keep.size()));
+  for (std::size_t r = 0; r < keep.size(); ++r) cs[static_cast<Index>(r)] = k.c[keep[r]];
+  const DenseRangeSpace restricted(*all, keep, As);
+  const auto formed = factorise(k.K, As, 0.0);
+  VectorXd y1, l1, y2, l2;
+  restricted.solve(k.h, cs, y1, l1);
+  formed->solve(k.h, cs, y2, l2);
+  EXPECT_LE((y1 - y2).lpNorm<Eigen::Infinity>(), 1e-12 * y2.lpNorm<Eigen::Infinity>());
+  EXPECT_LE((l1 - l2).lpNorm<Eigen::Infinity>(), 1e-12 * l2.lpNorm<Eigen::Infinity>());
+  EXPECT_LE((As * y1 + cs).lpNorm<Eigen::Infinity>(), 1e-12);
+  EXPECT_THROW(DenseRangeSpace(*all, std::vector<Index>{2, 0, 3, 7, 9}, As), std::invalid_argument);
 }
