@@ -493,3 +493,44 @@ TEST(V4FrictionLaw, ThresholdsFollowedByTheInteriorPointAreTheLoopsFixedPoint) {
   EXPECT_LT((interior_point->report.friction_state.nodal_tau[0] - tau).lpNorm<Eigen::Infinity>(),
             1e-6 * tau.lpNorm<Eigen::Infinity>());
 }
+
+// g. Proportional loading from the unloaded start: a pad pressed onto a rigid plane in two equal steps, Coulomb
+// μ = 0.3 (ν = 0.3: the ends slip outwards, the middle sticks). With a linear body, a plane and slips measured
+// from each step's start, the second step's answer is the first's doubled, thresholds included (the stick nodes'
+// force τ s / sqrt(s² + α²) doubles with τ at the same slip increment). The predictor extrapolates u and τ from
+// the unloaded start (τ = 0 there): its point is that answer, and the second step is one Newton step on the
+// previous active set. Were τ not extrapolated, the solve would start from half the thresholds, slide the ends
+// further, and follow them back.
+TEST(V4FrictionLaw, ASecondEqualStepFromTheUnloadedStartIsTheFirstDoubled) {
+  const std::string dir = test_temp_dir("doubled_pad");
+  write_text(dir, "pad.geo",
+             "Point(1) = {-0.5, 0, 0, 0.02}; Point(2) = {0.5, 0, 0, 0.02}; Point(3) = {0.5, 0.25, 0, 0.02};\n"
+             "Point(4) = {-0.5, 0.25, 0, 0.02};\nLine(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; "
+             "Line(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
+             "Physical Surface(\"solid\") = {1};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {3};\n");
+  const std::string toml =
+      "[problem]\ndimension = 2\n\n[steps]\nload_factors = [0.5, 1.0]\n\n"
+      "[[body]]\nname = \"pad\"\nmesh = \"pad.geo\"\ngroup = \"solid\"\nmaterial = { E = 1.0, nu = 0.3 }\n"
+      "[[body.dirichlet]]\nboundary = \"top\"\nux = 0.0\nuy = -0.02\n\n[[contact]]\nname = \"interface\"\n"
+      "a = \"pad.bottom\"\nfriction = \"coulomb\"\nmu = 0.1\n[contact.obstacle]\ntype = \"plane\"\n"
+      "point = [0.0, 0.0]\nnormal = [0.0, 1.0]\n";
+  const auto c = solve_case(toml, dir);
+  ASSERT_EQ(c->reactions.size(), 2u);
+  ASSERT_EQ(c->optimizer_iterations.size(), 2u);
+  std::printf("  optimizer iterations per step: %d, %d; Coulomb iterations: %d, %d\n", c->optimizer_iterations[0],
+              c->optimizer_iterations[1], c->coulomb_iterations[0], c->coulomb_iterations[1]);
+  const Eigen::VectorXd& r1 = c->reactions[0][0];
+  const Eigen::VectorXd& r2 = c->reactions[1][0];
+  EXPECT_GT(std::abs(r1[1]), 0.0);
+  EXPECT_LT((r2 - 2.0 * r1).lpNorm<Eigen::Infinity>(), 1e-8 * r2.lpNorm<Eigen::Infinity>());
+  const Eigen::VectorXd& tau = c->report.friction_state.nodal_tau[0];
+  const Eigen::VectorXd& tau1 = c->report.friction_state.previous_tau[0];
+  EXPECT_LT((tau - 2.0 * tau1).lpNorm<Eigen::Infinity>(), 1e-8 * tau.lpNorm<Eigen::Infinity>());
+  // The ends slide, the middle sticks: not a uniform state, where any thresholds large enough would do.
+  ASSERT_FALSE(c->contact.empty());
+  const Eigen::VectorXi& status = c->contact[0].sides[0].status;
+  EXPECT_GT((status.array() == 2).count(), 0);
+  EXPECT_GT((status.array() == 1).count(), 0);
+  EXPECT_EQ(c->coulomb_iterations[1], 0) << "the predicted thresholds are the fixed point's";
+  EXPECT_LE(c->optimizer_iterations[1], 2) << "one Newton step from the predicted point";
+}

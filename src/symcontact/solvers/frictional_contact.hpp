@@ -80,7 +80,8 @@ struct FrictionalOptions {
   /// Predictor of a warm-started step (quadratic energies: linear elasticity): when this step's Dirichlet
   /// increment is s times the previous step's (proportional loading), the Coulomb fixed point starts from
   /// τ_{n−1} + s (τ_{n−1} − τ_{n−2}) (clamped at 0) and the solve from u_{n−1} + s (u_{n−1} − u_{n−2}) instead
-  /// of τ_{n−1} and u_{n−1}; the slip increments are still measured from u_{n−1}. A start only: the fixed point
+  /// of τ_{n−1} and u_{n−1}, τ_{n−2} = 0 when step n−1 was the first (from the unloaded start, as u_{n−2} = 0);
+  /// the slip increments are still measured from u_{n−1}. A start only: the fixed point
   /// and its tolerances are the same. (Loads other than Dirichlet values are assumed to follow the same
   /// proportion; where they do not, the start is merely worse.)
   bool extrapolate = true;

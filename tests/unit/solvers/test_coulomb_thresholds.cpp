@@ -1,7 +1,8 @@
 // The Coulomb law as a lagged term (solvers/coulomb_thresholds.hpp) on the 2D contact patch of V3 with
 // Coulomb friction μ = 0.3: a first step starts cold (τ = 0); a later one from the previous step's thresholds,
-// extrapolated along their increment and clamped at 0; start_cold() drops that start; the residual of a
-// frictionless solve is μ p with p the patch's pressure at every node; the update is projected onto τ ≥ 0.
+// extrapolated along their increment (from 0 after a first step) and clamped at 0; start_cold() drops that
+// start; the residual of a frictionless solve is μ p with p the patch's pressure at every node; the update is
+// projected onto τ ≥ 0.
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -64,6 +65,10 @@ TEST_F(CoulombThresholdsTest, ALaterStepStartsFromThePreviousThresholdsExtrapola
   const CoulombThresholds extrapolated = make(&previous, 0.5);
   EXPECT_DOUBLE_EQ(extrapolated.data()[0][1], 2e-3 + 0.5 * (2e-3 - 1e-3));
   EXPECT_EQ(extrapolated.data()[0][0], 0.0);
+  FrictionState first;  // the state of a first step: no thresholds before it, the unloaded start's are 0
+  first.nodal_tau = previous.nodal_tau;
+  EXPECT_DOUBLE_EQ(make(&first, 0.5).data()[0][1], 2e-3 + 0.5 * 2e-3);
+  EXPECT_EQ(make(&first).data()[0], first.nodal_tau[0]);
   warm.start_cold();
   EXPECT_FALSE(warm.warm());
   EXPECT_EQ(warm.data()[0].lpNorm<Eigen::Infinity>(), 0.0);
