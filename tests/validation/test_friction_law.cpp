@@ -16,6 +16,8 @@
 //     pressure) a constant Tresca τ = μ p through the problem file does too.
 //  e. Where the thresholds are updated (CoulombUpdate): following the interior point's iterates reaches the
 //     fixed point of updating them between solves, in fewer solves.
+//  f. Thresholds followed by the interior point are the loop's fixed point (a pad dragged on a cylinder).
+//  g. The predictor of a second equal step from the unloaded start (u and τ doubled) is its answer.
 #include <gtest/gtest.h>
 
 #include <algorithm>
