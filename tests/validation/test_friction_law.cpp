@@ -497,7 +497,7 @@ TEST(V4FrictionLaw, ThresholdsFollowedByTheInteriorPointAreTheLoopsFixedPoint) {
 }
 
 // g. Proportional loading from the unloaded start: a pad pressed onto a rigid plane in two equal steps, Coulomb
-// μ = 0.3 (ν = 0.3: the ends slip outwards, the middle sticks). With a linear body, a plane and slips measured
+// μ = 0.1 (ν = 0.3: the ends slip outwards, the middle sticks). With a linear body, a plane and slips measured
 // from each step's start, the second step's answer is the first's doubled, thresholds included (the stick nodes'
 // force τ s / sqrt(s² + α²) doubles with τ at the same slip increment). The predictor extrapolates u and τ from
 // the unloaded start (τ = 0 there): its point is that answer, and the second step is one Newton step on the
