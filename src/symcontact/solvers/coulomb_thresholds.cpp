@@ -62,14 +62,13 @@ CoulombThresholds::CoulombThresholds(const ContactSet& contacts, const DofMap& d
     if (last.size() != s.num_nodes() || !(last.maxCoeff() > 0.0)) continue;
     tau = last;
     warm_ = true;
-    if (s_extrapolate <= 0.0) continue;
-    // The previous step's start: its converged thresholds, or zero where it started from the run's unloaded
-    // start (no step before it: previous_tau empty), as the displacements are extrapolated from u = 0 there.
-    if (previous->previous_tau.empty())
-      tau = (1.0 + s_extrapolate) * last;
-    else if (p < static_cast<int>(previous->previous_tau.size()) && previous->previous_tau[p].size() == s.num_nodes())
+    if (s_extrapolate > 0.0 && p < static_cast<int>(previous->previous_tau.size()) &&
+        previous->previous_tau[p].size() == s.num_nodes())
       tau = (last + s_extrapolate * (last - previous->previous_tau[p])).cwiseMax(0.0);
   }
+  // A first step starts from the run's unloaded start, whose thresholds are its cold ones (zero for Coulomb),
+  // as the displacements are extrapolated from u = 0 there.
+  if (!previous) state_.previous_tau = state_.nodal_tau;
 }
 
 std::string CoulombThresholds::advice() const {

@@ -32,8 +32,8 @@ namespace symcontact {
 class CoulombThresholds final : public LaggedTerm, public ThresholdFollower {
  public:
   /// The thresholds a step starting at u begins with: those of `previous` (the previous step's state, null for
-  /// the first step) extrapolated by s_extrapolate ≥ 0 (0: not; from zero thresholds before `previous` when it
-  /// was the first step), or cold ones. The state's u_start is u.
+  /// the first step) extrapolated by s_extrapolate ≥ 0 (0: not), or cold ones. The state's u_start is u; its
+  /// previous_tau those of `previous`, or on the first step the cold ones (the unloaded start's).
   CoulombThresholds(const ContactSet& contacts, const DofMap& dofs, const VectorXd& u, const FrictionState* previous,
                     double s_extrapolate, const Logger& log);
 

@@ -30,8 +30,9 @@ struct FrictionState {
   /// Per pair: τ at the nodes of the slave surface of the pair's friction family (empty: no friction).
   std::vector<Eigen::VectorXd> nodal_tau;
   VectorXd u_start;  ///< displacement at the start of the load step (slip increments are measured from it)
-  /// The thresholds the previous load step converged to (empty on the first step): with nodal_tau, the
-  /// last two steps' τ for the predictor of the next step (FrictionalOptions::extrapolate).
+  /// The thresholds the previous load step converged to (on the first step the unloaded start's: its cold
+  /// thresholds): with nodal_tau, the last two steps' τ for the predictor of the next step
+  /// (FrictionalOptions::extrapolate).
   std::vector<Eigen::VectorXd> previous_tau;
   /// Sets nodal_tau from the solve's iterates (null: the thresholds are fixed during a solve).
   ThresholdFollower* follower = nullptr;

@@ -65,7 +65,7 @@ TEST_F(CoulombThresholdsTest, ALaterStepStartsFromThePreviousThresholdsExtrapola
   const CoulombThresholds extrapolated = make(&previous, 0.5);
   EXPECT_DOUBLE_EQ(extrapolated.data()[0][1], 2e-3 + 0.5 * (2e-3 - 1e-3));
   EXPECT_EQ(extrapolated.data()[0][0], 0.0);
-  FrictionState first;  // the state of a first step: no thresholds before it, the unloaded start's are 0
+  FrictionState first = make(nullptr).state();  // a first step's: the unloaded start's thresholds before it, 0
   first.nodal_tau = previous.nodal_tau;
   EXPECT_DOUBLE_EQ(make(&first, 0.5).data()[0][1], 2e-3 + 0.5 * 2e-3);
   EXPECT_EQ(make(&first).data()[0], first.nodal_tau[0]);
