@@ -1,7 +1,5 @@
 #include "symcontact/optim/ordering_seed.hpp"
 
-#include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 
 #include <scotch.h>
