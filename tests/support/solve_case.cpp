@@ -38,6 +38,7 @@ std::unique_ptr<SolvedCase> solve_case(const std::string& toml, const std::strin
       c->step_cuts.push_back(c->report.cuts);
       c->coulomb_iterations.push_back(c->report.coulomb_iterations);
       c->optimizer_iterations.push_back(c->report.ipopt_iterations);
+      c->geometry_iterations.push_back(c->report.geometry_iterations);
       c->checks.push_back(check_step(*c->model, c->u, fixed, &c->report));
       c->contact = contact_results(c->model->contacts(), dofs, c->u, c->report);
       c->history.push_back(c->contact);

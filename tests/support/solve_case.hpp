@@ -31,6 +31,8 @@ struct SolvedCase {
   std::vector<int> coulomb_iterations;
   /// Optimizer iterations of every step (contact problems), those of attempts that failed included.
   std::vector<int> optimizer_iterations;
+  /// Geometry iterations of every step (contact problems: summed over its solves and sub-steps).
+  std::vector<int> geometry_iterations;
   /// What the checks of each step's answer measured (post/step_checks.hpp); solve_case runs the checks of
   /// `symcontact run` (model/setup_checks.hpp before the solve, check_step() after each step) and throws
   /// what they throw.

@@ -73,7 +73,8 @@ SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& 
   const bool follows = follows_optimizer(energy, contacts, options);
   if (follows) coulomb.follow_iterates(kFollowTolerance * options.coulomb_tolerance);
   const VectorXd u_start = u;
-  if (coulomb.warm() && s_extrapolate > 0.0) {
+  // Without Coulomb pairs there are no thresholds to start cold: u alone is extrapolated.
+  if ((coulomb.warm() || !coulomb.lags()) && s_extrapolate > 0.0) {
     u += s_extrapolate * (u - previous->u_start);
     std::ostringstream m;
     m << "  predictor: the previous step's increment extrapolated (scale " << s_extrapolate << ")";

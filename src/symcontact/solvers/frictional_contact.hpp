@@ -8,7 +8,7 @@
 ///    start from the previous step). A loop that does not converge throws SolveError — never reported as
 ///    success.
 ///  - Under proportional loading a step of linear-elastic bodies starts from u and τ extrapolated along the
-///    previous step's increment (FrictionalOptions::extrapolate).
+///    previous step's increment (FrictionalOptions::extrapolate), frictionless or not.
 /// With a condensed workspace the solves of the step leave u's interior out of date, and u is made whole once,
 /// when the step ends, also when it throws (ContactSolveOptions::lazy_interior).
 
@@ -81,8 +81,10 @@ struct FrictionalOptions {
   /// increment is s times the previous step's (proportional loading), the Coulomb fixed point starts from
   /// τ_{n−1} + s (τ_{n−1} − τ_{n−2}) (clamped at 0) and the solve from u_{n−1} + s (u_{n−1} − u_{n−2}) instead
   /// of τ_{n−1} and u_{n−1}, τ_{n−2} = 0 when step n−1 was the first (from the unloaded start, as u_{n−2} = 0);
-  /// the slip increments are still measured from u_{n−1}. A start only: the fixed point
-  /// and its tolerances are the same. (Loads other than Dirichlet values are assumed to follow the same
+  /// the slip increments are still measured from u_{n−1}. Without Coulomb pairs (frictionless, Tresca) only u
+  /// is extrapolated: the geometry fixed point's first linearisation is then at the extrapolated u; with
+  /// Coulomb pairs only where the thresholds start warm. A start only: the fixed point and its tolerances
+  /// are the same. (Loads other than Dirichlet values are assumed to follow the same
   /// proportion; where they do not, the start is merely worse.)
   bool extrapolate = true;
   /// A fixed point that stagnates (FixedPointMonitor: no new low of the change in six iterations — a cycle, or
