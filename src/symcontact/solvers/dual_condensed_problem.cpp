@@ -107,7 +107,10 @@ std::vector<char> DualCondensedProblem::closing_start_set(const VectorXd& lambda
 DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& lambda_hat,
                                                                       VectorXd& equality_multipliers,
                                                                       int max_rounds) const {
-  constexpr double kTolerance = 1e-10;  // gaps, relative to ‖y‖∞ (the primal polish's kViolationTolerance)
+  // Gaps, relative to ‖y‖∞ (the primal polish's kViolationTolerance); the closed rows' gaps, the residual of the
+  // system they were solved from, also relative to its right-hand side d_F: y alone vanishes where the
+  // condensed DOFs do not move (a face resting on a plane, only u_n condensed), and such a set would never close.
+  constexpr double kTolerance = 1e-10;
   Closing c;
   const Index k = G_.rows();
   if (m_ == 0 || lambda_hat.size() != m_ || equality_multipliers.size() != k) {
@@ -191,7 +194,7 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
     if (changed) continue;
     double open = 0.0;
     for (Index a = 0; a < nf; ++a) open = std::max(open, std::abs(gaps[F[a]]));
-    if (open > tol) {
+    if (open > std::max(tol, kTolerance * df.lpNorm<Eigen::Infinity>())) {
       c.reason = "the active set does not close consistently";
       return c;
     }

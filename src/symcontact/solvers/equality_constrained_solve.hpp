@@ -46,7 +46,9 @@ struct StartFactor {
 /// the constraint), their start on entry; `iterations` counts the steps taken. `direct`: the range-space solve
 /// where S has at most a few thousand rows (else, or when M needs a large ρ to be definite, the method of
 /// multipliers). `start` (optional, direct solves of a dense H): the factor of H at this xs shared with the other
-/// solves from the same xs (StartFactor). Returns false when M cannot be factorised.
+/// solves from the same xs (StartFactor). A non-quadratic f gets at most 20 Newton steps: xs is then their last
+/// iterate, not necessarily converged, which the caller judges (active_set_polish.cpp keeps it only where the
+/// stationarity error fell). Returns false when M cannot be factorised.
 bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
                   int& iterations, bool direct, StartFactor* start = nullptr);
 

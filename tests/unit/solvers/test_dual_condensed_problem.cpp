@@ -215,5 +215,36 @@ TEST_P(DualCondensed, InteriorPointGivesThePrimalSolution) {
   }
 }
 
+// A face resting on a plane under load: every row closed at y = 0 (rows y_i ≥ 0, ĝ > 0 pushing every DOF
+// down: λ = ĝ, y = 0 solve the KKT conditions). The closed rows' gaps are then measured against the load's own
+// gaps, ‖d‖∞, not against ‖y‖∞, which is round-off there: the set closes in one round, exactly.
+TEST(DualCondensedResting, AFaceRestingOnAPlaneClosesInOneRound) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  MatrixXd B(kBody, kBody);
+  for (Index i = 0; i < kBody; ++i)
+    for (Index j = 0; j < kBody; ++j) B(i, j) = u(rng);
+  Case c;
+  c.S = B * B.transpose() + 0.5 * MatrixXd::Identity(kBody, kBody);
+  c.g = VectorXd::Constant(kBody, 0.05);
+  for (Index i = 0; i < kBody; ++i) c.g[i] += 0.02 * (u(rng) + 1.0);
+  c.A = MatrixXd::Identity(kBody, kBody).sparseView();
+  c.b = VectorXd::Zero(kBody);
+  const SemidefiniteFactor f = schur_factor(c);
+  DualCondensedProblem dual(f, c.A, c.b, c.g);
+  DenseQpOptions o;
+  o.tolerance = 1e-12;
+  const DenseQpResult r = dual.solve_interior_point(o);
+  ASSERT_TRUE(r.success) << r.status;
+  VectorXd lambda_hat = r.x, eq = r.beta;
+  const DualCondensedProblem::Closing cl = dual.close_contact_set(lambda_hat, eq);
+  ASSERT_TRUE(cl.applied) << cl.reason;
+  EXPECT_EQ(cl.rounds, 1);
+  EXPECT_EQ(cl.active, kBody);
+  const VectorXd y = dual.primal(lambda_hat, eq);
+  EXPECT_LT(y.lpNorm<Eigen::Infinity>(), 1e-14);
+  EXPECT_LT((dual.multipliers(lambda_hat) - c.g).lpNorm<Eigen::Infinity>(), 1e-12 * c.g.lpNorm<Eigen::Infinity>());
+}
+
 INSTANTIATE_TEST_SUITE_P(HeldAndFloating, DualCondensed, ::testing::Values(false, true),
                          [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Floating" : "Held"; });
