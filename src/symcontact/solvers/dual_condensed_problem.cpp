@@ -106,7 +106,7 @@ std::vector<char> DualCondensedProblem::closing_start_set(const VectorXd& lambda
 
 DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& lambda_hat,
                                                                       VectorXd& equality_multipliers,
-                                                                      int max_rounds) const {
+                                                                      int max_rounds, Rows rows) const {
   // Gaps, relative to ‖y‖∞ (the primal polish's kViolationTolerance); the closed rows' gaps, the residual of the
   // system they were solved from, also relative to its right-hand side d_F: y alone vanishes where the
   // condensed DOFs do not move (a face resting on a plane, only u_n condensed), and such a set would never close.
@@ -158,6 +158,10 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
     VectorXd lf = VectorXd::Zero(nf);
     alpha = VectorXd::Zero(k);
     if (nf + k > 0 && !(nf > 0 && definite_saddle_solve(wff, gf, df, e, lf, alpha))) {
+      if (rows == Rows::kIndependent) {
+        c.reason = "the closed rows are nearly dependent";
+        return c;
+      }
       MatrixXd K = MatrixXd::Zero(nf + k, nf + k);
       const auto wm = wff.map();
       for (Index a = 0; a < nf; ++a)

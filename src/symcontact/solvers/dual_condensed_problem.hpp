@@ -85,9 +85,9 @@ class DualCondensedProblem : public ConstrainedProblem {
   /// went negative join it, until F settles (Hintermüller, Ito & Kunisch, SIAM J. Optim. 13, 2003). Each round
   /// costs O(|F|³) on the m × m W, against a dense |B| × |B| factorisation and method-of-multipliers solves
   /// in the primal. Applied only when F settles, its gaps vanish (the set closes consistently: not so for the
-  /// two families of a curved symmetric pair) to 1e-10 · ‖y‖∞, λ ≥ 0 and no gap is negative beyond that;
-  /// then `lambda_hat` and `equality_multipliers` are replaced. A set met before ends the rounds (they are a
-  /// function of F alone: it would cycle).
+  /// two families of a curved symmetric pair) to 1e-10 · max(f_ref ‖y‖∞, ‖d_F‖∞), λ ≥ 0 and no gap is negative
+  /// beyond 1e-10 · f_ref ‖y‖∞; then `lambda_hat` and `equality_multipliers` are replaced. A set met before ends
+  /// the rounds (they are a function of F alone: it would cycle).
   struct Closing {
     bool applied = false;
     int rounds = 0;
@@ -95,7 +95,14 @@ class DualCondensedProblem : public ConstrainedProblem {
     std::string reason;  ///< why it was not applied
   };
   /// `max_rounds` bounds the rounds (a start far from the answer gives up early instead of cycling).
-  Closing close_contact_set(VectorXd& lambda_hat, VectorXd& equality_multipliers, int max_rounds = 30) const;
+  /// `rows`: kIndependent gives up on a set whose rows are nearly dependent (W_FF not definite), where the
+  /// minimum-norm answer would pick one of many splits of the force between them.
+  enum class Rows { kAny, kIndependent };
+  Closing close_contact_set(VectorXd& lambda_hat, VectorXd& equality_multipliers, int max_rounds = 30,
+                            Rows rows = Rows::kAny) const;
+  /// A start of the closing without a previous solution: the rows the load alone would violate, by how much
+  /// (λ̂ = max(d, 0): the scaled penetrations at λ = 0).
+  VectorXd cold_start() const { return d_.cwiseMax(0.0); }
   /// Whether row i starts in the closing's set F: λ̂_i > 1e-6 max λ̂.
   static std::vector<char> closing_start_set(const VectorXd& lambda_hat);
 

@@ -36,9 +36,11 @@ SubproblemSolution DualIpopt::solve(const Subproblem& p, const SubproblemWarmSta
       start = {&l0, &z0, &equality_prev_};
     }
     bool solved = false;
-    if (p.close_active_set && closes_previous_set() && rows_known)  // (the closing finds β itself)
-      solved = close_previous_set(*dual, dual->scaled_multipliers(*warm.multipliers),
-                                  VectorXd::Zero(dual->num_rigid_modes()), res, s, log);
+    if (p.close_active_set && closes_previous_set())  // (the closing finds β itself)
+      solved = rows_known ? close_set(*dual, dual->scaled_multipliers(*warm.multipliers),
+                                      VectorXd::Zero(dual->num_rigid_modes()), SetStart::kPrevious, res, s, log)
+                          : close_set(*dual, dual->cold_start(), VectorXd::Zero(dual->num_rigid_modes()),
+                                      SetStart::kCold, res, s, log);
     if (!solved) solved = solve_first(*dual, start, p.ipopt, res, s, log);
     if (!solved && is_warm) {
       IpoptOptions opt = p.ipopt;
@@ -98,8 +100,8 @@ bool DualInteriorPoint::solve_first(const DualCondensedProblem& dual, const Dual
   return true;
 }
 
-bool DualIpopt::close_previous_set(const DualCondensedProblem& dual, VectorXd lambda_hat, VectorXd equality,
-                                   IpoptResult& res, SubproblemSolution& s, const Logger& log) const {
+bool DualIpopt::close_set(const DualCondensedProblem& dual, VectorXd lambda_hat, VectorXd equality, SetStart from,
+                          IpoptResult& res, SubproblemSolution& s, const Logger& log) const {
   // A round costs a Cholesky of the |F| closed rows, an interior-point iteration one of all m rows: the rounds
   // may cost up to about six iterations' worth, (m/|F|)³ rounds per iteration, between 6 and 30 rounds. A set
   // a few rows off closes in one to five; a zone grown through a load step in five to eight.
@@ -107,13 +109,17 @@ bool DualIpopt::close_previous_set(const DualCondensedProblem& dual, VectorXd la
   const double active = std::max<double>(1.0, static_cast<double>(std::count(in_set.begin(), in_set.end(), 1)));
   const double ratio = static_cast<double>(lambda_hat.size()) / active;
   const int rounds = static_cast<int>(std::clamp(6.0 * ratio * ratio * ratio, 6.0, 30.0));
-  const DualCondensedProblem::Closing cl = dual.close_contact_set(lambda_hat, equality, rounds);
+  const bool cold = from == SetStart::kCold;
+  if (cold && !std::count(in_set.begin(), in_set.end(), 1)) return false;  // nothing violated: no set to close
+  const DualCondensedProblem::Closing cl = dual.close_contact_set(
+      lambda_hat, equality, rounds, cold ? DualCondensedProblem::Rows::kIndependent : DualCondensedProblem::Rows::kAny);
+  const std::string which = cold ? "violated rows' set" : "previous active set";
   if (!cl.applied) {
-    log.debug("  the previous active set did not close (" + cl.reason + "); the interior point");
+    log.debug("  the " + which + " did not close (" + cl.reason + "); the interior point");
     return false;
   }
   res.success = true;
-  res.status_text = "previous active set closed in " + std::to_string(cl.rounds) + " rounds";
+  res.status_text = which + " closed in " + std::to_string(cl.rounds) + " rounds";
   res.iterations = 0;
   res.x = std::move(lambda_hat);
   res.multipliers = std::move(equality);

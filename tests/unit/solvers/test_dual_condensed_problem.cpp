@@ -246,5 +246,43 @@ TEST(DualCondensedResting, AFaceRestingOnAPlaneClosesInOneRound) {
   EXPECT_LT((dual.multipliers(lambda_hat) - c.g).lpNorm<Eigen::Infinity>(), 1e-12 * c.g.lpNorm<Eigen::Infinity>());
 }
 
+// The closing started from the rows the load alone violates (cold_start: no previous solution) reaches the
+// primal's answer; with each row given twice (two nearly dependent families, as a symmetric pair has) it closes
+// only where any split of the force between the copies is allowed (Rows::kAny), and Rows::kIndependent
+// refuses the set instead of picking one split.
+TEST(DualCondensedCold, ClosesFromTheViolatedRowsAndRefusesDependentRowsWhenAsked) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const Case c = make_case(false, seed);
+    const IpoptResult rp = solve_primal(c);
+    ASSERT_TRUE(rp.success) << rp.status_text;
+    const SemidefiniteFactor f = schur_factor(c);
+    DualCondensedProblem dual(f, c.A, c.b, c.g);
+    VectorXd lambda_hat = dual.cold_start(), eq = VectorXd::Zero(0);
+    ASSERT_GT(lambda_hat.maxCoeff(), 0.0);
+    const DualCondensedProblem::Closing cl =
+        dual.close_contact_set(lambda_hat, eq, 30, DualCondensedProblem::Rows::kIndependent);
+    ASSERT_TRUE(cl.applied) << cl.reason << " (seed " << seed << ")";
+    const VectorXd y = dual.primal(lambda_hat, eq);
+    EXPECT_LT((y - rp.x).lpNorm<Eigen::Infinity>(), 1e-7 * rp.x.lpNorm<Eigen::Infinity>()) << "seed " << seed;
+
+    SparseMatrix twice(2 * kRows, kN);
+    std::vector<Triplet> t;
+    for (int j = 0; j < c.A.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(c.A, j); it; ++it) {
+        t.emplace_back(static_cast<int>(it.row()), j, it.value());
+        t.emplace_back(static_cast<int>(it.row() + kRows), j, it.value());
+      }
+    twice.setFromTriplets(t.begin(), t.end());
+    VectorXd b2(2 * kRows);
+    b2 << c.b, c.b;
+    DualCondensedProblem doubled(f, twice, b2, c.g);
+    VectorXd l2 = doubled.cold_start(), e2 = VectorXd::Zero(0);
+    EXPECT_FALSE(doubled.close_contact_set(l2, e2, 30, DualCondensedProblem::Rows::kIndependent).applied);
+    l2 = doubled.cold_start();
+    ASSERT_TRUE(doubled.close_contact_set(l2, e2, 30, DualCondensedProblem::Rows::kAny).applied);
+    EXPECT_LT((doubled.primal(l2, e2) - rp.x).lpNorm<Eigen::Infinity>(), 1e-7 * rp.x.lpNorm<Eigen::Infinity>());
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(HeldAndFloating, DualCondensed, ::testing::Values(false, true),
                          [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Floating" : "Held"; });
