@@ -104,6 +104,49 @@ std::vector<char> DualCondensedProblem::closing_start_set(const VectorXd& lambda
   return in_set;
 }
 
+bool DualCondensedProblem::solve_closed_rows(const std::vector<Index>& F, Rows rows, VectorXd& lam, VectorXd& alpha,
+                                             double& df_max) const {
+  const Index nf = static_cast<Index>(F.size()), k = G_.rows();
+  const auto w = W_->map();
+  // W_FF (lower triangle), G_F and d_F of the closed rows.
+  AlignedMatrix wff(nf, nf);
+  MatrixXd gf(k, nf);
+  VectorXd df(nf);
+  {
+    auto wm = wff.map();
+    for (Index a = 0; a < nf; ++a) {
+      for (Index bb = a; bb < nf; ++bb) wm(bb, a) = w(F[bb], F[a]);  // F ascending: F[bb] ≥ F[a]
+      gf.col(a) = G_dense_.col(F[a]);
+      df[a] = d_[F[a]];
+    }
+  }
+  df_max = nf ? df.lpNorm<Eigen::Infinity>() : 0.0;
+  const VectorXd e = -minus_e_;
+  // An empty set: every contact open, λ = 0. A definite W_FF (independent rows, as on a rigid obstacle): the
+  // unique solution by Cholesky. Otherwise (the nearly dependent families of a symmetric pair) the minimum-norm
+  // least-squares solution (LAPACK's blocked complete orthogonal factorisation). The O(|F|³) of this step
+  // is most of the closing's time.
+  VectorXd lf = VectorXd::Zero(nf);
+  alpha = VectorXd::Zero(k);
+  if (nf + k > 0 && !(nf > 0 && definite_saddle_solve(wff, gf, df, e, lf, alpha))) {
+    if (rows == Rows::kIndependent) return false;
+    MatrixXd K = MatrixXd::Zero(nf + k, nf + k);
+    const auto wm = wff.map();
+    for (Index a = 0; a < nf; ++a)
+      for (Index bb = a; bb < nf; ++bb) K(bb, a) = K(a, bb) = wm(bb, a);
+    K.topRightCorner(nf, k) = gf.transpose();
+    K.bottomLeftCorner(k, nf) = gf;
+    VectorXd rhs(nf + k);
+    rhs << df, e;
+    const VectorXd sol = min_norm_solve(K, rhs, 1e-12);
+    lf = sol.head(nf);
+    alpha = sol.tail(k);
+  }
+  lam = VectorXd::Zero(m_);
+  for (Index a = 0; a < nf; ++a) lam[F[a]] = lf[a];
+  return true;
+}
+
 DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& lambda_hat,
                                                                       VectorXd& equality_multipliers,
                                                                       int max_rounds, Rows rows) const {
@@ -117,14 +160,12 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
     c.reason = "sizes";
     return c;
   }
-  const auto w = W_->map();
   const double lmax = lambda_hat.maxCoeff();
   if (!(lmax > 0)) {
     c.reason = "no contact";
     return c;
   }
   std::vector<char> in_set = closing_start_set(lambda_hat);
-  const MatrixXd& Gd = G_dense_;
   std::set<std::vector<char>> seen;
   VectorXd lam, alpha;
   for (int round = 0; round < max_rounds; ++round) {
@@ -138,48 +179,15 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
       if (in_set[i]) F.push_back(i);
     const Index nf = static_cast<Index>(F.size());
     c.active = nf;
-    // W_FF (lower triangle), G_F and d_F of the closed rows.
-    AlignedMatrix wff(nf, nf);
-    MatrixXd gf(k, nf);
-    VectorXd df(nf);
-    {
-      auto wm = wff.map();
-      for (Index a = 0; a < nf; ++a) {
-        for (Index bb = a; bb < nf; ++bb) wm(bb, a) = w(F[bb], F[a]);  // F ascending: F[bb] ≥ F[a]
-        gf.col(a) = Gd.col(F[a]);
-        df[a] = d_[F[a]];
-      }
+    double df_max = 0.0;
+    if (!solve_closed_rows(F, rows, lam, alpha, df_max)) {
+      c.reason = "the closed rows are nearly dependent";
+      return c;
     }
-    const VectorXd e = -minus_e_;
-    // An empty set: every contact open, λ = 0. A definite W_FF (independent rows, as on a rigid obstacle): the
-    // unique solution by Cholesky. Otherwise (the nearly dependent families of a symmetric pair) the minimum-norm
-    // least-squares solution (LAPACK's blocked complete orthogonal factorisation). The O(|F|³) of this step
-    // is most of the closing's time.
-    VectorXd lf = VectorXd::Zero(nf);
-    alpha = VectorXd::Zero(k);
-    if (nf + k > 0 && !(nf > 0 && definite_saddle_solve(wff, gf, df, e, lf, alpha))) {
-      if (rows == Rows::kIndependent) {
-        c.reason = "the closed rows are nearly dependent";
-        return c;
-      }
-      MatrixXd K = MatrixXd::Zero(nf + k, nf + k);
-      const auto wm = wff.map();
-      for (Index a = 0; a < nf; ++a)
-        for (Index bb = a; bb < nf; ++bb) K(bb, a) = K(a, bb) = wm(bb, a);
-      K.topRightCorner(nf, k) = gf.transpose();
-      K.bottomLeftCorner(k, nf) = gf;
-      VectorXd rhs(nf + k);
-      rhs << df, e;
-      const VectorXd sol = min_norm_solve(K, rhs, 1e-12);
-      lf = sol.head(nf);
-      alpha = sol.tail(k);
-    }
-    lam = VectorXd::Zero(m_);
-    for (Index a = 0; a < nf; ++a) lam[F[a]] = lf[a];
     // Gaps (scaled rows): W λ − d + Gᵀα, and the tolerance in those units.
     VectorXd gaps = -d_;
     symmetric_multiply_add(*W_, lam, gaps);
-    if (k > 0) gaps += Gd.transpose() * alpha;
+    if (k > 0) gaps += G_dense_.transpose() * alpha;
     const VectorXd y = primal(lam, -alpha);
     const double tol = kTolerance * f_ref_ * std::max(y.lpNorm<Eigen::Infinity>(), 1e-300);
     const double lam_max = nf ? lam.cwiseAbs().maxCoeff() : 0.0;
@@ -198,7 +206,7 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
     if (changed) continue;
     double open = 0.0;
     for (Index a = 0; a < nf; ++a) open = std::max(open, std::abs(gaps[F[a]]));
-    if (open > std::max(tol, kTolerance * df.lpNorm<Eigen::Infinity>())) {
+    if (open > std::max(tol, kTolerance * df_max)) {
       c.reason = "the active set does not close consistently";
       return c;
     }

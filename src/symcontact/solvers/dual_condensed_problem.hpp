@@ -107,6 +107,12 @@ class DualCondensedProblem : public ConstrainedProblem {
   static std::vector<char> closing_start_set(const VectorXd& lambda_hat);
 
  private:
+  /// λ (size m, zero off F) and α solving the closing's system on the closed rows F (ascending),
+  /// W_FF λ_F + G_Fᵀ α = d_F, G_F λ_F = e; `df_max` = ‖d_F‖∞. False where `rows` is kIndependent and W_FF is
+  /// not definite.
+  bool solve_closed_rows(const std::vector<Index>& F, Rows rows, VectorXd& lam, VectorXd& alpha,
+                         double& df_max) const;
+
   const SemidefiniteFactor& factor_;
   Index m_ = 0;
   VectorXd D_;                       ///< row scales
