@@ -12,18 +12,13 @@
 #include <cstdio>
 #include <string>
 
+#include "support/pad_geo.hpp"
 #include "support/solve_case.hpp"
 
 using namespace symcontact;
 using namespace symcontact::testing;
 
 namespace {
-
-const char* kPadGeo =
-    "Point(1) = {-0.5, 0, 0}; Point(2) = {0.5, 0, 0}; Point(3) = {0.5, 0.25, 0}; Point(4) = {-0.5, 0.25, 0};\n"
-    "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
-    "Curve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
-    "Physical Surface(\"solid\") = {1};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {3};\n";
 
 const char* kPadToml = R"(title = "pad on a cylinder"
 [problem]
@@ -58,7 +53,7 @@ radius = 1.0
 
 TEST(ActiveSetNewton, EveryStepOfThePadOnACylinderConvergesWithoutFallingBack) {
   const std::string dir = test_temp_dir("active_set_newton");
-  write_text(dir, "pad.geo", kPadGeo);
+  write_text(dir, "pad.geo", pad_geo_2d());
   const auto c = solve_case(kPadToml, dir);
   ASSERT_EQ(c->optimizer_iterations.size(), 6u);
   for (std::size_t k = 0; k < c->optimizer_iterations.size(); ++k)

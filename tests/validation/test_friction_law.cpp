@@ -27,6 +27,7 @@
 #include <sstream>
 #include <vector>
 
+#include "support/pad_geo.hpp"
 #include "support/solve_case.hpp"
 #include "symcontact/app/run.hpp"
 #include "symcontact/model/problem_reader.hpp"
@@ -466,11 +467,7 @@ TEST(V4FrictionLaw, ThresholdsFollowingTheOptimizerReachTheSameFixedPointInFewer
 // start's to the loop's tolerance.
 TEST(V4FrictionLaw, ThresholdsFollowedByTheInteriorPointAreTheLoopsFixedPoint) {
   const std::string dir = test_temp_dir("followed_pad");
-  write_text(dir, "pad.geo",
-             "Point(1) = {-0.5, 0, 0, 0.012}; Point(2) = {0.5, 0, 0, 0.012}; Point(3) = {0.5, 0.25, 0, 0.012};\n"
-             "Point(4) = {-0.5, 0.25, 0, 0.012};\nLine(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; "
-             "Line(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
-             "Physical Surface(\"solid\") = {1};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {3};\n");
+  write_text(dir, "pad.geo", pad_geo_2d(0.012));
   const auto problem = [](const char* warm_start) {
     return std::string("[problem]\ndimension = 2\n\n[steps]\nload_factors = [0.25, 0.5, 0.75, 1.0, 1.0, 1.0]\n\n"
                        "[contact_solver]\nwarm_start = \"") +
@@ -505,11 +502,7 @@ TEST(V4FrictionLaw, ThresholdsFollowedByTheInteriorPointAreTheLoopsFixedPoint) {
 // further, and follow them back.
 TEST(V4FrictionLaw, ASecondEqualStepFromTheUnloadedStartIsTheFirstDoubled) {
   const std::string dir = test_temp_dir("doubled_pad");
-  write_text(dir, "pad.geo",
-             "Point(1) = {-0.5, 0, 0, 0.02}; Point(2) = {0.5, 0, 0, 0.02}; Point(3) = {0.5, 0.25, 0, 0.02};\n"
-             "Point(4) = {-0.5, 0.25, 0, 0.02};\nLine(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; "
-             "Line(4) = {4, 1};\nCurve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
-             "Physical Surface(\"solid\") = {1};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {3};\n");
+  write_text(dir, "pad.geo", pad_geo_2d(0.02));
   const std::string toml =
       "[problem]\ndimension = 2\n\n[steps]\nload_factors = [0.5, 1.0]\n\n"
       "[[body]]\nname = \"pad\"\nmesh = \"pad.geo\"\ngroup = \"solid\"\nmaterial = { E = 1.0, nu = 0.3 }\n"

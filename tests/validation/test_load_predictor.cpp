@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <string>
 
+#include "support/pad_geo.hpp"
 #include "support/solve_case.hpp"
 
 using namespace symcontact;
@@ -20,12 +21,6 @@ const char* kPadOnPlane =
     "[[body.dirichlet]]\nboundary = \"top\"\nux = 0.0\nuy = -0.02\n\n[[contact]]\nname = \"interface\"\n"
     "a = \"pad.bottom\"\n[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0]\nnormal = [0.0, 1.0]\n";
 
-const char* kPadGeo =
-    "Point(1) = {-0.5, 0, 0, 0.02}; Point(2) = {0.5, 0, 0, 0.02}; Point(3) = {0.5, 0.25, 0, 0.02};\n"
-    "Point(4) = {-0.5, 0.25, 0, 0.02};\nLine(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
-    "Curve Loop(1) = {1, 2, 3, 4};\nPlane Surface(1) = {1};\n"
-    "Physical Surface(\"solid\") = {1};\nPhysical Curve(\"bottom\") = {1};\nPhysical Curve(\"top\") = {3};\n";
-
 }  // namespace
 
 // A frictionless pad pressed onto a rigid plane in two equal steps (its top moved down, held in x; ν = 0.3: the
@@ -35,7 +30,7 @@ const char* kPadGeo =
 // second iteration is needed to see the change fall below the tolerance.
 TEST(LoadPredictor, ASecondEqualFrictionlessStepStartsAtItsAnswer) {
   const std::string dir = test_temp_dir("predicted_pad");
-  write_text(dir, "pad.geo", kPadGeo);
+  write_text(dir, "pad.geo", pad_geo_2d(0.02));
   const auto c = solve_case(kPadOnPlane, dir);
   ASSERT_EQ(c->reactions.size(), 2u);
   ASSERT_EQ(c->geometry_iterations.size(), 2u);
@@ -52,7 +47,7 @@ TEST(LoadPredictor, ASecondEqualFrictionlessStepStartsAtItsAnswer) {
 // ([contact_solver] warm_start = "interior_point", which closes no set before it) reaches the same answer.
 TEST(LoadPredictor, AFirstFrictionlessSolveClosesTheViolatedRows) {
   const std::string dir = test_temp_dir("violated_rows_pad");
-  write_text(dir, "pad.geo", kPadGeo);
+  write_text(dir, "pad.geo", pad_geo_2d(0.02));
   const auto closed = solve_case(kPadOnPlane, dir);
   const auto interior =
       solve_case(std::string(kPadOnPlane) + "\n[contact_solver]\nwarm_start = \"interior_point\"\n", dir);

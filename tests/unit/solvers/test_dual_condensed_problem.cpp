@@ -95,6 +95,13 @@ IpoptResult solve_primal(const Case& c) {
   return solve_with_ipopt(primal, VectorXd::Zero(kN), tight());
 }
 
+/// The dual by its dense interior point, to a tight tolerance.
+DenseQpResult tight_interior_point(const DualCondensedProblem& dual) {
+  DenseQpOptions o;
+  o.tolerance = 1e-12;
+  return dual.solve_interior_point(o);
+}
+
 SemidefiniteFactor schur_factor(const Case& c) {
   return SemidefiniteFactor(MatrixXd(c.S.triangularView<Eigen::Lower>()).sparseView(), 1e-10);
 }
@@ -188,9 +195,7 @@ TEST_P(DualCondensed, InteriorPointGivesThePrimalSolution) {
     ASSERT_TRUE(rp.success) << rp.status_text;
     const SemidefiniteFactor f = schur_factor(c);
     DualCondensedProblem dual(f, c.A, c.b, c.g);
-    DenseQpOptions o;
-    o.tolerance = 1e-12;
-    const DenseQpResult r = dual.solve_interior_point(o);
+    const DenseQpResult r = tight_interior_point(dual);
     ASSERT_TRUE(r.success) << r.status;
     ASSERT_EQ(r.beta.size(), floating ? 1 : 0);
     const VectorXd y = dual.primal(r.x, r.beta);
@@ -232,9 +237,7 @@ TEST(DualCondensedResting, AFaceRestingOnAPlaneClosesInOneRound) {
   c.b = VectorXd::Zero(kBody);
   const SemidefiniteFactor f = schur_factor(c);
   DualCondensedProblem dual(f, c.A, c.b, c.g);
-  DenseQpOptions o;
-  o.tolerance = 1e-12;
-  const DenseQpResult r = dual.solve_interior_point(o);
+  const DenseQpResult r = tight_interior_point(dual);
   ASSERT_TRUE(r.success) << r.status;
   VectorXd lambda_hat = r.x, eq = r.beta;
   const DualCondensedProblem::Closing cl = dual.close_contact_set(lambda_hat, eq);
