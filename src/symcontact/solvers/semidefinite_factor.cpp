@@ -80,50 +80,70 @@ VectorXd SemidefiniteFactor::solve(const VectorXd& r) const {
   return y;
 }
 
+namespace {
+
+/// The columns of a sparse matrix R (n × k) in S's pivoted order, rows beyond the rank dropped.
+struct PivotedColumns {
+  std::vector<Index> start, place;
+  std::vector<double> value;
+};
+
+/// Which entries of Z = Xᵀ R a product computes: all, or for each panel of X's columns i0 … i0 + 15 the
+/// columns j ≥ i0 of Z (when Z is symmetric, its lower triangle and a few entries above the diagonal).
+enum class Part { kAll, kFromPanel };
+
+/// Z = Xᵀ R for a dense X (n_x × m) and R as `columns` (places < n_x), by panels of 16 columns of X: each
+/// panel is copied transposed (16 × n_x, contiguous), so that the 16 entries of R's place p are one short
+/// contiguous read and the panel, reused by every column of R, stays in cache. `store(i0, j, z)` receives
+/// Z(i0 … i0 + 15, j) (entries beyond m are zero and are not to be stored). A fixed order of sums.
+template <class Store>
+void panel_product(Eigen::Ref<const MatrixXd> X, const PivotedColumns& columns, Part part, Store&& store) {
+  constexpr Index kPanel = 16;
+  using Block = Eigen::Matrix<double, kPanel, 1>;
+  const Index m = X.cols(), k = static_cast<Index>(columns.start.size()) - 1;
+  Eigen::Matrix<double, kPanel, Eigen::Dynamic> panel(kPanel, X.rows());
+  for (Index i0 = 0; i0 < m; i0 += kPanel) {
+    const Index width = std::min(kPanel, m - i0);
+    panel.topRows(width) = X.middleCols(i0, width).transpose();
+    panel.bottomRows(kPanel - width).setZero();
+    for (Index j = part == Part::kAll ? 0 : i0; j < k; ++j) {
+      Block sum = Block::Zero();
+      for (Index e = columns.start[j]; e < columns.start[j + 1]; ++e)
+        sum += columns.value[e] * panel.col(columns.place[e]);
+      store(i0, j, sum);
+    }
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<AlignedMatrix> SemidefiniteFactor::gram(const SparseMatrix& R) const {
   if (R.rows() != n_) throw std::invalid_argument("SemidefiniteFactor::gram: R has the wrong number of rows");
   const Index k = R.cols();
   std::vector<Index> position(n_, -1);  // row i of S → its place among the first r pivots, or −1
   for (Index i = 0; i < r_; ++i) position[piv_[i]] = i;
-  // R's entries in the pivoted order, column by column (those beyond the rank dropped).
-  std::vector<Index> start(k + 1, 0), place;
-  std::vector<double> value;
+  PivotedColumns columns{std::vector<Index>(k + 1, 0), {}, {}};
   for (Index j = 0; j < k; ++j) {
     for (SparseMatrix::InnerIterator it(R, static_cast<int>(j)); it; ++it)
       if (position[it.row()] >= 0) {
-        place.push_back(position[it.row()]);
-        value.push_back(it.value());
+        columns.place.push_back(position[it.row()]);
+        columns.value.push_back(it.value());
       }
-    start[j + 1] = static_cast<Index>(place.size());
+    columns.start[j + 1] = static_cast<Index>(columns.place.size());
   }
-  // Tᵀ with T = C₁₁ (P R)₁..ᵣ: column j of T is a sum of the columns of C₁₁ that R's column j touches. By
-  // blocks of kRows rows, summed in registers, so that the block of C₁₁ in use stays in cache while every
-  // column of T passes; stored transposed (k × r) for the next product.
-  constexpr Index kRows = 32;
-  using Block = Eigen::Matrix<double, kRows, 1>;
-  MatrixXd Tt(k, r_);
-  const auto c = c11_->map();
-  const Index full = r_ / kRows * kRows;
-  for (Index i0 = 0; i0 < full; i0 += kRows)
-    for (Index j = 0; j < k; ++j) {
-      Block sum = Block::Zero();
-      for (Index e = start[j]; e < start[j + 1]; ++e) sum += value[e] * c.col(place[e]).segment<kRows>(i0);
-      Tt.row(j).segment<kRows>(i0) = sum.transpose();
-    }
-  for (Index j = 0; j < k; ++j) {
-    VectorXd sum = VectorXd::Zero(r_ - full);
-    for (Index e = start[j]; e < start[j + 1]; ++e) sum += value[e] * c.col(place[e]).tail(r_ - full);
-    Tt.row(j).tail(r_ - full) = sum.transpose();
-  }
-  // G = (P R)₁..ᵣᵀ T, lower triangle: G_ab = Σ_{e ∈ R_b} R_eb T_{p_e a} (symmetry), so the part a ≥ b of G's
-  // column b is a sum of the columns of Tᵀ that R's column b touches.
+  // T = C₁₁ (P R)₁..ᵣ = C₁₁ᵀ (P R)₁..ᵣ (C₁₁ symmetric), r × k; then G = Tᵀ (P R)₁..ᵣ, k × k, from its
+  // lower triangle's panels: G(a, b) for a ≥ the panel's first b (entries above the diagonal are G's too).
+  MatrixXd T(r_, k);
+  panel_product(c11_->map(), columns, Part::kAll, [&](Index i0, Index j, const auto& z) {
+    const Index width = std::min<Index>(z.size(), r_ - i0);
+    T.col(j).segment(i0, width) = z.head(width);
+  });
   auto G = std::make_unique<AlignedMatrix>(k, k);
   auto gm = G->map();
-  for (Index b = 0; b < k; ++b) {
-    auto column = gm.col(b).tail(k - b);
-    column.setZero();
-    for (Index e = start[b]; e < start[b + 1]; ++e) column += value[e] * Tt.col(place[e]).tail(k - b);
-  }
+  panel_product(T, columns, Part::kFromPanel, [&](Index b0, Index a, const auto& z) {
+    const Index width = std::min<Index>(z.size(), k - b0);
+    gm.row(a).segment(b0, width) = z.head(width).transpose();
+  });
   return G;
 }
 

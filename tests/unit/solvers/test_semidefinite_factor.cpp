@@ -71,6 +71,24 @@ TEST(SemidefiniteFactor, IsAGeneralisedInverseAndItsGramMatrixOfSparseRows) {
   }
 }
 
+TEST(SemidefiniteFactor, ItsGramMatrixOverSeveralPanelsOfRowsAndColumns) {
+  // n = 53 of rank 50 and k = 37 sparse columns: the products run over 16-wide panels with a partial last one.
+  const MatrixXd S = random_psd(53, 50, 11);
+  const SemidefiniteFactor f(lower(S), 1e-10);
+  ASSERT_EQ(f.rank(), 50);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  MatrixXd R = MatrixXd::Zero(53, 37);
+  for (Index j = 0; j < 37; ++j)
+    for (int e = 0; e < 1 + j % 9; ++e) R(static_cast<Index>(rng() % 53), j) = u(rng);
+  const MatrixXd expected = R.transpose() * apply_pinv(f, R);
+  const auto G = f.gram(SparseMatrix(R.sparseView()));
+  ASSERT_EQ(G->rows(), 37);
+  const MatrixXd lower_g = G->map().triangularView<Eigen::Lower>();
+  const MatrixXd lower_e = expected.triangularView<Eigen::Lower>();
+  EXPECT_LT((lower_g - lower_e).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff());
+}
+
 TEST(SemidefiniteFactor, RejectsANegativeOrZeroDiagonal) {
   MatrixXd S = MatrixXd::Identity(3, 3);
   S(1, 1) = -1.0;
