@@ -43,16 +43,73 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
   m.k = lower;
 }
 
+namespace {
+
+/// One supernode of CHOLMOD's supernodal factor (cholmod_factor, is_super): columns k1 … k2 − 1, its rows
+/// (the first k2 − k1 are those columns, then the rest ascending), its entries column-major, nrows × (k2 − k1).
+struct Supernode {
+  Index k1, k2, nrows;
+  const CholmodIndex* rows;
+  const double* x;
+};
+
+Supernode supernode(const cholmod_factor& f, Index k) {
+  const auto* super = static_cast<const CholmodIndex*>(f.super);
+  const auto* pi = static_cast<const CholmodIndex*>(f.pi);
+  const auto* px = static_cast<const CholmodIndex*>(f.px);
+  const auto* s = static_cast<const CholmodIndex*>(f.s);
+  return {super[k], super[k + 1], pi[k + 1] - pi[k], s + pi[k], static_cast<const double*>(f.x) + px[k]};
+}
+
+using ColumnBlock = Eigen::Map<const MatrixXd, 0, Eigen::OuterStride<>>;
+
+}  // namespace
+
+void StaticCondensation::Impl::interior_forward(VectorXd& y) const {
+  const Index ni = n - static_cast<Index>(boundary.size());
+  VectorXd w;
+  for (Index k = 0; k < static_cast<Index>(factor->nsuper); ++k) {
+    const Supernode sn = supernode(*factor, k);
+    if (sn.k1 >= ni) break;
+    // Its interior columns c and the interior rows below them (sorted, so first; none below a supernode that
+    // reaches into B): B's rows would only receive updates that the interior solve discards.
+    const Index c = std::min(sn.k2, ni) - sn.k1;
+    Index r = c;
+    while (r < sn.nrows && sn.rows[r] < ni) ++r;
+    const ColumnBlock L(sn.x, r, c, Eigen::OuterStride<>(sn.nrows));
+    w.resize(r);
+    for (Index i = 0; i < r; ++i) w[i] = y[sn.rows[i]];
+    L.topRows(c).triangularView<Eigen::Lower>().solveInPlace(w.head(c));
+    w.tail(r - c).noalias() -= L.bottomRows(r - c) * w.head(c);
+    for (Index i = 0; i < r; ++i) y[sn.rows[i]] = w[i];
+  }
+}
+
+void StaticCondensation::Impl::interior_backward(VectorXd& y) const {
+  const Index ni = n - static_cast<Index>(boundary.size());
+  VectorXd w;
+  for (Index k = static_cast<Index>(factor->nsuper); k-- > 0;) {
+    const Supernode sn = supernode(*factor, k);
+    if (sn.k1 >= ni) continue;
+    // Every row below its interior columns, B's included (L_BIᵀ y_B).
+    const Index c = std::min(sn.k2, ni) - sn.k1, r = sn.nrows;
+    const ColumnBlock L(sn.x, r, c, Eigen::OuterStride<>(sn.nrows));
+    w.resize(r);
+    for (Index i = 0; i < r; ++i) w[i] = y[sn.rows[i]];
+    w.head(c).noalias() -= L.bottomRows(r - c).transpose() * w.tail(r - c);
+    L.topRows(c).triangularView<Eigen::Lower>().transpose().solveInPlace(w.head(c));
+    for (Index i = 0; i < c; ++i) y[sn.rows[i]] = w[i];
+  }
+}
+
 VectorXd StaticCondensation::solve_interior(const VectorXd& r) const {
   Impl& m = *impl_;
   if (!m.factor) throw std::logic_error("StaticCondensation::solve_interior before compute()");
   const Index n = m.n, ni = n - static_cast<Index>(m.boundary.size());
-  VectorXd y(n);
+  VectorXd y = VectorXd::Zero(n);  // y_B = 0: L_BB's rows do not feed back
   for (Index k = 0; k < ni; ++k) y[k] = r[m.perm[k]];
-  for (Index k = ni; k < n; ++k) y[k] = 0.0;
-  m.triangular_solve(CHOLMOD_L, y);
-  y.tail(n - ni).setZero();  // L_BB's rows must not feed back: z_B = 0 exactly
-  m.triangular_solve(CHOLMOD_Lt, y);
+  m.interior_forward(y);
+  m.interior_backward(y);
   VectorXd z = VectorXd::Zero(n);
   for (Index k = 0; k < ni; ++k) z[m.perm[k]] = y[k];
   return z;
@@ -63,28 +120,10 @@ VectorXd StaticCondensation::boundary_response(const VectorXd& x) const {
   if (!m.factor) throw std::logic_error("StaticCondensation::boundary_response before compute()");
   if (x.size() != m.n) throw std::invalid_argument("StaticCondensation::boundary_response: x has the wrong size");
   const Index n = m.n, ni = n - static_cast<Index>(m.boundary.size());
-  // y = [0; L_BBᵀ x_B] in the factor's order (row k of the factor is DOF perm[k]).
+  // Lᵀ y = [0; L_BBᵀ x_B] has y_B = x_B, and then y_I = −L_II⁻ᵀ L_BIᵀ x_B (row k of the factor is DOF perm[k]).
   VectorXd y = VectorXd::Zero(n);
-  const auto* super = static_cast<const CholmodIndex*>(m.factor->super);
-  const auto* pi = static_cast<const CholmodIndex*>(m.factor->pi);
-  const auto* px = static_cast<const CholmodIndex*>(m.factor->px);
-  const auto* s = static_cast<const CholmodIndex*>(m.factor->s);
-  const double* lx = static_cast<const double*>(m.factor->x);
-  for (size_t k = m.factor->nsuper; k-- > 0;) {
-    const Index k1 = super[k], k2 = super[k + 1];
-    if (k2 <= ni) break;  // B is last: the supernodes before hold interior columns only
-    const Index nsrow = pi[k + 1] - pi[k];
-    const CholmodIndex* rows = s + pi[k];
-    const double* xs = lx + px[k];
-    for (Index jj = 0; jj < k2 - k1; ++jj) {
-      const Index col = k1 + jj;
-      if (col < ni) continue;
-      double sum = 0.0;
-      for (Index ii = jj; ii < nsrow; ++ii) sum += xs[ii + jj * nsrow] * x[m.perm[rows[ii]]];
-      y[col] = sum;
-    }
-  }
-  m.triangular_solve(CHOLMOD_Lt, y);
+  for (Index k = ni; k < n; ++k) y[k] = x[m.perm[k]];
+  m.interior_backward(y);
   VectorXd z = VectorXd::Zero(n);
   for (Index k = 0; k < ni; ++k) z[m.perm[k]] = y[k];
   return z;

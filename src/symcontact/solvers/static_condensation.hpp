@@ -64,8 +64,8 @@ class StaticCondensation {
   VectorXd solve_interior(const VectorXd& r) const;
   /// z with z_I = −K_II⁻¹ K_IB x_B and z_B = 0 (x of size n; only its B entries are read): the interior's
   /// response to the boundary values, by ONE triangular solve instead of solve_interior()'s two. With the
-  /// factor of K̃ (B last), K_IB = L_II L_BIᵀ, so K_II⁻¹ K_IB x_B = L_II⁻ᵀ L_BIᵀ x_B, which the backward solve
-  /// Lᵀ z = [0; L_BBᵀ x_B] gives as −z_I (its z_B = x_B); L_BBᵀ x_B is read off the factor's last supernodes.
+  /// factor of K̃ (B last), K_IB = L_II L_BIᵀ, so K_II⁻¹ K_IB x_B = L_II⁻ᵀ L_BIᵀ x_B: the backward solve on the
+  /// interior columns with x_B in B's place. Both solves read the interior supernodes only, not L_BB.
   VectorXd boundary_response(const VectorXd& x) const;
   /// Number of nonzeros of the factor of K̃ (fill, for reports).
   double factor_nonzeros() const;

@@ -41,14 +41,11 @@ struct StaticCondensation::Impl {
   VectorXd factorise_augmented(const SparseMatrix& lower);
   void extract_schur(const SparseMatrix& lower, const VectorXd& d, Index ni);
   void store_schur(const AlignedMatrix& u, const VectorXd& d);
-  /// x ← solution of `sys` (CHOLMOD_L or CHOLMOD_Lt, no permutation) with right-hand side x.
-  void triangular_solve(int sys, VectorXd& x) {
-    cholmod_dense b = view_vector(x);
-    cholmod_dense* y = cholmod_l_solve(sys, factor, &b, &common);
-    if (!y) throw SolveError("CHOLMOD triangular solve failed (status " + std::to_string(common.status) + ")");
-    std::copy_n(static_cast<const double*>(y->x), x.size(), x.data());
-    cholmod_l_free_dense(&y, &common);
-  }
+  /// With the factor's interior columns I (the first n − |B|) and y in the factor's order: y_I ← L_II⁻¹ y_I
+  /// (interior_forward), y_I ← L_II⁻ᵀ (y_I − L_BIᵀ y_B) (interior_backward), y_B unchanged. The supernodes of B
+  /// (the dense trailing block L_BB, often most of the factor's entries) are not read.
+  void interior_forward(VectorXd& y) const;
+  void interior_backward(VectorXd& y) const;
 };
 
 }  // namespace symcontact
