@@ -1,6 +1,7 @@
 #include "bench_support.hpp"
 
 #include <dlfcn.h>
+#include <malloc.h>
 #include <stdlib.h>
 #include <sched.h>
 #include <sys/utsname.h>
@@ -149,6 +150,7 @@ double peak_rss_mib() { return status_mib("VmHWM"); }
 double current_rss_mib() { return status_mib("VmRSS"); }
 
 bool reset_peak_rss() {
+  malloc_trim(0);
   std::ofstream f("/proc/self/clear_refs");
   if (!f) return false;
   f << "5";

@@ -45,7 +45,9 @@ void print_machine_info(std::ostream& os, const MachineInfo& m);
 double peak_rss_mib();
 /// Current resident set size in MiB (VmRSS); −1 if unavailable.
 double current_rss_mib();
-/// Resets VmHWM to the current RSS by writing "5" to /proc/self/clear_refs (Linux ≥ 4.0).
+/// Resets VmHWM to the current RSS by writing "5" to /proc/self/clear_refs (Linux ≥ 4.0), after handing the
+/// heap's free memory back to the system (glibc's malloc_trim): without it the RSS an earlier measurement freed
+/// but the heap kept counts in the next peak, by as much as the whole earlier peak.
 /// Returns false when the kernel refused; peak_rss_mib() is then a peak over the whole process.
 bool reset_peak_rss();
 
