@@ -20,8 +20,9 @@ namespace symcontact {
 SemidefiniteFactor::SemidefiniteFactor(const SparseMatrix& s_lower, double relative_tolerance) : n_(s_lower.rows()) {
   if (s_lower.cols() != n_ || n_ == 0) throw SolveError("SemidefiniteFactor: S must be square and non-empty");
   const int n = static_cast<int>(n_);
-  AlignedMatrix a(n_, n_);
-  auto am = a.map();
+  // Factorised in place; where S has full rank this storage becomes C₁₁ (no second n × n copy).
+  auto a = std::make_unique<AlignedMatrix>(n_, n_);
+  auto am = a->map();
   am.setZero();
   for (int j = 0; j < s_lower.outerSize(); ++j)
     for (SparseMatrix::InnerIterator it(s_lower, j); it; ++it)
@@ -34,13 +35,18 @@ SemidefiniteFactor::SemidefiniteFactor(const SparseMatrix& s_lower, double relat
   std::vector<double> work(2 * n_);
   int rank = 0, info = 0;
   const double tol = relative_tolerance * max_diag;
-  dpstrf_("L", &n, a.data(), &n, piv_.data(), &rank, &tol, work.data(), &info);
+  dpstrf_("L", &n, a->data(), &n, piv_.data(), &rank, &tol, work.data(), &info);
   if (info < 0) throw SolveError("SemidefiniteFactor: dpstrf rejected argument " + std::to_string(-info));
   for (int& p : piv_) --p;  // 0-based
   r_ = rank;
-  auto l11 = std::make_unique<AlignedMatrix>(r_, r_);
-  l11->map() = am.topLeftCorner(r_, r_).triangularView<Eigen::Lower>();
   const Index k = n_ - r_;
+  std::unique_ptr<AlignedMatrix> l11;
+  if (k == 0) {
+    l11 = std::move(a);
+  } else {
+    l11 = std::make_unique<AlignedMatrix>(r_, r_);
+    l11->map() = am.topLeftCorner(r_, r_).triangularView<Eigen::Lower>();
+  }
   null_.resize(n_, k);
   if (k > 0) {
     // v₁ = −L₁₁⁻ᵀ L₂₁ᵀ, v₂ = I in the pivoted order; back to S's order, then orthonormalised.
