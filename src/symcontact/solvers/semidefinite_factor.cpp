@@ -88,37 +88,37 @@ VectorXd SemidefiniteFactor::solve(const VectorXd& r) const {
 
 namespace {
 
-/// The columns of a sparse matrix R (n × k) in S's pivoted order, rows beyond the rank dropped.
-struct PivotedColumns {
+/// A sparse matrix R (n × k) in S's pivoted order, its rows beyond the rank dropped: by columns (start, place,
+/// value) and by rows (row_start, column, row_value).
+struct PivotedMatrix {
   std::vector<Index> start, place;
   std::vector<double> value;
+  std::vector<Index> row_start, column;
+  std::vector<double> row_value;
 };
 
-/// Which entries of Z = Xᵀ R a product computes: all, or for each panel of X's columns i0 … i0 + 15 the
-/// columns j ≥ i0 of Z (when Z is symmetric, its lower triangle and a few entries above the diagonal).
-enum class Part { kAll, kFromPanel };
-
-/// Z = Xᵀ R for a dense X (n_x × m) and R as `columns` (places < n_x), by panels of 16 columns of X: each
-/// panel is copied transposed (16 × n_x, contiguous), so that the 16 entries of R's place p are one short
-/// contiguous read and the panel, reused by every column of R, stays in cache. `store(i0, j, z)` receives
-/// Z(i0 … i0 + 15, j) (entries beyond m are zero and are not to be stored). A fixed order of sums.
-template <class Store>
-void panel_product(Eigen::Ref<const MatrixXd> X, const PivotedColumns& columns, Part part, Store&& store) {
-  constexpr Index kPanel = 16;
-  using Block = Eigen::Matrix<double, kPanel, 1>;
-  const Index m = X.cols(), k = static_cast<Index>(columns.start.size()) - 1;
-  Eigen::Matrix<double, kPanel, Eigen::Dynamic> panel(kPanel, X.rows());
-  for (Index i0 = 0; i0 < m; i0 += kPanel) {
-    const Index width = std::min(kPanel, m - i0);
-    panel.topRows(width) = X.middleCols(i0, width).transpose();
-    panel.bottomRows(kPanel - width).setZero();
-    for (Index j = part == Part::kAll ? 0 : i0; j < k; ++j) {
-      Block sum = Block::Zero();
-      for (Index e = columns.start[j]; e < columns.start[j + 1]; ++e)
-        sum += columns.value[e] * panel.col(columns.place[e]);
-      store(i0, j, sum);
-    }
+PivotedMatrix pivoted(const SparseMatrix& R, const std::vector<Index>& position, Index r) {
+  const Index k = R.cols();
+  PivotedMatrix m{std::vector<Index>(k + 1, 0), {}, {}, std::vector<Index>(r + 1, 0), {}, {}};
+  for (Index j = 0; j < k; ++j) {
+    for (SparseMatrix::InnerIterator it(R, static_cast<int>(j)); it; ++it)
+      if (position[it.row()] >= 0) {
+        m.place.push_back(position[it.row()]);
+        m.value.push_back(it.value());
+        ++m.row_start[position[it.row()] + 1];
+      }
+    m.start[j + 1] = static_cast<Index>(m.place.size());
   }
+  for (Index p = 0; p < r; ++p) m.row_start[p + 1] += m.row_start[p];
+  m.column.resize(m.place.size());
+  m.row_value.resize(m.place.size());
+  std::vector<Index> next(m.row_start.begin(), m.row_start.end() - 1);
+  for (Index j = 0; j < k; ++j)
+    for (Index e = m.start[j]; e < m.start[j + 1]; ++e) {
+      m.column[next[m.place[e]]] = j;
+      m.row_value[next[m.place[e]]++] = m.value[e];
+    }
+  return m;
 }
 
 }  // namespace
@@ -128,28 +128,32 @@ std::unique_ptr<AlignedMatrix> SemidefiniteFactor::gram(const SparseMatrix& R) c
   const Index k = R.cols();
   std::vector<Index> position(n_, -1);  // row i of S → its place among the first r pivots, or −1
   for (Index i = 0; i < r_; ++i) position[piv_[i]] = i;
-  PivotedColumns columns{std::vector<Index>(k + 1, 0), {}, {}};
-  for (Index j = 0; j < k; ++j) {
-    for (SparseMatrix::InnerIterator it(R, static_cast<int>(j)); it; ++it)
-      if (position[it.row()] >= 0) {
-        columns.place.push_back(position[it.row()]);
-        columns.value.push_back(it.value());
-      }
-    columns.start[j + 1] = static_cast<Index>(columns.place.size());
-  }
-  // T = C₁₁ (P R)₁..ᵣ = C₁₁ᵀ (P R)₁..ᵣ (C₁₁ symmetric), r × k; then G = Tᵀ (P R)₁..ᵣ, k × k, from its
-  // lower triangle's panels: G(a, b) for a ≥ the panel's first b (entries above the diagonal are G's too).
-  MatrixXd T(r_, k);
-  panel_product(c11_->map(), columns, Part::kAll, [&](Index i0, Index j, const auto& z) {
-    const Index width = std::min<Index>(z.size(), r_ - i0);
-    T.col(j).segment(i0, width) = z.head(width);
-  });
+  const PivotedMatrix m = pivoted(R, position, r_);
+  // G = R̃ᵀ C₁₁ R̃ (R̃ = (P R)₁..ᵣ) by panels of 16 rows of C₁₁: the panel is copied transposed (16 × r,
+  // contiguous; C₁₁ symmetric, so these are 16 of its columns), T = (its rows of C₁₁ R̃)ᵀ (k × 16) is summed
+  // from it column of R̃ by column, and each of those 16 rows p of C₁₁ R̃ enters G's columns a with R̃_pa ≠ 0:
+  // G(:, a) += R̃_pa T(:, p). C₁₁ is read once, C₁₁ R̃ never stored; both triangles of G come out.
+  constexpr Index kPanel = 16;
+  using Block = Eigen::Matrix<double, kPanel, 1>;
   auto G = std::make_unique<AlignedMatrix>(k, k);
   auto gm = G->map();
-  panel_product(T, columns, Part::kFromPanel, [&](Index b0, Index a, const auto& z) {
-    const Index width = std::min<Index>(z.size(), k - b0);
-    gm.row(a).segment(b0, width) = z.head(width).transpose();
-  });
+  gm.setZero();
+  const auto c = c11_->map();
+  Eigen::Matrix<double, kPanel, Eigen::Dynamic> panel(kPanel, r_);
+  Eigen::Matrix<double, Eigen::Dynamic, kPanel> T(k, kPanel);
+  for (Index i0 = 0; i0 < r_; i0 += kPanel) {
+    const Index width = std::min(kPanel, r_ - i0);
+    panel.topRows(width) = c.middleCols(i0, width).transpose();
+    panel.bottomRows(kPanel - width).setZero();
+    for (Index j = 0; j < k; ++j) {
+      Block sum = Block::Zero();
+      for (Index e = m.start[j]; e < m.start[j + 1]; ++e) sum += m.value[e] * panel.col(m.place[e]);
+      T.row(j) = sum.transpose();
+    }
+    for (Index q = 0; q < width; ++q)
+      for (Index f = m.row_start[i0 + q]; f < m.row_start[i0 + q + 1]; ++f)
+        gm.col(m.column[f]) += m.row_value[f] * T.col(q);
+  }
   return G;
 }
 

@@ -45,7 +45,7 @@ class SemidefiniteFactor {
 
   /// S⁺ r for r of size n.
   VectorXd solve(const VectorXd& r) const;
-  /// Rᵀ S⁺ R for a sparse R (n × k): its lower triangle in a k × k matrix (the upper one is not all set).
+  /// Rᵀ S⁺ R for a sparse R (n × k), k × k, both triangles.
   /// O(nnz(R) · (r + k)) flops; deterministic (no threads, a fixed order of sums).
   std::unique_ptr<AlignedMatrix> gram(const SparseMatrix& R) const;
 
