@@ -45,22 +45,6 @@ void StaticCondensation::compute(const SparseMatrix& lower, std::vector<Index> b
 
 namespace {
 
-/// One supernode of CHOLMOD's supernodal factor (cholmod_factor, is_super): columns k1 … k2 − 1, its rows
-/// (the first k2 − k1 are those columns, then the rest ascending), its entries column-major, nrows × (k2 − k1).
-struct Supernode {
-  Index k1, k2, nrows;
-  const CholmodIndex* rows;
-  const double* x;
-};
-
-Supernode supernode(const cholmod_factor& f, Index k) {
-  const auto* super = static_cast<const CholmodIndex*>(f.super);
-  const auto* pi = static_cast<const CholmodIndex*>(f.pi);
-  const auto* px = static_cast<const CholmodIndex*>(f.px);
-  const auto* s = static_cast<const CholmodIndex*>(f.s);
-  return {super[k], super[k + 1], pi[k + 1] - pi[k], s + pi[k], static_cast<const double*>(f.x) + px[k]};
-}
-
 using ColumnBlock = Eigen::Map<const MatrixXd, 0, Eigen::OuterStride<>>;
 
 }  // namespace

@@ -123,20 +123,12 @@ void StaticCondensation::Impl::extract_schur(const SparseMatrix& lower, const Ve
   auto um = u.map();
   um.setZero();
   const auto reversed = [nb](Index i) { return nb - 1 - i; };
-  const auto* super = static_cast<const CholmodIndex*>(m.factor->super);
-  const auto* pi = static_cast<const CholmodIndex*>(m.factor->pi);
-  const auto* px = static_cast<const CholmodIndex*>(m.factor->px);
-  const auto* s = static_cast<const CholmodIndex*>(m.factor->s);
-  const double* lx = static_cast<const double*>(m.factor->x);
-  for (size_t q = 0; q < m.factor->nsuper; ++q) {
-    const Index k1 = super[q], k2 = super[q + 1];
-    const Index nsrow = pi[q + 1] - pi[q];
-    const CholmodIndex* rows = s + pi[q];
-    const double* x = lx + px[q];
-    for (Index jj = 0; jj < k2 - k1; ++jj) {
-      const Index col = k1 + jj;
+  for (Index q = 0; q < static_cast<Index>(m.factor->nsuper); ++q) {
+    const Supernode sn = supernode(*m.factor, q);
+    for (Index jj = 0; jj < sn.k2 - sn.k1; ++jj) {
+      const Index col = sn.k1 + jj;
       if (col < ni) {
-        const double pivot = x[jj + jj * nsrow];
+        const double pivot = sn.x[jj + jj * sn.nrows];
         if (!(pivot * pivot > kSingularPivot * kdiag[m.perm[col]])) {
           m.release();
           throw SolveError("static condensation: the interior stiffness is singular (relative pivot " +
@@ -145,9 +137,9 @@ void StaticCondensation::Impl::extract_schur(const SparseMatrix& lower, const Ve
         }
         continue;
       }
-      for (Index ii = jj; ii < nsrow; ++ii) {  // the diagonal block's upper part is not part of L
-        const Index row = rows[ii];
-        if (row >= ni) um(reversed(row - ni), reversed(col - ni)) = x[ii + jj * nsrow];
+      for (Index ii = jj; ii < sn.nrows; ++ii) {  // the diagonal block's upper part is not part of L
+        const Index row = sn.rows[ii];
+        if (row >= ni) um(reversed(row - ni), reversed(col - ni)) = sn.x[ii + jj * sn.nrows];
       }
     }
   }
