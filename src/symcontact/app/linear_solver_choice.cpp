@@ -11,10 +11,15 @@
 namespace symcontact {
 
 DistributedLimit distributed_path_limit(const ProblemSpec& spec) {
+  const auto frictional = std::find_if(spec.contacts.begin(), spec.contacts.end(),
+                                       [](const ContactSpec& c) { return c.friction != "none"; });
+  if (frictional == spec.contacts.end()) return {};
   for (const BodySpec& b : spec.bodies)
     for (const MaterialSpec& m : b.materials)
       if (m.model != "linear_elastic")
-        return {m.key + ".model", "the distributed path solves linear-elastic bodies only, got \"" + m.model + "\""};
+        return {m.key + ".model", "the distributed path solves hyperelastic bodies without friction only, got \"" +
+                                      m.model + "\" with " + frictional->key + ".friction = \"" +
+                                      frictional->friction + "\""};
   return {};
 }
 

@@ -38,13 +38,21 @@ namespace {
 
 /// The iterations without a new low of the geometry fixed point's change after which it is stagnated.
 constexpr int kStagnationWindow = 10;
+/// The first and the largest shift δ of a hyperelastic model's Hessian, K + δ diag K (shifted()), relative to
+/// its diagonal: each failed solve multiplies it by 10, each solved iteration divides it by 10 (0 below the first).
+constexpr double kFirstShift = 1e-6, kLargestShift = 1e2;
 
-/// The stiffness and the load of a linear-elastic model at its current step, E(u) = ½ uᵀKu − fᵀu, in the PETSc
-/// numbering of `ordering` (node_ordering.hpp).
+/// The energy's second-order model at a displacement u, E(v) ≈ ½ vᵀKv − fᵀv + const with K = ∇²E(u) and
+/// f = K u − ∇E(u), in the PETSc numbering of `ordering` (node_ordering.hpp). For a linear-elastic model K and
+/// f do not depend on u (K the stiffness, f the load); for a hyperelastic one each solve on this model is a
+/// Newton step of the step's program, taken inside the geometry fixed point (sequential quadratic programming:
+/// Nocedal & Wright, Numerical Optimization, 2nd ed., §18.1).
 struct QuadraticModel {
   SparseMatrix K_lower;  ///< the lower triangle of this rank's rows
   VectorXd f;
   Eigen::MatrixXd x;     ///< dim × nodes, reference coordinates
+  VectorXd diagonal;     ///< diag K, every row (hyperelastic models only: for shifted())
+  VectorXd u;            ///< where K was taken (hyperelastic models only)
 };
 
 /// The lower-triangle entries, in the PETSc numbering, of the rows a rank owns: each rank keeps 1/P of the
@@ -82,25 +90,76 @@ Eigen::MatrixXd reference_coordinates(const Model& model) {
   return x;
 }
 
-/// The model at its current step; K from `stiffness` when it holds one, into it when the energy's Hessian is
-/// constant (then the same for every step: only the load changes).
-QuadraticModel quadratic_model(const Model& model, const NodeOrdering& ordering,
-                               std::optional<SparseMatrix>& stiffness) {
+/// Forwards every block to several sinks: the Hessian stored, multiplied and its diagonal read in one pass.
+class FanOut : public MatrixSink {
+ public:
+  explicit FanOut(std::vector<MatrixSink*> sinks) : sinks_(std::move(sinks)) {}
+  void add(const Index* dofs, int n, const double* K) override {
+    for (MatrixSink* s : sinks_) s->add(dofs, n, K);
+  }
+
+ private:
+  std::vector<MatrixSink*> sinks_;
+};
+
+/// out[dof] += K_ii: the diagonal, every row, in the model's numbering.
+class DiagonalSink : public MatrixSink {
+ public:
+  explicit DiagonalSink(VectorXd& out) : out_(out) {}
+  void add(const Index* dofs, int n, const double* K) override {
+    for (int i = 0; i < n; ++i) out_[dofs[i]] += K[i + i * n];
+  }
+
+ private:
+  VectorXd& out_;
+};
+
+/// The model at its current step, linearised at u (QuadraticModel). Where the energy's Hessian is constant,
+/// K from `stiffness` when it holds one, into it otherwise (then the same for every step: only the load
+/// changes), and f = −∇E(0), whatever u.
+QuadraticModel quadratic_model(const Model& model, const NodeOrdering& ordering, std::optional<SparseMatrix>& stiffness,
+                               const VectorXd& u) {
   const Index n = model.dofs().num_dofs(), dim = model.dofs().dim();
+  const bool constant = model.energy().hessian_is_constant();
+  const VectorXd at = constant ? VectorXd::Zero(n) : u;
   QuadraticModel q;
+  VectorXd f = VectorXd::Zero(n);
   if (stiffness && stiffness->rows() == n) {
     q.K_lower = *stiffness;
   } else {
     OwnedLowerSink sink(petsc::my_rows(static_cast<int>(dim), n / dim), ordering);
-    model.energy().add_hessian(VectorXd::Zero(n), sink);
+    if (constant) {
+      model.energy().add_hessian(at, sink);
+    } else {
+      std::vector<Index> identity(static_cast<std::size_t>(n));
+      for (Index i = 0; i < n; ++i) identity[static_cast<std::size_t>(i)] = i;
+      ProductSink product(identity, at, f);  // K u
+      VectorXd diagonal = VectorXd::Zero(n);
+      DiagonalSink diagonal_sink(diagonal);
+      FanOut all({&sink, &product, &diagonal_sink});
+      model.energy().add_hessian(at, all);
+      q.diagonal = ordering.to_petsc(diagonal);
+      q.u = ordering.to_petsc(at);
+    }
     q.K_lower = sink.matrix(n);
-    if (model.energy().hessian_is_constant()) stiffness = q.K_lower;
+    if (constant) stiffness = q.K_lower;
   }
   VectorXd gradient = VectorXd::Zero(n);
-  model.energy().add_gradient(VectorXd::Zero(n), gradient);
-  q.f = -ordering.to_petsc(gradient);
+  model.energy().add_gradient(at, gradient);
+  q.f = ordering.to_petsc(f - gradient);
   q.x = ordering.nodes_to_petsc(reference_coordinates(model));
   return q;
+}
+
+/// q's model with K + δ D in place of K, D = diag K (the same f − K u = −∇E(u)): a Levenberg–Marquardt step
+/// for a Hessian that is not positive definite (Nocedal & Wright §10.3, §3.4), whose fixed points are q's.
+QuadraticModel shifted(const QuadraticModel& q, double delta) {
+  QuadraticModel s = q;
+  for (Index k = 0; k < s.K_lower.outerSize(); ++k)
+    for (SparseMatrix::InnerIterator it(s.K_lower, static_cast<int>(k)); it; ++it)
+      if (it.row() == it.col()) it.valueRef() *= 1.0 + delta;
+  s.f += delta * q.diagonal.cwiseProduct(q.u);
+  return s;
 }
 
 /// The rows of `lin` divided by their supports, for the interior point; the normal of row j: its entries on
@@ -362,7 +421,8 @@ class DistributedStep {
     const ProgressClock clock;
     const auto t0 = std::chrono::steady_clock::now();
     if (!*ordering_) *ordering_ = std::make_shared<const NodeOrdering>(reference_coordinates(model));
-    const QuadraticModel q = quadratic_model(model, ordering(), *stiffness_);
+    const bool quadratic = model.energy().hessian_is_constant();
+    QuadraticModel q = quadratic_model(model, ordering(), *stiffness_, u);
     const FixedDofs fixed = model.fixed_dofs(step);
     const VectorXd fixed_values = Eigen::Map<const VectorXd>(fixed.values.data(), static_cast<Index>(fixed.values.size()));
     r.times.add("assembly", petsc::seconds_since(t0));
@@ -372,11 +432,17 @@ class DistributedStep {
     ContactInteriorPointResult solve;
     std::vector<std::shared_ptr<FrictionTerm>> terms;
     FixedPointMonitor monitor(kStagnationWindow);
+    double delta = 0.0;  // the shift of a hyperelastic model's Hessian (solve_model)
     for (r.geometry_iterations = 1;; ++r.geometry_iterations) {
+      if (!quadratic && r.geometry_iterations > 1) {  // the next Newton step's model
+        const auto t_model = std::chrono::steady_clock::now();
+        q = quadratic_model(model, ordering(), *stiffness_, u);
+        r.times.add("assembly", petsc::seconds_since(t_model));
+      }
       const auto t_search = std::chrono::steady_clock::now();
       ContactLinearization next = model.contacts().linearize(model.dofs(), u);
       r.times.add("search", petsc::seconds_since(t_search));
-      if (r.geometry_iterations > 1 && same_rows(lin, next)) break;
+      if (quadratic && r.geometry_iterations > 1 && same_rows(lin, next)) break;
       if (r.geometry_iterations > 1 && lin.A.rows() > 0 && !friction) {
         if (std::optional<VectorXd> forces = forces_if_still_optimal(next, lin, solve, model, fixed, u)) {
           solve.lambda = std::move(*forces);  // the rows changed, the answer did not: no new solve
@@ -387,10 +453,7 @@ class DistributedStep {
       lin = std::move(next);
       // A later geometry iteration starts from thresholds at the previous one's fixed point: follow near the end.
       options.follow_below = r.geometry_iterations > 1 ? std::max(1e-8, 10.0 * options.tolerance) : 0.1;
-      solve = solve_rows(q, fixed, fixed_values, lin, model, u, friction, options, terms);
-      r.times.add("optimizer", solve.total_seconds);
-      r.ipopt_iterations += solve.iterations;
-      r.ipopt_per_iteration.push_back(solve.iterations);
+      solve = solve_model(q, quadratic, delta, fixed, fixed_values, lin, model, u, friction, options, terms, r);
       if (!solve.converged)
         throw SolveError("geometry iteration " + std::to_string(r.geometry_iterations) +
                          ": the distributed interior point stopped: " + solve.reason +
@@ -401,12 +464,35 @@ class DistributedStep {
       std::ostringstream m;
       m << "  geometry iteration " << r.geometry_iterations << ": " << lin.A.rows() << " constraints, optimizer "
         << solve.iterations << " iterations (distributed interior point: converged), change " << change;
+      if (delta > 0.0) m << ", Hessian shifted by " << delta << " × its diagonal";
       log_iteration(log_, clock, m.str());
-      if (change <= o.geometry_tolerance) break;
+      // A shifted step is shortened: only Newton's own step may end the fixed point.
+      if (change <= o.geometry_tolerance && delta == 0.0) break;
+      delta = delta > kFirstShift ? 0.1 * delta : 0.0;
       fail_if_stuck(monitor, r.geometry_iterations, change, o);
     }
     set_contact_state(model, fixed, u, std::move(lin), solve.lambda, terms, r);
     return r;
+  }
+
+  /// solve_rows on q; where q's Hessian is not constant and that solve fails (a Hessian that is not positive
+  /// definite, whose conjugate gradients break down), on shifted(q, δ), δ from max(delta, kFirstShift) up by
+  /// tens to kLargestShift. `delta` is left at the shift of the answer (0: q's own). Iterations and times in r.
+  ContactInteriorPointResult solve_model(const QuadraticModel& q, bool quadratic, double& delta, const FixedDofs& fixed,
+                                         const VectorXd& fixed_values, const ContactLinearization& lin,
+                                         const Model& model, const VectorXd& u, const FrictionState* friction,
+                                         const ContactInteriorPointOptions& options,
+                                         std::vector<std::shared_ptr<FrictionTerm>>& terms, SolveReport& r) const {
+    for (;;) {
+      ContactInteriorPointResult solve =
+          solve_rows(delta > 0.0 ? shifted(q, delta) : q, fixed, fixed_values, lin, model, u, friction, options, terms);
+      r.times.add("optimizer", solve.total_seconds);
+      r.ipopt_iterations += solve.iterations;
+      r.ipopt_per_iteration.push_back(solve.iterations);
+      if (solve.converged || quadratic || delta >= kLargestShift) return solve;
+      log_.detail("  the Newton step's program did not solve (" + solve.reason + "): its Hessian shifted");
+      delta = delta > 0.0 ? 10.0 * delta : kFirstShift;
+    }
   }
 
   /// r's contact state at the answer u on the rows of `lin` with their forces λ (the interior point's) and

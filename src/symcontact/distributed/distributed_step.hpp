@@ -2,7 +2,7 @@
 /// \file distributed_step.hpp
 /// The contact solver of `symcontact run` on the distributed path (`mpirun -np N symcontact run CASE.toml`):
 /// a load step of a model with linear-elastic bodies in contact with rigid obstacles, with each other
-/// (one-pass pairs) or with themselves, frictionless or with friction, solved by the interior
+/// or with themselves, frictionless or with friction (hyperelastic bodies: frictionless), solved by the interior
 /// point of contact_interior_point.hpp on the same constraints and friction terms as the serial solver, so
 /// that both give the same answer to their tolerances.
 ///
@@ -24,8 +24,12 @@
 /// geometry fixed point, each solve starting from the current displacement, the thresholds following the
 /// interior point's iterates where coulomb_update says so (FollowBounds).
 ///
-/// What the path does not solve yet is an input error before any work (check_distributed_support): finite
-/// strain. A symmetric pair is solved, with or without friction, the interior point's polish settling its two
+/// A hyperelastic energy enters each geometry iteration as its second-order model at the current u, so that
+/// the fixed point is also the step's Newton iteration; where that model's program does not solve (a Hessian
+/// that is not positive definite), its Hessian is shifted by δ diag K (Levenberg–Marquardt), and only an
+/// unshifted step ends the step.
+/// What the path does not solve yet is an input error before any work (check_distributed_support): friction
+/// with a hyperelastic body. A symmetric pair is solved, with or without friction, the interior point's polish settling its two
 /// nearly dependent families of rows; where a solve with such a pair fails, the message advises one-pass mode
 /// (symmetric_pair_hint in the .cpp).
 /// The meshes are whole on every rank; each rank assembles the stiffness rows it owns, the nodes numbered for

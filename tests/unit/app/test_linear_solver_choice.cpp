@@ -57,7 +57,7 @@ TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathD
   const testing::TempFolder folder;
   EXPECT_TRUE(distributed_path_limit(block(folder, "", "")->spec).none());
   // Coulomb friction on order-1 and order-2 elements (friction points that mix nodes: their slip maps): solved;
-  // a hyperelastic body: not.
+  // a hyperelastic body with friction: not; without: solved.
   const auto c = block(folder, "friction = \"coulomb\"\nmu = 0.3\n", "");
   EXPECT_TRUE(distributed_path_limit(c->spec).none());
   EXPECT_TRUE(choose_linear_solver(c->spec, *c->model, MemoryBudget{1e3, 0.0}).iterative);
@@ -69,6 +69,9 @@ TEST(LinearSolverChoice, AutomaticKeepsTheSerialSolverForWhatTheDistributedPathD
   EXPECT_FALSE(d.iterative);
   EXPECT_NE(d.reason.find(material.key + ".model"), std::string::npos) << d.reason;
   EXPECT_EQ(distributed_path_limit(c->spec).key, material.key + ".model");
+  EXPECT_NE(distributed_path_limit(c->spec).message.find("contact[0].friction"), std::string::npos);
+  c->spec.contacts[0].friction = "none";
+  EXPECT_TRUE(distributed_path_limit(c->spec).none());
 }
 
 TEST(LinearSolverChoice, TheDistributedPathSolvesPairsOfEveryModeWithAndWithoutFriction) {
