@@ -223,12 +223,16 @@ void InteriorPoint::assemble(const SparseMatrix& K_share, const VectorXd& f, con
   set_scales(fixed_values, max_diagonal);
 }
 
-/// F = ‖b‖_∞ over the free rows (L × K's largest diagonal entry when it is 0), L = max(‖ū‖_∞, max |l_j|,
-/// F / K's largest diagonal entry).
+/// F = ‖b‖_∞ over the free rows (options' force_scale where given; L × K's largest diagonal entry when it is 0),
+/// L = max(‖ū‖_∞, max |l_j|, F / K's largest diagonal entry).
 void InteriorPoint::set_scales(const VectorXd& fixed_values, double max_diagonal) {
-  check(VecCopy(b_.object, rd_.object), "VecCopy");
-  zero_fixed_rows(rd_.object);
-  check(VecNorm(rd_.object, NORM_INFINITY, &F_), "VecNorm");
+  if (options_.force_scale > 0.0) {
+    F_ = options_.force_scale;
+  } else {
+    check(VecCopy(b_.object, rd_.object), "VecCopy");
+    zero_fixed_rows(rd_.object);
+    check(VecNorm(rd_.object, NORM_INFINITY, &F_), "VecNorm");
+  }
   max_diagonal_ = max_diagonal;
   L_ = std::max(fixed_values.size() ? fixed_values.cwiseAbs().maxCoeff() : 0.0, c_.lower.cwiseAbs().maxCoeff());
   if (F_ == 0.0 && L_ == 0.0)

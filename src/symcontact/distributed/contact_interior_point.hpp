@@ -102,6 +102,9 @@ struct ContactInteriorPointOptions {
   double follow_below = 0.1;
   int max_iterations = 80;
   int max_krylov_iterations = 2000;  ///< per Newton system
+  /// F of the scales above when > 0, in place of ‖b‖_∞, which can be far above the forces of the answer (a
+  /// stiff body moved by fixed values: distributed_step.cpp takes the forces of the previous answer).
+  double force_scale = 0.0;
   NewtonPreconditioner preconditioner = NewtonPreconditioner::kFilteredGamg;
 };
 
