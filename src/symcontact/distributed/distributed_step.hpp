@@ -11,7 +11,9 @@
 /// min ½ uᵀKu − fᵀu + j(u) subject to those rows solved, and the linearisation taken again at the answer,
 /// until ‖u_{k+1} − u_k‖∞ ≤ geometry_tolerance ‖u_{k+1}‖∞, or the rows come out the same, or (frictionless)
 /// the answer already solves the new rows' program to the interior point's tolerance (a plane obstacle: one
-/// solve). Without rows the stiffness system alone is solved. Row j is passed divided by its support
+/// solve); not after a solve whose interior point took a force scale far above its answer's forces (a stiff
+/// body moved by fixed values: the next solves take the answer's, answer_force_scale in the .cpp). Without
+/// rows the stiffness system alone is solved. Row j is passed divided by its support
 /// Σ w φ_j (a gap in length units, its force in force units: the interior point's scales); its multiplier
 /// is then μ_j = λ_j / support_j, the serial solver's. The contact forces are recovered as the serial solver
 /// does (solvers/contact_forces.hpp).
@@ -29,9 +31,9 @@
 /// that is not positive definite), its Hessian is shifted by δ diag K (Levenberg–Marquardt), and only an
 /// unshifted step ends the step.
 /// What the path does not solve yet is an input error before any work (check_distributed_support): friction
-/// with a hyperelastic body. A symmetric pair is solved, with or without friction, the interior point's polish settling its two
-/// nearly dependent families of rows; where a solve with such a pair fails, the message advises one-pass mode
-/// (symmetric_pair_hint in the .cpp).
+/// with a hyperelastic body. A symmetric pair is solved, with or without friction, the interior point's polish
+/// settling its two nearly dependent families of rows; where a solve with such a pair fails, the message
+/// advises one-pass mode (symmetric_pair_hint in the .cpp).
 /// The meshes are whole on every rank; each rank assembles the stiffness rows it owns, the nodes numbered for
 /// PETSc by NodeOrdering (node_ordering.hpp) and back to the model's numbering for everything else.
 #include "symcontact/app/run.hpp"

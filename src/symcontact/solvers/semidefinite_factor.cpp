@@ -80,7 +80,7 @@ VectorXd SemidefiniteFactor::solve(const VectorXd& r) const {
   if (r.size() != n_) throw std::invalid_argument("SemidefiniteFactor::solve: r must have S's size");
   VectorXd rp(r_);
   for (Index i = 0; i < r_; ++i) rp[i] = r[piv_[i]];
-  const VectorXd yp = c11_->map() * rp;
+  const VectorXd yp = c11_->map().selfadjointView<Eigen::Lower>() * rp;  // half of C₁₁ read
   VectorXd y = VectorXd::Zero(n_);
   for (Index i = 0; i < r_; ++i) y[piv_[i]] = yp[i];
   return y;
