@@ -188,8 +188,6 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
     VectorXd gaps = -d_;
     symmetric_multiply_add(*W_, lam, gaps);
     if (k > 0) gaps += G_dense_.transpose() * alpha;
-    const VectorXd y = primal(lam, -alpha);
-    const double tol = kTolerance * f_ref_ * std::max(y.lpNorm<Eigen::Infinity>(), 1e-300);
     const double lam_max = nf ? lam.cwiseAbs().maxCoeff() : 0.0;
     bool changed = false;
     for (Index a = 0; a < nf; ++a)
@@ -197,12 +195,15 @@ DualCondensedProblem::Closing DualCondensedProblem::close_contact_set(VectorXd& 
         in_set[F[a]] = 0;
         changed = true;
       }
-    if (!changed)
-      for (Index i = 0; i < m_; ++i)
-        if (!in_set[i] && gaps[i] < -tol) {
-          in_set[i] = 1;
-          changed = true;
-        }
+    if (changed) continue;
+    // The displacements only for the tolerance's scale, once no row left the set (a product with S⁺).
+    const VectorXd y = primal(lam, -alpha);
+    const double tol = kTolerance * f_ref_ * std::max(y.lpNorm<Eigen::Infinity>(), 1e-300);
+    for (Index i = 0; i < m_; ++i)
+      if (!in_set[i] && gaps[i] < -tol) {
+        in_set[i] = 1;
+        changed = true;
+      }
     if (changed) continue;
     double open = 0.0;
     for (Index a = 0; a < nf; ++a) open = std::max(open, std::abs(gaps[F[a]]));
