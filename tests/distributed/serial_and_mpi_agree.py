@@ -107,6 +107,8 @@ CASES = [
     # of the forces' scale when its tolerances are those below; there the two paths part by 2e-8 of the
     # displacements' scale and 1.8e-6 of the pressures' (the split between the families).
     ("crushed_ring_2d/ring.toml", ["geometry_tolerance = 1e-10\n", "[ipopt]\ntol = 1e-12\n"], None, REL_SYMMETRIC),
+    # V2's sphere made Neo-Hookean (3D, a rigid plane, a pressure load): a Newton step per geometry iteration.
+    ("hertz_3d/sphere_on_plane.toml", ("[body.material]\n", '[body.material]\nmodel = "neo_hookean"\n'), None),
     # A Neo-Hookean block turned rigidly by its edges, without contact: under mpirun as serially (no contact
     # step: the serial equilibrium solver on every rank).
     ("rotation_2d/rotation.toml", "", None),
@@ -306,6 +308,10 @@ def label_of(extra):
         return " at order 2"
     if any('friction = "none"' in new for new in replaced):
         return " without friction"
+    if any("neo_hookean" in new for new in replaced):
+        return " Neo-Hookean"
+    if any("E = 3.0" in new for new in replaced):
+        return " with a linear-elastic ring"
     tolerance = [new.strip().replace(" = ", " ") for new in replaced if new.startswith("coulomb_tolerance")]
     if tolerance:
         return " at " + tolerance[0]
