@@ -170,8 +170,8 @@ QuadraticModel quadratic_model(const Model& model, const NodeOrdering& ordering,
 /// the solves after it (ContactInteriorPointOptions::force_scale) once its own has been found loose
 /// (kLooseScale): its own, ‖b‖_∞, counts the force that moves a stiff body's fixed DOFs against its free ones,
 /// 3e5 times the answer's forces where a steel lid is pressed by an imposed displacement onto rubber
-/// (examples/oring_axisymmetric), and tests that loose kept the Coulomb thresholds of that O-ring with a
-/// linear-elastic ring from settling (21 Coulomb iterations in the first step, accepted at the noise floor).
+/// (examples/oring_axisymmetric): tests that loose leave the Coulomb thresholds at the interior point's
+/// accuracy, above the Coulomb loop's tolerance.
 double answer_force_scale(const Model& model, const VectorXd& u) {
   VectorXd gradient = VectorXd::Zero(u.size());
   model.energy().add_gradient(u, gradient);

@@ -87,8 +87,8 @@ struct SparseModel {
   /// ρ = kSparseRho × mean|H_ii| / max (A_SᵀA_S)_ii, whose multiplier iteration contracts by about 1/(1 + ρσ²)
   /// per solve (σ the rows' singular values relative to H's scale). Not larger: the iteration stops at an update
   /// of 1e-14 max|x| in M's units, so stationarity is met only to about ρ × 1e-14 (with 1e6, to 7e-12 scaled on
-  /// the tests' problems, against their tolerance of 1e-12). 1e3 rather than 1e2: fewer solves a Newton step, the
-  /// same steps (the 3D pads at 1e4 DOFs: 6–7 % less optimizer time, reactions equal to 1e-13).
+  /// the tests' problems, against their tolerance of 1e-12). Not smaller: each decade fewer multiplies the solves
+  /// a Newton step needs to meet that update (the contraction above), for the same Newton steps.
   static constexpr double kSparseRho = 1e3;
   SparseMatrix H;
   double rho = 0.0;
