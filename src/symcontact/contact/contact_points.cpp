@@ -339,7 +339,8 @@ void project_along_bisector(const MasterGeometry& master, const Eigen::Vector3d&
 }  // namespace
 
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
-                       double search, ContactPoint& cp, bool allow_past_end, const Eigen::Vector3d* ray_normal) {
+                       double search, ContactPoint& cp, bool allow_past_end, const Eigen::Vector3d* ray_normal,
+                       Index candidate) {
   const ContactSurface& ms = *master.surface;
   const Eigen::Vector3d p3 = pad3(p);
   // The nearest FACING master facet: back-facing facets (a point's own facet in self-contact, the far
@@ -351,7 +352,15 @@ bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, c
       return std::numeric_limits<double>::infinity();
     return q.distance2;
   };
-  const int mf = master.tree.nearest_within_bound(p3, search * search, distance2);
+  // The candidate's distance as the first bound prunes the tree without changing the winner: the depth-first
+  // order is p's alone, and every facet at the final distance lies within any bound on the way, so the last
+  // of them in that order is found either way (ties go to the later one, as in nearest_within_bound()). The
+  // bound exceeds the candidate's distance by (1e-8 search)²: a box's distance to p, which prunes, may exceed
+  // the projection's distance to its facet by round-off.
+  double bound = search * search;
+  if (candidate >= 0)
+    bound = std::min(bound, distance2(static_cast<int>(candidate), bound) + 1e-16 * search * search);
+  const int mf = master.tree.nearest_within_bound(p3, bound, distance2);
   if (mf < 0) return false;
   const FacetProjection pr = project_on_facet(ms.facet_type, master.facet_x[mf], p);
   if (!allow_past_end && past_end(ms, mf, pr)) return false;
@@ -459,7 +468,9 @@ std::vector<ContactPoint> contact_points_3d(const ContactSurface& slave, const E
           const Eigen::Vector3d ns = facet_normal(slave.facet_type, xf, xi).head<3>();
           const Eigen::Vector3d ray = options.bisector_ray ? smoothed_at(slave, ns_nodal, f, N.data()) : Eigen::Vector3d();
           ContactPoint cp;
-          if (!project_to_master(master, p, ns, reach, cp, false, options.bisector_ray ? &ray : nullptr)) continue;
+          if (!project_to_master(master, p, ns, reach, cp, false, options.bisector_ray ? &ray : nullptr,
+                                 cell.master_facet))
+            continue;
           cp.slave_facet = f;
           cp.xi[0] = xi[0];
           cp.xi[1] = xi[1];

@@ -122,9 +122,12 @@ MasterGeometry prepare_master(const ContactSurface& master, const Eigen::MatrixX
 /// vanish together, so the continuous constraint θ ≥ 0 is the same. Where the line meets no facing facet
 /// near the closest point (past the master's end), or at a 2D corner of the master, the closest point
 /// and n̄ are kept.
+///
+/// `candidate` (≥ 0: a master facet likely near p, such as the facet of p's mortar cell) only bounds the
+/// search by its distance first: the facet found, and so every output, is the same with or without it.
 bool project_to_master(const MasterGeometry& master, const Eigen::VectorXd& p, const Eigen::Vector3d& slave_normal,
                        double search, ContactPoint& cp, bool allow_past_end = false,
-                       const Eigen::Vector3d* ray_normal = nullptr);
+                       const Eigen::Vector3d* ray_normal = nullptr, Index candidate = -1);
 
 /// One cell of the 3D segmentation: the part of slave facet f (reference coordinates, counter-clockwise)
 /// covered by master facet `master_facet` projected along the slave normal.
