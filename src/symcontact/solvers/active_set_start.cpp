@@ -10,6 +10,7 @@
 #include "symcontact/core/error.hpp"
 #include "symcontact/solvers/dense_kkt.hpp"
 #include "symcontact/solvers/equality_constrained_solve.hpp"
+#include "symcontact/solvers/row_updated_factor.hpp"
 #include "symcontact/solvers/spd_factor.hpp"
 
 namespace symcontact {
@@ -48,6 +49,13 @@ constexpr int kRefactorAfter = 12;
 /// 73 steps become 23 in 76 (28 in 66 with the early set updates of newton_on_set), the reactions the same to
 /// 5e-10.
 constexpr double kReuseBelow = 1e-2, kReuseContraction = 0.5;
+/// A set that differs from the factorised one by at most kMaxUpdatedRows rows takes the factor through the
+/// Sherman–Morrison–Woodbury identity (row_updated_factor.hpp) for its first step, if the step before the change
+/// was at most kReuseAcrossSetsBelow × max|x| (kFollowBelow: every early change of the set qualifies): the rows of
+/// a contact zone's edge that join and leave as the set settles (one to a few each round) then cost a few solves
+/// with the factor instead of a factorisation each, and the later steps on the set follow the kReuseBelow rule.
+constexpr std::size_t kMaxUpdatedRows = 32;
+constexpr double kReuseAcrossSetsBelow = 1e-1;
 
 /// The rows of A scaled to unit largest entry, so that multipliers and violations compare across rows.
 struct ScaledRows {
@@ -92,20 +100,81 @@ struct SparseModel {
   static constexpr double kSparseRho = 1e3;
   SparseMatrix H;
   double rho = 0.0;
-  SpdFactor chol{false};
+  /// The factor; a new one (a new analysis: A_SᵀA_S's pattern) for each set factorised.
+  std::unique_ptr<SpdFactor> chol;
   bool factorised = false;
   bool nu_warm = false;  ///< the multipliers of a step on S are there to start the next one's from
+  std::vector<Index> rows;  ///< S when factorised (ascending)
+  /// How the factor serves the current S: unknown until asked (serves()), its own rows, through a
+  /// RowUpdatedFactor for the rows that joined or left since, or not (more than kMaxUpdatedRows changed).
+  enum class Fit { kUnknown, kExact, kUpdated, kNone };
+  Fit fit = Fit::kUnknown;
+  std::unique_ptr<RowUpdatedFactor> update;
 
-  /// Factorises M at x; false when it is not definite. `factorisations` counts it.
+  /// A new set S begins: the factor's fit to it is to be found, its multipliers start from zero.
+  void new_set() {
+    fit = Fit::kUnknown;
+    update.reset();
+    nu_warm = false;
+  }
+
+  /// Factorises M at x for the set S; false when it is not definite. `factorisations` counts it.
   bool factorise(ConstrainedProblem& problem, const VectorXd& x, const SparseMatrix& AtA, double adiag,
-                 int& factorisations) {
+                 const std::vector<Index>& S, int& factorisations) {
     problem.hessian_lower(x, H);
     const double hdiag = H.diagonal().cwiseAbs().mean();
     rho = AtA.rows() > 0 ? kSparseRho * hdiag / adiag : 0.0;
-    factorised = hdiag > 0 && chol.compute(H, nullptr, AtA.rows() > 0 ? &AtA : nullptr, rho);
+    update.reset();
+    if (!chol || rows != S) chol = std::make_unique<SpdFactor>(false);
+    rows = S;
+    factorised = hdiag > 0 && chol->compute(H, nullptr, AtA.rows() > 0 ? &AtA : nullptr, rho);
+    fit = factorised ? Fit::kExact : Fit::kNone;
     if (factorised) ++factorisations;
     return factorised;
   }
+
+  /// Whether the factor (of an earlier S) can serve the set S: the same rows, or at most kMaxUpdatedRows that
+  /// joined (+ρ aᵢaᵢᵀ) or left (−ρ aᵢaᵢᵀ), A's rows scaled as in `scaled`.
+  bool serves(const SparseMatrix& scaled, const std::vector<Index>& S) {
+    if (!factorised) return false;
+    if (fit != Fit::kUnknown) return fit != Fit::kNone;
+    std::vector<Index> changed;
+    std::vector<double> coefficient;
+    std::size_t a = 0, b = 0;
+    while (a < S.size() || b < rows.size()) {
+      if (b == rows.size() || (a < S.size() && S[a] < rows[b])) {
+        changed.push_back(S[a++]);
+        coefficient.push_back(rho);
+      } else if (a == S.size() || rows[b] < S[a]) {
+        changed.push_back(rows[b++]);
+        coefficient.push_back(-rho);
+      } else {
+        ++a;
+        ++b;
+      }
+    }
+    fit = changed.empty() ? Fit::kExact : Fit::kNone;
+    if (changed.empty() || changed.size() > kMaxUpdatedRows) return fit == Fit::kExact;
+    std::vector<Index> column(scaled.rows(), -1);
+    for (std::size_t k = 0; k < changed.size(); ++k) column[changed[k]] = static_cast<Index>(k);
+    std::vector<Triplet> t;
+    for (Index j = 0; j < scaled.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(scaled, j); it; ++it)
+        if (column[it.row()] >= 0) t.emplace_back(static_cast<int>(j), static_cast<int>(column[it.row()]), it.value());
+    SparseMatrix rows_t(scaled.cols(), static_cast<Index>(changed.size()));
+    rows_t.setFromTriplets(t.begin(), t.end());
+    update = std::make_unique<RowUpdatedFactor>(*chol, rows_t,
+                                                Eigen::Map<const VectorXd>(coefficient.data(), coefficient.size()));
+    if (!update->valid()) {
+      update.reset();
+      return false;
+    }
+    fit = Fit::kUpdated;
+    return true;
+  }
+
+  /// M⁻¹ b for the set the factor serves.
+  VectorXd solve(const VectorXd& b) const { return update ? update->solve(b) : chol->solve(b); }
 };
 
 /// Newton directions of  min f  subject to  A_S x + b_S = 0:  ∇²f Δ − A_Sᵀν = −∇f,  A_S Δ = −c_S. With a dense
@@ -118,12 +187,15 @@ struct SparseModel {
 class NewtonOnSet {
  public:
   /// `factorisations` counts the factorisations made.
-  NewtonOnSet(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, int& factorisations)
-      : problem_(problem), AS_(AS), bS_(bS),
+  /// `sparse`: the sparse path's model, kept from set to set; `scaled`, `S`: the scaled rows and the set.
+  NewtonOnSet(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, int& factorisations,
+              SparseModel& sparse, const SparseMatrix& scaled, const std::vector<Index>& S)
+      : problem_(problem), AS_(AS), bS_(bS), sparse_(sparse), scaled_(scaled), S_(S),
         H_(problem.hessian_is_dense() ? std::make_unique<AlignedMatrix>(problem.num_variables(),
                                                                         problem.num_variables())
                                       : nullptr),
         factorisations_(factorisations) {
+    sparse_.new_set();
     if (AS.rows() > 0) {
       AtA_ = SparseMatrix(AS.transpose() * AS).triangularView<Eigen::Lower>();
       adiag_ = AtA_.diagonal().cwiseAbs().maxCoeff();
@@ -176,7 +248,9 @@ class NewtonOnSet {
     VectorXd g;
     problem_.gradient(x, g);
     slope = 0.0;
-    if (!(reuse && sparse_.factorised) && !sparse_.factorise(problem_, x, AtA_, adiag_, factorisations_)) return false;
+    if (!(reuse && sparse_.serves(scaled_, S_)) &&
+        !sparse_.factorise(problem_, x, AtA_, adiag_, S_, factorisations_))
+      return false;
     const SparseMatrix& H = sparse_.H;
     const double rho = sparse_.rho;
     const auto hessian_times = [&H](const VectorXd& v, VectorXd& out) { out += H.selfadjointView<Eigen::Lower>() * v; };
@@ -185,7 +259,9 @@ class NewtonOnSet {
     if (!sparse_.nu_warm || nu.size() != AS_.rows()) nu = VectorXd::Zero(AS_.rows());
     int solves = 0;
     const double xscale = std::max(x.lpNorm<Eigen::Infinity>(), 1e-300);
-    if (!multiplier_method(sparse_.chol, hessian_times, AS_, bS_, rho, xscale, gs, xs, nu, solves))
+    const SparseModel& model = sparse_;
+    const SpdSolve solve = [&model](const VectorXd& b) { return model.solve(b); };
+    if (!multiplier_method(solve, hessian_times, AS_, bS_, rho, xscale, gs, xs, nu, solves))
       return false;
     sparse_.nu_warm = true;
     dx = xs - x;
@@ -197,7 +273,9 @@ class NewtonOnSet {
   const SparseMatrix& AS_;
   const VectorXd& bS_;
   std::unique_ptr<AlignedMatrix> H_;  ///< the dense path's ∇²f (null on the sparse path)
-  SparseModel sparse_;                ///< the sparse path's
+  SparseModel& sparse_;               ///< the sparse path's
+  const SparseMatrix& scaled_;
+  const std::vector<Index>& S_;
   SparseMatrix AtA_;
   double adiag_ = 0.0;
   std::unique_ptr<DenseRangeSpace> reference_;
@@ -272,6 +350,8 @@ struct SetIterate {
   VectorXd x, nu;
   std::vector<Index> S;
   int newton_steps = 0, factorisations = 0, follows = 0;
+  SparseModel sparse;  ///< the sparse path's model, from set to set
+  double last_step = std::numeric_limits<double>::infinity();  ///< the last Newton step taken (max-norm)
   /// μ ≥ 0 per row, in the problem's units.
   VectorXd multipliers(const ScaledRows& rows) const {
     VectorXd mu = VectorXd::Zero(rows.A.rows());
@@ -294,7 +374,7 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
   SparseMatrix AS;
   VectorXd bS;
   restrict_rows(rows, it.S, AS, bS);
-  NewtonOnSet newton(problem, AS, bS, it.factorisations);
+  NewtonOnSet newton(problem, AS, bS, it.factorisations, it.sparse, rows.A, it.S);
   double previous = std::numeric_limits<double>::infinity();
   // The last two steps, followed data or not: whether the model may be kept (kReuseBelow), the CG's forcing.
   double last = std::numeric_limits<double>::infinity(), before_last = last;
@@ -309,7 +389,10 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
     // then stops at 1e-2 × max|x| gives directions far coarser than the steps, and the followed thresholds
     // stall (the 2D pad on a plane at 9.4e4 DOFs: 58 steps and one more Coulomb iteration, against 33).
     const double cg_tolerance = std::max(kCgTolerance * xscale, kCgForcing * std::min(last, xscale));
-    const bool reuse = last <= kReuseBelow * xscale && last <= kReuseContraction * before_last;
+    // A new set's first step keeps the factor of the set before, updated for the rows that changed
+    // (kMaxUpdatedRows), when the step before the change was below kReuseAcrossSetsBelow.
+    const bool reuse = k == 0 ? it.last_step <= kReuseAcrossSetsBelow * xscale
+                              : last <= kReuseBelow * xscale && last <= kReuseContraction * before_last;
     if (!newton.direction(it.x, cg_tolerance, reuse, dx, it.nu, slope) || !dx.allFinite() || !it.nu.allFinite())
       return "the Newton matrix on the active set is not definite";
     ++it.newton_steps;
@@ -318,6 +401,7 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
     previous = step;
     before_last = last;
     last = step;
+    it.last_step = step;
     const double alpha = step <= kLocal * xscale ? 1.0 : step_length(problem, it.x, dx, slope, on_rows);
     if (alpha == 0.0) return "no step on the active set lowers f";
     it.x += alpha * dx;

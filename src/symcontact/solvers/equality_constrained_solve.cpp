@@ -59,14 +59,14 @@ void range_space_step(const SpdFactor& chol, const SparseMatrix& AS, const Vecto
 
 }  // namespace
 
-bool multiplier_method(const SpdFactor& chol, const std::function<void(const VectorXd&, VectorXd&)>& hessian_times,
+bool multiplier_method(const SpdSolve& solve, const std::function<void(const VectorXd&, VectorXd&)>& hessian_times,
                        const SparseMatrix& AS, const VectorXd& bS, double rho, double xscale0, VectorXd& g,
                        VectorXd& xs, VectorXd& nu, int& iterations) {
   double best = std::numeric_limits<double>::infinity();
   int since_progress = 0;
   for (int it = 0; it < (AS.rows() > 0 ? 400 : 1); ++it) {
     const VectorXd cS = AS * xs + bS;
-    const VectorXd dx = chol.solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
+    const VectorXd dx = solve(VectorXd(-(g - AS.transpose() * nu) - rho * (AS.transpose() * cS)));
     xs += dx;
     hessian_times(dx, g);
     ++iterations;
@@ -264,7 +264,8 @@ class NewtonOnSet {
       };
       // A stalled method of multipliers means the set cannot be closed (inconsistent rows): further Newton
       // steps on f cannot change that, and the caller's rounds decide what to drop.
-      if (!multiplier_method(chol, hessian_times, AS_, bS_, rho, xscale0_, g, xs_, nu_, iterations_))
+      const SpdSolve solve = [&chol](const VectorXd& b) { return chol.solve(b); };
+      if (!multiplier_method(solve, hessian_times, AS_, bS_, rho, xscale0_, g, xs_, nu_, iterations_))
         return StepEnd::kStalled;
     }
     // Newton has converged when its step is at the level of round-off in x (1e-10 relative: the augmented

@@ -52,14 +52,17 @@ struct StartFactor {
 bool solve_on_set(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, VectorXd& xs, VectorXd& nu,
                   int& iterations, bool direct, StartFactor* start = nullptr);
 
-/// The method of multipliers on the set S with M = H + ρ A_Sᵀ A_S factorised (`chol`), from xs with the gradient
+/// M⁻¹ b: a factor of M = H + ρ A_SᵀA_S, or one updated for rows that joined or left S (row_updated_factor.hpp).
+using SpdSolve = std::function<VectorXd(const VectorXd&)>;
+
+/// The method of multipliers on the set S with M = H + ρ A_Sᵀ A_S factorised (`solve`), from xs with the gradient
 /// g = ∇f(xs) and the multipliers nu: xs += M⁻¹(−(g − A_Sᵀ ν) − ρ A_Sᵀ c_S), ν −= ρ c_S(xs), g kept as the
 /// gradient of f's quadratic model by g += H Δ (`hessian_times` adds H Δ to its second argument); for a
 /// quadratic f the solution of the file comment's problem, else one Newton step of it. One step when S is
 /// empty. Converged when c_S and the update are at most 1e-14 × xscale0 (max-norm). Returns false when the
 /// violation stops falling (40 iterations without a 1 % gain: the rows are inconsistent, the set must change
 /// instead). `iterations` counts the solves.
-bool multiplier_method(const SpdFactor& chol, const std::function<void(const VectorXd&, VectorXd&)>& hessian_times,
+bool multiplier_method(const SpdSolve& solve, const std::function<void(const VectorXd&, VectorXd&)>& hessian_times,
                        const SparseMatrix& AS, const VectorXd& bS, double rho, double xscale0, VectorXd& g,
                        VectorXd& xs, VectorXd& nu, int& iterations);
 
