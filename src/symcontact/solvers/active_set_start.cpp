@@ -202,6 +202,9 @@ class NewtonOnSet {
     }
   }
 
+  /// Whether the last direction came from the sparse path's model of an earlier step (`reuse`).
+  bool stale() const { return stale_; }
+
   /// The direction dx at x, the rows' multipliers nu at x + dx, and the slope ∇f(x)ᵀdx. False when
   /// ∇²f + ρ A_SᵀA_S cannot be factorised. `reuse`: the sparse path may keep its last factor (kReuseBelow).
   bool direction(const VectorXd& x, double cg_tolerance, bool reuse, VectorXd& dx, VectorXd& nu, double& slope) {
@@ -248,9 +251,8 @@ class NewtonOnSet {
     VectorXd g;
     problem_.gradient(x, g);
     slope = 0.0;
-    if (!(reuse && sparse_.serves(scaled_, S_)) &&
-        !sparse_.factorise(problem_, x, AtA_, adiag_, S_, factorisations_))
-      return false;
+    stale_ = reuse && sparse_.serves(scaled_, S_);
+    if (!stale_ && !sparse_.factorise(problem_, x, AtA_, adiag_, S_, factorisations_)) return false;
     const SparseMatrix& H = sparse_.H;
     const double rho = sparse_.rho;
     const auto hessian_times = [&H](const VectorXd& v, VectorXd& out) { out += H.selfadjointView<Eigen::Lower>() * v; };
@@ -281,6 +283,7 @@ class NewtonOnSet {
   std::unique_ptr<DenseRangeSpace> reference_;
   int& factorisations_;
   int cg_iterations_ = 0;  ///< of the last projected CG
+  bool stale_ = false;
 };
 
 /// The step length along dx from x: 1 where x is off the rows of S (the step lands on them: they are linear);
@@ -378,6 +381,7 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
   double previous = std::numeric_limits<double>::infinity();
   // The last two steps, followed data or not: whether the model may be kept (kReuseBelow), the CG's forcing.
   double last = std::numeric_limits<double>::infinity(), before_last = last;
+  bool refactorise = false;  ///< the next step takes a new model (the round-off test below)
   for (int k = 0;; ++k) {
     if (k >= options.max_newton_steps) return "Newton on the active set did not converge";
     VectorXd dx;
@@ -392,12 +396,21 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
     // A new set's first step keeps the factor of the set before, updated for the rows that changed
     // (kMaxUpdatedRows), when the step before the change was below kReuseAcrossSetsBelow.
     const bool reuse = k == 0 ? it.last_step <= kReuseAcrossSetsBelow * xscale
-                              : last <= kReuseBelow * xscale && last <= kReuseContraction * before_last;
+                              : !refactorise && last <= kReuseBelow * xscale &&
+                                    last <= kReuseContraction * before_last;
+    refactorise = false;
     if (!newton.direction(it.x, cg_tolerance, reuse, dx, it.nu, slope) || !dx.allFinite() || !it.nu.allFinite())
       return "the Newton matrix on the active set is not definite";
     ++it.newton_steps;
     const double step = dx.lpNorm<Eigen::Infinity>();
-    const bool converged = step <= kStep * xscale || (step <= kRoundOff * xscale && step > 0.1 * previous);
+    bool converged = step <= kStep * xscale || (step <= kRoundOff * xscale && step > 0.1 * previous);
+    // Steps that stop falling tenfold are round-off only with the model of this iterate: with an earlier one
+    // they fall linearly, at the rate of that model's error, which is no sign of round-off. The next step
+    // refactorises, and its successor decides.
+    if (converged && step > kStep * xscale && newton.stale()) {
+      converged = false;
+      refactorise = true;
+    }
     previous = step;
     before_last = last;
     last = step;

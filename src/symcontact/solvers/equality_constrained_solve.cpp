@@ -74,7 +74,8 @@ bool multiplier_method(const SpdSolve& solve, const std::function<void(const Vec
     const VectorXd cS1 = AS * xs + bS;
     nu -= rho * cS1;
     const double viol = cS1.lpNorm<Eigen::Infinity>();
-    if (viol <= 1e-14 * xscale0 && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale0) break;
+    const double xscale = std::max(xscale0, xs.lpNorm<Eigen::Infinity>());
+    if (viol <= 1e-14 * xscale && dx.lpNorm<Eigen::Infinity>() <= 1e-14 * xscale) break;
     if (viol < 0.99 * best) {
       best = viol;
       since_progress = 0;
