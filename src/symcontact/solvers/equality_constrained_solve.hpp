@@ -59,7 +59,8 @@ using SpdSolve = std::function<VectorXd(const VectorXd&)>;
 /// g = ∇f(xs) and the multipliers nu: xs += M⁻¹(−(g − A_Sᵀ ν) − ρ A_Sᵀ c_S), ν −= ρ c_S(xs), g kept as the
 /// gradient of f's quadratic model by g += H Δ (`hessian_times` adds H Δ to its second argument); for a
 /// quadratic f the solution of the file comment's problem, else one Newton step of it. One step when S is
-/// empty. Converged when c_S and the update are at most 1e-14 × xscale0 (max-norm). Returns false when the
+/// empty. Converged when c_S and the update are at most 1e-14 × max(xscale0, max|xs|) (max-norm: from xs = 0, the
+/// scale is the answer's). Returns false when the
 /// violation stops falling (40 iterations without a 1 % gain: the rows are inconsistent, the set must change
 /// instead). `iterations` counts the solves.
 bool multiplier_method(const SpdSolve& solve, const std::function<void(const VectorXd&, VectorXd&)>& hessian_times,

@@ -65,9 +65,15 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     SubproblemSolution s;
     const FollowIterate* follow = p.follow ? &p.follow : nullptr;
     // Only where the polish would close the set (PolishStrategy::closes()): the active-set start closes it.
-    if (warm_ == WarmStart::kActiveSet && p.close_active_set && warm.multipliers &&
-        warm.multipliers->size() == p.target.constraint_matrix().rows()) {
-      s.result = on_active_set(p, p.start, *warm.multipliers, o.tolerance, follow);
+    // Without the previous rows' multipliers, on the uncondensed problem (a sparse Hessian) it starts from the
+    // rows that p.start violates (the primal-dual active set method's own start, Hintermüller, Ito & Kunisch
+    // 2003): each of its Newton steps costs a sparse factorisation at most, as each interior-point iteration
+    // does, and it takes fewer of them on the 3D pads (docs/performance.md); the dense condensed problem keeps
+    // the interior point.
+    const Index rows = p.target.constraint_matrix().rows();
+    const bool warm_rows = warm.multipliers && warm.multipliers->size() == rows;
+    if (warm_ == WarmStart::kActiveSet && p.close_active_set && (warm_rows || !p.target.hessian_is_dense())) {
+      s.result = on_active_set(p, p.start, warm_rows ? *warm.multipliers : VectorXd::Zero(rows), o.tolerance, follow);
       if (s.result.success) {
         s.result.status_text = "primal interior point: " + s.result.status_text;
         s.closed = true;

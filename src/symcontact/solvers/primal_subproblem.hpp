@@ -9,7 +9,8 @@
 /// PrimalInteriorPoint solves a condensed subproblem (a dense Hessian), or the uncondensed one of linear-elastic
 /// bodies (Subproblem::quadratic_bodies: a sparse Hessian on CHOLMOD), by the primal interior point first
 /// (dense_primal_interior_point.hpp), from the same start and multipliers — with WarmStart::kActiveSet and
-/// those multipliers, by the active set strategy before it (active_set_start.hpp) — and falls back to
+/// those multipliers, or on the uncondensed problem without them, by the active set strategy before it
+/// (active_set_start.hpp) — and falls back to
 /// PrimalIpopt's attempts where it fails or where neither applies (finite-strain bodies). Where thresholds follow the
 /// iterates, the interior point's answer is closed by the same active set strategy, the thresholds following
 /// to the closed answer.

@@ -162,6 +162,27 @@ TEST(ActiveSetStart, TheSparsePathKeepsItsFactorWhileTheFollowedDataSettle) {
   EXPECT_LT(relative(sparse.x, dense.x), 1e-8);
 }
 
+// A first solve (no earlier multipliers) on the sparse path, from x = 0 with the weights following: the set
+// starts from the rows x = 0 violates, and the answer is the interior point's fixed point from the same start,
+// one that passes its stopping test (a modified Newton step that falls linearly is not taken for round-off).
+TEST(ActiveSetStart, AColdStartOnTheSparsePathEndsAtTheInteriorPointsFixedPoint) {
+  for (const unsigned seed : {2u, 11u}) {
+    FrictionLikeProblem qi(kN, kN / 2, seed), qa(kN, kN / 2, seed);
+    for (FrictionLikeProblem* q : {&qi, &qa}) q->set_weights(VectorXd::Constant(kN / 2, 0.2));
+    qa.set_dense(false);
+    int changes = 0;
+    const FollowIterate fi = weights_follower(qi), fa = weights_follower(qa, &changes);
+    const IpoptResult ip = solve_dense_primal(qi, VectorXd::Zero(kN), tight<DensePrimalOptions>(), nullptr, &fi);
+    const IpoptResult as =
+        solve_from_active_set(qa, VectorXd::Zero(kN), VectorXd::Zero(kN / 2), tight<ActiveSetStartOptions>(), &fa);
+    ASSERT_TRUE(ip.success) << ip.status_text;
+    ASSERT_TRUE(as.success) << "seed " << seed << ": " << as.status_text;
+    EXPECT_GE(changes, 2) << "the hook moved the weights: the test exercises it";
+    EXPECT_LT(relative(as.x, ip.x), 1e-8) << "seed " << seed;
+    EXPECT_LE(dense_primal_error(qa, as.scales, as.x, as.multipliers), 1e-12);
+  }
+}
+
 TEST(ActiveSetStart, AChangeOfUnitsChangesNeitherTheStepsNorTheAnswer) {
   FrictionLikeProblem si(30, 45, 7), mm(30, 45, 7, 1e3, 1e-6);  // lengths × 1e3, forces × 1e-6
   const IpoptResult a0 = solve_dense_primal(si, VectorXd::Zero(30), tight<DensePrimalOptions>());
