@@ -398,7 +398,6 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
     const bool reuse = k == 0 ? it.last_step <= kReuseAcrossSetsBelow * xscale
                               : !refactorise && last <= kReuseBelow * xscale &&
                                     last <= kReuseContraction * before_last;
-    refactorise = false;
     if (!newton.direction(it.x, cg_tolerance, reuse, dx, it.nu, slope) || !dx.allFinite() || !it.nu.allFinite())
       return "the Newton matrix on the active set is not definite";
     ++it.newton_steps;
@@ -407,10 +406,8 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
     // Steps that stop falling tenfold are round-off only with the model of this iterate: with an earlier one
     // they fall linearly, at the rate of that model's error, which is no sign of round-off. The next step
     // refactorises, and its successor decides.
-    if (converged && step > kStep * xscale && newton.stale()) {
-      converged = false;
-      refactorise = true;
-    }
+    refactorise = converged && step > kStep * xscale && newton.stale();
+    converged = converged && !refactorise;
     previous = step;
     before_last = last;
     last = step;
