@@ -134,8 +134,8 @@ struct SparseModel {
   }
 
   /// Whether the factor (of an earlier S) can serve the set S: the same rows, or at most kMaxUpdatedRows that
-  /// joined (+ρ aᵢaᵢᵀ) or left (−ρ aᵢaᵢᵀ), A's rows scaled as in `scaled`.
-  bool serves(const SparseMatrix& scaled, const std::vector<Index>& S) {
+  /// joined (+ρ aᵢaᵢᵀ) or left (−ρ aᵢaᵢᵀ), aᵢ the rows of `scaled`.
+  bool serves(const ScaledRows& scaled, const std::vector<Index>& S) {
     if (!factorised) return false;
     if (fit != Fit::kUnknown) return fit != Fit::kNone;
     std::vector<Index> changed;
@@ -155,15 +155,10 @@ struct SparseModel {
     }
     fit = changed.empty() ? Fit::kExact : Fit::kNone;
     if (changed.empty() || changed.size() > kMaxUpdatedRows) return fit == Fit::kExact;
-    std::vector<Index> column(scaled.rows(), -1);
-    for (std::size_t k = 0; k < changed.size(); ++k) column[changed[k]] = static_cast<Index>(k);
-    std::vector<Triplet> t;
-    for (Index j = 0; j < scaled.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(scaled, j); it; ++it)
-        if (column[it.row()] >= 0) t.emplace_back(static_cast<int>(j), static_cast<int>(column[it.row()]), it.value());
-    SparseMatrix rows_t(scaled.cols(), static_cast<Index>(changed.size()));
-    rows_t.setFromTriplets(t.begin(), t.end());
-    update = std::make_unique<RowUpdatedFactor>(*chol, rows_t,
+    SparseMatrix a_changed;
+    VectorXd b_changed;
+    restrict_rows(scaled, changed, a_changed, b_changed);
+    update = std::make_unique<RowUpdatedFactor>(*chol, SparseMatrix(a_changed.transpose()),
                                                 Eigen::Map<const VectorXd>(coefficient.data(), coefficient.size()));
     if (!update->valid()) {
       update.reset();
@@ -189,7 +184,7 @@ class NewtonOnSet {
   /// `factorisations` counts the factorisations made.
   /// `sparse`: the sparse path's model, kept from set to set; `scaled`, `S`: the scaled rows and the set.
   NewtonOnSet(ConstrainedProblem& problem, const SparseMatrix& AS, const VectorXd& bS, int& factorisations,
-              SparseModel& sparse, const SparseMatrix& scaled, const std::vector<Index>& S)
+              SparseModel& sparse, const ScaledRows& scaled, const std::vector<Index>& S)
       : problem_(problem), AS_(AS), bS_(bS), sparse_(sparse), scaled_(scaled), S_(S),
         H_(problem.hessian_is_dense() ? std::make_unique<AlignedMatrix>(problem.num_variables(),
                                                                         problem.num_variables())
@@ -276,7 +271,7 @@ class NewtonOnSet {
   const VectorXd& bS_;
   std::unique_ptr<AlignedMatrix> H_;  ///< the dense path's ∇²f (null on the sparse path)
   SparseModel& sparse_;               ///< the sparse path's
-  const SparseMatrix& scaled_;
+  const ScaledRows& scaled_;
   const std::vector<Index>& S_;
   SparseMatrix AtA_;
   double adiag_ = 0.0;
@@ -377,7 +372,7 @@ std::string newton_on_set(ConstrainedProblem& problem, const ScaledRows& rows, c
   SparseMatrix AS;
   VectorXd bS;
   restrict_rows(rows, it.S, AS, bS);
-  NewtonOnSet newton(problem, AS, bS, it.factorisations, it.sparse, rows.A, it.S);
+  NewtonOnSet newton(problem, AS, bS, it.factorisations, it.sparse, rows, it.S);
   double previous = std::numeric_limits<double>::infinity();
   // The last two steps, followed data or not: whether the model may be kept (kReuseBelow), the CG's forcing.
   double last = std::numeric_limits<double>::infinity(), before_last = last;
