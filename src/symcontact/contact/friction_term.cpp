@@ -145,19 +145,38 @@ void FrictionTerm::add_gradient(const VectorXd& u, VectorXd& g) const {
   }
 }
 
+Eigen::MatrixXd FrictionTerm::slip_curvature(std::size_t q, const Eigen::VectorXd& s) const {
+  const Local& l = local_[q];
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(dim_, dim_);
+  const double r2 = s.squaredNorm() + l.alpha2;
+  const double r = std::sqrt(r2);
+  if (hessian_model_ == FrictionHessian::kExact) return (I - s * s.transpose() / r2) * (l.wt / r);
+  // The primal-dual model (FrictionHessian::kPrimalDual): z moved from the previous evaluation's by the
+  // linearisation of z r = s there; kept where s has not changed.
+  if (dual_.size() != local_.size()) dual_.assign(local_.size(), Dual{});
+  Dual& d = dual_[q];
+  if (d.z.size() == 0) {
+    d.z = s / r;
+  } else if (s != d.s) {
+    const double r0 = std::sqrt(d.s.squaredNorm() + l.alpha2);
+    const Eigen::VectorXd ds = s - d.s;
+    d.z = d.s / r0 + (ds - d.z * (d.s.dot(ds) / r0)) / r0;
+    d.z /= std::max(1.0, d.z.norm());
+  }
+  d.s = s;
+  return (I - 0.5 * (d.z * s.transpose() + s * d.z.transpose()) / r) * (l.wt / r);
+}
+
 void FrictionTerm::add_hessian(const VectorXd& u, MatrixSink& sink) const {
-  const int D = dim_;
-  for (const Local& l : local_) {
+  for (std::size_t q = 0; q < local_.size(); ++q) {
+    const Local& l = local_[q];
     if (l.wt == 0.0) {
       if (!keep_zero_blocks_) continue;
       const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(l.dofs.size(), l.dofs.size());
       sink.add(l.dofs.data(), static_cast<int>(l.dofs.size()), zero.data());
       continue;
     }
-    const Eigen::VectorXd s = slip(l, u);
-    const double r2 = s.squaredNorm() + l.alpha2;
-    const double r = std::sqrt(r2);
-    const Eigen::MatrixXd Hs = (Eigen::MatrixXd::Identity(D, D) - s * s.transpose() / r2) * (l.wt / r);
+    const Eigen::MatrixXd Hs = slip_curvature(q, slip(l, u));
     const Eigen::MatrixXd PB = l.P * l.B;
     const Eigen::MatrixXd K = PB.transpose() * Hs * PB;
     sink.add(l.dofs.data(), static_cast<int>(l.dofs.size()), K.data());

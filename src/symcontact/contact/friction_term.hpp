@@ -41,6 +41,23 @@
 
 namespace symcontact {
 
+/// The second derivative FrictionTerm::add_hessian() gives.
+enum class FrictionHessian {
+  /// ∇²j of the file comment (finite-difference checked).
+  kExact,
+  /// The primal-dual Newton model of Chan, Golub & Mulet (SIAM J. Sci. Comput. 20(6), 1999), made there for
+  /// the same η_α in total-variation denoising. ∇²j bends along the slip only by w τ α²/r³: where a slip
+  /// turns, Newton on it overshoots and its line search halves step after step. The model puts a dual
+  /// variable z_q (|z_q| ≤ 1, the unit traction direction) in place of s/r, carried from one evaluation to
+  /// the next by the linearisation of z r = s at the previous one (s⁻, r⁻, z⁻):
+  ///   z = s⁻/r⁻ + (Δs − z⁻ (s⁻ᵀΔs)/r⁻)/r⁻,  Δs = s − s⁻,  scaled back to |z| ≤ 1,
+  /// and gives  w τ Bᵀ P (I − ½(z sᵀ + s zᵀ)/r) P B / r:  symmetric, positive semidefinite (the rank-two term's
+  /// eigenvalues are at most |z| |s|/r < 1), and ∇²j where z = s/r (the first evaluation, and in the limit of
+  /// converging iterates, so Newton keeps its quadratic rate). The gradient stays exact: the minimiser is
+  /// unchanged, only the Newton directions on the way to it.
+  kPrimalDual,
+};
+
 class FrictionTerm : public EnergyTerm {
  public:
   /// `master` is null for an obstacle. `tau` and `alpha` have one value per point: τ_q ≥ 0, and α_q > 0
@@ -71,6 +88,9 @@ class FrictionTerm : public EnergyTerm {
   /// Whether a point with τ_q = 0 adds a zero Hessian block (its DOFs stay in the support, for thresholds
   /// that set_thresholds() may make positive) or nothing (the default: the sparsest pattern).
   void keep_zero_blocks(bool keep) { keep_zero_blocks_ = keep; }
+  /// Which second derivative add_hessian() gives (FrictionHessian; kExact by default). With kPrimalDual each
+  /// evaluation at a new u moves the dual variables: the model depends on the sequence of points evaluated.
+  void set_hessian_model(FrictionHessian model) { hessian_model_ = model; }
 
  private:
   struct Local {
@@ -81,7 +101,13 @@ class FrictionTerm : public EnergyTerm {
     double wt = 0.0;           ///< w τ
     double alpha2 = 0.0;       ///< α_q²
   };
+  /// The model's dual variable of one point (FrictionHessian::kPrimalDual): z, and the slip it was set at.
+  struct Dual {
+    Eigen::VectorXd z, s;
+  };
   Eigen::VectorXd slip(const Local& l, const VectorXd& u) const;
+  /// The D × D curvature of η_α at slip s of point q: ∇²η_α(s) × w τ, or its primal-dual model.
+  Eigen::MatrixXd slip_curvature(std::size_t q, const Eigen::VectorXd& s) const;
 
   std::string name_;
   std::vector<ContactPoint> points_;
@@ -89,6 +115,8 @@ class FrictionTerm : public EnergyTerm {
   std::vector<double> alpha_;
   int dim_;
   bool keep_zero_blocks_ = false;
+  FrictionHessian hessian_model_ = FrictionHessian::kExact;
+  mutable std::vector<Dual> dual_;  ///< per point, empty until its first evaluation
 };
 
 }  // namespace symcontact

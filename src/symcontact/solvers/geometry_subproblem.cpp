@@ -33,7 +33,9 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       dual_(dual_method(options.subproblem_solver, options.warm_start)),
       primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
-      sparse_alternative_(sparse_alternative(energy, contacts, options)) {
+      sparse_alternative_(sparse_alternative(energy, contacts, options)),
+      friction_hessian_(dense_primal_first(contacts, options.subproblem_solver) ? FrictionHessian::kPrimalDual
+                                                                                 : FrictionHessian::kExact) {
   // Linear elasticity: K_ff assembled once (bulk_ caches it) and the bodies' energy its quadratic form, the friction
   // terms at each call.
   if (energy.hessian_is_constant())
@@ -58,9 +60,11 @@ ConstrainedProblem& GeometrySubproblem::build(const ContactLinearization& lin, c
     friction_terms_.assign(contacts_.pairs.size(), nullptr);
     if (friction_) {
       friction_terms_ = symcontact::friction_terms(*friction_, contacts_, dofs_, u_it);
-      for (std::size_t p = 0; p < friction_terms_.size(); ++p)
+      for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
+        if (friction_terms_[p]) friction_terms_[p]->set_hessian_model(friction_hessian_);
         if (friction_terms_[p] && (follows_ || friction_->nodal_tau[p].maxCoeff() > 0.0))
           total_.extra[p] = friction_terms_[p];
+      }
     }
   }
   condensed_.reset();

@@ -90,6 +90,11 @@ class GeometrySubproblem {
   bool follows_ = false;
   /// Who may take the uncondensed problem by the cost rule (CondensationLimits::sparse_alternative).
   SparseAlternative sparse_alternative_ = SparseAlternative::kNone;
+  /// The friction terms' second derivative: the primal-dual model where the primal interior point and its
+  /// active-set Newton solve the subproblems (their line searches halved step after step where slips turn
+  /// under the exact one; IPOPT where they fail takes the model too, positive semidefinite like the exact
+  /// one), the exact one where IPOPT solves them.
+  FrictionHessian friction_hessian_ = FrictionHessian::kExact;
 
   /// The optimiser's hook (Subproblem::follow) on `condensed`, or on the whole reduced problem where it is null:
   /// the follower sets the nodal thresholds, and the friction terms take them at their points.

@@ -2,7 +2,8 @@
 // its gradient and Hessian against finite differences (the shared check_derivatives), P1 and P2, between
 // two non-matching flat blocks and against a plane obstacle, at random states, at zero slip and at
 // slips of order α; its value at the start of the step, its convexity, the regularised law at one
-// point (tangential force −τ w s / sqrt(s² + α²)), and new thresholds on the same points.
+// point (tangential force −τ w s / sqrt(s² + α²)), new thresholds on the same points, and the primal-dual
+// Newton model of its Hessian.
 //
 // Choice of the finite-difference step. η_α(s) = sqrt(s² + α²) bends on the length α: η'' = α²/r³ and
 // η''' = −3 α² s / r⁵, so |η'''| ~ 1/α² near s ~ α. A central difference of the gradient with step h
@@ -338,6 +339,55 @@ TEST_P(FrictionTermCase, RegularisedLawAtOnePoint) {
     if (one.with_master) {
       EXPECT_NEAR((f_slave + f_master).norm(), 0.0, 1e-12 * tau * w);  // action = reaction
     }
+  }
+}
+
+// The primal-dual model (FrictionHessian::kPrimalDual) at one point slipping back, then forward: its first
+// evaluation is ∇²j (z = s/r); the second carries z by the linearisation of z r = s, so that the curvature
+// along the slip is w τ (1 − z s/r)/r, about 2 w τ/r where the slip turned, against ∇²j's w τ α²/r³.
+TEST_P(FrictionTermCase, PrimalDualModelCarriesTheTractionDirection) {
+  const Interface s = interface();
+  Interface one = s;
+  one.points = {s.points[s.points.size() / 2]};
+  const double tau = 2.5, wt = tau * one.points[0].weight;
+  const VectorXd u0 = random_vector(s.dofs.num_dofs(), 0.01, 16);
+  const FrictionTerm exact = make_term(one, {tau}, u0);
+  FrictionTerm model = make_term(one, {tau}, u0);
+  model.set_hessian_model(FrictionHessian::kPrimalDual);
+  const double c1 = -10 * kAlpha, c2 = 10 * kAlpha;
+  const VectorXd u1 = u0 + slave_slide(one, c1), u2 = u0 + slave_slide(one, c2), v = slave_slide(one, 1.0);
+  const Eigen::MatrixXd H1 = dense_hessian(model, u1);
+  EXPECT_LT((H1 - dense_hessian(exact, u1)).cwiseAbs().maxCoeff(), 1e-13 * H1.cwiseAbs().maxCoeff());
+  const double r1 = std::hypot(c1, kAlpha), r2 = std::hypot(c2, kAlpha);
+  const double z1 = c1 / r1, z2 = std::clamp(z1 + (1 - z1 * z1) * (c2 - c1) / r1, -1.0, 1.0);
+  const Eigen::MatrixXd H2 = dense_hessian(model, u2);
+  const double along = v.dot(H2 * v), along_exact = v.dot(dense_hessian(exact, u2) * v);
+  EXPECT_NEAR(along, wt * (1 - z2 * c2 / r2) / r2, 1e-10 * wt / r2);
+  EXPECT_NEAR(along_exact, wt * kAlpha * kAlpha / (r2 * r2 * r2), 1e-10 * wt / r2);
+  EXPECT_GT(along, 100 * along_exact);
+  // The same point again: z is kept, the model unchanged; the gradient is the exact one.
+  EXPECT_EQ((dense_hessian(model, u2) - H2).cwiseAbs().maxCoeff(), 0.0);
+  VectorXd g = VectorXd::Zero(u2.size()), g_exact = VectorXd::Zero(u2.size());
+  model.add_gradient(u2, g);
+  exact.add_gradient(u2, g_exact);
+  EXPECT_EQ((g - g_exact).cwiseAbs().maxCoeff(), 0.0);
+}
+
+// Along any sequence of states the model stays symmetric and positive semidefinite (|z| ≤ 1).
+TEST_P(FrictionTermCase, PrimalDualModelIsPositiveSemidefinite) {
+  const Interface s = interface();
+  const Index n = s.dofs.num_dofs();
+  const VectorXd u0 = random_vector(n, 0.01, 17);
+  FrictionTerm model = make_term(s, random_tau(s.points.size(), 8), u0);
+  model.set_hessian_model(FrictionHessian::kPrimalDual);
+  for (unsigned k = 0; k < 6; ++k) {
+    const VectorXd u = u0 + random_vector(n, 10 * kAlpha, 40 + k);
+    const Eigen::MatrixXd H = dense_hessian(model, u);
+    const double scale = H.cwiseAbs().maxCoeff();
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT((H - H.transpose()).cwiseAbs().maxCoeff(), 1e-14 * scale);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H, Eigen::EigenvaluesOnly);
+    EXPECT_GE(eig.eigenvalues().minCoeff(), -1e-12 * scale) << "state " << k;
   }
 }
 
