@@ -67,6 +67,7 @@ struct BlockCase {
   bool shear_laterals = false;
   double coulomb_tolerance = 1e-6;
   std::string coulomb_update;  ///< [contact_solver] coulomb_update; empty: the default
+  std::string extra_body;      ///< more [[body.*]] tables of the block (TOML)
 };
 
 std::string block_toml(const BlockCase& b) {
@@ -77,7 +78,7 @@ std::string block_toml(const BlockCase& b) {
     << "material = { E = " << num(kE) << ", nu = 0.0 }\n"
     << "[[body.pressure]]\nboundary = \"top\"\npressure = " << num(kP) << "\nfactors = "
     << list(std::vector<double>(b.U.size(), 1.0)) << "\n"
-    << "[[body.dirichlet]]\nboundary = \"top\"\nux = 1.0\n";
+    << "[[body.dirichlet]]\nboundary = \"top\"\nux = 1.0\n" << b.extra_body;
   if (b.shear_laterals) {
     std::vector<double> T;
     for (double u : b.U) T.push_back(kG * std::min(u, kUStar) / kH);
@@ -456,6 +457,35 @@ TEST(V4FrictionLaw, ThresholdsFollowingTheOptimizerReachTheSameFixedPointInFewer
   EXPECT_LE(2 * solves[0], solves[1]) << "solves of the last step: " << solves[0] << " following, " << solves[1]
                                       << " between solves";
   EXPECT_GT(tau0.maxCoeff(), 0.0);
+}
+
+// The block with its left side held vertically (uy = 0): the bottom-left node's normal is along a fixed DOF. Its
+// weighted gap still holds the next node's free DOFs, so its multiplier is determined, and its force on the
+// fixed DOF is part of the pressure the loop reads there (contact_forces.hpp). Thresholds that follow the interior
+// point read the same force (GeometrySubproblem::add_fixed_dof_force): the loop converges in as few solves as
+// on the free block, to the answer of thresholds updated between solves. Were the follower to read zero force on
+// the fixed DOF, it would set that node's τ from a smaller pressure than the loop's, and the loop would stagnate
+// at their difference.
+TEST(V4FrictionLaw, ThresholdsFollowTheForceOnAFixedDofAsTheLoopReadsIt) {
+  BlockCase b;
+  b.n = 4;
+  b.U = ramp(2e-3, 1e-2);
+  b.coulomb_tolerance = 1e-9;
+  b.extra_body = "[[body.dirichlet]]\nboundary = \"left\"\nuy = 0.0\n";
+  std::unique_ptr<SolvedCase> c[2];
+  const char* updates[2] = {"inside_optimizer", "between_solves"};
+  for (int k = 0; k < 2; ++k) {
+    b.coulomb_update = updates[k];
+    c[k] = solve_block(b, std::string("held_left_") + updates[k]);
+  }
+  for (std::size_t s = 0; s < c[0]->coulomb_iterations.size(); ++s)
+    EXPECT_LE(c[0]->coulomb_iterations[s], 1) << "step " << s + 1;
+  const double u_size = c[1]->u.lpNorm<Eigen::Infinity>();
+  EXPECT_LT((c[0]->u - c[1]->u).lpNorm<Eigen::Infinity>(), 1e-8 * u_size);
+  const Eigen::VectorXd& tau0 = c[0]->report.friction_state.nodal_tau[0];
+  const Eigen::VectorXd& tau1 = c[1]->report.friction_state.nodal_tau[0];
+  EXPECT_LT((tau0 - tau1).lpNorm<Eigen::Infinity>(), 1e-8 * tau1.lpNorm<Eigen::Infinity>());
+  EXPECT_GT(tau0.minCoeff(), 0.0) << "every node, the held one too, carries a pressure";
 }
 
 // f. Thresholds followed inside the dense primal interior point end where the Coulomb loop reads them: a pad

@@ -130,11 +130,22 @@ VectorXd GeometrySubproblem::surface_force(const VectorXd& x, const VectorXd& mu
   return f;
 }
 
+void GeometrySubproblem::add_fixed_dof_force(const VectorXd& multipliers, VectorXd& force) const {
+  const VectorXd multiplier_force = last_.A.transpose() * multipliers;
+  const std::vector<Index>& free_index = problem_.free_index();
+  for (std::size_t d = 0; d < free_index.size(); ++d)
+    if (free_index[d] < 0) force[static_cast<Index>(d)] = multiplier_force[static_cast<Index>(d)];
+}
+
 std::function<bool(const VectorXd&, const VectorXd&)> GeometrySubproblem::follow_hook(CondensedProblem* condensed) {
   return [this, condensed](const VectorXd& y, const VectorXd& multipliers) {
-    const bool changed =
-        condensed ? friction_->follower->follow(condensed->surface_displacement(y), condensed->surface_force(y, multipliers))
-                  : friction_->follower->follow(problem_.expand(y), surface_force(y, multipliers));
+    // The force the residual of the Coulomb loop reads (CoulombThresholds::residual): the follower's τ and the
+    // loop's must be the same function of the answer, or the loop stalls at their difference (at a node whose
+    // interface normal has a component along a fixed DOF: the multipliers' force there).
+    VectorXd force = condensed ? condensed->surface_force(y, multipliers) : surface_force(y, multipliers);
+    add_fixed_dof_force(multipliers, force);
+    const bool changed = friction_->follower->follow(
+        condensed ? condensed->surface_displacement(y) : problem_.expand(y), force);
     if (!changed) return false;
     for (std::size_t p = 0; p < friction_terms_.size(); ++p) {
       if (!friction_terms_[p] || contacts_.pairs[p].friction != FrictionLaw::kCoulomb) continue;

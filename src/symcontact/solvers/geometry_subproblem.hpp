@@ -101,6 +101,9 @@ class GeometrySubproblem {
   std::function<bool(const VectorXd&, const VectorXd&)> follow_hook(CondensedProblem* condensed);
   /// The bodies' force on the surfaces at the reduced problem's x (see the .cpp).
   VectorXd surface_force(const VectorXd& x, const VectorXd& multipliers);
+  /// Sets the fixed DOFs of `force` (full-DOF) to the multipliers' force Aᵀλ there, as the solve's contact
+  /// force has it (contact_forces.hpp), so that a pressure read at a node with a fixed DOF is the same number.
+  void add_fixed_dof_force(const VectorXd& multipliers, VectorXd& force) const;
   /// The free DOFs of the start of the load step, moved as at its first solve: the primal's retry with friction.
   VectorXd step_start() const;
   /// The primal method on the whole reduced problem for the condensed one `p` (SparseAlternative::kOptimiser):
