@@ -59,7 +59,6 @@ struct Case {
   double geometry_tolerance;  ///< 0: the example's own solver tolerances
   double agreement;          ///< bound on the relative differences
   bool frictionless = true;  ///< the last solve of the run has no friction term (so it is a dual one)
-  bool two_sided = false;    ///< a symmetric pair: the primal is left to IPOPT (SubproblemSolver::kPrimalInteriorPoint)
 };
 
 class CondensationChangesNothing : public ::testing::TestWithParam<Case> {};
@@ -144,8 +143,8 @@ TEST_P(DualOptimizerChangesNothing, SameDisplacementsAndContactForces) {
 }
 
 // The primal's two optimisers, the dense interior point (solvers/dense_primal_interior_point.hpp) and IPOPT,
-// against each other, the interior point's path taken by the last solve where the rows are independent (with
-// friction terms on the dragged block; symmetric pairs stay with IPOPT).
+// against each other, the interior point's path taken by the last solve (with friction terms on the dragged
+// block; on the 2D symmetric pairs too: pairs_on_dense_primal()).
 class PrimalOptimizerChangesNothing : public ::testing::TestWithParam<Case> {};
 
 TEST_P(PrimalOptimizerChangesNothing, SameDisplacementsAndContactForces) {
@@ -154,8 +153,7 @@ TEST_P(PrimalOptimizerChangesNothing, SameDisplacementsAndContactForces) {
   auto ipm = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "primal_interior_point"), dir);
   auto ipopt = solve_case(prepare(dir, p.example, p.geo, p.size, p.geometry_tolerance, true, "primal_ipopt"), dir);
   EXPECT_EQ(ipm->report.dual_solves, 0);
-  EXPECT_EQ(ipm->report.ipopt_status.find("primal interior point") != std::string::npos, !p.two_sided)
-      << ipm->report.ipopt_status;
+  EXPECT_NE(ipm->report.ipopt_status.find("primal interior point"), std::string::npos) << ipm->report.ipopt_status;
   EXPECT_EQ(ipopt->report.ipopt_status.find("interior point"), std::string::npos) << ipopt->report.ipopt_status;
   ASSERT_EQ(ipm->history.size(), ipopt->history.size());
   expect_agreement(p, *ipm, *ipopt);
@@ -212,11 +210,11 @@ TEST_P(DualWarmStartChangesNothing, SameDisplacementsAndContactForces) {
 }
 
 const auto kCases = ::testing::Values(Case{"hertz_2d", "cylinder_on_plane.geo", "h = 0.01;", 1e-10, 1e-6},
-                                           Case{"hertz_2d", "two_cylinders.geo", "h = 0.01;", 1e-10, 1e-6, true, true},
+                                           Case{"hertz_2d", "two_cylinders.geo", "h = 0.01;", 1e-10, 1e-6},
                                            // Coulomb: the fixed points cannot be tightened much below the example's 1e-6
                                            // (they stall near 1e-8 and 5e-7); what 1e-6 leaves, measured
                                            // at h = 0.05: 2.9e-5 in u, 3e-6 in the forces.
-                                           Case{"inclined_2d", "inclined.geo", "h = 0.1;", 0.0, 1e-4, false, true},
+                                           Case{"inclined_2d", "inclined.geo", "h = 0.1;", 0.0, 1e-4, false},
                                            Case{"hertz_3d", "sphere_on_plane.geo", "h = 0.08;", 1e-10, 1e-6});
 
 std::string case_name(const ::testing::TestParamInfo<Case>& i) {
@@ -231,7 +229,7 @@ INSTANTIATE_TEST_SUITE_P(Examples, DualSolveChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, DualOptimizerChangesNothing, kCases, case_name);
 INSTANTIATE_TEST_SUITE_P(Examples, PrimalOptimizerChangesNothing, kCases, case_name);
 // Coulomb friction against a rigid plane (V4's block, dragged in ten steps), the example's own tolerances.
-const auto kFrictionBlock = ::testing::Values(Case{"friction_block", "block.geo", "n = 4;", 0.0, 1e-4, false, false});
+const auto kFrictionBlock = ::testing::Values(Case{"friction_block", "block.geo", "n = 4;", 0.0, 1e-4, false});
 INSTANTIATE_TEST_SUITE_P(Friction, PrimalOptimizerChangesNothing, kFrictionBlock, case_name);
 INSTANTIATE_TEST_SUITE_P(Friction, WarmStartChangesNothing, kFrictionBlock, case_name);
 // Curved obstacles, so that each load step takes several geometry iterations on the same rows.

@@ -7,10 +7,10 @@
 ///            add the friction terms of the thresholds τ at U_n (friction_state.hpp);
 ///            condense onto the contact DOFs when the bodies' energy is quadratic (condensation_cache.hpp);
 ///            U_{n+1} = argmin E(U) + j_τ(U) subject to A_n U + b_n ≥ 0 (subproblem.hpp): the primal by the
-///              dense primal interior point (condensed, independent rows) or IPOPT (primal_subproblem.hpp) or,
-///              condensed and frictionless, the dual by the dense interior point or IPOPT
-///              (dual_subproblem.hpp), each warm-started from the previous multipliers when the constraint
-///              rows match;
+///              dense primal interior point (condensed; independent rows, any in 2D) or IPOPT
+///              (primal_subproblem.hpp) or, condensed and frictionless, the dual by the dense interior point
+///              or IPOPT (dual_subproblem.hpp), each warm-started from the previous multipliers when the
+///              constraint rows match;
 ///            remove the interior point's barrier offset (polish_strategy.hpp);
 ///            accelerate while the map is smooth (anderson_acceleration.hpp);
 ///   until    ‖U_{n+1} − U_n‖∞ / ‖U_{n+1}‖∞ < tolerance.

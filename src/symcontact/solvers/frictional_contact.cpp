@@ -53,11 +53,12 @@ struct CompleteOnExit {
 };
 
 /// Whether the thresholds follow the optimiser (CoulombUpdate::kInsideOptimizer): where the primal interior
-/// point solves the subproblems of linear-elastic bodies, condensed or not, the only optimiser that calls
-/// Subproblem::follow.
-bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, const FrictionalOptions& o) {
+/// point solves the subproblems of linear-elastic bodies (condensed or not; the condensed ones of 2D pairs:
+/// pairs_on_dense_primal()), the only optimiser that calls Subproblem::follow.
+bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, int dim, const FrictionalOptions& o) {
   return o.coulomb_update == CoulombUpdate::kInsideOptimizer && energy.hessian_is_constant() &&
-         dense_primal_first(contacts, o.contact.subproblem_solver);
+         (dense_primal_first(contacts, o.contact.subproblem_solver) ||
+          pairs_on_dense_primal(contacts, dim, o.contact.subproblem_solver));
 }
 
 }  // namespace
@@ -70,7 +71,7 @@ SolveReport solve_frictional_contact(const EnergyTerm& energy, const FixedDofs& 
                                    ? proportional_increment(fixed, u, previous->u_start)
                                    : 0.0;
   CoulombThresholds coulomb(contacts, dofs, u, previous, s_extrapolate, log);
-  const bool follows = follows_optimizer(energy, contacts, options);
+  const bool follows = follows_optimizer(energy, contacts, dofs.dim(), options);
   if (follows) coulomb.follow_iterates(kFollowTolerance * options.coulomb_tolerance);
   const VectorXd u_start = u;
   // Without Coulomb pairs there are no thresholds to start cold: u alone is extrapolated.

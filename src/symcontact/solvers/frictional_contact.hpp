@@ -25,9 +25,9 @@ enum class CoulombUpdate {
   /// Between contact solves only: each solve is a regularised-Tresca problem with τ fixed (Algorithm 1).
   kBetweenSolves,
   /// Also inside each solve, between the iterations of the dense primal interior point where it solves the
-  /// subproblem (condensed, independent rows: subproblem_solver.hpp), from the pressure of its iterate, so that
-  /// one solve gives a nearly consistent τ (coulomb_thresholds.hpp). The fixed point, its test and the outer
-  /// loop are those of kBetweenSolves: only the number of solves and iterations changes.
+  /// subproblem (condensed, independent rows or a 2D pair: subproblem_solver.hpp), from the pressure of its
+  /// iterate, so that one solve gives a nearly consistent τ (coulomb_thresholds.hpp). The fixed point, its test
+  /// and the outer loop are those of kBetweenSolves: only the number of solves and iterations changes.
   kInsideOptimizer,
 };
 

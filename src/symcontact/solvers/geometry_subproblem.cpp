@@ -31,11 +31,13 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       log_(log), friction_(friction), total_(energy), problem_(total_, fixed, dofs.num_dofs()),
       bulk_(energy, fixed, dofs.num_dofs()), condense_(options.static_condensation && energy.hessian_is_constant()),
       dual_(dual_method(options.subproblem_solver, options.warm_start)),
-      primal_(primal_method(contacts, options.subproblem_solver, options.warm_start)),
+      primal_(primal_method(contacts, dofs.dim(), options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
       sparse_alternative_(sparse_alternative(energy, contacts, options)),
-      friction_hessian_(dense_primal_first(contacts, options.subproblem_solver) ? FrictionHessian::kPrimalDual
-                                                                                 : FrictionHessian::kExact) {
+      friction_hessian_(dense_primal_first(contacts, options.subproblem_solver) ||
+                                pairs_on_dense_primal(contacts, dofs.dim(), options.subproblem_solver)
+                            ? FrictionHessian::kPrimalDual
+                            : FrictionHessian::kExact) {
   // Linear elasticity: K_ff assembled once (bulk_ caches it) and the bodies' energy its quadratic form, the friction
   // terms at each call.
   if (energy.hessian_is_constant())

@@ -53,7 +53,8 @@ IpoptResult on_active_set(const Subproblem& p, const VectorXd& x, const VectorXd
 SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const SubproblemWarmStart& warm,
                                               const Logger& log, PhaseTimes& times) {
   int failed = 0;
-  if ((p.condensed || p.quadratic_bodies) && p.target.num_equalities() == 0 && !p.target.lower_bounds()) {
+  const bool takes = p.condensed || (p.quadratic_bodies && forms_ == PrimalForms::kCondensedAndUncondensed);
+  if (takes && p.target.num_equalities() == 0 && !p.target.lower_bounds()) {
     ScopedPhase t(times, "optimizer");
     DensePrimalOptions o;
     // IPOPT's tolerance, also when the problem file sets it ([ipopt] tol).

@@ -27,9 +27,22 @@ class PrimalIpopt : public SubproblemMethod {
                            PhaseTimes& times) override;
 };
 
+/// Which forms of the subproblem the primal interior point takes (the others go to IPOPT).
+enum class PrimalForms {
+  /// The condensed problem, and the uncondensed one of linear-elastic bodies (a sparse Newton matrix).
+  kCondensedAndUncondensed,
+  /// The condensed problem only (symmetric pairs and self-contact): on their uncondensed problem the
+  /// active-set Newton cannot close the nearly dependent rows of both sides of one zone (its method of
+  /// multipliers stalled on every solve of the 3D clamped plates at 1e4 DOFs), and each interior-point
+  /// iteration factorises K_ff + AᵀDA with the mortar rows' wide coupling (6 floors a factorisation there).
+  kCondensedOnly,
+};
+
 class PrimalInteriorPoint : public PrimalIpopt {
  public:
-  explicit PrimalInteriorPoint(WarmStart warm = WarmStart::kActiveSet) : warm_(warm) {}
+  explicit PrimalInteriorPoint(WarmStart warm = WarmStart::kActiveSet,
+                               PrimalForms forms = PrimalForms::kCondensedAndUncondensed)
+      : warm_(warm), forms_(forms) {}
   SubproblemSolution solve(const Subproblem& p, const SubproblemWarmStart& warm, const Logger& log,
                            PhaseTimes& times) override;
 
@@ -40,6 +53,7 @@ class PrimalInteriorPoint : public PrimalIpopt {
                                 SubproblemSolution& s, const Logger& log) const;
 
   WarmStart warm_;
+  PrimalForms forms_;
 };
 
 }  // namespace symcontact

@@ -24,8 +24,17 @@ bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice) {
   return interior_point && independent_rows(contacts);
 }
 
-std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm) {
+bool pairs_on_dense_primal(const ContactSet& contacts, int dim, SubproblemSolver choice) {
+  const bool interior_point =
+      choice == SubproblemSolver::kPrimalInteriorPoint || choice == SubproblemSolver::kDualInteriorPoint;
+  return interior_point && !independent_rows(contacts) && dim == 2;
+}
+
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, int dim, SubproblemSolver choice,
+                                           WarmStart warm) {
   if (dense_primal_first(contacts, choice)) return std::make_unique<PrimalInteriorPoint>(warm);
+  if (pairs_on_dense_primal(contacts, dim, choice))
+    return std::make_unique<PrimalInteriorPoint>(warm, PrimalForms::kCondensedOnly);
   return std::make_unique<PrimalIpopt>();
 }
 

@@ -16,11 +16,11 @@ class PrimalIpopt;
 /// How the subproblem of each geometry iteration is solved (subproblem.hpp). Every choice gives the same
 /// solution to the optimiser's tolerance; only the cost changes. The dual applies to a condensed problem
 /// without friction terms; any other subproblem is solved by the primal whatever the choice: with the
-/// "interior_point" choices a condensed one with independent rows (no symmetric pair, no self-contact) by the
-/// dense primal interior point of dense_primal_interior_point.hpp (one LAPACK Cholesky of the |B| × |B| normal
-/// matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol, is its tolerance), by IPOPT where that
-/// fails, where the problem is not condensed and where the rows are not independent; with the "ipopt"
-/// choices by IPOPT.
+/// "interior_point" choices a condensed one with independent rows (no symmetric pair, no self-contact; in 2D
+/// any rows: pairs_on_dense_primal()) by the dense primal interior point of dense_primal_interior_point.hpp
+/// (one LAPACK Cholesky of the |B| × |B| normal matrix per iteration; IpoptOptions::tolerance, or [ipopt] tol,
+/// is its tolerance), by IPOPT where that fails, where the problem is not condensed and where the rows are
+/// not independent in 3D; with the "ipopt" choices by IPOPT.
 enum class SubproblemSolver {
   /// IPOPT on the condensed (or whole) displacements, with m inequalities and a dense |B| × |B| KKT
   /// factorisation at each of its iterations (primal_subproblem.hpp), or where that costs more, with friction,
@@ -127,11 +127,21 @@ std::unique_ptr<DualIpopt> dual_method(SubproblemSolver choice, WarmStart warm);
 /// "interior_point" choices, rows independent); primal_method() gives it then.
 bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice);
 
+/// Whether, under `choice`, the condensed primal subproblems of the symmetric pairs and self-contact of a
+/// `dim`-dimensional problem go to the dense primal interior point (PrimalForms::kCondensedOnly), the Coulomb
+/// thresholds following its iterates: in 2D, where the contact curves keep B small and every subproblem
+/// condensed (the 2D clamped plates: 4 solves for the 4 steps where IPOPT, thresholds updated between solves,
+/// took 14–21; docs/performance.md). In 3D the cost rule gives the clamped plates' subproblems to IPOPT on the
+/// uncondensed problem from 4e3 DOFs, where thresholds that follow would cost IPOPT its inexact solves (1.5
+/// times the time at 1e4 DOFs): they stay with IPOPT.
+bool pairs_on_dense_primal(const ContactSet& contacts, int dim, SubproblemSolver choice);
+
 /// The primal method of a solve under `choice` (primal_subproblem.hpp): with the "interior_point" choices the
-/// dense interior point first where the rows are independent (on the nearly dependent rows of a symmetric pair
-/// it took five times IPOPT's iterations and 3.6 times its time: docs/performance.md, clamped-plates), IPOPT
-/// where it fails; IPOPT otherwise.
+/// dense interior point first where the rows are independent, on the condensed problem only where
+/// pairs_on_dense_primal(), IPOPT where it fails; IPOPT otherwise (the active-set Newton on the uncondensed
+/// problem cannot close the nearly dependent rows of a symmetric pair: PrimalForms).
 /// `warm`: how the dense interior point starts where it has the previous solution's multipliers.
-std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, SubproblemSolver choice, WarmStart warm);
+std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, int dim, SubproblemSolver choice,
+                                           WarmStart warm);
 
 }  // namespace symcontact
