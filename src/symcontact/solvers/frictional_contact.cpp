@@ -53,12 +53,11 @@ struct CompleteOnExit {
 };
 
 /// Whether the thresholds follow the optimiser (CoulombUpdate::kInsideOptimizer): where the primal interior
-/// point solves the subproblems of linear-elastic bodies (condensed or not; the condensed ones of 2D pairs:
-/// pairs_on_dense_primal()), the only optimiser that calls Subproblem::follow.
+/// point solves the subproblems of linear-elastic bodies (primal_interior_point_first(): condensed or not; the
+/// condensed ones of 2D pairs), the only optimiser that calls Subproblem::follow.
 bool follows_optimizer(const EnergyTerm& energy, const ContactSet& contacts, int dim, const FrictionalOptions& o) {
   return o.coulomb_update == CoulombUpdate::kInsideOptimizer && energy.hessian_is_constant() &&
-         (dense_primal_first(contacts, o.contact.subproblem_solver) ||
-          pairs_on_dense_primal(contacts, dim, o.contact.subproblem_solver));
+         primal_interior_point_first(contacts, dim, o.contact.subproblem_solver);
 }
 
 }  // namespace

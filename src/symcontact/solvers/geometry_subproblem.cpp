@@ -34,8 +34,7 @@ GeometrySubproblem::GeometrySubproblem(const EnergyTerm& energy, const FixedDofs
       primal_(primal_method(contacts, dofs.dim(), options.subproblem_solver, options.warm_start)),
       follows_(friction && friction->follower),
       sparse_alternative_(sparse_alternative(energy, contacts, options)),
-      friction_hessian_(dense_primal_first(contacts, options.subproblem_solver) ||
-                                pairs_on_dense_primal(contacts, dofs.dim(), options.subproblem_solver)
+      friction_hessian_(primal_interior_point_first(contacts, dofs.dim(), options.subproblem_solver)
                             ? FrictionHessian::kPrimalDual
                             : FrictionHessian::kExact) {
   // Linear elasticity: K_ff assembled once (bulk_ caches it) and the bodies' energy its quadratic form, the friction

@@ -30,6 +30,10 @@ bool pairs_on_dense_primal(const ContactSet& contacts, int dim, SubproblemSolver
   return interior_point && !independent_rows(contacts) && dim == 2;
 }
 
+bool primal_interior_point_first(const ContactSet& contacts, int dim, SubproblemSolver choice) {
+  return dense_primal_first(contacts, choice) || pairs_on_dense_primal(contacts, dim, choice);
+}
+
 std::unique_ptr<PrimalIpopt> primal_method(const ContactSet& contacts, int dim, SubproblemSolver choice,
                                            WarmStart warm) {
   if (dense_primal_first(contacts, choice)) return std::make_unique<PrimalInteriorPoint>(warm);

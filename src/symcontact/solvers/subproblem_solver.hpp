@@ -136,6 +136,11 @@ bool dense_primal_first(const ContactSet& contacts, SubproblemSolver choice);
 /// times the time at 1e4 DOFs): they stay with IPOPT.
 bool pairs_on_dense_primal(const ContactSet& contacts, int dim, SubproblemSolver choice);
 
+/// Whether primal_method() gives the dense primal interior point for some subproblems of a run: dense_primal_first()
+/// or pairs_on_dense_primal(). Where it does, its Newton steps take the primal-dual friction curvature and the
+/// Coulomb thresholds may follow its iterates.
+bool primal_interior_point_first(const ContactSet& contacts, int dim, SubproblemSolver choice);
+
 /// The primal method of a solve under `choice` (primal_subproblem.hpp): with the "interior_point" choices the
 /// dense interior point first where the rows are independent, on the condensed problem only where
 /// pairs_on_dense_primal(), IPOPT where it fails; IPOPT otherwise (the active-set Newton on the uncondensed
