@@ -319,8 +319,12 @@ std::vector<Penetration> find_penetrations(const ContactSet& contacts, const std
   return out;
 }
 
-std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
-                                                      const VectorXd& u) {
+namespace {
+
+/// Per family, the node of largest depth −g_i(u) / s_i over the rows i of `lin` that `counts` selects.
+template <class Counts>
+std::vector<Penetration> deepest_rows(const ContactSet& contacts, const ContactLinearization& lin, const VectorXd& u,
+                                      Counts counts) {
   const VectorXd g = lin.A * u + lin.b;
   const auto& families = contacts.families();
   std::vector<Penetration> out(families.size());
@@ -328,7 +332,7 @@ std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts
   for (Index r = 0; r < g.size(); ++r) {
     const int f = lin.row_family[r];
     const ContactFamily& fam = families[f];
-    if (contacts.pairs[fam.pair].geometry != ContactGeometry::kReference || !(lin.row_support[r] > 0)) continue;
+    if (!counts(r) || !(lin.row_support[r] > 0)) continue;
     if (h[f].size() == 0) h[f] = nodal_sizes(contacts.surfaces[fam.slave]);
     Penetration& deepest = out[f];
     const Index k = lin.row_node[r];
@@ -339,6 +343,33 @@ std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts
   }
   out.erase(std::remove_if(out.begin(), out.end(), [](const Penetration& p) { return p.node < 0; }), out.end());
   return out;
+}
+
+}  // namespace
+
+std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
+                                                      const VectorXd& u) {
+  return deepest_rows(contacts, lin, u, [&](Index r) {
+    return contacts.pairs[contacts.families()[lin.row_family[r]].pair].geometry == ContactGeometry::kReference;
+  });
+}
+
+std::vector<char> held_rows(const ContactLinearization& lin, const std::vector<char>& is_fixed) {
+  std::vector<char> held(static_cast<std::size_t>(lin.A.rows()), 1);
+  std::vector<char> touched(held.size(), 0);
+  for (int col = 0; col < lin.A.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator e(lin.A, col); e; ++e) {
+      if (e.value() == 0.0) continue;
+      touched[static_cast<std::size_t>(e.row())] = 1;
+      if (!is_fixed[static_cast<std::size_t>(col)]) held[static_cast<std::size_t>(e.row())] = 0;
+    }
+  for (std::size_t r = 0; r < held.size(); ++r) held[r] = held[r] && touched[r];
+  return held;
+}
+
+std::vector<Penetration> find_held_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
+                                                const VectorXd& u, const std::vector<char>& held) {
+  return deepest_rows(contacts, lin, u, [&](Index r) { return held[static_cast<std::size_t>(r)] != 0; });
 }
 
 }  // namespace symcontact

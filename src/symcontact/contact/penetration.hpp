@@ -75,6 +75,17 @@ std::vector<Penetration> find_penetrations(const ContactSet& contacts, const std
 std::vector<Penetration> find_linearized_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
                                                       const VectorXd& u);
 
+/// The rows of `lin` whose every DOF is prescribed (`is_fixed`, one entry per DOF): a node held by Dirichlet
+/// conditions along its contact normal (and, in a pair, the opposite side's nodes too). Their gaps A u + b
+/// are the prescribed displacements' alone: no contact force moves them, and their multipliers take whatever
+/// part of the supports' reactions the solve leaves them (an overconstraint, as in any FE code).
+std::vector<char> held_rows(const ContactLinearization& lin, const std::vector<char>& is_fixed);
+
+/// For every family, the node of largest depth −g_i(u) / s_i among the `held` rows (held_rows()), measured as
+/// find_linearized_penetrations() measures its rows.
+std::vector<Penetration> find_held_penetrations(const ContactSet& contacts, const ContactLinearization& lin,
+                                                const VectorXd& u, const std::vector<char>& held);
+
 /// Signed distance of each point (columns of `points`, dim × n) to the nearest facet of surface `s` (node
 /// positions x, dim × num_nodes), found over the whole surface with a bounding-volume hierarchy, the sign
 /// by that facet's unit normal (facet_normal()) at the closest point; NaN where the closest point is not

@@ -31,7 +31,8 @@ void check_finite(const Model& model, const VectorXd& u, const VectorXd& g,
 }
 
 /// "contact 'C': node N of 'S' is D inside body 'B' (P % of the element size h; ...)": what and where.
-std::string describe(const Model& model, const Penetration& p, const char* inside) {
+std::string describe(const Model& model, const Penetration& p, const char* inside,
+                     double tolerance = kPenetrationRelativeTolerance) {
   const ContactSet& cs = model.contacts();
   const ContactSurface& slave = cs.surfaces[p.slave];
   std::string into = "the obstacle";
@@ -44,7 +45,7 @@ std::string describe(const Model& model, const Penetration& p, const char* insid
   s << "contact '" << cs.pairs[p.pair].name << "': "
     << model.bodies()[slave.body]->mesh.node_label(slave.nodes[p.node]) << " of '" << slave.name << "' is "
     << p.depth << (p.passed_through ? " behind " : inside) << into << " (" << 100.0 * p.depth / p.size
-    << " % of the element size " << p.size << "; at most " << 100.0 * kPenetrationRelativeTolerance
+    << " % of the element size " << p.size << "; at most " << 100.0 * tolerance
     << " % is tolerated)";
   return s.str();
 }
@@ -87,6 +88,39 @@ double check_penetration(const Model& model, const VectorXd& u, const ContactSta
     worst = std::max(worst, p.ratio());
   }
   return worst;
+}
+
+/// Contact rows whose every DOF is prescribed (held_rows()): a depth beyond kHeldDepthTolerance × h is the
+/// prescribed displacements' own (an error: contact cannot push the node out); where such a row carries a
+/// force, the force is the supports' reaction, not a contact pressure (a warning, once per pair).
+void check_held_rows(const Model& model, const VectorXd& u, const FixedDofs& fixed, const ContactState& contact,
+                     std::vector<std::string>& warnings) {
+  std::vector<Index> free_index;
+  fixed.free_numbering(u.size(), free_index);
+  std::vector<char> is_fixed(free_index.size());
+  for (std::size_t d = 0; d < free_index.size(); ++d) is_fixed[d] = free_index[d] < 0;
+  const ContactLinearization& lin = contact.linearization;
+  const std::vector<char> held = held_rows(lin, is_fixed);
+  for (const Penetration& p : find_held_penetrations(model.contacts(), lin, u, held))
+    if (p.depth > kHeldDepthTolerance * p.size)
+      throw SolveError("check of the answer: " + describe(model, p, " inside ", kHeldDepthTolerance) +
+                       ", held there by its Dirichlet conditions: every DOF of its gap is prescribed, so that no "
+                       "contact force can move it; change the prescribed displacements, or leave the node out "
+                       "of the contact surface");
+  if (contact.multipliers.size() != static_cast<Index>(held.size())) return;
+  const ContactSet& cs = model.contacts();
+  const double force_floor = 1e-6 * (contact.multipliers.size() ? contact.multipliers.cwiseAbs().maxCoeff() : 0.0);
+  std::vector<char> warned(cs.pairs.size(), 0);
+  for (Index r = 0; r < static_cast<Index>(held.size()); ++r) {
+    if (!held[static_cast<std::size_t>(r)] || !(std::abs(contact.multipliers[r]) > force_floor)) continue;
+    const ContactFamily& fam = cs.families()[lin.row_family[r]];
+    if (warned[fam.pair]++) continue;
+    const ContactSurface& slave = cs.surfaces[fam.slave];
+    warnings.push_back("contact '" + cs.pairs[fam.pair].name + "': " +
+                       model.bodies()[slave.body]->mesh.node_label(slave.nodes[lin.row_node[r]]) + " of '" +
+                       slave.name + "' is held along its contact normal by Dirichlet conditions and in contact: "
+                       "the contact force reported there is the support's reaction, not a contact pressure");
+  }
 }
 
 /// The floor of body b's force scale (step_checks.hpp): kRoundOffStrain × (λ + 2μ) × L^(dim−1), L the
@@ -155,7 +189,10 @@ StepCheckFigures check_step(const Model& model, const VectorXd& u, const FixedDo
   }
   check_finite(model, u, g, contact);
   StepCheckFigures f;
-  if (contact) f.penetration = check_penetration(model, u, *contact, f.warnings);
+  if (contact) {
+    f.penetration = check_penetration(model, u, *contact, f.warnings);
+    check_held_rows(model, u, fixed, *contact, f.warnings);
+  }
   f.equilibrium = check_equilibrium(model, u, g, fixed, contact);
   return f;
 }

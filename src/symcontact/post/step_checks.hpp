@@ -24,6 +24,11 @@
 ///    stress-free) would be measured against round-off; the elastic forces' own round-off,
 ///    about 1e-16 (λ + 2μ) L_b^(dim−1), stays well below 1e-6 F_b.
 ///
+/// 4. **Nodes held into the other side**: a contact row whose every DOF is prescribed (a node held by
+///    Dirichlet conditions along its contact normal) has the gap the prescribed displacements give it, which
+///    contact cannot change; deeper than kHeldDepthTolerance × h it is an error naming the node. Where such a
+///    row is in contact, its multiplier is the supports' reaction there (an overconstraint): a warning.
+///
 /// A failed check throws SolveError naming the step, the body or pair, the node and the measured figure;
 /// the run turns it into exit 3 with the finished steps kept.
 
@@ -38,6 +43,9 @@ namespace symcontact {
 /// ‖r_b‖₂ / F above which a body is not in equilibrium (see the file comment). The solvers balance forces to
 /// round-off on the condensed and dual paths and to the optimiser's tolerance otherwise.
 constexpr double kEquilibriumRelativeTolerance = 1e-6;
+/// The depth, over the local element size, beyond which a node held by its Dirichlet conditions counts as held
+/// inside the other side (check 4): its gap is exact, so only round-off is tolerated.
+constexpr double kHeldDepthTolerance = 1e-8;
 /// The strain whose force across a body is the floor of its force scale (see the file comment).
 constexpr double kRoundOffStrain = 1e-8;
 

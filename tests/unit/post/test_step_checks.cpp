@@ -1,6 +1,7 @@
 // Tests of the equilibrium check of a load step's answer (src/symcontact/post/step_checks.hpp): a solved
 // step passes; the same answer moved off equilibrium fails, also when the step's forces are all round-off
-// and the force scale is the body's floor F_b = kRoundOffStrain (λ + 2μ) L^(dim−1).
+// and the force scale is the body's floor F_b = kRoundOffStrain (λ + 2μ) L^(dim−1). A contact surface whose
+// nodes are all held by Dirichlet conditions: held into the obstacle it fails, held on it in contact it warns.
 
 #include "symcontact/post/step_checks.hpp"
 
@@ -12,6 +13,7 @@
 #include "support/problem_snippet.hpp"
 #include "support/rectangle_msh.hpp"
 #include "support/temp_folder.hpp"
+#include "symcontact/contact/contact_state.hpp"
 #include "symcontact/core/error.hpp"
 #include "symcontact/solvers/equilibrium_solver.hpp"
 
@@ -62,6 +64,46 @@ TEST(StepChecks, WithoutLoadsTheFloorStillCatchesAMovedNode) {
     FAIL() << "expected a SolveError";
   } catch (const SolveError& e) {
     EXPECT_NE(std::string(e.what()).find("force scale 2.68e-05"), std::string::npos) << e.what();
+  }
+}
+
+
+/// The clamped block's bottom in contact with the plane y = 0 (every row of the contact held: each is a
+/// combination of the bottom nodes' uy, all prescribed), its state at u with multipliers μ = `force`.
+struct HeldContact {
+  testing::TempFolder folder;
+  std::unique_ptr<testing::ModelCase> c = block(folder, "[[contact]]\nname = \"floor\"\na = \"block.bottom\"\n"
+                                                        "[contact.obstacle]\ntype = \"plane\"\npoint = [0.0, 0.0]\n"
+                                                        "normal = [0.0, 1.0]\n");
+  ContactState state(const VectorXd& u, double force) const {
+    ContactState s;
+    s.linearization = c->model->contacts().linearize(c->model->dofs(), u);
+    s.multipliers = VectorXd::Constant(s.linearization.A.rows(), force);
+    return s;
+  }
+};
+
+TEST(StepChecks, ANodeHeldIntoTheObstacleFailsAndOneHeldInContactWarns) {
+  const HeldContact h;
+  Model& model = *h.c->model;
+  const FixedDofs fixed = model.fixed_dofs(1);
+  VectorXd u = VectorXd::Zero(model.dofs().num_dofs());
+  const ContactState open = h.state(u, 0.0), pressed = h.state(u, 1.0);
+  EXPECT_TRUE(check_step(model, u, fixed, &open).warnings.empty());
+  const std::vector<std::string> warnings = check_step(model, u, fixed, &pressed).warnings;
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("the support's reaction"), std::string::npos) << warnings[0];
+  // 2 % of the element size 0.5 into the plane: within the weak contact's slack of the global check, yet
+  // every DOF of the gaps is prescribed.
+  for (const double x : {0.0, 0.5, 1.0, 1.5, 2.0}) u[dof_at(model, x, 0.0, 1)] = -0.01;
+  const ContactState inside = h.state(u, 1.0);
+  try {
+    check_step(model, u, fixed, &inside);
+    FAIL() << "expected a SolveError";
+  } catch (const SolveError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("contact 'floor'"), std::string::npos) << what;
+    EXPECT_NE(what.find("held there by its Dirichlet conditions"), std::string::npos) << what;
   }
 }
 
