@@ -1,6 +1,8 @@
 #include "symcontact/contact/contact_set.hpp"
 
 #include <algorithm>
+#include <map>
+#include <utility>
 
 namespace symcontact {
 
@@ -105,6 +107,19 @@ double ContactSet::automatic_search_distance(const ContactSurface& a, const Cont
     for (Index f = 0; f < b->num_facets(); ++f) hmax = std::max(hmax, facet_size(*b, f));
   }
   return 0.1 * (hi - lo).norm() + 2.0 * hmax;
+}
+
+VectorXd values_on_rows(const std::vector<int>& family, const std::vector<Index>& node, const VectorXd& values,
+                        const ContactLinearization& to) {
+  std::map<std::pair<int, Index>, double> value;
+  for (Index j = 0; j < values.size(); ++j)
+    value[{family[static_cast<std::size_t>(j)], node[static_cast<std::size_t>(j)]}] = values[j];
+  VectorXd out = VectorXd::Zero(to.A.rows());
+  for (Index j = 0; j < out.size(); ++j) {
+    const auto it = value.find({to.row_family[static_cast<std::size_t>(j)], to.row_node[static_cast<std::size_t>(j)]});
+    if (it != value.end()) out[j] = it->second;
+  }
+  return out;
 }
 
 }  // namespace symcontact

@@ -95,6 +95,11 @@ struct ContactLinearization {
   std::vector<std::vector<ContactPoint>> points;  ///< per family
 };
 
+/// Per-row values of earlier rows (rows `family`, `node`, values `values`) carried to the rows of `to` by their
+/// family and slave node, the identity of a row across geometry iterations; 0 on a row new to `to`.
+VectorXd values_on_rows(const std::vector<int>& family, const std::vector<Index>& node, const VectorXd& values,
+                        const ContactLinearization& to);
+
 class ContactSet {
  public:
   std::vector<ContactSurface> surfaces;

@@ -397,15 +397,11 @@ class DistributedStep {
   std::optional<VectorXd> forces_if_still_optimal(const ContactLinearization& next, const ContactLinearization& lin,
                                                   const ContactInteriorPointResult& solve, const Model& model,
                                                   const FixedDofs& fixed, const VectorXd& u) const {
-    std::map<std::pair<int, Index>, double> force;
-    for (Index j = 0; j < lin.A.rows(); ++j)
-      force[{lin.row_family[static_cast<std::size_t>(j)], lin.row_node[static_cast<std::size_t>(j)]}] = solve.lambda[j];
+    const VectorXd lambda = values_on_rows(lin.row_family, lin.row_node, solve.lambda, next);
     const double tol = options_.tolerance, F = solve.force_scale, L = solve.length_scale;
     const VectorXd gap = next.A * u + next.b;
-    VectorXd lambda = VectorXd::Zero(next.A.rows()), mu(next.A.rows());
+    VectorXd mu(next.A.rows());
     for (Index j = 0; j < next.A.rows(); ++j) {
-      const auto it = force.find({next.row_family[static_cast<std::size_t>(j)], next.row_node[static_cast<std::size_t>(j)]});
-      if (it != force.end()) lambda[j] = it->second;
       const double support = next.row_support[static_cast<std::size_t>(j)], g = gap[j] / support;
       if (g < -tol * L || std::min(std::max(g, 0.0) / L, lambda[j] / F) > tol) return std::nullopt;
       mu[j] = lambda[j] / support;

@@ -94,7 +94,14 @@ bool GeometryFixedPoint::iterate(int it, VectorXd& u) {
   if (lazy_) workspace_->interior_pending = true;  // from here on until an iteration expands (a failure completes u)
   auto from_target = [&](const VectorXd& xt) { return condensed ? condensed->expand(xt) : xt; };
   const bool same_rows = rows_match_previous(it);
-  auto [s, dual] = subproblem_.solve(x_, it, same_rows ? &mu_prev_ : nullptr, ipopt_, polish_.closes(), rep_);
+  // Rows that changed since the previous iteration or solve (the edge of a zone moving in or out of the search
+  // distance): its multipliers carried by family and node, 0 on the new rows, still start the active set.
+  VectorXd carried;
+  if (!same_rows && it > 1) carried = values_on_rows(rows_prev_family_, rows_prev_node_, mu_prev_, lin);
+  if (!same_rows && it == 1 && workspace_->multipliers.size() > 0)
+    carried = values_on_rows(workspace_->row_family, workspace_->row_node, workspace_->multipliers, lin);
+  const SubproblemWarmStart warm{same_rows ? &mu_prev_ : nullptr, carried.size() > 0 ? &carried : nullptr};
+  auto [s, dual] = subproblem_.solve(x_, it, warm, ipopt_, polish_.closes(), rep_);
   IpoptResult& res = s.result;
   bool closed = s.closed;  ///< the active set was closed exactly at this iteration
   if (dual && !s.closing_failure.empty()) polish_.closing_rejected(s.closing_failure, log_);

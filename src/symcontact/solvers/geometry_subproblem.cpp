@@ -164,7 +164,7 @@ ConstrainedProblem& GeometrySubproblem::target() {
 }
 
 GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geometry_iteration,
-                                                      const VectorXd* warm_multipliers, const IpoptOptions& ipopt,
+                                                      const SubproblemWarmStart& warm, const IpoptOptions& ipopt,
                                                       bool close_active_set, SolveReport& rep) {
   const CondensedProblem* condensed = condensed_.get();
   ConstrainedProblem& target = this->target();
@@ -174,7 +174,6 @@ GeometrySubproblem::Outcome GeometrySubproblem::solve(const VectorXd& x, int geo
     schur = dual_schur_factor(workspace_, log_);
   }
   const VectorXd start = condensed ? condensed->restrict(x) : x;
-  const SubproblemWarmStart warm{warm_multipliers};
   Subproblem p{target,    condensed, schur, start, geometry_iteration, ipopt, close_active_set,
                energy_.hessian_is_constant(), {}, {}};
   if (schur) {

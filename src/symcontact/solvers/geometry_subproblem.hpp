@@ -61,9 +61,8 @@ class GeometrySubproblem {
     bool dual = false;
   };
   /// The subproblem of the last build() from the iterate x (free DOFs), its multipliers warm-started from
-  /// warm_multipliers when not null (the same rows as theirs). The dual's attempts and the iterations of a
-  /// failed one are added to rep.
-  Outcome solve(const VectorXd& x, int geometry_iteration, const VectorXd* warm_multipliers, const IpoptOptions& ipopt,
+  /// `warm` (subproblem.hpp). The dual's attempts and the iterations of a failed one are added to rep.
+  Outcome solve(const VectorXd& x, int geometry_iteration, const SubproblemWarmStart& warm, const IpoptOptions& ipopt,
                 bool close_active_set, SolveReport& rep);
 
  private:

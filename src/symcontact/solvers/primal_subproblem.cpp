@@ -72,9 +72,10 @@ SubproblemSolution PrimalInteriorPoint::solve(const Subproblem& p, const Subprob
     // does, and it takes fewer of them on the 3D pads (docs/performance.md); the dense condensed problem keeps
     // the interior point.
     const Index rows = p.target.constraint_matrix().rows();
-    const bool warm_rows = warm.multipliers && warm.multipliers->size() == rows;
+    const VectorXd* set_start = warm.multipliers ? warm.multipliers : warm.carried;
+    const bool warm_rows = set_start && set_start->size() == rows;
     if (warm_ == WarmStart::kActiveSet && p.close_active_set && (warm_rows || !p.target.hessian_is_dense())) {
-      s.result = on_active_set(p, p.start, warm_rows ? *warm.multipliers : VectorXd::Zero(rows), o.tolerance, follow);
+      s.result = on_active_set(p, p.start, warm_rows ? *set_start : VectorXd::Zero(rows), o.tolerance, follow);
       if (s.result.success) {
         s.result.status_text = "primal interior point: " + s.result.status_text;
         s.closed = true;

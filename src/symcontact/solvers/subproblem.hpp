@@ -45,7 +45,13 @@ struct Subproblem {
 /// The previous solution's multipliers when this iteration's constraint rows are the same rows (same
 /// families, same nodes) as theirs; null otherwise.
 struct SubproblemWarmStart {
+  /// The previous solve's multipliers, on the same rows: they start every method.
   const VectorXd* multipliers = nullptr;
+  /// Where the rows changed since (the edge of a zone entering or leaving the search distance), the previous
+  /// multipliers carried to these rows by family and node, 0 on a new row (values_on_rows()): the start set of
+  /// the primal's active-set Newton only, whose own checks keep it from a wrong set; the interior points and
+  /// IPOPT start cold then.
+  const VectorXd* carried = nullptr;
 };
 
 struct SubproblemSolution {

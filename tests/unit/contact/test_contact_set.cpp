@@ -175,3 +175,17 @@ TEST(ContactSet, EmptySetLinearizesToNoRows) {
   EXPECT_EQ(lin.A.cols(), b.dofs.num_dofs());
   EXPECT_EQ(lin.b.size(), 0);
 }
+
+TEST(ContactSet, ValuesFollowTheirRowsByFamilyAndNode) {
+  // Earlier rows (family, node) (0, 1), (0, 2), (1, 1) with values 1, 2, 3; the new rows (0, 2), (1, 1), (0, 5):
+  // the values of the rows they keep, in their order, and 0 on the row new to them.
+  ContactLinearization to;
+  to.A.resize(3, 4);
+  to.row_family = {0, 1, 0};
+  to.row_node = {2, 1, 5};
+  const VectorXd carried = values_on_rows({0, 0, 1}, {1, 2, 1}, (VectorXd(3) << 1.0, 2.0, 3.0).finished(), to);
+  ASSERT_EQ(carried.size(), 3);
+  EXPECT_EQ(carried[0], 2.0);
+  EXPECT_EQ(carried[1], 3.0);
+  EXPECT_EQ(carried[2], 0.0);
+}

@@ -59,7 +59,7 @@ Step solve_once(GeometrySubproblem& sub, const VectorXd& u0, const IpoptOptions&
   const VectorXd x = sub.reduced().restrict(u0);
   Step s;
   s.condensed = sub.condensed() != nullptr;
-  GeometrySubproblem::Outcome out = sub.solve(x, 1, nullptr, ipopt, true, rep);
+  GeometrySubproblem::Outcome out = sub.solve(x, 1, SubproblemWarmStart{}, ipopt, true, rep);
   EXPECT_TRUE(out.solution.result.success) << out.solution.result.status_text;
   s.dual = out.dual;
   const VectorXd xs = s.condensed ? sub.condensed()->expand(out.solution.result.x) : out.solution.result.x;
@@ -124,4 +124,24 @@ TEST(GeometrySubproblem, OnARigidPlaneTheSecondIterationNeedsNoSolve) {
   EXPECT_EQ(r.ipopt_per_iteration[1], 0);
   ASSERT_EQ(r.change_history.size(), 2u);
   EXPECT_EQ(r.change_history[1], 0.0);
+}
+
+TEST_F(GeometrySubproblemTest, MultipliersCarriedToChangedRowsStartTheActiveSetNewton) {
+  // The primal's condensed subproblem: without a start the dense interior point solves it; with the multipliers
+  // of rows that changed since (SubproblemWarmStart::carried, here the solution's own) Newton on their active
+  // set does, in one factorisation, to the same answer; the interior point and IPOPT never see them.
+  ContactSolveOptions o = options(true);
+  o.subproblem_solver = SubproblemSolver::kPrimalInteriorPoint;
+  auto sub = built(o);
+  const VectorXd x = sub->reduced().restrict(u0_);
+  const IpoptResult cold = sub->solve(x, 1, SubproblemWarmStart{}, o.ipopt, true, rep_).solution.result;
+  ASSERT_TRUE(cold.success) << cold.status_text;
+  EXPECT_EQ(cold.status_text.find("primal interior point: converged ("), std::string::npos) << cold.status_text;
+  const SubproblemWarmStart carried{nullptr, &cold.multipliers};
+  const IpoptResult warm = sub->solve(x, 2, carried, o.ipopt, true, rep_).solution.result;
+  ASSERT_TRUE(warm.success) << warm.status_text;
+  EXPECT_EQ(warm.status_text, "primal interior point: converged (active set: 1 factorisation)");
+  EXPECT_LT((warm.x - cold.x).lpNorm<Eigen::Infinity>(), 1e-9 * cold.x.lpNorm<Eigen::Infinity>());
+  EXPECT_LT((warm.multipliers - cold.multipliers).lpNorm<Eigen::Infinity>(),
+            1e-8 * cold.multipliers.lpNorm<Eigen::Infinity>());
 }
