@@ -90,9 +90,25 @@ double check_penetration(const Model& model, const VectorXd& u, const ContactSta
   return worst;
 }
 
+/// Whether row r's own node (the slave node it belongs to) has every DOF the row involves prescribed: the node
+/// is held along its contact normal.
+bool held_along_normal(const Model& model, const ContactLinearization& lin, Index r, const std::vector<char>& is_fixed) {
+  const ContactSet& cs = model.contacts();
+  const ContactSurface& slave = cs.surfaces[cs.families()[lin.row_family[r]].slave];
+  bool involved = false;
+  for (int k = 0; k < model.dim(); ++k) {
+    const Index d = model.dofs().dof(slave.body, slave.nodes[lin.row_node[r]], k);
+    if (lin.A.coeff(r, d) == 0.0) continue;
+    if (!is_fixed[static_cast<std::size_t>(d)]) return false;
+    involved = true;
+  }
+  return involved;
+}
+
 /// Contact rows whose every DOF is prescribed (held_rows()): a depth beyond kHeldDepthTolerance × h is the
-/// prescribed displacements' own (an error: contact cannot push the node out); where such a row carries a
-/// force, the force is the supports' reaction, not a contact pressure (a warning, once per pair).
+/// prescribed displacements' own (an error: contact cannot push the node out). A node held along its contact
+/// normal and in contact shares its force with the support in a split the problem leaves open (an
+/// overconstraint: one row more than the free DOFs along the normals): a warning, once per pair.
 void check_held_rows(const Model& model, const VectorXd& u, const FixedDofs& fixed, const ContactState& contact,
                      std::vector<std::string>& warnings) {
   std::vector<Index> free_index;
@@ -100,26 +116,28 @@ void check_held_rows(const Model& model, const VectorXd& u, const FixedDofs& fix
   std::vector<char> is_fixed(free_index.size());
   for (std::size_t d = 0; d < free_index.size(); ++d) is_fixed[d] = free_index[d] < 0;
   const ContactLinearization& lin = contact.linearization;
-  const std::vector<char> held = held_rows(lin, is_fixed);
-  for (const Penetration& p : find_held_penetrations(model.contacts(), lin, u, held))
+  for (const Penetration& p : find_held_penetrations(model.contacts(), lin, u, held_rows(lin, is_fixed)))
     if (p.depth > kHeldDepthTolerance * p.size)
       throw SolveError("check of the answer: " + describe(model, p, " inside ", kHeldDepthTolerance) +
                        ", held there by its Dirichlet conditions: every DOF of its gap is prescribed, so that no "
                        "contact force can move it; change the prescribed displacements, or leave the node out "
                        "of the contact surface");
-  if (contact.multipliers.size() != static_cast<Index>(held.size())) return;
+  if (contact.multipliers.size() != lin.A.rows() || lin.A.rows() == 0) return;
   const ContactSet& cs = model.contacts();
-  const double force_floor = 1e-6 * (contact.multipliers.size() ? contact.multipliers.cwiseAbs().maxCoeff() : 0.0);
+  const double force_floor = 1e-6 * contact.multipliers.cwiseAbs().maxCoeff();
   std::vector<char> warned(cs.pairs.size(), 0);
-  for (Index r = 0; r < static_cast<Index>(held.size()); ++r) {
-    if (!held[static_cast<std::size_t>(r)] || !(std::abs(contact.multipliers[r]) > force_floor)) continue;
+  for (Index r = 0; r < lin.A.rows(); ++r) {
     const ContactFamily& fam = cs.families()[lin.row_family[r]];
-    if (warned[fam.pair]++) continue;
+    if (warned[fam.pair] || !(std::abs(contact.multipliers[r]) > force_floor) ||
+        !held_along_normal(model, lin, r, is_fixed))
+      continue;
+    warned[fam.pair] = 1;
     const ContactSurface& slave = cs.surfaces[fam.slave];
     warnings.push_back("contact '" + cs.pairs[fam.pair].name + "': " +
                        model.bodies()[slave.body]->mesh.node_label(slave.nodes[lin.row_node[r]]) + " of '" +
-                       slave.name + "' is held along its contact normal by Dirichlet conditions and in contact: "
-                       "the contact force reported there is the support's reaction, not a contact pressure");
+                       slave.name + "' is held along its contact normal by Dirichlet conditions and in contact: its "
+                       "force is shared with the support in a split the problem leaves open, so that the contact "
+                       "pressures there and next to it are not determined by the contact (an overconstraint)");
   }
 }
 

@@ -26,8 +26,9 @@
 ///
 /// 4. **Nodes held into the other side**: a contact row whose every DOF is prescribed (a node held by
 ///    Dirichlet conditions along its contact normal) has the gap the prescribed displacements give it, which
-///    contact cannot change; deeper than kHeldDepthTolerance × h it is an error naming the node. Where such a
-///    row is in contact, its multiplier is the supports' reaction there (an overconstraint): a warning.
+///    contact cannot change; deeper than kHeldDepthTolerance × h it is an error naming the node. A node held
+///    along its contact normal and in contact shares its force with the support in a split the problem leaves
+///    open (an overconstraint): a warning.
 ///
 /// A failed check throws SolveError naming the step, the body or pair, the node and the measured figure;
 /// the run turns it into exit 3 with the finished steps kept.
