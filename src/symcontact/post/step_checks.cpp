@@ -92,7 +92,8 @@ double check_penetration(const Model& model, const VectorXd& u, const ContactSta
 
 /// Whether row r's own node (the slave node it belongs to) has every DOF the row involves prescribed: the node
 /// is held along its contact normal.
-bool held_along_normal(const Model& model, const ContactLinearization& lin, Index r, const std::vector<char>& is_fixed) {
+bool held_along_normal(const Model& model, const ContactLinearization& lin, Index r,
+                       const std::vector<char>& is_fixed) {
   const ContactSet& cs = model.contacts();
   const ContactSurface& slave = cs.surfaces[cs.families()[lin.row_family[r]].slave];
   bool involved = false;
